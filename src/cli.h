@@ -1,0 +1,25 @@
+/* Command-line helpers shared by the commands: scene loading with the usual messages,
+   number lists, usage text. Commands return the process exit status (0, 1, 2). */
+#ifndef ZP_CLI_H
+#define ZP_CLI_H
+
+#include "model.h"
+#include "scene.h"
+
+enum { ZP_EXIT_OK = 0, ZP_EXIT_FAIL = 1, ZP_EXIT_USAGE = 2 };
+
+/* Parses "a,b,c" into at most max doubles; returns the count, or -1 (with why) on a bad
+   number or an empty item. */
+int zp_cli_parse_list(const char *text, double *out, int max, char *why, size_t whylen);
+/* Loads path (NULL: the built-in seed) and builds the model; prints every diagnostic to
+   stderr and returns NULL on bad input. */
+zp_model *zp_cli_load(const char *path, zp_scene *sc);
+/* The registries' names and docs, for --help. */
+void zp_cli_print_registries(FILE *f);
+void zp_cli_usage(FILE *f);
+
+int zp_cmd_simulate(int argc, char **argv);
+int zp_cmd_check(int argc, char **argv);
+int zp_cmd_search(int argc, char **argv);
+
+#endif

@@ -1,0 +1,48 @@
+/* The formulation interface: one way of writing the equations of motion of MODEL.md.
+   State contract shared by all formulations (so events are written once):
+     y[0]          trolley x (m)
+     y[n-2], y[n-1] drive work and damper loss (J), integrated alongside
+   everything else is the formulation's own; to_chain/from_chain convert to MODEL.md's q. */
+#ifndef ZP_FORMULATION_H
+#define ZP_FORMULATION_H
+
+#include "state.h"
+
+/* The drive and the course under the trolley at this instant (set by the simulator). */
+typedef struct zp_drive_now {
+    zp_track tr;    /* course at the trolley's x, on the current section */
+    double fx, fy;  /* N, drive force on the trolley */
+} zp_drive_now;
+
+/* Loads, computed on request (outputs, not the hot path). */
+typedef struct zp_loads {
+    double normal;                   /* N, course on trolley along (-f', 1)/|.|: + pushes up */
+    double joint[ZP_MAX_LINKS][2];   /* N, force of the parent on link i at joint i */
+    double acc[ZP_MAX_LINKS + 1][2]; /* m/s^2, centre-of-mass accelerations, body 0 trolley */
+} zp_loads;
+
+typedef struct zp_formulation {
+    const char *name; /* as typed in [solver] formulation */
+    const char *doc;  /* one line for --help */
+    int (*nstate)(const zp_model *m);
+    /* Workspace sized from the model (no allocation afterwards); NULL on failure. */
+    void *(*create)(const zp_model *m);
+    void (*free)(void *work);
+    /* State from chain coordinates (positions on the constraints); work terms set to w[2]. */
+    void (*from_chain)(const zp_model *m, const zp_chain *c, const double w[2], double *y);
+    void (*to_chain)(const zp_model *m, const double *y, zp_chain *c);
+    /* Rates of every state entry. Returns 0, or >0 when y gives non-finite rates (the
+       integrator may retry with a smaller step). loads may be NULL. */
+    int (*rhs)(const zp_model *m, void *work, const zp_drive_now *dn, const double *y,
+               double *ydot, zp_loads *loads);
+    /* Largest violation of the formulation's own position constraints (m); NULL: none. */
+    double (*constraint_residual)(const zp_model *m, const zp_course *course, int sec,
+                                  const double *y);
+} zp_formulation;
+
+typedef enum { ZP_FORM_LAGRANGE, ZP_FORM_COUNT } zp_form_id;
+
+const zp_formulation *zp_formulation_get(int id);
+int zp_formulation_find(const char *name); /* -1 if unknown */
+
+#endif

@@ -1,0 +1,39 @@
+/* The integrator interface: advance an ODE with root finding to an output time.
+   CVODE (Adams, BDF) implements it; the simulator sees nothing else. */
+#ifndef ZP_METHOD_H
+#define ZP_METHOD_H
+
+#include <stddef.h>
+
+typedef int (*zp_rhs_fn)(double t, const double *y, double *ydot, void *user);
+typedef int (*zp_root_fn)(double t, const double *y, double *g, void *user);
+
+typedef struct zp_method_opts {
+    double rtol, atol;
+    long max_steps; /* per advance call; the simulator also bounds the run */
+} zp_method_opts;
+
+typedef enum { ZP_ADV_TOUT, ZP_ADV_ROOT, ZP_ADV_FAIL } zp_adv;
+
+typedef struct zp_method {
+    const char *name; /* as typed in [solver] method */
+    const char *doc;  /* one line for --help */
+    void *(*create)(int n, int nroot, zp_rhs_fn rhs, zp_root_fn root, void *user,
+                    const zp_method_opts *o);
+    /* Restart at (t0, y0), integrating no further than t_stop. 0 on success. */
+    int (*reset)(void *w, double t0, const double *y0, double t_stop);
+    /* Advances towards tout. On ZP_ADV_ROOT roots[i] = +1/-1 for each g_i that crossed
+       (its direction), 0 otherwise. On ZP_ADV_FAIL err holds the reason. */
+    zp_adv (*advance)(void *w, double tout, double *t, double *y, int *roots, char *err,
+                      size_t errlen);
+    /* Steps and rhs evaluations since the last reset. */
+    void (*stats)(void *w, long *steps, long *rhs_evals);
+    void (*free)(void *w);
+} zp_method;
+
+typedef enum { ZP_METHOD_CVODE_ADAMS, ZP_METHOD_CVODE_BDF, ZP_METHOD_COUNT } zp_method_id;
+
+const zp_method *zp_method_get(int id);
+int zp_method_find(const char *name); /* -1 if unknown */
+
+#endif

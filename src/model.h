@@ -1,0 +1,55 @@
+/* The physics of MODEL.md built once from a scene: SI units, radians, derived constants.
+   Nothing writes a model after zp_model_build; every run reads it through a const pointer. */
+#ifndef ZP_MODEL_H
+#define ZP_MODEL_H
+
+#include "course.h"
+#include "diag.h"
+#include "scene.h"
+
+typedef enum { ZP_DRIVE_HORIZONTAL, ZP_DRIVE_TANGENT, ZP_DRIVE_COUNT } zp_drive_dir;
+
+typedef struct zp_kink {
+    int left;         /* section on the left (0-based); the kink is at xb[left + 1] */
+    double x, y;      /* m */
+    double slope_in;  /* f' of the left section at the boundary */
+    double slope_out; /* f' of the right section at the boundary */
+} zp_kink;
+
+typedef struct zp_model {
+    double g; /* m/s^2, acts in -y */
+
+    int nsec;
+    double xb[ZP_MAX_SECTIONS + 1];    /* m, section k (0-based) spans [xb[k], xb[k+1]] */
+    char expr[ZP_MAX_SECTIONS][ZP_EXPR_MAX]; /* f(x) text per section */
+    zp_course *course;                 /* owned; for single-threaded use (check, reports) */
+    int nkink;
+    zp_kink kink[ZP_MAX_SECTIONS];     /* boundaries where the slope jumps */
+
+    double m0; /* kg, trolley */
+    int nlink;
+    double len[ZP_MAX_LINKS];     /* m, l_i */
+    double half[ZP_MAX_LINKS];    /* m, d_i = l_i / 2 */
+    double mass[ZP_MAX_LINKS];    /* kg */
+    double inertia[ZP_MAX_LINKS]; /* kg m^2, m l^2 / 12 about the centre of mass */
+    double damp[ZP_MAX_LINKS];    /* N m s/rad, joint i joins link i to its parent */
+    double phi_max;               /* rad, death angle */
+    zp_drive_dir drive;
+
+    /* derived for the equations of motion (MODEL.md chain coordinates) */
+    double mtot;                                 /* kg, trolley + links */
+    double B[ZP_MAX_LINKS];                      /* kg m, m_j d_j + l_j sum_{i>j} m_i */
+    double C[ZP_MAX_LINKS][ZP_MAX_LINKS];        /* kg m^2, coefficient of cos(th_j - th_k) */
+} zp_model;
+
+/* Builds the model: compiles the course, checks continuity (naming the boundary and the jump)
+   and finds the kinks. Returns NULL and fills d on bad input. */
+zp_model *zp_model_build(const zp_scene *sc, zp_diag *d);
+void zp_model_free(zp_model *m);
+/* The section (0-based) that contains x, preferring the one to the right at a boundary. */
+int zp_model_section_at(const zp_model *m, double x);
+/* Names for the user-typed drive directions (CONFIG.md), and lookup (-1 if unknown). */
+const char *zp_model_drive_name(zp_drive_dir d);
+int zp_model_drive_find(const char *name);
+
+#endif

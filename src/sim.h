@@ -1,0 +1,95 @@
+/* One simulation: a schedule of forces in, an outcome out (MODEL.md "Outcomes").
+   zp_sim is the workspace, created once per (model, options) and reused for every run. */
+#ifndef ZP_SIM_H
+#define ZP_SIM_H
+
+#include "formulation.h"
+#include "method.h"
+#include "model.h"
+
+typedef enum {
+    ZP_OUTCOME_FINISHED,
+    ZP_OUTCOME_DIED,
+    ZP_OUTCOME_STALLED,
+    ZP_OUTCOME_COUNT
+} zp_outcome;
+
+typedef enum {
+    ZP_STALL_NONE,
+    ZP_STALL_T_MAX,
+    ZP_STALL_ROLLED_BACK,
+    ZP_STALL_TRAPPED_AT_KINK,
+    ZP_STALL_COUNT
+} zp_stall;
+
+#define ZP_MAX_CROSSINGS 1000 /* kink crossings kept per run; more means trapped at the kink */
+
+typedef struct zp_sim_opts {
+    int method;       /* zp_method_id */
+    int formulation;  /* zp_form_id */
+    double rtol, atol;
+    double t_max;     /* s */
+    double output_dt; /* s between trajectory rows; <= 0: no trajectory */
+    long max_steps;   /* bound on integrator steps per run */
+} zp_sim_opts;
+
+typedef struct zp_input {
+    const double *force;   /* borrowed; N, one per section */
+    const double *sample_t; /* borrowed; s, ascending sample times (may be NULL) */
+    int nsample;
+} zp_input;
+
+typedef struct zp_crossing {
+    double t;           /* s */
+    double x;           /* m */
+    int from, to;       /* sections, 0-based */
+    double impulse;     /* N s, Lambda of MODEL.md */
+    double energy_lost; /* J */
+} zp_crossing;
+
+/* One sampled instant: the state in chain coordinates plus what the outputs need. */
+typedef struct zp_row {
+    double t;     /* s */
+    int sec;      /* 0-based */
+    zp_chain c;
+    double w_drive, w_damp, e_impulse; /* J, cumulative */
+    zp_loads loads;
+} zp_row;
+
+typedef struct zp_result {
+    zp_outcome outcome;
+    zp_stall stall;
+    double time;    /* s: finish, death or stall */
+    double x;       /* m, trolley x then */
+    double v;       /* m/s, trolley speed then */
+    int died_link;  /* 1-based, 0 when nobody died */
+    double max_rel_angle[ZP_MAX_LINKS]; /* rad, largest |phi_i| over the run */
+    double max_speed;                   /* m/s, largest trolley speed at a step or event */
+    int ncross;                         /* kink crossings (all of them) */
+    zp_crossing cross[ZP_MAX_CROSSINGS];
+    double e_initial, e_final;          /* J */
+    double w_drive, w_damp, e_impulse;  /* J: drive work, damper loss, impulse loss */
+    double constraint_residual;         /* m */
+    long steps, rhs_evals;
+    double wall_s;
+    char message[256]; /* why a run failed (status ZP_ERR_NUMERIC) */
+} zp_result;
+
+typedef struct zp_sim zp_sim;
+
+/* Options from the scene's [solver] section. */
+zp_status zp_sim_opts_from_scene(const zp_scene *sc, zp_sim_opts *o, zp_diag *d);
+zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o);
+void zp_sim_free(zp_sim *s);
+/* Runs one schedule from the MODEL.md start. ZP_OK with r filled (any outcome), or
+   ZP_ERR_NUMERIC with r->message naming t, x and the cause. */
+zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result *r);
+/* Trajectory rows (every output_dt and the end) and samples of the last run; valid until the
+   next run. */
+const zp_row *zp_sim_rows(const zp_sim *s, int *n);
+const zp_row *zp_sim_samples(const zp_sim *s, int *n);
+
+const char *zp_sim_outcome_name(zp_outcome o);
+const char *zp_sim_stall_name(zp_stall s);
+
+#endif
