@@ -30,7 +30,10 @@ typedef struct zp_formulation {
     void (*free)(void *work);
     /* State from chain coordinates (positions on the constraints); work terms set to w[2]. */
     void (*from_chain)(const zp_model *m, const zp_chain *c, const double w[2], double *y);
-    void (*to_chain)(const zp_model *m, const double *y, zp_chain *c);
+    /* Chain coordinates of y; tr is the course at y[0] on the current section. */
+    void (*to_chain)(const zp_model *m, const zp_track *tr, const double *y, zp_chain *c);
+    /* Relative joint angles phi_i (rad) and rates w_i (rad/s): the root functions' inputs. */
+    void (*relative)(const zp_model *m, const double *y, double *phi, double *w);
     /* Rates of every state entry. Returns 0, or >0 when y gives non-finite rates (the
        integrator may retry with a smaller step). loads may be NULL. */
     int (*rhs)(const zp_model *m, void *work, const zp_drive_now *dn, const double *y,

@@ -18,8 +18,9 @@ typedef enum { ZP_ADV_TOUT, ZP_ADV_ROOT, ZP_ADV_FAIL } zp_adv;
 typedef struct zp_method {
     const char *name; /* as typed in [solver] method */
     const char *doc;  /* one line for --help */
-    void *(*create)(int n, int nroot, zp_rhs_fn rhs, zp_root_fn root, void *user,
-                    const zp_method_opts *o);
+    /* rootdir[i]: +1/-1 reports only increasing/decreasing crossings of g_i, 0 both. */
+    void *(*create)(int n, int nroot, const int *rootdir, zp_rhs_fn rhs, zp_root_fn root,
+                    void *user, const zp_method_opts *o);
     /* Restart at (t0, y0), integrating no further than t_stop. 0 on success. */
     int (*reset)(void *w, double t0, const double *y0, double t_stop);
     /* Advances towards tout. On ZP_ADV_ROOT roots[i] = +1/-1 for each g_i that crossed

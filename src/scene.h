@@ -2,6 +2,8 @@
 #ifndef ZP_SCENE_H
 #define ZP_SCENE_H
 
+#include <stddef.h>
+
 #include "diag.h"
 
 #define ZP_MAX_LINKS 8
@@ -44,7 +46,8 @@ typedef struct zp_scene {
     long max_evals; /* simulations the search may spend */
     unsigned long seed;
 
-    int line_forces; /* line of [drive] forces, 0 if absent: for messages on the schedule */
+    /* lines of keys that later stages judge (0 if absent), for their messages */
+    int line_forces, line_method, line_formulation;
 } zp_scene;
 
 /* Reads and validates a scene file (every CONFIG.md rule). On error fills d and returns
@@ -56,5 +59,8 @@ zp_status zp_scene_load_string(const char *text, const char *path, zp_scene *sc,
 void zp_scene_seed(zp_scene *sc);
 /* Lays a schedule file (only [drive] forces) over sc. */
 zp_status zp_scene_overlay_schedule(const char *path, zp_scene *sc, zp_diag *d);
+/* Parses "a, b, c" (finite decimal numbers, CONFIG.md lists) into at most max doubles;
+   returns the count, or -1 with why on an empty or bad item or more than max items. */
+int zp_scene_parse_list(const char *text, double *out, int max, char *why, size_t whylen);
 
 #endif

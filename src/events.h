@@ -1,0 +1,29 @@
+/* The root functions of a run (MODEL.md "Outcomes"), one layout for every formulation and
+   method: section ends, death per joint, and the extrema of each relative joint angle. */
+#ifndef ZP_EVENTS_H
+#define ZP_EVENTS_H
+
+#include "model.h"
+
+/* g layout: [0] x - left end, [1] x - right end, [2+i] phi_max - |phi_i|, [2+N+i] w_i */
+enum { ZP_ROOT_LEFT = 0, ZP_ROOT_RIGHT = 1, ZP_ROOT_DEATH = 2 };
+
+typedef enum {
+    ZP_EVENT_NONE,   /* only extrema of joint angles: keep going */
+    ZP_EVENT_DEATH,
+    ZP_EVENT_FINISH,
+    ZP_EVENT_ROLLBACK,
+    ZP_EVENT_KINK,
+    ZP_EVENT_COUNT
+} zp_event;
+
+int zp_events_count(const zp_model *m);
+/* Directions that matter: leaving through either end, |phi| rising through phi_max. */
+void zp_events_directions(const zp_model *m, int *dir);
+void zp_events_eval(const zp_model *m, int sec, double x, const double *phi, const double *w,
+                    double *g);
+/* What the roots found on section sec mean, in priority order death > finish > roll-back >
+   kink. Sets *link (0-based, death) or *to (entered section, kink). */
+zp_event zp_events_classify(const zp_model *m, int sec, const int *roots, int *link, int *to);
+
+#endif

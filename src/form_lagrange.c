@@ -1,0 +1,192 @@
+/* Formulation "lagrange": minimal coordinates q = (x, theta_1..N) with y = f(x) substituted.
+ *
+ * Body points (MODEL.md): trolley P0 = (x, f); link i's centre c_i = P0 + sum_{j<i} l_j e_j
+ * + d_i e_i with e = (sin th, -cos th), n = de/dth = (cos th, sin th). With
+ *   B_j  = m_j d_j + l_j sum_{i>j} m_i                          (kg m)
+ *   C_jk = l_j B_k (j < k),  C_jj = m_j d_j^2 + I_j + l_j^2 sum_{i>j} m_i   (kg m^2)
+ * the kinetic energy T = 1/2 q'^T M q' has
+ *   M_xx = m_tot (1 + f'^2),  M_x,j = B_j (cos th_j + f' sin th_j),  M_jk = C_jk cos(th_j - th_k),
+ * and Lagrange's equations M q'' = R, with R = Q - (velocity terms), are
+ *   R_x = -m_tot f' f'' x'^2 + sum_k B_k (sin th_k - f' cos th_k) th_k'^2 - m_tot g f'
+ *         + F . (1, f')
+ *   R_j = -B_j sin th_j f'' x'^2 + sum_k C_jk sin(th_k - th_j) th_k'^2 - g B_j sin th_j
+ *         - c_j w_j + c_{j+1} w_{j+1}
+ * (w_j = th_j' - th_{j-1}' the joint rates; F the drive force vector). M is symmetric
+ * positive definite: Cholesky (GSL). Loads come from the accelerations: the normal force from
+ * the whole system's momentum balance, the joint reactions from each link's, bottom up.
+ * State: y = (x, th_1..N, x', th_1'..N', W_drive, W_damp). */
+#include <gsl/gsl_linalg.h>
+#include <math.h>
+#include <stdlib.h>
+
+#include "formulation.h"
+
+typedef struct lagrange_work {
+    gsl_matrix *M;
+    gsl_vector *R, *acc;
+} lagrange_work;
+
+static int lagrange_nstate(const zp_model *m) { return 2 * (m->nlink + 1) + 2; }
+
+static void lagrange_free(void *work) {
+    lagrange_work *w = work;
+    if (!w) {
+        return;
+    }
+    gsl_matrix_free(w->M);
+    gsl_vector_free(w->R);
+    gsl_vector_free(w->acc);
+    free(w);
+}
+
+static void *lagrange_create(const zp_model *m) {
+    lagrange_work *w = calloc(1, sizeof *w);
+    if (!w) {
+        return NULL;
+    }
+    int nq = m->nlink + 1;
+    w->M = gsl_matrix_alloc(nq, nq);
+    w->R = gsl_vector_alloc(nq);
+    w->acc = gsl_vector_alloc(nq);
+    if (!w->M || !w->R || !w->acc) {
+        lagrange_free(w);
+        return NULL;
+    }
+    return w;
+}
+
+static void lagrange_from_chain(const zp_model *m, const zp_chain *c, const double wk[2],
+                                double *y) {
+    int nq = m->nlink + 1;
+    y[0] = c->q[0];
+    y[nq] = c->v[0];
+    for (int i = 0; i < m->nlink; i++) {
+        y[1 + i] = c->q[2 + i];
+        y[nq + 1 + i] = c->v[2 + i];
+    }
+    y[2 * nq] = wk[0];
+    y[2 * nq + 1] = wk[1];
+}
+
+static void lagrange_to_chain(const zp_model *m, const zp_track *tr, const double *y,
+                              zp_chain *c) {
+    int nq = m->nlink + 1;
+    c->q[0] = y[0];
+    c->q[1] = tr->f;
+    c->v[0] = y[nq];
+    c->v[1] = tr->fp * y[nq];
+    for (int i = 0; i < m->nlink; i++) {
+        c->q[2 + i] = y[1 + i];
+        c->v[2 + i] = y[nq + 1 + i];
+    }
+}
+
+static void lagrange_relative(const zp_model *m, const double *y, double *phi, double *w) {
+    int nq = m->nlink + 1;
+    double th_prev = 0, w_prev = 0;
+    for (int i = 0; i < m->nlink; i++) {
+        phi[i] = y[1 + i] - th_prev;
+        w[i] = y[nq + 1 + i] - w_prev;
+        th_prev = y[1 + i];
+        w_prev = y[nq + 1 + i];
+    }
+}
+
+/* centre-of-mass accelerations, joint reactions and normal force from q'' */
+static void lagrange_loads(const zp_model *m, const zp_drive_now *dn, const double *y,
+                           const double *qdd, zp_loads *ld) {
+    int n = m->nlink, nq = n + 1;
+    double xd = y[nq], fp = dn->tr.fp;
+    double ax = qdd[0], ay = fp * qdd[0] + dn->tr.fpp * xd * xd; /* joint above the link */
+    ld->acc[0][0] = ax;
+    ld->acc[0][1] = ay;
+    double sx = m->m0 * ax, sy = m->m0 * (ay + m->g); /* sum of m (a - g) */
+    for (int i = 0; i < n; i++) {
+        double th = y[1 + i], w = y[nq + 1 + i], s = sin(th), c = cos(th);
+        double tx = c * qdd[1 + i] - s * w * w, ty = s * qdd[1 + i] + c * w * w;
+        ld->acc[i + 1][0] = ax + m->half[i] * tx;
+        ld->acc[i + 1][1] = ay + m->half[i] * ty;
+        ax += m->len[i] * tx;
+        ay += m->len[i] * ty;
+        sx += m->mass[i] * ld->acc[i + 1][0];
+        sy += m->mass[i] * (ld->acc[i + 1][1] + m->g);
+    }
+    /* momentum of the whole system: sum m (a - g) = F + N n, n = (-f', 1)/|.| */
+    ld->normal = ((sx - dn->fx) * -fp + (sy - dn->fy)) / sqrt(1 + fp * fp);
+    /* link i: m_i (a_i - g) = R_i - R_{i+1}, with R the force of the parent on the child */
+    double rx = 0, ry = 0;
+    for (int i = n - 1; i >= 0; i--) {
+        rx += m->mass[i] * ld->acc[i + 1][0];
+        ry += m->mass[i] * (ld->acc[i + 1][1] + m->g);
+        ld->joint[i][0] = rx;
+        ld->joint[i][1] = ry;
+    }
+}
+
+static int lagrange_rhs(const zp_model *m, void *work, const zp_drive_now *dn, const double *y,
+                        double *ydot, zp_loads *loads) {
+    lagrange_work *lw = work;
+    int n = m->nlink, nq = n + 1;
+    double fp = dn->tr.fp, fpp = dn->tr.fpp, xd = y[nq];
+    double s[ZP_MAX_LINKS], c[ZP_MAX_LINKS], wd2[ZP_MAX_LINKS], wj[ZP_MAX_LINKS + 1];
+    for (int j = 0; j < n; j++) {
+        s[j] = sin(y[1 + j]);
+        c[j] = cos(y[1 + j]);
+        wd2[j] = y[nq + 1 + j] * y[nq + 1 + j];
+        wj[j] = y[nq + 1 + j] - (j ? y[nq + j] : 0);
+    }
+    wj[n] = 0; /* no joint below the last link */
+
+    gsl_matrix *M = lw->M;
+    double Rx = -m->mtot * fp * (fpp * xd * xd + m->g) + dn->fx + dn->fy * fp;
+    gsl_matrix_set(M, 0, 0, m->mtot * (1 + fp * fp));
+    double pdamp = 0;
+    for (int j = 0; j < n; j++) {
+        gsl_matrix_set(M, 1 + j, 0, m->B[j] * (c[j] + fp * s[j]));
+        Rx += m->B[j] * (s[j] - fp * c[j]) * wd2[j];
+        double Rj = -m->B[j] * s[j] * (fpp * xd * xd + m->g) - m->damp[j] * wj[j] +
+                    (j + 1 < n ? m->damp[j + 1] * wj[j + 1] : 0);
+        for (int k = 0; k < n; k++) {
+            /* sin(th_k - th_j) and cos(th_j - th_k) from the stored sines and cosines */
+            gsl_matrix_set(M, 1 + j, 1 + k, m->C[j][k] * (c[j] * c[k] + s[j] * s[k]));
+            Rj += m->C[j][k] * (s[k] * c[j] - c[k] * s[j]) * wd2[k];
+        }
+        gsl_vector_set(lw->R, 1 + j, Rj);
+        pdamp += m->damp[j] * wj[j] * wj[j];
+    }
+    gsl_vector_set(lw->R, 0, Rx);
+    if (!isfinite(Rx) || !isfinite(pdamp)) {
+        return 1;
+    }
+    /* only the lower triangle is read by the Cholesky factorization */
+    if (gsl_linalg_cholesky_decomp1(M) || gsl_linalg_cholesky_solve(M, lw->R, lw->acc)) {
+        return 1;
+    }
+    const double *qdd = gsl_vector_const_ptr(lw->acc, 0);
+    for (int i = 0; i < nq; i++) {
+        ydot[i] = y[nq + i];
+        ydot[nq + i] = qdd[i];
+        if (!isfinite(qdd[i])) {
+            return 1;
+        }
+    }
+    ydot[2 * nq] = (dn->fx + dn->fy * fp) * xd;
+    ydot[2 * nq + 1] = pdamp;
+    if (loads) {
+        lagrange_loads(m, dn, y, qdd, loads);
+    }
+    return 0;
+}
+
+const zp_formulation zp_form_lagrange = {
+    .name = "lagrange",
+    .doc = "Euler-Lagrange in minimal coordinates (x, theta_1..N), y = f(x) substituted",
+    .nstate = lagrange_nstate,
+    .create = lagrange_create,
+    .free = lagrange_free,
+    .from_chain = lagrange_from_chain,
+    .to_chain = lagrange_to_chain,
+    .relative = lagrange_relative,
+    .rhs = lagrange_rhs,
+    .constraint_residual = NULL,
+};

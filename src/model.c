@@ -1,0 +1,152 @@
+/* zp_model_build: scene (file units) -> model (SI, radians, derived constants); MODEL.md
+   "Course" continuity and kinks, "Bodies" rods. */
+#include "model.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *const drive_names[ZP_DRIVE_COUNT] = {"horizontal", "tangent"};
+
+const char *zp_model_drive_name(zp_drive_dir d) { return drive_names[d]; }
+
+int zp_model_drive_find(const char *name) {
+    for (int i = 0; i < ZP_DRIVE_COUNT; i++) {
+        if (!strcmp(name, drive_names[i])) {
+            return i;
+        }
+    }
+    return -1;
+}
+
+/* the chain's constant coefficients: M_x,thj = B_j (cos thj + f' sin thj),
+   M_thj,thk = C_jk cos(thj - thk) (derivation in form_lagrange.c) */
+static void derive_chain(zp_model *m) {
+    int n = m->nlink;
+    m->mtot = m->m0;
+    for (int i = 0; i < n; i++) {
+        m->mtot += m->mass[i];
+    }
+    for (int j = 0; j < n; j++) {
+        double below = 0; /* mass of the links hanging below link j */
+        for (int i = j + 1; i < n; i++) {
+            below += m->mass[i];
+        }
+        m->B[j] = m->mass[j] * m->half[j] + m->len[j] * below;
+        m->C[j][j] = m->mass[j] * m->half[j] * m->half[j] + m->inertia[j] +
+                     below * m->len[j] * m->len[j];
+        for (int k = j + 1; k < n; k++) {
+            double below_k = 0;
+            for (int i = k + 1; i < n; i++) {
+                below_k += m->mass[i];
+            }
+            m->C[j][k] = m->C[k][j] = m->len[j] * (m->mass[k] * m->half[k] + m->len[k] * below_k);
+        }
+    }
+}
+
+/* every section's f finite over its range; neighbours meet; slope jumps listed as kinks */
+static int check_course(zp_model *m, const zp_scene *sc, zp_diag *d) {
+    const int nprobe = 64;
+    int ok = 1;
+    for (int k = 0; k < m->nsec; k++) {
+        for (int p = 0; p <= nprobe; p++) {
+            double x = m->xb[k] + (m->xb[k + 1] - m->xb[k]) * p / nprobe;
+            zp_track tr = zp_course_eval(m->course, k, x);
+            if (!isfinite(tr.f) || !isfinite(tr.fp) || !isfinite(tr.fpp)) {
+                zp_diag_add(d, sc->path, sc->sec_line[k], "course", "section",
+                            "f(x) = %s is not finite at x = %g (or its slope or curvature is "
+                            "not); expected a smooth curve over [%g, %g]",
+                            m->expr[k], x, m->xb[k], m->xb[k + 1]);
+                ok = 0;
+                break;
+            }
+        }
+    }
+    if (!ok) {
+        return 0;
+    }
+    m->nkink = 0;
+    for (int k = 0; k + 1 < m->nsec; k++) {
+        double b = m->xb[k + 1];
+        zp_track l = zp_course_eval(m->course, k, b), r = zp_course_eval(m->course, k + 1, b);
+        if (fabs(l.f - r.f) > 1e-9 * (1 + fabs(l.f))) {
+            zp_diag_add(d, sc->path, sc->sec_line[k + 1], "course", "section",
+                        "the course is discontinuous at x = %g: section %d ends at y = %.10g, "
+                        "section %d starts at y = %.10g (jump %.3g m); expected sections that "
+                        "meet",
+                        b, k + 1, l.f, k + 2, r.f, r.f - l.f);
+            ok = 0;
+            continue;
+        }
+        if (fabs(l.fp - r.fp) > 1e-12 * (1 + fabs(l.fp))) {
+            m->kink[m->nkink++] = (zp_kink){k, b, l.f, l.fp, r.fp};
+        }
+    }
+    return ok;
+}
+
+zp_model *zp_model_build(const zp_scene *sc, zp_diag *d) {
+    zp_model *m = calloc(1, sizeof *m);
+    if (!m) {
+        zp_diag_add(d, sc->path, 0, NULL, NULL, "out of memory building the model");
+        return NULL;
+    }
+    m->g = sc->gravity;
+    m->nsec = sc->nsec;
+    m->xb[0] = sc->x_start;
+    const char *exprs[ZP_MAX_SECTIONS];
+    for (int k = 0; k < sc->nsec; k++) {
+        m->xb[k + 1] = sc->x_end[k];
+        memcpy(m->expr[k], sc->expr[k], ZP_EXPR_MAX);
+        exprs[k] = m->expr[k];
+    }
+    char err[256] = "";
+    m->course = zp_course_create(m->nsec, exprs, err, sizeof err);
+    if (!m->course) {
+        /* the message names the 1-based section; its line is that section's key */
+        int k = 0;
+        sscanf(err, "section %d", &k);
+        int line = (k >= 1 && k <= sc->nsec) ? sc->sec_line[k - 1] : 0;
+        zp_diag_add(d, sc->path, line, "course", "section", "%s", err);
+        free(m);
+        return NULL;
+    }
+
+    m->m0 = sc->trolley_mass;
+    m->nlink = sc->nlink;
+    for (int i = 0; i < m->nlink; i++) {
+        m->len[i] = sc->lengths[i];
+        m->half[i] = 0.5 * sc->lengths[i];
+        m->mass[i] = sc->masses[i];
+        m->inertia[i] = sc->masses[i] * sc->lengths[i] * sc->lengths[i] / 12.0;
+        m->damp[i] = sc->ndamping == 1 ? sc->damping[0] : sc->damping[i];
+    }
+    m->phi_max = sc->death_angle * M_PI / 180.0;
+    int dir = zp_model_drive_find(sc->direction);
+    m->drive = dir < 0 ? ZP_DRIVE_HORIZONTAL : (zp_drive_dir)dir;
+    derive_chain(m);
+
+    if (!check_course(m, sc, d)) {
+        zp_model_free(m);
+        return NULL;
+    }
+    return m;
+}
+
+void zp_model_free(zp_model *m) {
+    if (!m) {
+        return;
+    }
+    zp_course_free(m->course);
+    free(m);
+}
+
+int zp_model_section_at(const zp_model *m, double x) {
+    int k = 0;
+    while (k + 1 < m->nsec && x >= m->xb[k + 1]) {
+        k++;
+    }
+    return k;
+}

@@ -1,0 +1,59 @@
+/* The trajectory table: state (angles in degrees), centres of mass, energy terms, loads. */
+#include "out_csv.h"
+
+#include <math.h>
+
+#define DEG (180.0 / M_PI)
+
+static void header(FILE *f, const zp_model *m) {
+    fputs("t,section,x,y,speed", f);
+    for (int i = 1; i <= m->nlink; i++) {
+        fprintf(f, ",theta%d_deg", i);
+    }
+    for (int i = 1; i <= m->nlink; i++) {
+        fprintf(f, ",omega%d_deg_s", i);
+    }
+    for (int i = 1; i <= m->nlink; i++) {
+        fprintf(f, ",phi%d_deg", i);
+    }
+    fputs(",com0_x,com0_y", f);
+    for (int i = 1; i <= m->nlink; i++) {
+        fprintf(f, ",com%d_x,com%d_y", i, i);
+    }
+    fputs(",kinetic,potential,energy,drive_work,damper_work,impulse_loss,normal_force", f);
+    for (int i = 1; i <= m->nlink; i++) {
+        fprintf(f, ",joint%d_fx,joint%d_fy", i, i);
+    }
+    fputc('\n', f);
+}
+
+void zp_out_csv_trajectory(FILE *f, const zp_model *m, const zp_row *rows, int n) {
+    header(f, m);
+    for (int k = 0; k < n; k++) {
+        const zp_row *r = &rows[k];
+        double com[ZP_MAX_LINKS + 1][2], phi[ZP_MAX_LINKS], w[ZP_MAX_LINKS];
+        zp_state_com(m, &r->c, com);
+        zp_state_relative(m, &r->c, phi, w);
+        zp_energy e = zp_state_energy(m, &r->c);
+        fprintf(f, "%.10g,%d,%.10g,%.10g,%.10g", r->t, r->sec + 1, r->c.q[0], r->c.q[1],
+                hypot(r->c.v[0], r->c.v[1]));
+        for (int i = 0; i < m->nlink; i++) {
+            fprintf(f, ",%.10g", r->c.q[2 + i] * DEG);
+        }
+        for (int i = 0; i < m->nlink; i++) {
+            fprintf(f, ",%.10g", r->c.v[2 + i] * DEG);
+        }
+        for (int i = 0; i < m->nlink; i++) {
+            fprintf(f, ",%.10g", phi[i] * DEG);
+        }
+        for (int b = 0; b <= m->nlink; b++) {
+            fprintf(f, ",%.10g,%.10g", com[b][0], com[b][1]);
+        }
+        fprintf(f, ",%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g", e.kinetic, e.potential,
+                e.kinetic + e.potential, r->w_drive, r->w_damp, r->e_impulse, r->loads.normal);
+        for (int i = 0; i < m->nlink; i++) {
+            fprintf(f, ",%.10g,%.10g", r->loads.joint[i][0], r->loads.joint[i][1]);
+        }
+        fputc('\n', f);
+    }
+}

@@ -1,0 +1,112 @@
+/* CLI.md's JSON object of one run; angles in degrees, everything else SI. */
+#include "out_json.h"
+
+#include <math.h>
+
+#define DEG (180.0 / M_PI)
+
+void zp_out_json_number(FILE *f, double v) {
+    if (isfinite(v)) {
+        fprintf(f, "%.17g", v);
+    } else {
+        fputs("null", f);
+    }
+}
+
+void zp_out_json_string(FILE *f, const char *s) {
+    fputc('"', f);
+    for (; *s; s++) {
+        if (*s == '"' || *s == '\\') {
+            fprintf(f, "\\%c", *s);
+        } else if ((unsigned char)*s < 0x20) {
+            fprintf(f, "\\u%04x", (unsigned char)*s);
+        } else {
+            fputc(*s, f);
+        }
+    }
+    fputc('"', f);
+}
+
+static void key_num(FILE *f, const char *key, double v, const char *sep) {
+    fprintf(f, "\"%s\": ", key);
+    zp_out_json_number(f, v);
+    fputs(sep, f);
+}
+
+static void num_list(FILE *f, const double *v, int n, double scale) {
+    fputc('[', f);
+    for (int i = 0; i < n; i++) {
+        zp_out_json_number(f, v[i] * scale);
+        fputs(i + 1 < n ? ", " : "", f);
+    }
+    fputc(']', f);
+}
+
+static void write_samples(FILE *f, const zp_model *m, const zp_row *s, int n) {
+    fputs("  \"samples\": [", f);
+    for (int k = 0; k < n; k++) {
+        fputs(k ? ",\n    {" : "\n    {", f);
+        key_num(f, "t", s[k].t, ", ");
+        key_num(f, "x", s[k].c.q[0], ", ");
+        key_num(f, "y", s[k].c.q[1], ", ");
+        fprintf(f, "\"section\": %d, \"theta\": ", s[k].sec + 1);
+        num_list(f, s[k].c.q + 2, m->nlink, DEG);
+        fputs(", \"omega\": ", f);
+        num_list(f, s[k].c.v + 2, m->nlink, DEG);
+        fputs(", ", f);
+        key_num(f, "normal_force", s[k].loads.normal, "}");
+    }
+    fputs(n ? "\n  ],\n" : "],\n", f);
+}
+
+void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp_row *samples,
+                        int nsamples, const zp_run_meta *meta) {
+    fputs("{\n  \"scene\": ", f);
+    zp_out_json_string(f, meta->scene);
+    fprintf(f, ",\n  \"method\": \"%s\",\n  \"formulation\": \"%s\",\n  ", meta->method,
+            meta->formulation);
+    key_num(f, "rtol", meta->rtol, ", ");
+    key_num(f, "atol", meta->atol, ",\n");
+    fputs("  \"forces\": ", f);
+    num_list(f, meta->force, m->nsec, 1.0);
+    fprintf(f, ",\n  \"outcome\": \"%s\",\n  ", zp_sim_outcome_name(r->outcome));
+    key_num(f, "time", r->time, ",\n  ");
+    key_num(f, "x", r->x, ",\n  ");
+    key_num(f, "speed", r->v, ",\n");
+    if (r->died_link) {
+        fprintf(f, "  \"died_link\": %d,\n", r->died_link);
+    } else {
+        fputs("  \"died_link\": null,\n", f);
+    }
+    if (r->outcome == ZP_OUTCOME_STALLED) {
+        fprintf(f, "  \"stall_reason\": \"%s\",\n", zp_sim_stall_name(r->stall));
+    } else {
+        fputs("  \"stall_reason\": null,\n", f);
+    }
+    fputs("  \"kinks\": [", f);
+    int nk = r->ncross < ZP_MAX_CROSSINGS ? r->ncross : ZP_MAX_CROSSINGS;
+    for (int k = 0; k < nk; k++) {
+        const zp_crossing *c = &r->cross[k];
+        fputs(k ? ",\n    {" : "\n    {", f);
+        key_num(f, "t", c->t, ", ");
+        key_num(f, "x", c->x, ", ");
+        fprintf(f, "\"from_section\": %d, \"to_section\": %d, ", c->from + 1, c->to + 1);
+        key_num(f, "impulse", c->impulse, ", ");
+        key_num(f, "energy_lost", c->energy_lost, "}");
+    }
+    fputs(nk ? "\n  ],\n" : "],\n", f);
+    fprintf(f, "  \"kink_crossings\": %d,\n  \"max_rel_angle\": ", r->ncross);
+    num_list(f, r->max_rel_angle, m->nlink, DEG);
+    fputs(",\n  \"energy\": {", f);
+    key_num(f, "initial", r->e_initial, ", ");
+    key_num(f, "final", r->e_final, ", ");
+    key_num(f, "drive_work", r->w_drive, ", ");
+    key_num(f, "damper_work", r->w_damp, ", ");
+    key_num(f, "impulse_loss", r->e_impulse, ", ");
+    key_num(f, "residual", r->e_final - r->e_initial - r->w_drive + r->w_damp + r->e_impulse,
+            "},\n  ");
+    key_num(f, "constraint_residual", r->constraint_residual, ",\n");
+    write_samples(f, m, samples, nsamples);
+    fprintf(f, "  \"stats\": {\"steps\": %ld, \"rhs_evals\": %ld, ", r->steps, r->rhs_evals);
+    key_num(f, "wall_s", r->wall_s, "}\n}\n");
+}

@@ -1,0 +1,26 @@
+/* The JSON of one simulation (CLI.md "simulate --json"): writer only, no decisions. */
+#ifndef ZP_OUT_JSON_H
+#define ZP_OUT_JSON_H
+
+#include <stdio.h>
+
+#include "sim.h"
+
+/* What the run was, echoed so a JSON file stands on its own. */
+typedef struct zp_run_meta {
+    const char *scene;       /* scene name */
+    const char *method;      /* integrator name */
+    const char *formulation; /* formulation name */
+    double rtol, atol;
+    const double *force; /* N, per section */
+} zp_run_meta;
+
+/* A number that round-trips, or null if it is not finite. */
+void zp_out_json_number(FILE *f, double v);
+/* A string with JSON escapes. */
+void zp_out_json_string(FILE *f, const char *s);
+/* The whole object, with samples (may be 0). */
+void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp_row *samples,
+                        int nsamples, const zp_run_meta *meta);
+
+#endif

@@ -1,0 +1,413 @@
+/* One run of MODEL.md: advance to the next event or output time, classify the event, apply the
+   kink impulse and restart the integrator; fills zp_result. Formulation- and method-agnostic. */
+#include "sim.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "events.h"
+#include "impulse.h"
+
+/* two crossings of one kink closer than this (s) mean the trolley has come to rest in it */
+#define ZP_ZENO_DT 1e-6
+/* an output time this close (s) to an event shows the state after the event */
+#define ZP_EVENT_TIME_EPS 1e-9
+
+struct zp_sim {
+    const zp_model *m; /* borrowed */
+    zp_sim_opts o;
+    const zp_formulation *form;
+    void *fwork; /* owned */
+    const zp_method *meth;
+    void *mwork;       /* owned */
+    zp_course *course; /* owned: this workspace's own evaluators */
+    int n, nroot;
+    double *y, *ydot; /* owned, n */
+    int *roots;       /* owned, nroot */
+
+    /* the run under way */
+    const double *force; /* borrowed, per section */
+    int sec;
+    double e_impulse; /* J, cumulative */
+    zp_row *rows;     /* owned, cap_rows */
+    int nrows, cap_rows;
+    zp_row *samples; /* owned, cap_samples */
+    int nsamples, cap_samples;
+};
+
+/* course and drive at the trolley's x on the current section */
+static zp_drive_now drive_now(const zp_sim *s, double x) {
+    zp_drive_now dn = {zp_course_eval(s->course, s->sec, x), 0, 0};
+    double F = s->force[s->sec];
+    if (s->m->drive == ZP_DRIVE_TANGENT) {
+        double norm = sqrt(1 + dn.tr.fp * dn.tr.fp);
+        dn.fx = F / norm;
+        dn.fy = F * dn.tr.fp / norm;
+    } else {
+        dn.fx = F;
+    }
+    return dn;
+}
+
+/* the equations of motion as the integrator sees them */
+int zp_sim_rhs(double t, const double *y, double *ydot, void *user);
+int zp_sim_rhs(double t, const double *y, double *ydot, void *user) {
+    zp_sim *s = user;
+    zp_drive_now dn = drive_now(s, y[0]);
+    (void)t;
+    return s->form->rhs(s->m, s->fwork, &dn, y, ydot, NULL);
+}
+
+static int sim_root(double t, const double *y, double *g, void *user) {
+    zp_sim *s = user;
+    double phi[ZP_MAX_LINKS], w[ZP_MAX_LINKS];
+    (void)t;
+    s->form->relative(s->m, y, phi, w);
+    zp_events_eval(s->m, s->sec, y[0], phi, w, g);
+    return 0;
+}
+
+void zp_sim_free(zp_sim *s) {
+    if (!s) {
+        return;
+    }
+    if (s->form) {
+        s->form->free(s->fwork);
+    }
+    if (s->meth) {
+        s->meth->free(s->mwork);
+    }
+    zp_course_free(s->course);
+    free(s->y);
+    free(s->ydot);
+    free(s->roots);
+    free(s->rows);
+    free(s->samples);
+    free(s);
+}
+
+zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
+    zp_sim *s = calloc(1, sizeof *s);
+    if (!s) {
+        return NULL;
+    }
+    s->m = m;
+    s->o = *o;
+    s->form = zp_formulation_get(o->formulation);
+    s->meth = zp_method_get(o->method);
+    if (!s->form || !s->meth) {
+        zp_sim_free(s);
+        return NULL;
+    }
+    const char *exprs[ZP_MAX_SECTIONS];
+    for (int k = 0; k < m->nsec; k++) {
+        exprs[k] = m->expr[k];
+    }
+    char err[256];
+    s->course = zp_course_create(m->nsec, exprs, err, sizeof err);
+    s->n = s->form->nstate(m);
+    s->nroot = zp_events_count(m);
+    s->fwork = s->form->create(m);
+    s->y = calloc(s->n, sizeof *s->y);
+    s->ydot = calloc(s->n, sizeof *s->ydot);
+    s->roots = calloc(s->nroot, sizeof *s->roots);
+    int dir[2 + 2 * ZP_MAX_LINKS];
+    zp_events_directions(m, dir);
+    zp_method_opts mo = {o->rtol, o->atol, o->max_steps};
+    s->mwork = s->meth->create(s->n, s->nroot, dir, zp_sim_rhs, sim_root, s, &mo);
+    if (o->output_dt > 0) {
+        s->cap_rows = (int)fmin(o->t_max / o->output_dt + 2, 1e7);
+        s->rows = malloc(sizeof *s->rows * s->cap_rows);
+    }
+    if (!s->course || !s->fwork || !s->y || !s->ydot || !s->roots || !s->mwork ||
+        (o->output_dt > 0 && !s->rows)) {
+        zp_sim_free(s);
+        return NULL;
+    }
+    return s;
+}
+
+static zp_chain chain_of(const zp_sim *s, const double *y) {
+    zp_chain c;
+    zp_track tr = zp_course_eval(s->course, s->sec, y[0]);
+    s->form->to_chain(s->m, &tr, y, &c);
+    return c;
+}
+
+static zp_row row_of(zp_sim *s, double t, const double *y) {
+    zp_row r = {.t = t, .sec = s->sec, .c = chain_of(s, y)};
+    r.w_drive = y[s->n - 2];
+    r.w_damp = y[s->n - 1];
+    r.e_impulse = s->e_impulse;
+    zp_drive_now dn = drive_now(s, y[0]);
+    s->form->rhs(s->m, s->fwork, &dn, y, s->ydot, &r.loads);
+    return r;
+}
+
+/* which way the trolley leaves x: its velocity, or from rest its acceleration */
+static int departure(zp_sim *s, const double *y) {
+    zp_row r = row_of(s, 0, y);
+    double v = r.c.v[0] != 0 ? r.c.v[0] : r.loads.acc[0][0];
+    return (v > 0) - (v < 0);
+}
+
+/* rows of the output grid and samples due by time t (within eps), from the state y */
+static void emit_outputs(zp_sim *s, const zp_input *in, double t, const double *y, double eps,
+                         double *next_row, int *next_sample) {
+    while (s->rows && *next_row <= t + eps && s->nrows < s->cap_rows) {
+        s->rows[s->nrows++] = row_of(s, *next_row, y);
+        *next_row = s->nrows * s->o.output_dt;
+    }
+    while (*next_sample < in->nsample && in->sample_t[*next_sample] <= t + eps) {
+        if (s->nsamples == s->cap_samples) {
+            int cap = s->cap_samples ? 2 * s->cap_samples : 16;
+            zp_row *grown = realloc(s->samples, sizeof *grown * cap);
+            if (!grown) {
+                return;
+            }
+            s->samples = grown;
+            s->cap_samples = cap;
+        }
+        s->samples[s->nsamples++] = row_of(s, in->sample_t[*next_sample], y);
+        ++*next_sample;
+    }
+}
+
+static void track_extremes(zp_sim *s, const double *y, zp_result *r) {
+    double phi[ZP_MAX_LINKS], w[ZP_MAX_LINKS];
+    s->form->relative(s->m, y, phi, w);
+    for (int i = 0; i < s->m->nlink; i++) {
+        r->max_rel_angle[i] = fmax(r->max_rel_angle[i], fabs(phi[i]));
+    }
+    zp_chain c = chain_of(s, y);
+    r->max_speed = fmax(r->max_speed, hypot(c.v[0], c.v[1]));
+    if (s->form->constraint_residual) {
+        r->constraint_residual = fmax(r->constraint_residual,
+                                      s->form->constraint_residual(s->m, s->course, s->sec, y));
+    }
+}
+
+static int first_non_finite(const double *y, int n) {
+    for (int i = 0; i < n; i++) {
+        if (!isfinite(y[i])) {
+            return i;
+        }
+    }
+    return -1;
+}
+
+/* crosses the boundary into section `to` at time t: snap onto the boundary, apply the
+   impulse, record it; returns 0, or 1 if the trolley is trapped at the kink */
+static int cross_kink(zp_sim *s, double t, zp_result *r, int to) {
+    const zp_model *m = s->m;
+    double b = m->xb[to > s->sec ? to : s->sec];
+    zp_chain c = chain_of(s, s->y);
+    c.q[0] = b;
+    c.q[1] = zp_course_eval(s->course, to, b).f;
+    zp_impulse imp;
+    if (zp_impulse_apply(m, zp_course_eval(s->course, to, b).fp, &c, &imp)) {
+        return -1;
+    }
+    double wk[2] = {s->y[s->n - 2], s->y[s->n - 1]};
+    s->form->from_chain(m, &c, wk, s->y);
+    s->e_impulse += imp.energy_lost;
+    int from = s->sec;
+    s->sec = to;
+    /* a run of crossings ever closer together at one kink (Zeno) is a trolley at rest in it */
+    int zeno = 0;
+    for (int i = r->ncross - 1; i >= 0 && i >= r->ncross - 2; i--) {
+        const zp_crossing *p = &r->cross[i];
+        if (fmin(p->from, p->to) == fmin(from, to) && t - p->t < ZP_ZENO_DT) {
+            zeno = 1;
+        }
+    }
+    if (r->ncross < ZP_MAX_CROSSINGS) {
+        r->cross[r->ncross] = (zp_crossing){t, b, from, to, imp.lambda, imp.energy_lost};
+    }
+    r->ncross++;
+    int dir = to > from ? 1 : -1;
+    return zeno || r->ncross >= ZP_MAX_CROSSINGS || departure(s, s->y) * dir < 0;
+}
+
+static void finish_result(zp_sim *s, zp_result *r, double t, zp_outcome o, zp_stall st) {
+    r->outcome = o;
+    r->stall = st;
+    r->time = t;
+    zp_chain c = chain_of(s, s->y);
+    r->x = c.q[0];
+    r->v = hypot(c.v[0], c.v[1]);
+    zp_energy e = zp_state_energy(s->m, &c);
+    r->e_final = e.kinetic + e.potential;
+    r->w_drive = s->y[s->n - 2];
+    r->w_damp = s->y[s->n - 1];
+    r->e_impulse = s->e_impulse;
+    /* the last row shows the end state */
+    if (s->rows && s->nrows < s->cap_rows && (s->nrows == 0 || s->rows[s->nrows - 1].t < t)) {
+        s->rows[s->nrows++] = row_of(s, t, s->y);
+    }
+}
+
+static zp_status fail(zp_sim *s, zp_result *r, double t, const char *why) {
+    snprintf(r->message, sizeof r->message, "numerical failure at t = %.9g s, x = %.9g m: %s", t,
+             s->y[0], why);
+    return ZP_ERR_NUMERIC;
+}
+
+static void add_stats(zp_sim *s, zp_result *r) {
+    long steps = 0, evals = 0;
+    s->meth->stats(s->mwork, &steps, &evals);
+    r->steps += steps;
+    r->rhs_evals += evals;
+}
+
+static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result *r) {
+    zp_chain c;
+    zp_state_start(m, &c);
+    const double zero_work[2] = {0, 0};
+    s->form->from_chain(m, &c, zero_work, s->y);
+    zp_energy e0 = zp_state_energy(m, &c);
+    r->e_initial = e0.kinetic + e0.potential;
+
+    double t = 0, next_row = 0;
+    int next_sample = 0;
+    emit_outputs(s, in, t, s->y, 0, &next_row, &next_sample);
+    /* a root finder ignores a root at t0: a start that rolls back at once is caught here */
+    if (departure(s, s->y) < 0) {
+        finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_ROLLED_BACK);
+        return ZP_OK;
+    }
+    if (s->meth->reset(s->mwork, t, s->y, s->o.t_max)) {
+        return fail(s, r, t, "the integrator could not start");
+    }
+    for (;;) {
+        double tout = s->o.t_max;
+        if (s->rows) {
+            tout = fmin(tout, next_row);
+        }
+        if (next_sample < in->nsample) {
+            tout = fmin(tout, in->sample_t[next_sample]);
+        }
+        char err[256] = "";
+        zp_adv adv = s->meth->advance(s->mwork, tout, &t, s->y, s->roots, err, sizeof err);
+        int bad = first_non_finite(s->y, s->n);
+        if (adv == ZP_ADV_FAIL || bad >= 0) {
+            add_stats(s, r);
+            if (bad >= 0) {
+                snprintf(err, sizeof err, "state component %d is not finite", bad);
+            }
+            return fail(s, r, t, err);
+        }
+        track_extremes(s, s->y, r);
+        long steps_now = 0, evals_now = 0;
+        s->meth->stats(s->mwork, &steps_now, &evals_now);
+        if (r->steps + steps_now > s->o.max_steps) {
+            add_stats(s, r);
+            return fail(s, r, t, "step budget of the run exhausted");
+        }
+        if (adv == ZP_ADV_TOUT) {
+            emit_outputs(s, in, t, s->y, 0, &next_row, &next_sample);
+            /* a boundary passed without a root (one masked at a restart) is crossed here */
+            if (s->y[0] < m->xb[s->sec] || s->y[0] > m->xb[s->sec + 1]) {
+                for (int i = 0; i < s->nroot; i++) {
+                    s->roots[i] = 0;
+                }
+                s->roots[s->y[0] < m->xb[s->sec] ? ZP_ROOT_LEFT : ZP_ROOT_RIGHT] = 1;
+            } else if (t >= s->o.t_max) {
+                add_stats(s, r);
+                finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_T_MAX);
+                return ZP_OK;
+            } else {
+                continue;
+            }
+        }
+        int link = 0, to = 0;
+        zp_event ev = zp_events_classify(m, s->sec, s->roots, &link, &to);
+        switch (ev) {
+        case ZP_EVENT_NONE:
+            continue;
+        case ZP_EVENT_DEATH:
+            add_stats(s, r);
+            r->died_link = link + 1;
+            finish_result(s, r, t, ZP_OUTCOME_DIED, ZP_STALL_NONE);
+            return ZP_OK;
+        case ZP_EVENT_FINISH:
+            add_stats(s, r);
+            finish_result(s, r, t, ZP_OUTCOME_FINISHED, ZP_STALL_NONE);
+            return ZP_OK;
+        case ZP_EVENT_ROLLBACK:
+            add_stats(s, r);
+            finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_ROLLED_BACK);
+            return ZP_OK;
+        case ZP_EVENT_KINK:
+        case ZP_EVENT_COUNT:
+            break;
+        }
+        add_stats(s, r);
+        int trapped = cross_kink(s, t, r, to);
+        if (trapped < 0) {
+            return fail(s, r, t, "the mass matrix is not positive definite at the kink");
+        }
+        emit_outputs(s, in, t, s->y, ZP_EVENT_TIME_EPS, &next_row, &next_sample);
+        if (trapped) {
+            finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_TRAPPED_AT_KINK);
+            return ZP_OK;
+        }
+        if (s->meth->reset(s->mwork, t, s->y, s->o.t_max)) {
+            return fail(s, r, t, "the integrator could not restart after the kink");
+        }
+    }
+}
+
+zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result *r) {
+    struct timespec t0, t1;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    memset(r, 0, sizeof *r);
+    s->force = in->force;
+    s->sec = 0;
+    s->e_impulse = 0;
+    s->nrows = s->nsamples = 0;
+    zp_status st = run(m, s, in, r);
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    r->wall_s = (t1.tv_sec - t0.tv_sec) + 1e-9 * (t1.tv_nsec - t0.tv_nsec);
+    return st;
+}
+
+const zp_row *zp_sim_rows(const zp_sim *s, int *n) {
+    *n = s->nrows;
+    return s->rows;
+}
+
+const zp_row *zp_sim_samples(const zp_sim *s, int *n) {
+    *n = s->nsamples;
+    return s->samples;
+}
+
+static const char *const outcome_names[ZP_OUTCOME_COUNT] = {"finished", "died", "stalled"};
+static const char *const stall_names[ZP_STALL_COUNT] = {"none", "t_max", "rolled_back",
+                                                        "trapped_at_kink"};
+
+const char *zp_sim_outcome_name(zp_outcome o) { return outcome_names[o]; }
+const char *zp_sim_stall_name(zp_stall s) { return stall_names[s]; }
+
+zp_status zp_sim_opts_from_scene(const zp_scene *sc, zp_sim_opts *o, zp_diag *d) {
+    *o = (zp_sim_opts){.rtol = sc->rtol,
+                       .atol = sc->atol,
+                       .t_max = sc->t_max,
+                       .output_dt = sc->output_dt,
+                       .max_steps = 2000000};
+    o->method = zp_method_find(sc->method);
+    o->formulation = zp_formulation_find(sc->formulation);
+    if (o->method < 0) {
+        zp_diag_add(d, sc->path, sc->line_method, "solver", "method",
+                    "unknown method '%s'; expected one of those listed by zipopt --help",
+                    sc->method);
+    }
+    if (o->formulation < 0) {
+        zp_diag_add(d, sc->path, sc->line_formulation, "solver", "formulation",
+                    "unknown formulation '%s'; expected one of those listed by zipopt --help",
+                    sc->formulation);
+    }
+    return o->method < 0 || o->formulation < 0 ? ZP_ERR_INPUT : ZP_OK;
+}
