@@ -174,7 +174,7 @@ int zp_cmd_simulate(int argc, char **argv) {
         goto done;
     }
     static zp_result r; /* large: kept off the stack */
-    zp_input in = {sc.forces, samples, nsample};
+    zp_input in = {.force = sc.forces, .sample_t = samples, .nsample = nsample};
     if (zp_sim_run(m, s, &in, &r)) {
         fprintf(stderr, "zipopt simulate: %s; nothing was written\n", r.message);
         goto done;

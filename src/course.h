@@ -18,6 +18,9 @@ typedef struct zp_track {
    evaluators: libmatheval is not thread-safe, so each thread's workspace creates its own. */
 zp_course *zp_course_create(int nsec, const char *const *expr, char *err, size_t errlen);
 void zp_course_free(zp_course *c);
+/* Checks one f(x) text exactly as zp_course_create does, for messages that name the scene
+   line: 0 when it compiles, else -1 with what is wrong and what is expected in err. */
+int zp_course_check(const char *expr, char *err, size_t errlen);
 /* f, f', f'' of section sec (0-based) at x. */
 zp_track zp_course_eval(const zp_course *c, int sec, double x);
 /* The derivative expressions as text (sec 0-based, order 1 or 2), for `check`. */

@@ -3,10 +3,11 @@
 
 #include "formulation.h"
 
-extern const zp_formulation zp_form_lagrange;
+extern const zp_formulation zp_form_lagrange, zp_form_newton;
 
 static const zp_formulation *const registry[ZP_FORM_COUNT] = {
     [ZP_FORM_LAGRANGE] = &zp_form_lagrange,
+    [ZP_FORM_NEWTON] = &zp_form_newton,
 };
 
 const zp_formulation *zp_formulation_get(int id) {

@@ -43,7 +43,7 @@ typedef struct zp_formulation {
                                   const double *y);
 } zp_formulation;
 
-typedef enum { ZP_FORM_LAGRANGE, ZP_FORM_COUNT } zp_form_id;
+typedef enum { ZP_FORM_LAGRANGE, ZP_FORM_NEWTON, ZP_FORM_COUNT } zp_form_id;
 
 const zp_formulation *zp_formulation_get(int id);
 int zp_formulation_find(const char *name); /* -1 if unknown */

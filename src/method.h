@@ -13,7 +13,13 @@ typedef struct zp_method_opts {
     long max_steps; /* per advance call; the simulator also bounds the run */
 } zp_method_opts;
 
-typedef enum { ZP_ADV_TOUT, ZP_ADV_ROOT, ZP_ADV_FAIL } zp_adv;
+/* What one advance did. */
+typedef enum {
+    ZP_ADV_STEP, /* took a step; t is its end */
+    ZP_ADV_ROOT, /* a root of g lies in the step; t is the root */
+    ZP_ADV_STOP, /* reached t_stop */
+    ZP_ADV_FAIL
+} zp_adv;
 
 typedef struct zp_method {
     const char *name; /* as typed in [solver] method */
@@ -23,10 +29,12 @@ typedef struct zp_method {
                     void *user, const zp_method_opts *o);
     /* Restart at (t0, y0), integrating no further than t_stop. 0 on success. */
     int (*reset)(void *w, double t0, const double *y0, double t_stop);
-    /* Advances towards tout. On ZP_ADV_ROOT roots[i] = +1/-1 for each g_i that crossed
-       (its direction), 0 otherwise. On ZP_ADV_FAIL err holds the reason. */
-    zp_adv (*advance)(void *w, double tout, double *t, double *y, int *roots, char *err,
-                      size_t errlen);
+    /* One internal step (the step sequence never depends on what is output). On ZP_ADV_ROOT
+       roots[i] = +1/-1 for each g_i that crossed (its direction), 0 otherwise. On ZP_ADV_FAIL
+       err holds the reason. */
+    zp_adv (*advance)(void *w, double *t, double *y, int *roots, char *err, size_t errlen);
+    /* Dense output: y at a time t inside the last step. 0 on success. */
+    int (*interpolate)(void *w, double t, double *y);
     /* Steps and rhs evaluations since the last reset. */
     void (*stats)(void *w, long *steps, long *rhs_evals);
     void (*free)(void *w);

@@ -20,6 +20,7 @@ typedef struct cvode_work {
     SUNLinearSolver ls;        /* BDF only */
     SUNNonlinearSolver nls;    /* Adams only */
     int n, nroot;
+    double t_stop; /* s, where the run ends at the latest */
     zp_rhs_fn rhs;
     zp_root_fn root;
     void *user;                /* borrowed, handed to rhs and root */
@@ -115,26 +116,40 @@ static int cvode_reset(void *work, double t0, const double *y0, double t_stop) {
     cvode_work *w = work;
     memcpy(N_VGetArrayPointer(w->y), y0, sizeof(double) * w->n);
     w->last_error[0] = '\0';
+    w->t_stop = t_stop;
     return CVodeReInit(w->mem, t0, w->y) || CVodeSetStopTime(w->mem, t_stop);
 }
 
-static zp_adv cvode_advance(void *work, double tout, double *t, double *y, int *roots, char *err,
+static zp_adv cvode_advance(void *work, double *t, double *y, int *roots, char *err,
                             size_t errlen) {
     cvode_work *w = work;
     sunrealtype tret = 0;
-    int flag = CVode(w->mem, tout, w->y, &tret, CV_NORMAL);
+    /* tout only bounds the first step's size guess: always the far end, so that the steps
+       do not depend on output requests */
+    int flag = CVode(w->mem, w->t_stop, w->y, &tret, CV_ONE_STEP);
     *t = tret;
     memcpy(y, N_VGetArrayPointer(w->y), sizeof(double) * w->n);
-    if (flag == CV_ROOT_RETURN) {
+    switch (flag) {
+    case CV_ROOT_RETURN:
         CVodeGetRootInfo(w->mem, roots);
         return ZP_ADV_ROOT;
+    case CV_TSTOP_RETURN:
+        return ZP_ADV_STOP;
+    case CV_SUCCESS:
+        return ZP_ADV_STEP;
+    default:
+        snprintf(err, errlen, "CVode failed: %s",
+                 w->last_error[0] ? w->last_error : CVodeGetReturnFlagName(flag));
+        return ZP_ADV_FAIL;
     }
-    if (flag == CV_SUCCESS || flag == CV_TSTOP_RETURN) {
-        return ZP_ADV_TOUT;
-    }
-    snprintf(err, errlen, "CVode failed: %s", w->last_error[0] ? w->last_error
-                                                                 : CVodeGetReturnFlagName(flag));
-    return ZP_ADV_FAIL;
+}
+
+static int cvode_interpolate(void *work, double t, double *y) {
+    cvode_work *w = work;
+    N_Vector v = N_VMake_Serial(w->n, y, w->ctx);
+    int bad = !v || CVodeGetDky(w->mem, t, 0, v);
+    N_VDestroy(v);
+    return bad;
 }
 
 static void cvode_stats(void *work, long *steps, long *rhs_evals) {
@@ -155,6 +170,7 @@ const zp_method zp_method_cvode_adams = {
     .create = adams_create,
     .reset = cvode_reset,
     .advance = cvode_advance,
+    .interpolate = cvode_interpolate,
     .stats = cvode_stats,
     .free = cvode_free,
 };
@@ -165,6 +181,7 @@ const zp_method zp_method_cvode_bdf = {
     .create = bdf_create,
     .reset = cvode_reset,
     .advance = cvode_advance,
+    .interpolate = cvode_interpolate,
     .stats = cvode_stats,
     .free = cvode_free,
 };

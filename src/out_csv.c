@@ -24,6 +24,9 @@ static void header(FILE *f, const zp_model *m) {
     for (int i = 1; i <= m->nlink; i++) {
         fprintf(f, ",joint%d_fx,joint%d_fy", i, i);
     }
+    for (int i = 1; i <= m->nlink; i++) {
+        fprintf(f, ",acc%d_g", i);
+    }
     fputc('\n', f);
 }
 
@@ -53,6 +56,9 @@ void zp_out_csv_trajectory(FILE *f, const zp_model *m, const zp_row *rows, int n
                 e.kinetic + e.potential, r->w_drive, r->w_damp, r->e_impulse, r->loads.normal);
         for (int i = 0; i < m->nlink; i++) {
             fprintf(f, ",%.10g,%.10g", r->loads.joint[i][0], r->loads.joint[i][1]);
+        }
+        for (int i = 1; i <= m->nlink; i++) {
+            fprintf(f, ",%.10g", hypot(r->loads.acc[i][0], r->loads.acc[i][1] + m->g) / m->g);
         }
         fputc('\n', f);
     }

@@ -106,6 +106,14 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
     key_num(f, "residual", r->e_final - r->e_initial - r->w_drive + r->w_damp + r->e_impulse,
             "},\n  ");
     key_num(f, "constraint_residual", r->constraint_residual, ",\n");
+    fputs("  \"loads\": {\"joint_peak\": ", f);
+    num_list(f, r->peaks.joint, m->nlink, 1.0);
+    fputs(", ", f);
+    key_num(f, "normal_min", r->peaks.normal_min, ", ");
+    key_num(f, "normal_max", r->peaks.normal_max, ", ");
+    fputs("\"acc_peak_g\": ", f);
+    num_list(f, r->peaks.acc_g, m->nlink, 1.0);
+    fputs("},\n", f);
     write_samples(f, m, samples, nsamples);
     fprintf(f, "  \"stats\": {\"steps\": %ld, \"rhs_evals\": %ld, ", r->steps, r->rhs_evals);
     key_num(f, "wall_s", r->wall_s, "}\n}\n");

@@ -24,7 +24,7 @@ struct zp_sim {
     void *mwork;       /* owned */
     zp_course *course; /* owned: this workspace's own evaluators */
     int n, nroot;
-    double *y, *ydot; /* owned, n */
+    double *y, *ydot, *yout; /* owned, n: state, rates scratch, dense output scratch */
     int *roots;       /* owned, nroot */
 
     /* the run under way */
@@ -35,6 +35,7 @@ struct zp_sim {
     int nrows, cap_rows;
     zp_row *samples; /* owned, cap_samples */
     int nsamples, cap_samples;
+    zp_load_peaks peaks; /* so far; every evaluation of the loads updates them */
 };
 
 /* course and drive at the trolley's x on the current section */
@@ -82,6 +83,7 @@ void zp_sim_free(zp_sim *s) {
     zp_course_free(s->course);
     free(s->y);
     free(s->ydot);
+    free(s->yout);
     free(s->roots);
     free(s->rows);
     free(s->samples);
@@ -112,6 +114,7 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
     s->fwork = s->form->create(m);
     s->y = calloc(s->n, sizeof *s->y);
     s->ydot = calloc(s->n, sizeof *s->ydot);
+    s->yout = calloc(s->n, sizeof *s->yout);
     s->roots = calloc(s->nroot, sizeof *s->roots);
     int dir[2 + 2 * ZP_MAX_LINKS];
     zp_events_directions(m, dir);
@@ -121,7 +124,7 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
         s->cap_rows = (int)fmin(o->t_max / o->output_dt + 2, 1e7);
         s->rows = malloc(sizeof *s->rows * s->cap_rows);
     }
-    if (!s->course || !s->fwork || !s->y || !s->ydot || !s->roots || !s->mwork ||
+    if (!s->course || !s->fwork || !s->y || !s->ydot || !s->yout || !s->roots || !s->mwork ||
         (o->output_dt > 0 && !s->rows)) {
         zp_sim_free(s);
         return NULL;
@@ -143,6 +146,15 @@ static zp_row row_of(zp_sim *s, double t, const double *y) {
     r.e_impulse = s->e_impulse;
     zp_drive_now dn = drive_now(s, y[0]);
     s->form->rhs(s->m, s->fwork, &dn, y, s->ydot, &r.loads);
+    zp_load_peaks *p = &s->peaks;
+    p->normal_min = fmin(p->normal_min, r.loads.normal);
+    p->normal_max = fmax(p->normal_max, r.loads.normal);
+    for (int i = 0; i < s->m->nlink; i++) {
+        p->joint[i] = fmax(p->joint[i], hypot(r.loads.joint[i][0], r.loads.joint[i][1]));
+        /* felt (proper) acceleration |a - g|: 1 g hanging at rest */
+        p->acc_g[i] = fmax(p->acc_g[i],
+                           hypot(r.loads.acc[i + 1][0], r.loads.acc[i + 1][1] + s->m->g) / s->m->g);
+    }
     return r;
 }
 
@@ -153,25 +165,47 @@ static int departure(zp_sim *s, const double *y) {
     return (v > 0) - (v < 0);
 }
 
-/* rows of the output grid and samples due by time t (within eps), from the state y */
-static void emit_outputs(zp_sim *s, const zp_input *in, double t, const double *y, double eps,
-                         double *next_row, int *next_sample) {
-    while (s->rows && *next_row <= t + eps && s->nrows < s->cap_rows) {
-        s->rows[s->nrows++] = row_of(s, *next_row, y);
-        *next_row = s->nrows * s->o.output_dt;
+/* the next output time (row or sample), or INFINITY */
+static double next_output(const zp_sim *s, const zp_input *in, double next_row, int next_sample) {
+    double t = s->rows && s->nrows < s->cap_rows ? next_row : INFINITY;
+    return next_sample < in->nsample ? fmin(t, in->sample_t[next_sample]) : t;
+}
+
+static int push_sample(zp_sim *s, zp_row r) {
+    if (s->nsamples == s->cap_samples) {
+        int cap = s->cap_samples ? 2 * s->cap_samples : 16;
+        zp_row *grown = realloc(s->samples, sizeof *grown * cap);
+        if (!grown) {
+            return -1;
+        }
+        s->samples = grown;
+        s->cap_samples = cap;
     }
-    while (*next_sample < in->nsample && in->sample_t[*next_sample] <= t + eps) {
-        if (s->nsamples == s->cap_samples) {
-            int cap = s->cap_samples ? 2 * s->cap_samples : 16;
-            zp_row *grown = realloc(s->samples, sizeof *grown * cap);
-            if (!grown) {
+    s->samples[s->nsamples++] = r;
+    return 0;
+}
+
+/* rows of the output grid and samples due by time t_upto. dense: take each from the
+   integrator's dense output at its own time; else all show the current state s->y (at an
+   event, within ZP_EVENT_TIME_EPS of it) */
+static void emit_outputs(zp_sim *s, const zp_input *in, double t_upto, int dense,
+                         double *next_row, int *next_sample) {
+    for (double to; (to = next_output(s, in, *next_row, *next_sample)) <= t_upto;) {
+        const double *y = s->y;
+        if (dense && s->meth->interpolate(s->mwork, to, s->yout) == 0) {
+            y = s->yout;
+        }
+        zp_row r = row_of(s, to, y);
+        if (s->rows && s->nrows < s->cap_rows && *next_row == to) {
+            s->rows[s->nrows++] = r;
+            *next_row = s->nrows * s->o.output_dt;
+        }
+        if (*next_sample < in->nsample && in->sample_t[*next_sample] == to) {
+            if (push_sample(s, r)) {
                 return;
             }
-            s->samples = grown;
-            s->cap_samples = cap;
+            ++*next_sample;
         }
-        s->samples[s->nsamples++] = row_of(s, in->sample_t[*next_sample], y);
-        ++*next_sample;
     }
 }
 
@@ -181,7 +215,8 @@ static void track_extremes(zp_sim *s, const double *y, zp_result *r) {
     for (int i = 0; i < s->m->nlink; i++) {
         r->max_rel_angle[i] = fmax(r->max_rel_angle[i], fabs(phi[i]));
     }
-    zp_chain c = chain_of(s, y);
+    /* the load peaks, when asked for, are sampled at every step (one more rhs call) */
+    zp_chain c = s->o.track_loads ? row_of(s, 0, y).c : chain_of(s, y);
     r->max_speed = fmax(r->max_speed, hypot(c.v[0], c.v[1]));
     if (s->form->constraint_residual) {
         r->constraint_residual = fmax(r->constraint_residual,
@@ -243,6 +278,7 @@ static void finish_result(zp_sim *s, zp_result *r, double t, zp_outcome o, zp_st
     r->w_drive = s->y[s->n - 2];
     r->w_damp = s->y[s->n - 1];
     r->e_impulse = s->e_impulse;
+    r->peaks = s->peaks;
     /* the last row shows the end state */
     if (s->rows && s->nrows < s->cap_rows && (s->nrows == 0 || s->rows[s->nrows - 1].t < t)) {
         s->rows[s->nrows++] = row_of(s, t, s->y);
@@ -250,8 +286,8 @@ static void finish_result(zp_sim *s, zp_result *r, double t, zp_outcome o, zp_st
 }
 
 static zp_status fail(zp_sim *s, zp_result *r, double t, const char *why) {
-    snprintf(r->message, sizeof r->message, "numerical failure at t = %.9g s, x = %.9g m: %s", t,
-             s->y[0], why);
+    snprintf(r->message, sizeof r->message, "numerical failure at t = %.9g s, x = %.9g m: %.180s",
+             t, s->y[0], why);
     return ZP_ERR_NUMERIC;
 }
 
@@ -264,7 +300,11 @@ static void add_stats(zp_sim *s, zp_result *r) {
 
 static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result *r) {
     zp_chain c;
-    zp_state_start(m, &c);
+    if (in->start) {
+        c = *in->start;
+    } else {
+        zp_state_start(m, s->course, &c);
+    }
     const double zero_work[2] = {0, 0};
     s->form->from_chain(m, &c, zero_work, s->y);
     zp_energy e0 = zp_state_energy(m, &c);
@@ -272,7 +312,7 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
 
     double t = 0, next_row = 0;
     int next_sample = 0;
-    emit_outputs(s, in, t, s->y, 0, &next_row, &next_sample);
+    emit_outputs(s, in, t, 0, &next_row, &next_sample);
     /* a root finder ignores a root at t0: a start that rolls back at once is caught here */
     if (departure(s, s->y) < 0) {
         finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_ROLLED_BACK);
@@ -282,39 +322,29 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
         return fail(s, r, t, "the integrator could not start");
     }
     for (;;) {
-        double tout = s->o.t_max;
-        if (s->rows) {
-            tout = fmin(tout, next_row);
-        }
-        if (next_sample < in->nsample) {
-            tout = fmin(tout, in->sample_t[next_sample]);
-        }
         char err[256] = "";
-        zp_adv adv = s->meth->advance(s->mwork, tout, &t, s->y, s->roots, err, sizeof err);
+        zp_adv adv = s->meth->advance(s->mwork, &t, s->y, s->roots, err, sizeof err);
         int bad = first_non_finite(s->y, s->n);
-        if (adv == ZP_ADV_FAIL || bad >= 0) {
+        long steps_now = 0, evals_now = 0;
+        s->meth->stats(s->mwork, &steps_now, &evals_now);
+        if (adv == ZP_ADV_FAIL || bad >= 0 || r->steps + steps_now > s->o.max_steps) {
             add_stats(s, r);
             if (bad >= 0) {
                 snprintf(err, sizeof err, "state component %d is not finite", bad);
+            } else if (adv != ZP_ADV_FAIL) {
+                snprintf(err, sizeof err, "the run's budget of %ld steps is exhausted",
+                         s->o.max_steps);
             }
             return fail(s, r, t, err);
         }
         track_extremes(s, s->y, r);
-        long steps_now = 0, evals_now = 0;
-        s->meth->stats(s->mwork, &steps_now, &evals_now);
-        if (r->steps + steps_now > s->o.max_steps) {
-            add_stats(s, r);
-            return fail(s, r, t, "step budget of the run exhausted");
-        }
-        if (adv == ZP_ADV_TOUT) {
-            emit_outputs(s, in, t, s->y, 0, &next_row, &next_sample);
+        if (adv != ZP_ADV_ROOT) {
+            emit_outputs(s, in, t, 1, &next_row, &next_sample);
             /* a boundary passed without a root (one masked at a restart) is crossed here */
             if (s->y[0] < m->xb[s->sec] || s->y[0] > m->xb[s->sec + 1]) {
-                for (int i = 0; i < s->nroot; i++) {
-                    s->roots[i] = 0;
-                }
+                memset(s->roots, 0, sizeof *s->roots * s->nroot);
                 s->roots[s->y[0] < m->xb[s->sec] ? ZP_ROOT_LEFT : ZP_ROOT_RIGHT] = 1;
-            } else if (t >= s->o.t_max) {
+            } else if (adv == ZP_ADV_STOP) {
                 add_stats(s, r);
                 finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_T_MAX);
                 return ZP_OK;
@@ -324,6 +354,9 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
         }
         int link = 0, to = 0;
         zp_event ev = zp_events_classify(m, s->sec, s->roots, &link, &to);
+        /* outputs up to the event from the dense output; one on a kink shows the state after */
+        emit_outputs(s, in, ev == ZP_EVENT_KINK ? t - ZP_EVENT_TIME_EPS : t, 1, &next_row,
+                     &next_sample);
         switch (ev) {
         case ZP_EVENT_NONE:
             continue;
@@ -349,7 +382,7 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
         if (trapped < 0) {
             return fail(s, r, t, "the mass matrix is not positive definite at the kink");
         }
-        emit_outputs(s, in, t, s->y, ZP_EVENT_TIME_EPS, &next_row, &next_sample);
+        emit_outputs(s, in, t + ZP_EVENT_TIME_EPS, 0, &next_row, &next_sample);
         if (trapped) {
             finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_TRAPPED_AT_KINK);
             return ZP_OK;
@@ -368,6 +401,7 @@ zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     s->sec = 0;
     s->e_impulse = 0;
     s->nrows = s->nsamples = 0;
+    s->peaks = (zp_load_peaks){.normal_min = INFINITY, .normal_max = -INFINITY};
     zp_status st = run(m, s, in, r);
     clock_gettime(CLOCK_MONOTONIC, &t1);
     r->wall_s = (t1.tv_sec - t0.tv_sec) + 1e-9 * (t1.tv_nsec - t0.tv_nsec);
@@ -396,7 +430,8 @@ zp_status zp_sim_opts_from_scene(const zp_scene *sc, zp_sim_opts *o, zp_diag *d)
                        .atol = sc->atol,
                        .t_max = sc->t_max,
                        .output_dt = sc->output_dt,
-                       .max_steps = 2000000};
+                       .max_steps = 2000000,
+                       .track_loads = 1};
     o->method = zp_method_find(sc->method);
     o->formulation = zp_formulation_find(sc->formulation);
     if (o->method < 0) {

@@ -31,10 +31,14 @@ typedef struct zp_sim_opts {
     double t_max;     /* s */
     double output_dt; /* s between trajectory rows; <= 0: no trajectory */
     long max_steps;   /* bound on integrator steps per run */
+    int track_loads;  /* 1: load peaks sampled at every step (costs one rhs call a step);
+                         0: only at output rows, samples and events */
 } zp_sim_opts;
 
 typedef struct zp_input {
     const double *force;   /* borrowed; N, one per section */
+    const zp_chain *start; /* borrowed; NULL: the MODEL.md start. Its x must lie in section 1
+                              and its y on the course; for tests and split runs */
     const double *sample_t; /* borrowed; s, ascending sample times (may be NULL) */
     int nsample;
 } zp_input;
@@ -56,6 +60,15 @@ typedef struct zp_row {
     zp_loads loads;
 } zp_row;
 
+/* Extremes of the loads (MODEL.md forces) over a run, taken wherever the simulator evaluates
+   them: the start, every integrator step, every output row and sample, and the state just
+   after each kink impulse. */
+typedef struct zp_load_peaks {
+    double joint[ZP_MAX_LINKS];    /* N, largest |force of the parent on link i| at joint i */
+    double normal_min, normal_max; /* N, course on trolley along (-f', 1)/|.|: + pushes up */
+    double acc_g[ZP_MAX_LINKS];    /* g, largest felt acceleration |a - g| of link i's centre */
+} zp_load_peaks;
+
 typedef struct zp_result {
     zp_outcome outcome;
     zp_stall stall;
@@ -70,6 +83,7 @@ typedef struct zp_result {
     double e_initial, e_final;          /* J */
     double w_drive, w_damp, e_impulse;  /* J: drive work, damper loss, impulse loss */
     double constraint_residual;         /* m */
+    zp_load_peaks peaks;                /* the kink impulses are in cross[] */
     long steps, rhs_evals;
     double wall_s;
     char message[256]; /* why a run failed (status ZP_ERR_NUMERIC) */

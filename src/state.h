@@ -18,8 +18,9 @@ typedef struct zp_energy {
     double potential; /* J, m g y of every centre of mass, y = 0 the zero */
 } zp_energy;
 
-/* The MODEL.md start: x = x_start on the course, all theta = 0, at rest. */
-void zp_state_start(const zp_model *m, zp_chain *c);
+/* The MODEL.md start: x = x_start on the course, all theta = 0, at rest. course: the
+   caller's own evaluators (each thread has its own). */
+void zp_state_start(const zp_model *m, const zp_course *course, zp_chain *c);
 /* Centres of mass: body 0 the trolley, body i link i; xy[b][0..1] in m. */
 void zp_state_com(const zp_model *m, const zp_chain *c, double xy[][2]);
 /* Velocities of the centres of mass, m/s, same layout. */

@@ -1,0 +1,69 @@
+/* What the commands share (CLI.md): loading a scene into a model with every message on stderr,
+   number lists, and the usage text with the method and formulation registries. */
+#include "cli.h"
+
+#include "formulation.h"
+#include "method.h"
+
+int zp_cli_parse_list(const char *text, double *out, int max, char *why, size_t whylen) {
+    return zp_scene_parse_list(text, out, max, why, whylen);
+}
+
+zp_model *zp_cli_load(const char *path, zp_scene *sc) {
+    zp_diag d;
+    zp_diag_init(&d);
+    zp_model *m = NULL;
+    if (path) {
+        if (zp_scene_load(path, sc, &d) == ZP_OK) {
+            m = zp_model_build(sc, &d);
+        }
+    } else {
+        zp_scene_seed(sc);
+        m = zp_model_build(sc, &d);
+    }
+    zp_diag_print(&d, stderr);
+    if (!m) {
+        int n = d.n + d.dropped;
+        fprintf(stderr, "zipopt: %s: %d error%s; nothing was written\n", sc->path, n,
+                n == 1 ? "" : "s");
+    }
+    return m;
+}
+
+void zp_cli_print_registries(FILE *f) {
+    fprintf(f, "methods ([solver] method):\n");
+    for (int i = 0; i < ZP_METHOD_COUNT; i++) {
+        const zp_method *me = zp_method_get(i);
+        fprintf(f, "  %-18s %s\n", me->name, me->doc);
+    }
+    fprintf(f, "formulations ([solver] formulation):\n");
+    for (int i = 0; i < ZP_FORM_COUNT; i++) {
+        const zp_formulation *fo = zp_formulation_get(i);
+        fprintf(f, "  %-18s %s\n", fo->name, fo->doc);
+    }
+}
+
+void zp_cli_usage(FILE *f) {
+    fputs("usage:\n"
+          "  zipopt [SCENE.ini] [--out DIR]\n"
+          "      Search for the fastest survivable schedule of drive forces (one per course\n"
+          "      section) and write report.md, schedule.ini, summary.json and the best run's\n"
+          "      trajectory to out/<scene name>/ (or DIR). With no file: the built-in seed scene.\n"
+          "  zipopt simulate SCENE.ini [--force F1,F2,..] [--schedule FILE] [--json]\n"
+          "                  [--sample-times T1,T2,..] [--out DIR]\n"
+          "      Run one schedule through the simulator: --force or --schedule replace the\n"
+          "      scene's [drive] forces (N); --json prints the result as JSON; --sample-times\n"
+          "      also reports the state at those times (s). Writes trajectory.csv and\n"
+          "      summary.json. See zipopt simulate --help.\n"
+          "  zipopt check SCENE.ini\n"
+          "      Validate a scene file and print its course (sections, derivatives, kinks),\n"
+          "      body, drive, solver and search settings. Writes nothing.\n"
+          "  zipopt --help | --version\n"
+          "\n"
+          "Exit status: 0 done (a spy that dies is a result, not an error); 2 bad input\n"
+          "(command line or scene file, with FILE:LINE: [section] key: messages on stderr);\n"
+          "1 anything else. Scene files: see CONFIG.md; config/ holds examples.\n"
+          "\n",
+          f);
+    zp_cli_print_registries(f);
+}

@@ -1,0 +1,122 @@
+/* `zipopt check SCENE.ini` (CLI.md): validates a scene (CONFIG.md) as every command would and
+   prints what it describes: course sections with exact derivatives, boundaries, body, settings. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "cli.h"
+#include "formulation.h"
+#include "method.h"
+#include "sim.h"
+
+static void usage(FILE *f) {
+    fputs("usage: zipopt check SCENE.ini\n"
+          "Validates a scene file against every rule of CONFIG.md (all problems are listed on\n"
+          "stderr as FILE:LINE: [section] key: what; expected, with exit status 2) and prints\n"
+          "the scene: each course section with f(x), f'(x) and f''(x); each boundary between\n"
+          "sections with its height, slope jump and whether it is a kink; the trolley and the\n"
+          "body's links (length, mass, inertia, damping); the drive, solver and search\n"
+          "settings. Writes no files.\n",
+          f);
+}
+
+static const char *method_doc(const char *name) {
+    int i = zp_method_find(name);
+    return i < 0 ? "" : zp_method_get(i)->doc;
+}
+
+static const char *formulation_doc(const char *name) {
+    int i = zp_formulation_find(name);
+    return i < 0 ? "" : zp_formulation_get(i)->doc;
+}
+
+static void print_course(const zp_model *m) {
+    printf("course: %d section%s, x from %g to %g m\n", m->nsec, m->nsec == 1 ? "" : "s", m->xb[0],
+           m->xb[m->nsec]);
+    for (int k = 0; k < m->nsec; k++) {
+        printf("  section %d: x in [%g, %g] m\n", k + 1, m->xb[k], m->xb[k + 1]);
+        printf("    f(x)   = %s\n", m->expr[k]);
+        printf("    f'(x)  = %s\n", zp_course_deriv_text(m->course, k, 1));
+        printf("    f''(x) = %s\n", zp_course_deriv_text(m->course, k, 2));
+    }
+    if (m->nsec == 1) {
+        return;
+    }
+    printf("boundaries:\n");
+    for (int k = 1; k < m->nsec; k++) {
+        double x = m->xb[k];
+        zp_track l = zp_course_eval(m->course, k - 1, x), r = zp_course_eval(m->course, k, x);
+        /* the model decides what counts as a kink; check only reports it */
+        int kink = 0;
+        for (int i = 0; i < m->nkink; i++) {
+            kink |= m->kink[i].left == k - 1;
+        }
+        printf("  x = %g m, y = %.6g m: slope %.6g -> %.6g (jump %+.6g, %.3g deg): %s\n", x, l.f,
+               l.fp, r.fp, r.fp - l.fp, (atan(r.fp) - atan(l.fp)) * 180 / M_PI,
+               kink ? "kink" : "smooth");
+    }
+}
+
+static void print_scene(const zp_scene *sc, const zp_model *m) {
+    printf("scene: %s (%s)\n", sc->name, sc->path);
+    printf("gravity: %g m/s^2\n", m->g);
+    print_course(m);
+    printf("trolley: mass %g kg\n", m->m0);
+    printf("body: %d link%s, death angle %g deg\n", m->nlink, m->nlink == 1 ? "" : "s",
+           sc->death_angle);
+    for (int i = 0; i < m->nlink; i++) {
+        printf("  link %d: length %g m, mass %g kg, inertia %.6g kg m^2, damping %g N m s/rad\n",
+               i + 1, m->len[i], m->mass[i], m->inertia[i], m->damp[i]);
+    }
+    printf("drive: %s; forces (N):", zp_model_drive_name(m->drive));
+    for (int k = 0; k < sc->nsec; k++) {
+        printf("%s %g", k ? "," : "", sc->forces[k]);
+    }
+    printf("%s; search bounds [%g, %g] N\n", sc->nforce ? "" : " (none given)", sc->force_min,
+           sc->force_max);
+    printf("solver: method %s (%s); formulation %s (%s)\n", sc->method, method_doc(sc->method),
+           sc->formulation, formulation_doc(sc->formulation));
+    printf("        rtol %g, atol %g, t_max %g s, output_dt %g s\n", sc->rtol, sc->atol, sc->t_max,
+           sc->output_dt);
+    printf("optimize: margin %g deg, max_evals %ld, seed %lu\n", sc->margin, sc->max_evals,
+           sc->seed);
+}
+
+int zp_cmd_check(int argc, char **argv) {
+    const char *path = NULL;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            usage(stdout);
+            return ZP_EXIT_OK;
+        }
+        if (argv[i][0] == '-' || path) {
+            fprintf(stderr,
+                    "zipopt check: unexpected argument '%s'; expected one scene file "
+                    "(see zipopt check --help)\n",
+                    argv[i]);
+            return ZP_EXIT_USAGE;
+        }
+        path = argv[i];
+    }
+    if (!path) {
+        fputs("zipopt check: a scene file is required; see zipopt check --help\n", stderr);
+        return ZP_EXIT_USAGE;
+    }
+    zp_scene sc;
+    zp_model *m = zp_cli_load(path, &sc);
+    if (!m) {
+        return ZP_EXIT_USAGE;
+    }
+    /* the solver's names are judged against the registries, as `simulate` does */
+    zp_diag d;
+    zp_diag_init(&d);
+    zp_sim_opts o;
+    if (zp_sim_opts_from_scene(&sc, &o, &d) != ZP_OK) {
+        zp_diag_print(&d, stderr);
+        zp_model_free(m);
+        return ZP_EXIT_USAGE;
+    }
+    print_scene(&sc, m);
+    zp_model_free(m);
+    return ZP_EXIT_OK;
+}

@@ -1,0 +1,274 @@
+/* Formulation "newton-euler": the study's maximal coordinates. Every body has its own
+ * position: trolley P0 = (X, Y); link i its centre c_i = (x_i, y_i) and angle th_i, with
+ * e_i = (sin th, -cos th) down the link, n_i = (cos th, sin th) = de/dth, w_i = th_i'.
+ * At each instant the unknowns are the 2 + 3N accelerations, the N joint reactions R_i
+ * (force of the parent on link i at joint i, x and y) and the normal force (Nx, Ny): 5N + 4
+ * of them (19 for N = 3), found from one linear system (GSL LU):
+ *   trolley   m0 a0 = F + (Nx, Ny) - R_1 + m0 g
+ *   link i    m_i a_i = R_i - R_{i+1} + m_i g                        (R_{N+1} = 0)
+ *             I_i th_i'' = -d_i (c R_i,x + s R_i,y) - (l_i - d_i)(c R_{i+1},x + s R_{i+1},y)
+ *                          - c_i w_i + c_{i+1} w_{i+1}   (about c_i; MODEL.md dampers, w_i
+ *                          the joint rates, c, s of th_i)
+ *   joint i   J_i = (end of the parent: P0, or c_{i-1} + (l_{i-1} - d_{i-1}) e_{i-1})
+ *                   - (c_i - d_i e_i) = 0, at acceleration level with e'' = th'' n - th'^2 e
+ *   course    K = Y - f(X) = 0:  a0y - f' a0x = f'' X'^2
+ *   no friction  Nx + f' Ny = 0 (the normal force has no tangential part)
+ * Drift control (Baumgarte): the acceleration-level rows demand J'' = -2 a J' - a^2 J and
+ * K'' = -2 a K' - a^2 K instead of 0, so a position or velocity error left by the integrator
+ * decays as (1 + a t) exp(-a t) instead of growing with time. On the constraints (J = J' = 0)
+ * the equations are the exact ones. Design note: CVODE's projection (CVodeSetProjFn) would
+ * keep the constraints to the nonlinear-solver tolerance, but SUNDIALS supports it only with
+ * BDF; the default method is Adams, so the stabilization lives in the equations and serves
+ * every method. A kink restart goes through from_chain, which puts the state back exactly on
+ * the constraints.
+ * State: y = (X, Y, x_1, y_1, th_1, .., X', Y', x_1', .., W_drive, W_damp). */
+#include <gsl/gsl_linalg.h>
+#include <math.h>
+#include <stdlib.h>
+
+#include "formulation.h"
+
+/* 1/s, Baumgarte rate: just above the seed chain's fastest small swing (3.4 rad/s), so the
+   constraint error dies within a swing without adding a much faster time scale that the
+   integrator would have to follow (50/s cuts the drift 10x but costs 1.5x the steps) */
+#define NE_STAB_RATE 5.0
+
+typedef struct newton_work {
+    gsl_matrix *A;
+    gsl_vector *b, *z;
+    gsl_permutation *perm;
+} newton_work;
+
+/* positions per body coordinate: trolley (X, Y), link i (x, y, th) at 2 + 3i */
+static int npos(const zp_model *m) { return 2 + 3 * m->nlink; }
+
+static int newton_nstate(const zp_model *m) { return 2 * npos(m) + 2; }
+
+static void newton_free(void *work) {
+    newton_work *w = work;
+    if (!w) {
+        return;
+    }
+    gsl_matrix_free(w->A);
+    gsl_vector_free(w->b);
+    gsl_vector_free(w->z);
+    gsl_permutation_free(w->perm);
+    free(w);
+}
+
+static void *newton_create(const zp_model *m) {
+    newton_work *w = calloc(1, sizeof *w);
+    if (!w) {
+        return NULL;
+    }
+    size_t nz = 5 * m->nlink + 4;
+    w->A = gsl_matrix_alloc(nz, nz);
+    w->b = gsl_vector_alloc(nz);
+    w->z = gsl_vector_alloc(nz);
+    w->perm = gsl_permutation_alloc(nz);
+    if (!w->A || !w->b || !w->z || !w->perm) {
+        newton_free(w);
+        return NULL;
+    }
+    return w;
+}
+
+static void newton_from_chain(const zp_model *m, const zp_chain *c, const double wk[2],
+                              double *y) {
+    int np = npos(m);
+    double pos[ZP_MAX_LINKS + 1][2], vel[ZP_MAX_LINKS + 1][2];
+    zp_state_com(m, c, pos);
+    zp_state_com_vel(m, c, vel);
+    for (int b = 0; b <= m->nlink; b++) {
+        int k = b ? 2 + 3 * (b - 1) : 0;
+        y[k] = pos[b][0];
+        y[k + 1] = pos[b][1];
+        y[np + k] = vel[b][0];
+        y[np + k + 1] = vel[b][1];
+        if (b) {
+            y[k + 2] = c->q[1 + b];
+            y[np + k + 2] = c->v[1 + b];
+        }
+    }
+    y[2 * np] = wk[0];
+    y[2 * np + 1] = wk[1];
+}
+
+/* the trolley and the angles are chain coordinates already; the centres follow from them */
+static void newton_to_chain(const zp_model *m, const zp_track *tr, const double *y,
+                            zp_chain *c) {
+    int np = npos(m);
+    (void)tr;
+    c->q[0] = y[0];
+    c->q[1] = y[1];
+    c->v[0] = y[np];
+    c->v[1] = y[np + 1];
+    for (int i = 0; i < m->nlink; i++) {
+        c->q[2 + i] = y[4 + 3 * i];
+        c->v[2 + i] = y[np + 4 + 3 * i];
+    }
+}
+
+static void newton_relative(const zp_model *m, const double *y, double *phi, double *w) {
+    int np = npos(m);
+    double th_prev = 0, w_prev = 0; /* the trolley does not rotate */
+    for (int i = 0; i < m->nlink; i++) {
+        phi[i] = y[4 + 3 * i] - th_prev;
+        w[i] = y[np + 4 + 3 * i] - w_prev;
+        th_prev = y[4 + 3 * i];
+        w_prev = y[np + 4 + 3 * i];
+    }
+}
+
+/* joint i's gap J_i (m) and its rate J_i' (m/s): the parent's end minus link i's top */
+static void joint_gap(const zp_model *m, const double *y, int i, double J[2], double Jd[2]) {
+    int np = npos(m), k = 2 + 3 * i;
+    double s = sin(y[k + 2]), c = cos(y[k + 2]), d = m->half[i], w = y[np + k + 2];
+    double px = y[0], py = y[1], vx = y[np], vy = y[np + 1]; /* the trolley */
+    if (i > 0) {
+        int p = k - 3;
+        double sp = sin(y[p + 2]), cp = cos(y[p + 2]), L = m->len[i - 1] - m->half[i - 1];
+        double wp = y[np + p + 2];
+        px = y[p] + L * sp;
+        py = y[p + 1] - L * cp;
+        vx = y[np + p] + L * cp * wp;
+        vy = y[np + p + 1] + L * sp * wp;
+    }
+    J[0] = px - (y[k] - d * s);
+    J[1] = py - (y[k + 1] + d * c);
+    Jd[0] = vx - (y[np + k] - d * c * w);
+    Jd[1] = vy - (y[np + k + 1] - d * s * w);
+}
+
+static double newton_residual(const zp_model *m, const zp_course *course, int sec,
+                              const double *y) {
+    double r = fabs(y[1] - zp_course_eval(course, sec, y[0]).f);
+    for (int i = 0; i < m->nlink; i++) {
+        double J[2], Jd[2];
+        joint_gap(m, y, i, J, Jd);
+        r = fmax(r, hypot(J[0], J[1]));
+    }
+    return r;
+}
+
+static int newton_rhs(const zp_model *m, void *work, const zp_drive_now *dn, const double *y,
+                      double *ydot, zp_loads *loads) {
+    newton_work *nw = work;
+    const int n = m->nlink, np = npos(m), rr = np, rn = np + 2 * n; /* reaction, normal cols */
+    const double a = NE_STAB_RATE, fp = dn->tr.fp;
+    gsl_matrix *A = nw->A;
+    gsl_vector *b = nw->b;
+    gsl_matrix_set_zero(A);
+    gsl_vector_set_zero(b);
+
+    /* trolley: m0 a0 - N + R_1 = F + m0 g */
+    for (int r = 0; r < 2; r++) {
+        gsl_matrix_set(A, r, r, m->m0);
+        gsl_matrix_set(A, r, rn + r, -1);
+        gsl_matrix_set(A, r, rr + r, 1);
+    }
+    gsl_vector_set(b, 0, dn->fx);
+    gsl_vector_set(b, 1, dn->fy - m->m0 * m->g);
+
+    double pdamp = 0;
+    for (int i = 0; i < n; i++) {
+        int k = 2 + 3 * i, ri = rr + 2 * i, rj = ri + 2; /* link i; R_i, R_{i+1} columns */
+        double s = sin(y[k + 2]), c = cos(y[k + 2]), d = m->half[i], lo = m->len[i] - d;
+        double w = y[np + k + 2];
+        double wj = w - (i ? y[np + k - 1] : 0);
+        double wj_below = i + 1 < n ? y[np + k + 5] - w : 0;
+
+        /* linear momentum: m a - R_i + R_{i+1} = m g */
+        for (int r = 0; r < 2; r++) {
+            gsl_matrix_set(A, k + r, k + r, m->mass[i]);
+            gsl_matrix_set(A, k + r, ri + r, -1);
+        }
+        gsl_vector_set(b, k + 1, -m->mass[i] * m->g);
+        /* angular momentum about the centre, with the dampers of joints i and i + 1 */
+        gsl_matrix_set(A, k + 2, k + 2, m->inertia[i]);
+        gsl_matrix_set(A, k + 2, ri, d * c);
+        gsl_matrix_set(A, k + 2, ri + 1, d * s);
+        double tau = -m->damp[i] * wj;
+        if (i + 1 < n) {
+            gsl_matrix_set(A, k, rj, 1);
+            gsl_matrix_set(A, k + 1, rj + 1, 1);
+            gsl_matrix_set(A, k + 2, rj, lo * c);
+            gsl_matrix_set(A, k + 2, rj + 1, lo * s);
+            tau += m->damp[i + 1] * wj_below;
+        }
+        gsl_vector_set(b, k + 2, tau);
+        pdamp += m->damp[i] * wj * wj;
+
+        /* joint i: parent end'' - link top'' = -2a J' - a^2 J */
+        double J[2], Jd[2];
+        joint_gap(m, y, i, J, Jd);
+        int p = i ? k - 3 : 0; /* the parent's x column */
+        double bx = d * w * w * s - 2 * a * Jd[0] - a * a * J[0];
+        double by = -d * w * w * c - 2 * a * Jd[1] - a * a * J[1];
+        if (i > 0) {
+            double sp = sin(y[p + 2]), cp = cos(y[p + 2]), L = m->len[i - 1] - m->half[i - 1];
+            double wp = y[np + p + 2];
+            gsl_matrix_set(A, ri, p + 2, L * cp);
+            gsl_matrix_set(A, ri + 1, p + 2, L * sp);
+            bx += L * wp * wp * sp;
+            by -= L * wp * wp * cp;
+        }
+        gsl_matrix_set(A, ri, p, 1);
+        gsl_matrix_set(A, ri + 1, p + 1, 1);
+        gsl_matrix_set(A, ri, k, -1);
+        gsl_matrix_set(A, ri + 1, k + 1, -1);
+        gsl_matrix_set(A, ri, k + 2, d * c);
+        gsl_matrix_set(A, ri + 1, k + 2, d * s);
+        gsl_vector_set(b, ri, bx);
+        gsl_vector_set(b, ri + 1, by);
+    }
+
+    /* course: a0y - f' a0x = f'' X'^2 - 2a K' - a^2 K; frictionless: Nx + f' Ny = 0 */
+    double xd = y[np], K = y[1] - dn->tr.f, Kd = y[np + 1] - fp * xd;
+    gsl_matrix_set(A, rn, 0, -fp);
+    gsl_matrix_set(A, rn, 1, 1);
+    gsl_vector_set(b, rn, dn->tr.fpp * xd * xd - 2 * a * Kd - a * a * K);
+    gsl_matrix_set(A, rn + 1, rn, 1);
+    gsl_matrix_set(A, rn + 1, rn + 1, fp);
+
+    int sign = 0;
+    if (gsl_linalg_LU_decomp(A, nw->perm, &sign) || gsl_linalg_LU_solve(A, nw->perm, b, nw->z)) {
+        return 1;
+    }
+    const double *z = gsl_vector_const_ptr(nw->z, 0);
+    for (int j = 0; j < np; j++) {
+        if (!isfinite(z[j])) {
+            return 1;
+        }
+        ydot[j] = y[np + j];
+        ydot[np + j] = z[j];
+    }
+    ydot[2 * np] = dn->fx * xd + dn->fy * y[np + 1];
+    ydot[2 * np + 1] = pdamp;
+    if (loads) {
+        loads->normal = (-fp * z[rn] + z[rn + 1]) / sqrt(1 + fp * fp);
+        loads->acc[0][0] = z[0];
+        loads->acc[0][1] = z[1];
+        for (int i = 0; i < n; i++) {
+            loads->joint[i][0] = z[rr + 2 * i];
+            loads->joint[i][1] = z[rr + 2 * i + 1];
+            loads->acc[i + 1][0] = z[2 + 3 * i];
+            loads->acc[i + 1][1] = z[3 + 3 * i];
+        }
+    }
+    return 0;
+}
+
+const zp_formulation zp_form_newton = {
+    .name = "newton-euler",
+    .doc = "Newton-Euler in maximal coordinates: accelerations, joint reactions and normal "
+           "force from one linear system per step (Baumgarte-stabilized)",
+    .nstate = newton_nstate,
+    .create = newton_create,
+    .free = newton_free,
+    .from_chain = newton_from_chain,
+    .to_chain = newton_to_chain,
+    .relative = newton_relative,
+    .rhs = newton_rhs,
+    .constraint_residual = newton_residual,
+};

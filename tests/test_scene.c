@@ -1,0 +1,496 @@
+/* scene.c: every rule of CONFIG.md on inline INI text. Each bad case must give ZP_ERR_INPUT and a
+   message "t.ini:LINE: [section] key:" at the line the case put it on; defaults are CONFIG.md's;
+   config/seed.ini and zp_scene_seed both equal CONFIG.md's example. */
+#include <stdio.h>
+#include <string.h>
+
+#include "check.h"
+#include "scene.h"
+
+/* a small valid scene; cases replace one of its lines (1-based) */
+static const char *const base[] = {
+    "[scene]",                         /* 1 */
+    "gravity = 9.81",                  /* 2 */
+    "[course]",                        /* 3 */
+    "x_start = 0",                     /* 4 */
+    "section = 60 : (x/10 - 3)^2 + 1", /* 5 */
+    "section = 100 : -x/10 + 16",      /* 6 */
+    "[trolley]",                       /* 7 */
+    "mass = 30",                       /* 8 */
+    "[body]",                          /* 9 */
+    "lengths = 5, 5",                  /* 10 */
+    "masses = 15, 5",                  /* 11 */
+    "[drive]",                         /* 12 */
+    "forces = 100, 100",               /* 13 */
+    "[solver]",                        /* 14 */
+    "rtol = 1e-8",                     /* 15 */
+    "[optimize]",                      /* 16 */
+    "margin = 10",                     /* 17 */
+};
+enum { NBASE = sizeof base / sizeof *base };
+
+/* the base with line n replaced by repl and line m by repl2 (each may hold several lines, or
+   none); n = 0 or m = 0: no replacement */
+static const char *with_lines(int n, const char *repl, int m, const char *repl2) {
+    static char buf[65536];
+    buf[0] = '\0';
+    for (int i = 1; i <= NBASE; i++) {
+        strcat(buf, i == n ? repl : i == m ? repl2 : base[i - 1]);
+        strcat(buf, "\n");
+    }
+    return buf;
+}
+
+static const char *with_line(int n, const char *repl) {
+    return with_lines(n, repl, 0, NULL);
+}
+
+static int has_message(const zp_diag *d, const char *part) {
+    for (int i = 0; i < d->n; i++) {
+        if (strstr(d->text[i], part)) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static void show(const zp_diag *d) {
+    for (int i = 0; i < d->n; i++) {
+        fprintf(stderr, "    got: %s\n", d->text[i]);
+    }
+}
+
+/* text must be refused with a message at `line` about [sec] key, containing hint if given */
+static void expect_bad_at(int caller, const char *text, int line, const char *sec, const char *key,
+                          const char *hint) {
+    zp_scene sc;
+    zp_diag d;
+    zp_diag_init(&d);
+    zp_status st = zp_scene_load_string(text, "t.ini", &sc, &d);
+    char head[256];
+    if (sec) {
+        snprintf(head, sizeof head, "t.ini:%d: [%s] %s: ", line, sec, key);
+    } else if (key) {
+        snprintf(head, sizeof head, "t.ini:%d: %s: ", line, key);
+    } else {
+        snprintf(head, sizeof head, "t.ini:%d: ", line);
+    }
+    int ok = st == ZP_ERR_INPUT && has_message(&d, head) && (!hint || has_message(&d, hint));
+    CHECK(ok);
+    if (!ok) {
+        fprintf(stderr, "  case at test line %d: status %d, wanted `%s` with `%s`\n", caller, st,
+                head, hint ? hint : "");
+        show(&d);
+    }
+}
+#define BAD(n, repl, line, sec, key)                                                               \
+    expect_bad_at(__LINE__, with_line(n, repl), line, sec, key, NULL)
+#define BAD_HINT(n, repl, line, sec, key, hint)                                                    \
+    expect_bad_at(__LINE__, with_line(n, repl), line, sec, key, hint)
+
+/* text must load cleanly */
+static void expect_good_at(int caller, const char *text, zp_scene *sc) {
+    zp_diag d;
+    zp_diag_init(&d);
+    zp_status st = zp_scene_load_string(text, "t.ini", sc, &d);
+    CHECK(st == ZP_OK && d.n == 0);
+    if (st != ZP_OK || d.n) {
+        fprintf(stderr, "  case at test line %d refused\n", caller);
+        show(&d);
+    }
+}
+#define GOOD(n, repl, sc) expect_good_at(__LINE__, with_line(n, repl), sc)
+
+static void test_numbers(void) {
+    BAD(2, "gravity = -1", 2, "scene", "gravity");
+    BAD(2, "gravity = abc", 2, "scene", "gravity");
+    BAD(2, "gravity = 9.81abc", 2, "scene", "gravity");
+    BAD(2, "gravity = 9.81 m/s", 2, "scene", "gravity");
+    BAD(2, "gravity = nan", 2, "scene", "gravity");
+    BAD(2, "gravity = inf", 2, "scene", "gravity");
+    BAD(2, "gravity = 1e999", 2, "scene", "gravity");
+    BAD(2, "gravity = 0x10", 2, "scene", "gravity");
+    BAD(2, "gravity =", 2, "scene", "gravity");
+    BAD(4, "x_start = 1,2", 4, "course", "x_start");
+    BAD(8, "mass = -30", 8, "trolley", "mass");
+    BAD(8, "mass = 0", 8, "trolley", "mass");
+    BAD(15, "rtol = 0", 15, "solver", "rtol");
+    BAD(15, "atol = -1e-10", 15, "solver", "atol");
+    BAD(15, "t_max = 0", 15, "solver", "t_max");
+    BAD(15, "output_dt = -0.02", 15, "solver", "output_dt");
+    BAD(10, "lengths = 5\ndeath_angle = 0", 11, "body", "death_angle");
+    BAD(10, "lengths = 5\ndeath_angle = 360.5", 11, "body", "death_angle");
+    BAD(17, "margin = -1", 17, "optimize", "margin");
+    BAD(17, "margin = 180", 17, "optimize", "margin"); /* not below the default death angle */
+    BAD(17, "max_evals = 0", 17, "optimize", "max_evals");
+    BAD(17, "max_evals = 1.5", 17, "optimize", "max_evals");
+    BAD(17, "max_evals = 99999999999999999999999", 17, "optimize", "max_evals");
+    BAD(17, "seed = -1", 17, "optimize", "seed");
+    BAD(17, "seed = 2.5", 17, "optimize", "seed");
+    BAD(17, "seed = one", 17, "optimize", "seed");
+    BAD(13, "forces = 100, 100\nmin = 10\nmax = 5", 15, "drive", "max");
+    BAD(2, "gravity = 9.81#comment", 2, "scene", "gravity"); /* a comment needs a space first */
+
+    zp_scene sc;
+    GOOD(10, "lengths = 5, 5\ndeath_angle = 360", &sc);
+    CHECK(sc.death_angle == 360);
+    GOOD(17, "margin = 0\nmax_evals = 1\nseed = 0", &sc);
+    CHECK(sc.margin == 0 && sc.max_evals == 1 && sc.seed == 0);
+    GOOD(13, "forces = -50, 1.5e2\nmin = -100\nmax = -100", &sc);
+    CHECK(sc.forces[0] == -50 && sc.forces[1] == 150 && sc.force_min == -100 &&
+          sc.force_max == -100);
+    GOOD(2, "gravity = 0", &sc);
+    CHECK(sc.gravity == 0);
+}
+
+/* the margin must stay below the scene's own death angle, not only the default one */
+static void test_margin_vs_death(void) {
+    zp_scene sc;
+    GOOD(11, "masses = 15, 5\ndeath_angle = 90", &sc);
+    CHECK(sc.death_angle == 90 && sc.margin == 10);
+    char text[4096];
+    snprintf(text, sizeof text, "%s", with_line(11, "masses = 15, 5\ndeath_angle = 90"));
+    memcpy(strstr(text, "margin = 10"), "margin = 90", 11); /* now on line 18 */
+    expect_bad_at(__LINE__, text, 18, "optimize", "margin", "below death_angle");
+}
+
+static void test_lists(void) {
+    BAD(10, "lengths = 5,,5", 10, "body", "lengths");
+    BAD(10, "lengths = 5, 5,", 10, "body", "lengths");
+    BAD(10, "lengths =", 10, "body", "lengths");
+    BAD(10, "lengths = 5, 0", 10, "body", "lengths");
+    BAD(10, "lengths = 5, -1", 10, "body", "lengths");
+    BAD(10, "lengths = 5, x", 10, "body", "lengths");
+    BAD(11, "masses = 15, -5", 11, "body", "masses");
+    BAD(11, "masses = 15, 0", 11, "body", "masses");
+    BAD_HINT(11, "masses = 15, 5, 2", 11, "body", "masses", "3 values, expected 2 (one per link)");
+    BAD(11, "masses = 15", 11, "body", "masses");
+    BAD(11, "masses = 15, 5\ndamping = -1", 12, "body", "damping");
+    BAD(11, "masses = 15, 5\ndamping = 1, 2, 3", 12, "body", "damping");
+    BAD_HINT(13, "forces = 100, 100, 100", 13, "drive", "forces",
+             "3 values, expected 2 (one per section)");
+    BAD(13, "forces = 100", 13, "drive", "forces");
+    BAD(13, "forces = 100, ", 13, "drive", "forces");
+    /* links: 1 to 8 */
+    expect_bad_at(__LINE__,
+                  with_lines(10, "lengths = 1,1,1,1,1,1,1,1,1", 11, "masses = 1,1,1,1,1,1,1,1,1"),
+                  10, "body", "lengths", "9 values");
+
+    zp_scene sc;
+    expect_good_at(
+        __LINE__, with_lines(10, "lengths = 1,1,1,1,1,1,1,2", 11, "masses = 1,1,1,1,1,1,1,3"), &sc);
+    CHECK(sc.nlink == 8 && sc.lengths[7] == 2 && sc.masses[7] == 3);
+    expect_good_at(__LINE__, with_lines(10, "lengths = 4", 11, "masses = 7"), &sc);
+    CHECK(sc.nlink == 1 && sc.lengths[0] == 4 && sc.masses[0] == 7);
+    GOOD(11, "masses = 15, 5\ndamping = 0.5", &sc);
+    CHECK(sc.ndamping == 1 && sc.damping[0] == 0.5 && sc.damping[1] == 0.5);
+    GOOD(11, "masses = 15, 5\ndamping = 0.5, 0", &sc);
+    CHECK(sc.ndamping == 2 && sc.damping[0] == 0.5 && sc.damping[1] == 0);
+    GOOD(10, "lengths = 5 ,2.5", &sc);
+    CHECK(sc.nlink == 2 && sc.lengths[1] == 2.5);
+}
+
+static void test_course_rules(void) {
+    BAD(5, "section = 60 (x/10 - 3)^2 + 1", 5, "course", "section");
+    BAD(5, "section = sixty : x", 5, "course", "section");
+    BAD(5, "section = 60 :", 5, "course", "section");
+    BAD(5, "section = 0 : x", 5, "course", "section");  /* not past x_start */
+    BAD(5, "section = -5 : x", 5, "course", "section"); /* not past x_start */
+    BAD(6, "section = 60 : x", 6, "course", "section"); /* not past the previous */
+    BAD(6, "section = 50 : x", 6, "course", "section");
+    BAD_HINT(5, "section = 60 : (x/10 - 3^2", 5, "course", "section", "syntax error");
+    BAD_HINT(5, "section = 60 : y * x", 5, "course", "section", "`y`");
+    BAD_HINT(5, "section = 60 : abs(x)", 5, "course", "section", "`abs`");
+
+    /* at most ZP_MAX_SECTIONS: the first section too many is the one named */
+    char repl[65536] = "", line[64];
+    for (int i = 1; i <= ZP_MAX_SECTIONS + 1; i++) {
+        snprintf(line, sizeof line, "%ssection = %d : x", i > 1 ? "\n" : "", i);
+        strcat(repl, line);
+    }
+    BAD(5, repl, 5 + ZP_MAX_SECTIONS, "course", "section");
+
+    zp_scene sc;
+    GOOD(0, "", &sc);
+    CHECK(sc.nsec == 2 && sc.x_end[0] == 60 && sc.x_end[1] == 100);
+    CHECK(!strcmp(sc.expr[0], "(x/10 - 3)^2 + 1") && !strcmp(sc.expr[1], "-x/10 + 16"));
+    CHECK(sc.sec_line[0] == 5 && sc.sec_line[1] == 6);
+    GOOD(4, "x_start = -10", &sc);
+    CHECK(sc.x_start == -10);
+}
+
+static void test_names(void) {
+    BAD_HINT(13, "forces = 100, 100\ndirection = sideways", 14, "drive", "direction",
+             "horizontal or tangent");
+    BAD(15, "method = a-method-name-far-too-long-to-keep", 15, "solver", "method");
+    BAD(15, "formulation =", 15, "solver", "formulation");
+    BAD(2, "name = ../escape", 2, "scene", "name");
+    BAD(2, "name = a/b", 2, "scene", "name");
+    zp_scene sc;
+    GOOD(13, "forces = 1, 2\ndirection = tangent", &sc);
+    CHECK(!strcmp(sc.direction, "tangent"));
+    /* method and formulation are checked against the registries later, not here */
+    GOOD(15, "method = some-method\nformulation = some-form", &sc);
+    CHECK(!strcmp(sc.method, "some-method") && !strcmp(sc.formulation, "some-form"));
+    CHECK(sc.line_method == 15 && sc.line_formulation == 16); /* for the registries' messages */
+    GOOD(2, "name = run_2.b-c", &sc);
+    CHECK(!strcmp(sc.name, "run_2.b-c"));
+}
+
+static void test_structure(void) {
+    /* unknown keys and sections, with the nearest valid name */
+    BAD_HINT(10, "lenghts = 5, 5", 10, "body", "lenghts", "did you mean `lengths`?");
+    BAD_HINT(10, "lenghts = 5, 5", 9, "body", "lengths", "missing");
+    BAD_HINT(2, "gravty = 9.81", 2, "scene", "gravty", "did you mean `gravity`?");
+    BAD_HINT(11, "masses = 15, 5\nmass = 3", 12, "body", "mass", "belongs in [trolley]");
+    BAD_HINT(11, "masses = 15, 5\nbogus = 3", 12, "body", "bogus", "expected one of");
+    BAD_HINT(16, "[optimise]", 16, NULL, NULL, "did you mean [optimize]?");
+    BAD_HINT(16, "[extras]", 16, NULL, NULL, "unknown section [extras]");
+    /* a duplicate key (but `section` repeats by design) */
+    BAD_HINT(8, "mass = 30\nmass = 31", 9, "trolley", "mass", "duplicate");
+    BAD(13, "forces = 1, 2\nforces = 1, 2", 14, "drive", "forces");
+    /* required keys, reported at their section's header, or at the end without one */
+    BAD_HINT(4, "", 3, "course", "x_start", "missing");
+    BAD_HINT(6, "", 13, "drive", "forces", "2 values, expected 1"); /* forces no longer fit */
+    BAD_HINT(8, "", 7, "trolley", "mass", "missing");
+    BAD_HINT(10, "", 9, "body", "lengths", "missing");
+    BAD_HINT(11, "", 9, "body", "masses", "missing");
+    /* without its header, mass falls into [course] */
+    BAD_HINT(7, "", 8, "course", "mass", "belongs in [trolley]");
+    BAD_HINT(7, "", 17, "trolley", "mass", "missing");
+    /* shape of lines */
+    BAD_HINT(1, "name = early\n[scene]", 1, NULL, "name", "outside any section");
+    BAD_HINT(2, "gravity 9.81", 2, NULL, NULL, "key = value");
+    BAD_HINT(2, "gravity: 9.81", 2, NULL, NULL, "key = value");
+    BAD_HINT(1, "[scene", 1, NULL, NULL, "`]`");
+    BAD_HINT(1, "[scene] x", 1, NULL, NULL, "after the section header");
+    char longline[400];
+    snprintf(longline, sizeof longline, "gravity = 9.81 ; %0300d", 0);
+    BAD_HINT(2, longline, 2, NULL, NULL, "characters long");
+
+    /* a whole missing section: named at the last line */
+    zp_scene sc;
+    zp_diag d;
+    zp_diag_init(&d);
+    const char *no_trolley =
+        "[course]\nx_start = 0\nsection = 10 : x\n[body]\nlengths = 1\nmasses = 1\n";
+    CHECK(zp_scene_load_string(no_trolley, "t.ini", &sc, &d) == ZP_ERR_INPUT);
+    CHECK(d.n == 1 && has_message(&d, "t.ini:6: [trolley] mass: missing"));
+    zp_diag_init(&d);
+    const char *no_sections = "[course]\nx_start = 0\n[trolley]\nmass = 1\n[body]\nlengths = 1\n"
+                              "masses = 1\n";
+    CHECK(zp_scene_load_string(no_sections, "t.ini", &sc, &d) == ZP_ERR_INPUT);
+    CHECK(d.n == 1 && has_message(&d, "t.ini:1: [course] section: missing"));
+
+    /* what is allowed: comments, indentation, CRLF, blank lines, repeated headers */
+    GOOD(8, "  mass = 30 # kg\n\n; note\n# note", &sc);
+    CHECK(sc.trolley_mass == 30);
+    GOOD(8, "mass = 31 ; kg", &sc);
+    CHECK(sc.trolley_mass == 31);
+    GOOD(17, "margin = 10\n[drive]\nmin = -5", &sc);
+    CHECK(sc.force_min == -5);
+    zp_diag_init(&d);
+    const char *crlf = "[course]\r\nx_start = 1\r\nsection = 10 : x\r\n[trolley]\r\nmass = 2\r\n"
+                       "[body]\r\nlengths = 3\r\nmasses = 4\r\n";
+    CHECK(zp_scene_load_string(crlf, "t.ini", &sc, &d) == ZP_OK && d.n == 0);
+    CHECK(sc.x_start == 1 && sc.trolley_mass == 2 && !strcmp(sc.expr[0], "x"));
+}
+
+/* every error is reported, in line order; past ZP_DIAG_MAX they are counted */
+static void test_many_errors(void) {
+    zp_scene sc;
+    zp_diag d;
+    zp_diag_init(&d);
+    const char *text =
+        "[course]\nx_start = 0\nsection = 60 : x\n"
+        "[trolley]\nmass = -1\n[body]\nlengths = 5, 5\nmasses = 1,2,3\ndamping = -1\n"
+        "[solver]\nrtol = -1\n[extras]\n";
+    CHECK(zp_scene_load_string(text, "t.ini", &sc, &d) == ZP_ERR_INPUT);
+    CHECK(d.n == 5);
+    CHECK(d.n == 5 && strstr(d.text[0], "t.ini:5: [trolley] mass:"));
+    CHECK(d.n == 5 && strstr(d.text[1], "t.ini:8: [body] masses:"));
+    CHECK(d.n == 5 && strstr(d.text[2], "t.ini:9: [body] damping:"));
+    CHECK(d.n == 5 && strstr(d.text[3], "t.ini:11: [solver] rtol:"));
+    CHECK(d.n == 5 && strstr(d.text[4], "t.ini:12: unknown section [extras]"));
+    if (d.n != 5) {
+        show(&d);
+    }
+
+    char repl[4096] = "margin = 10";
+    for (int i = 0; i < ZP_DIAG_MAX + 5; i++) {
+        char line[32];
+        snprintf(line, sizeof line, "\nzzz%d = 1", i);
+        strcat(repl, line);
+    }
+    zp_diag_init(&d);
+    CHECK(zp_scene_load_string(with_line(17, repl), "t.ini", &sc, &d) == ZP_ERR_INPUT);
+    CHECK(d.n == ZP_DIAG_MAX && d.dropped == 5);
+    CHECK(strstr(d.text[0], "t.ini:18: [optimize] zzz0:") != NULL);
+}
+
+static void test_defaults(void) {
+    const char *minimal = "[course]\nx_start = 0\nsection = 10 : x/2\n[trolley]\nmass = 3\n"
+                          "[body]\nlengths = 1, 2\nmasses = 4, 5\n";
+    zp_scene sc;
+    zp_diag d;
+    zp_diag_init(&d);
+    CHECK(zp_scene_load_string(minimal, "some/dir/minimal.scene.ini", &sc, &d) == ZP_OK);
+    CHECK(!strcmp(sc.name, "minimal.scene"));
+    CHECK(!strcmp(sc.path, "some/dir/minimal.scene.ini"));
+    CHECK_NEAR(sc.gravity, 9.81, 0); /* exactly CONFIG.md's default */
+    CHECK(sc.nsec == 1 && sc.x_end[0] == 10 && !strcmp(sc.expr[0], "x/2"));
+    CHECK(sc.line_method == 0 && sc.line_formulation == 0);
+    CHECK(sc.nlink == 2);
+    CHECK(sc.ndamping == 1 && sc.damping[0] == 0 && sc.damping[1] == 0);
+    CHECK(sc.death_angle == 180);
+    CHECK(!strcmp(sc.direction, "horizontal"));
+    CHECK(sc.nforce == 0 && sc.forces[0] == 0 && sc.line_forces == 0);
+    CHECK(sc.force_min == 0 && sc.force_max == 500);
+    CHECK(!strcmp(sc.method, "cvode-adams") && !strcmp(sc.formulation, "lagrange"));
+    CHECK(sc.rtol == 1e-8 && sc.atol == 1e-10 && sc.t_max == 120 && sc.output_dt == 0.02);
+    CHECK(sc.margin == 10 && sc.max_evals == 5000 && sc.seed == 1);
+}
+
+/* CONFIG.md's example, written out here from the spec */
+static void check_is_config_example(const zp_scene *sc) {
+    CHECK(!strcmp(sc->name, "seed") && sc->gravity == 9.81 && sc->x_start == 0);
+    CHECK(sc->nsec == 3 && sc->x_end[0] == 60 && sc->x_end[1] == 100 && sc->x_end[2] == 140);
+    CHECK(!strcmp(sc->expr[0], "(x/10 - 3)^2 + 1") && !strcmp(sc->expr[1], "-x/10 + 16") &&
+          !strcmp(sc->expr[2], "-(x/10 - 12)^2 + 10"));
+    CHECK(sc->trolley_mass == 30 && sc->nlink == 3);
+    for (int i = 0; i < 3; i++) {
+        CHECK(sc->lengths[i] == 5 && sc->damping[i] == 1 && sc->forces[i] == 100);
+    }
+    CHECK(sc->masses[0] == 15 && sc->masses[1] == 5 && sc->masses[2] == 2);
+    CHECK(sc->ndamping == 1 && sc->death_angle == 180 && sc->nforce == 3);
+    CHECK(!strcmp(sc->direction, "horizontal") && sc->force_min == 0 && sc->force_max == 500);
+    CHECK(!strcmp(sc->method, "cvode-adams") && !strcmp(sc->formulation, "lagrange"));
+    CHECK(sc->rtol == 1e-8 && sc->atol == 1e-10 && sc->t_max == 120 && sc->output_dt == 0.02);
+    CHECK(sc->margin == 10 && sc->max_evals == 5000 && sc->seed == 1);
+}
+
+static void test_seed(void) {
+    zp_scene built, file;
+    zp_scene_seed(&built);
+    check_is_config_example(&built);
+
+    zp_diag d;
+    zp_diag_init(&d);
+    const char *path = ZP_SOURCE_DIR "/config/seed.ini";
+    CHECK(zp_scene_load(path, &file, &d) == ZP_OK && d.n == 0);
+    check_is_config_example(&file);
+
+    /* the line of each section key, counted here from the file itself */
+    FILE *f = fopen(path, "r");
+    CHECK(f != NULL);
+    char line[512];
+    int n = 0, k = 0;
+    while (f && fgets(line, sizeof line, f)) {
+        n++;
+        if (!strncmp(line, "section", 7)) {
+            CHECK(k < file.nsec && file.sec_line[k] == n);
+            k++;
+        } else if (!strncmp(line, "forces", 6)) {
+            CHECK(file.line_forces == n);
+        }
+    }
+    CHECK(k == 3);
+    if (f) {
+        fclose(f);
+    }
+}
+
+static const char *write_temp(const char *name, const char *text) {
+    static char path[2][512];
+    static int which;
+    char *p = path[which ^= 1];
+    snprintf(p, sizeof path[0], "%s/%s", getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp", name);
+    FILE *f = fopen(p, "w");
+    CHECK(f != NULL);
+    if (f) {
+        fputs(text, f);
+        fclose(f);
+    }
+    return p;
+}
+
+static void test_schedule(void) {
+    zp_scene sc;
+    zp_diag d;
+    zp_scene_seed(&sc);
+
+    zp_diag_init(&d);
+    const char *good = write_temp("zp_test_sched_good.ini", "; found by the search\n[drive]\n"
+                                                            "forces = 12.5, 0, -3\n");
+    CHECK(zp_scene_overlay_schedule(good, &sc, &d) == ZP_OK && d.n == 0);
+    CHECK(sc.nforce == 3 && sc.forces[0] == 12.5 && sc.forces[1] == 0 && sc.forces[2] == -3);
+    CHECK(sc.force_max == 500); /* nothing else changes */
+
+    /* every refusal leaves the forces as they were and names the schedule file */
+    static const struct {
+        const char *text, *part;
+    } bad[] = {
+        {"[drive]\nforces = 1, 2\n", ":2: [drive] forces: 2 values, expected 3"},
+        {"[drive]\nforces = 1, 2, 3\nmin = 0\n", ":3: [drive] min: unknown key"},
+        {"[drive]\nforces = 1, 2, 3\n[body]\nmasses = 1\n", ":3: unknown section [body]"},
+        {"[drive]\n", ":1: [drive] forces: missing"},
+        {"[drive]\nforces = 1,,3\n", ":2: [drive] forces: item 2 is empty"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
+        zp_diag_init(&d);
+        const char *p = write_temp("zp_test_sched_bad.ini", bad[i].text);
+        char want[1024];
+        snprintf(want, sizeof want, "%s%s", p, bad[i].part);
+        CHECK(zp_scene_overlay_schedule(p, &sc, &d) == ZP_ERR_INPUT);
+        CHECK(has_message(&d, want));
+        CHECK(sc.forces[0] == 12.5 && sc.forces[2] == -3);
+        if (!has_message(&d, want)) {
+            fprintf(stderr, "  wanted `%s`\n", want);
+            show(&d);
+        }
+    }
+    remove(good);
+
+    zp_diag_init(&d);
+    CHECK(zp_scene_overlay_schedule("/nonexistent/sched.ini", &sc, &d) == ZP_ERR_INPUT);
+    CHECK(has_message(&d, "/nonexistent/sched.ini"));
+    zp_diag_init(&d);
+    CHECK(zp_scene_load("/nonexistent/scene.ini", &sc, &d) == ZP_ERR_INPUT);
+    CHECK(d.n == 1 && has_message(&d, "/nonexistent/scene.ini: cannot open"));
+}
+
+static void test_parse_list(void) {
+    double v[4];
+    char why[128];
+    CHECK(zp_scene_parse_list("1, 2.5 ,-3e1", v, 4, why, sizeof why) == 3);
+    CHECK(v[0] == 1 && v[1] == 2.5 && v[2] == -30);
+    CHECK(zp_scene_parse_list("7", v, 4, why, sizeof why) == 1 && v[0] == 7);
+    CHECK(zp_scene_parse_list("1,,2", v, 4, why, sizeof why) == -1 && strstr(why, "item 2"));
+    CHECK(zp_scene_parse_list("", v, 4, why, sizeof why) == -1);
+    CHECK(zp_scene_parse_list("1,2,3,4,5", v, 4, why, sizeof why) == -1);
+    CHECK(zp_scene_parse_list("1,abc", v, 4, why, sizeof why) == -1 && strstr(why, "abc"));
+    CHECK(zp_scene_parse_list("nan", v, 4, why, sizeof why) == -1);
+    /* command-line lists may be longer than any scene line */
+    static char many[20000];
+    static double big[2000];
+    for (int i = 0; i < 2000; i++) {
+        snprintf(many + strlen(many), sizeof many - strlen(many), "%s%d.25", i ? ", " : "", i);
+    }
+    CHECK(zp_scene_parse_list(many, big, 2000, why, sizeof why) == 2000);
+    CHECK(big[0] == 0.25 && big[1999] == 1999.25);
+}
+
+int main(void) {
+    test_numbers();
+    test_margin_vs_death();
+    test_lists();
+    test_course_rules();
+    test_names();
+    test_structure();
+    test_many_errors();
+    test_defaults();
+    test_seed();
+    test_schedule();
+    test_parse_list();
+    return CHECK_DONE();
+}

@@ -1,0 +1,52 @@
+/* Shared by the tests: a model from inline scene text, and one run with given options. */
+#ifndef ZP_TESTUTIL_H
+#define ZP_TESTUTIL_H
+
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "sim.h"
+
+/* Builds a model from scene text; aborts the test on bad input (a broken test, not a check). */
+static inline zp_model *tu_model(const char *ini, zp_scene *sc) {
+    zp_diag d;
+    zp_diag_init(&d);
+    zp_model *m = NULL;
+    if (zp_scene_load_string(ini, "test.ini", sc, &d) == ZP_OK) {
+        m = zp_model_build(sc, &d);
+    }
+    if (!m) {
+        zp_diag_print(&d, stderr);
+        abort();
+    }
+    return m;
+}
+
+/* Options of the scene with the given tolerance (atol = rtol / 100) and no trajectory. */
+static inline zp_sim_opts tu_opts(const zp_scene *sc, double rtol) {
+    zp_sim_opts o;
+    zp_diag d;
+    zp_diag_init(&d);
+    if (zp_sim_opts_from_scene(sc, &o, &d)) {
+        zp_diag_print(&d, stderr);
+        abort();
+    }
+    o.rtol = rtol;
+    o.atol = rtol / 100;
+    o.output_dt = 0;
+    return o;
+}
+
+/* One run; the result lives in static storage until the next call. */
+static inline const zp_result *tu_run(const zp_model *m, const zp_sim_opts *o, const zp_input *in) {
+    static zp_result r;
+    zp_sim *s = zp_sim_create(m, o);
+    if (!s || zp_sim_run(m, s, in, &r) != ZP_OK) {
+        fprintf(stderr, "run failed: %s\n", r.message);
+        abort();
+    }
+    zp_sim_free(s);
+    return &r;
+}
+
+#endif
