@@ -286,8 +286,12 @@ static void finish_result(zp_sim *s, zp_result *r, double t, zp_outcome o, zp_st
 }
 
 static zp_status fail(zp_sim *s, zp_result *r, double t, const char *why) {
-    snprintf(r->message, sizeof r->message, "numerical failure at t = %.9g s, x = %.9g m: %.180s",
-             t, s->y[0], why);
+    char where[64] = "";
+    if (isfinite(s->y[0])) {
+        snprintf(where, sizeof where, ", x = %.9g m", s->y[0]);
+    }
+    snprintf(r->message, sizeof r->message, "numerical failure at t = %.9g s%s: %.180s", t, where,
+             why);
     return ZP_ERR_NUMERIC;
 }
 
@@ -330,7 +334,8 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
         if (adv == ZP_ADV_FAIL || bad >= 0 || r->steps + steps_now > s->o.max_steps) {
             add_stats(s, r);
             if (bad >= 0) {
-                snprintf(err, sizeof err, "state component %d is not finite", bad);
+                snprintf(err, sizeof err, "state component %d of %d (%s) is not finite", bad,
+                         s->n, bad == 0 ? "trolley x" : "see the formulation's layout");
             } else if (adv != ZP_ADV_FAIL) {
                 snprintf(err, sizeof err, "the run's budget of %ld steps is exhausted",
                          s->o.max_steps);

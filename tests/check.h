@@ -10,7 +10,7 @@
 static int zp_check_failures;
 static int zp_check_count;
 
-static double zp_tol_scale(void) {
+static inline double zp_tol_scale(void) {
     const char *s = getenv("ZIPOPT_TOL_SCALE");
     return s ? atof(s) : 1.0;
 }

@@ -4,7 +4,8 @@
    conservation and the work-energy audit shrinking with the tolerance, dampers never adding
    energy, outcomes (death on the seed at 100 N robust to tolerance and method, roll-back at
    t = 0, trapped at a sharp kink, t_max), a sample at a kink showing the state after it,
-   the exact largest joint angle, and bit-for-bit reproducibility (outputs included). */
+   the exact largest joint angle, bit-for-bit reproducibility (outputs included), and a clean
+   numerical failure. */
 #include <math.h>
 #include <string.h>
 
@@ -313,7 +314,30 @@ static void check_reproducible(void) {
     zp_model_free(m);
 }
 
+/* forces beyond what doubles can integrate end in a numerical failure with a message */
+static void check_numeric_failure(void) {
+    zp_scene sc;
+    zp_scene_seed(&sc);
+    zp_diag d;
+    zp_diag_init(&d);
+    zp_model *m = zp_model_build(&sc, &d);
+    double f[3] = {1e300, 1e300, 1e300};
+    zp_sim_opts o = tu_opts(&sc, 1e-8);
+    zp_input in = {.force = f};
+    zp_sim *s = zp_sim_create(m, &o);
+    static zp_result r;
+    CHECK(zp_sim_run(m, s, &in, &r) == ZP_ERR_NUMERIC);
+    CHECK(strstr(r.message, "numerical failure at t = ") != NULL);
+    CHECK(strstr(r.message, "nan") == NULL);
+    /* the workspace is still good for the next run */
+    in.force = sc.forces;
+    CHECK(zp_sim_run(m, s, &in, &r) == ZP_OK && r.outcome == ZP_OUTCOME_DIED);
+    zp_sim_free(s);
+    zp_model_free(m);
+}
+
 int main(void) {
+    check_numeric_failure();
     check_effective_gravity("horizontal");
     check_effective_gravity("tangent");
     check_small_oscillation();
