@@ -11,6 +11,7 @@
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
 #include "method.h"
+#include "nvec_fast.h"
 
 typedef struct cvode_work {
     SUNContext ctx;
@@ -78,6 +79,7 @@ static void *cvode_create(int lmm, int n, int nroot, const int *rootdir, zp_rhs_
         return NULL;
     }
     N_VConst(0.0, w->y);
+    zp_nvec_fast_install(w->y);
     int bad = CVodeInit(w->mem, cv_rhs, 0.0, w->y) || CVodeSetUserData(w->mem, w) ||
               CVodeSetErrHandlerFn(w->mem, cv_error, w) ||
               CVodeSStolerances(w->mem, o->rtol, o->atol) ||

@@ -215,9 +215,11 @@ static void track_extremes(zp_sim *s, const double *y, zp_result *r) {
     for (int i = 0; i < s->m->nlink; i++) {
         r->max_rel_angle[i] = fmax(r->max_rel_angle[i], fabs(phi[i]));
     }
-    /* the load peaks, when asked for, are sampled at every step (one more rhs call) */
-    zp_chain c = s->o.track_loads ? row_of(s, 0, y).c : chain_of(s, y);
-    r->max_speed = fmax(r->max_speed, hypot(c.v[0], c.v[1]));
+    /* load and speed peaks, when asked for, are sampled at every step (one more rhs call) */
+    if (s->o.track_loads) {
+        zp_chain c = row_of(s, 0, y).c;
+        r->max_speed = fmax(r->max_speed, hypot(c.v[0], c.v[1]));
+    }
     if (s->form->constraint_residual) {
         r->constraint_residual = fmax(r->constraint_residual,
                                       s->form->constraint_residual(s->m, s->course, s->sec, y));

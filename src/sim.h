@@ -31,8 +31,8 @@ typedef struct zp_sim_opts {
     double t_max;     /* s */
     double output_dt; /* s between trajectory rows; <= 0: no trajectory */
     long max_steps;   /* bound on integrator steps per run */
-    int track_loads;  /* 1: load peaks sampled at every step (costs one rhs call a step);
-                         0: only at output rows, samples and events */
+    int track_loads;  /* 1: load and speed peaks sampled at every step (one rhs call a
+                         step); 0: loads only at rows, samples and events, no max_speed */
 } zp_sim_opts;
 
 typedef struct zp_input {
@@ -77,7 +77,7 @@ typedef struct zp_result {
     double v;       /* m/s, trolley speed then */
     int died_link;  /* 1-based, 0 when nobody died */
     double max_rel_angle[ZP_MAX_LINKS]; /* rad, largest |phi_i| over the run */
-    double max_speed;                   /* m/s, largest trolley speed at a step or event */
+    double max_speed;                   /* m/s, largest trolley speed at a step (track_loads) */
     int ncross;                         /* kink crossings (all of them) */
     zp_crossing cross[ZP_MAX_CROSSINGS];
     double e_initial, e_final;          /* J */
