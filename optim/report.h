@@ -1,0 +1,30 @@
+/* The search's outputs (issue 4 item 5): report.md, schedule.ini and summary.json for the
+   best run. Writers only: every number comes in through zp_report. */
+#ifndef ZP_REPORT_H
+#define ZP_REPORT_H
+
+#include <stdio.h>
+
+#include "search.h"
+#include "verify.h"
+
+typedef struct zp_report {
+    const zp_scene *sc;            /* borrowed */
+    const zp_model *m;             /* borrowed */
+    const zp_search_result *res;   /* borrowed */
+    const zp_verify *v;            /* borrowed: v->run is the best run at the scene's tolerance */
+    const zp_result *study;        /* borrowed: the study's constant push, study_force */
+    double study_force;            /* N */
+    const char *algo;              /* strategy name */
+    const char *method;            /* integrator name */
+    const char *scene_arg;         /* the scene file as given, NULL: the built-in seed */
+    const char *out_dir;
+} zp_report;
+
+/* A schedule file: only [drive] forces (CONFIG.md), with comments saying what it is. */
+void zp_report_write_schedule(FILE *f, const zp_scene *sc, const double *force,
+                              const char *comment);
+void zp_report_write_json(FILE *f, const zp_report *r);
+void zp_report_write_md(FILE *f, const zp_report *r);
+
+#endif

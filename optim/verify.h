@@ -1,0 +1,40 @@
+/* The answer checked (issue 4 item 4): the best schedule re-simulated at a 100x tighter
+   tolerance, and its robustness to perturbed forces. */
+#ifndef ZP_VERIFY_H
+#define ZP_VERIFY_H
+
+#include <signal.h>
+
+#include "objective.h"
+
+#define ZP_VERIFY_LEVELS 2 /* perturbation levels: +/-2 % and +/-5 % */
+
+typedef struct zp_robust {
+    double level;  /* 1: every force scaled by 1 + level * u, u uniform in [-1, 1] */
+    int n;         /* runs */
+    int survived;  /* runs that finished alive */
+    int kept;      /* runs that finished with the margin kept */
+} zp_robust;
+
+typedef struct zp_verify {
+    zp_result *run;   /* owned: the schedule at the scene's tolerance, with its trajectory */
+    zp_result *tight; /* owned: the same at rtol/100, atol/100 */
+    int agree;        /* same outcome, finish times within ZP_VERIFY_DT, margin kept */
+    zp_robust rob[ZP_VERIFY_LEVELS];
+    int robust_done;  /* robustness was measured (not when interrupted) */
+    int kill_found;   /* some perturbation within the largest level killed */
+    double kill;      /* 1: the smallest relative change of the forces found to kill */
+    int kill_section; /* 1-based section whose change alone kills at `kill`, 0: a random mix */
+} zp_verify;
+
+#define ZP_VERIFY_DT 1e-4 /* s: finish times at the two tolerances must agree to this */
+
+/* Checks force (N per section) with fresh workspaces from so; trajectory rows of v->run stay
+   in *sim_out (owned by the caller, freed with zp_sim_free). robust = 0 skips robustness.
+   Returns ZP_OK, or ZP_ERR_NUMERIC / ZP_ERR_NOMEM with why in err. */
+zp_status zp_verify_run(const zp_objective *ob, const zp_sim_opts *so, const double *force,
+                        unsigned long seed, int nrobust, int nthreads, zp_sim **sim_out,
+                        zp_verify *v, char *err, size_t errlen);
+void zp_verify_free(zp_verify *v);
+
+#endif

@@ -1,0 +1,281 @@
+/* `zipopt [SCENE.ini] [--out DIR]`: the search for the fastest survivable schedule, its
+   verification and the best-forcing report (CLI.md; issue 4). */
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "cli.h"
+#include "out_csv.h"
+#include "out_file.h"
+#include "report.h"
+#include "search.h"
+#include "verify.h"
+
+#define STUDY_FORCE 100 /* N per section: the original study's push */
+#define NROBUST 200     /* robustness runs per perturbation level */
+
+static volatile sig_atomic_t interrupted;
+
+/* the first Ctrl-C stops the search cleanly; SA_RESETHAND lets a second one kill */
+static void on_sigint(int sig) {
+    (void)sig;
+    interrupted = 1;
+}
+
+static void usage(FILE *f) {
+    fputs("usage: zipopt [SCENE.ini] [--out DIR] [--algorithm NAME] [--seed N] [--max-evals N]\n"
+          "Searches for the fastest schedule of drive forces, one per course section within\n"
+          "[drive] min, max, that brings the spy to the end alive with every relative joint\n"
+          "angle at least [optimize] margin below death_angle. With no file: the built-in seed\n"
+          "scene. Verifies the best schedule at a 100x tighter tolerance, measures its\n"
+          "robustness to +/-2 % and +/-5 % changes of the forces, and writes report.md,\n"
+          "schedule.ini, summary.json and trajectory.csv to out/<scene name>/ (or DIR).\n"
+          "While it runs, the best so far is kept in DIR/checkpoint.ini; Ctrl-C stops the\n"
+          "search and writes the best so far, marked interrupted.\n"
+          "  --out DIR         output folder\n"
+          "  --algorithm NAME  the search strategy (below; default scan-cobyla)\n"
+          "  --seed N          overrides [optimize] seed\n"
+          "  --max-evals N     overrides [optimize] max_evals (simulations)\n"
+          "strategies:\n",
+          f);
+    for (int i = 0; i < zp_search_algo_count(); i++) {
+        const zp_search_algo *a = zp_search_algo_get(i);
+        fprintf(f, "  %-14s %s\n", a->name, a->doc);
+    }
+}
+
+typedef struct search_args {
+    const char *scene, *out, *algo;
+    long seed, max_evals; /* -1: from the scene */
+} search_args;
+
+static int parse_long(const char *opt, const char *text, long *v) {
+    char *end;
+    *v = strtol(text, &end, 10);
+    if (end == text || *end || *v < 0) {
+        fprintf(stderr, "zipopt: %s '%s': expected a whole number >= 0\n", opt, text);
+        return -1;
+    }
+    return 0;
+}
+
+static int parse_args(int argc, char **argv, search_args *a) {
+    *a = (search_args){.seed = -1, .max_evals = -1};
+    for (int i = 1; i < argc; i++) {
+        const char *o = argv[i];
+        int has_value = i + 1 < argc;
+        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
+            usage(stdout);
+            return 1;
+        } else if (!strcmp(o, "--out") && has_value) {
+            a->out = argv[++i];
+        } else if (!strcmp(o, "--algorithm") && has_value) {
+            a->algo = argv[++i];
+        } else if (!strcmp(o, "--seed") && has_value) {
+            if (parse_long(o, argv[++i], &a->seed)) {
+                return -1;
+            }
+        } else if (!strcmp(o, "--max-evals") && has_value) {
+            if (parse_long(o, argv[++i], &a->max_evals) || a->max_evals < 1) {
+                fprintf(stderr, "zipopt: --max-evals: at least 1 simulation\n");
+                return -1;
+            }
+        } else if (o[0] == '-' || a->scene) {
+            fprintf(stderr, "zipopt: %s '%s'%s; see zipopt --help\n",
+                    o[0] == '-' ? "unknown option or missing value" : "unexpected argument", o,
+                    o[0] == '-' ? "" : " (one scene file only)");
+            return -1;
+        } else {
+            a->scene = o;
+        }
+    }
+    if (a->algo && zp_search_algo_find(a->algo) < 0) {
+        fprintf(stderr, "zipopt: --algorithm '%s' is unknown; see zipopt --help for the list\n",
+                a->algo);
+        return -1;
+    }
+    return 0;
+}
+
+typedef struct progress_ctx {
+    const zp_scene *sc;
+    char checkpoint_dir[1024];
+    int tty;      /* stderr is a terminal: show the progress line */
+    int shown;    /* a progress line is on screen */
+} progress_ctx;
+
+/* the progress line, and the checkpoint of every improvement so a killed run loses nothing */
+static void on_progress(void *user, const zp_search_progress *p, int improved) {
+    progress_ctx *c = user;
+    if (improved) {
+        zp_out_set set;
+        zp_out_set_init(&set);
+        char err[1200], note[160];
+        FILE *f = zp_out_set_open(&set, c->checkpoint_dir, "checkpoint.ini", err, sizeof err);
+        if (f) {
+            snprintf(note, sizeof note, "search checkpoint: best so far, finish %.6f s after %ld "
+                     "simulations", p->time, p->evals);
+            zp_report_write_schedule(f, c->sc, p->force, note);
+            zp_out_set_commit(&set, err, sizeof err);
+        }
+    }
+    if (c->tty) {
+        fprintf(stderr, "\rsearch: %ld simulations, %.0f/s, best %s%.4f s   ", p->evals,
+                p->evals / fmax(p->wall_s, 1e-9), p->found ? "" : "(none survives) ",
+                p->found ? p->time : 0.0);
+        c->shown = 1;
+    }
+}
+
+/* report.md, schedule.ini, summary.json and trajectory.csv: all or none */
+static int write_outputs(const zp_report *r, zp_sim *best_sim) {
+    zp_out_set set;
+    zp_out_set_init(&set);
+    char err[1200] = "", note[200];
+    FILE *md = zp_out_set_open(&set, r->out_dir, "report.md", err, sizeof err);
+    FILE *ini = md ? zp_out_set_open(&set, r->out_dir, "schedule.ini", err, sizeof err) : NULL;
+    FILE *js = ini ? zp_out_set_open(&set, r->out_dir, "summary.json", err, sizeof err) : NULL;
+    FILE *csv = js ? zp_out_set_open(&set, r->out_dir, "trajectory.csv", err, sizeof err) : NULL;
+    if (!csv) {
+        zp_out_set_abort(&set);
+        fprintf(stderr, "zipopt: %s; nothing was written\n", err);
+        return ZP_EXIT_FAIL;
+    }
+    zp_report_write_md(md, r);
+    snprintf(note, sizeof note, "best schedule of the search%s: %s, %.6f s; rerun with zipopt "
+             "simulate SCENE.ini --schedule this-file", r->res->interrupted ? " (interrupted)" : "",
+             zp_sim_outcome_name(r->v->run->outcome), r->v->run->time);
+    zp_report_write_schedule(ini, r->sc, r->res->force, note);
+    zp_report_write_json(js, r);
+    int nrows;
+    const zp_row *rows = zp_sim_rows(best_sim, &nrows);
+    zp_out_csv_trajectory(csv, r->m, rows, nrows);
+    if (zp_out_set_commit(&set, err, sizeof err)) {
+        fprintf(stderr, "zipopt: %s; nothing was written\n", err);
+        return ZP_EXIT_FAIL;
+    }
+    return ZP_EXIT_OK;
+}
+
+static void print_summary(const zp_report *r) {
+    const zp_search_result *s = r->res;
+    const zp_result *run = r->v->run;
+    printf("%sbest schedule (N):", s->interrupted ? "interrupted; " : "");
+    for (int k = 0; k < r->m->nsec; k++) {
+        printf(" %.4f", s->force[k]);
+    }
+    double angle = 0;
+    for (int i = 0; i < r->m->nlink; i++) {
+        angle = fmax(angle, run->max_rel_angle[i]);
+    }
+    printf("\noutcome: %s, time %.4f s (+/- %.1e s), margin %.2f deg%s\n",
+           zp_sim_outcome_name(run->outcome), run->time, fabs(run->time - r->v->tight->time),
+           r->sc->death_angle - angle * 180 / M_PI,
+           r->v->agree ? ", verified" : ", NOT verified at the tighter tolerance");
+    if (s->base_found) {
+        printf("best constant push: %.3f N, %.4f s\n", s->base_force, s->base.time);
+    }
+    printf("search: %s, %ld simulations in %.2f s on %d threads\n", r->algo, s->evals,
+           s->wall_s, s->nthreads);
+    printf("wrote %s/report.md, schedule.ini, summary.json, trajectory.csv\n", r->out_dir);
+}
+
+int zp_cmd_search(int argc, char **argv) {
+    search_args a;
+    int pa = parse_args(argc, argv, &a);
+    if (pa) {
+        return pa > 0 ? ZP_EXIT_OK : ZP_EXIT_USAGE;
+    }
+    zp_scene sc;
+    zp_model *m = zp_cli_load(a.scene, &sc);
+    if (!m) {
+        return ZP_EXIT_USAGE;
+    }
+    sc.seed = a.seed >= 0 ? (unsigned long)a.seed : sc.seed;
+    sc.max_evals = a.max_evals > 0 ? a.max_evals : sc.max_evals;
+    zp_diag d;
+    zp_diag_init(&d);
+    zp_sim_opts so;
+    if (zp_sim_opts_from_scene(&sc, &so, &d)) {
+        zp_diag_print(&d, stderr);
+        zp_model_free(m);
+        return ZP_EXIT_USAGE;
+    }
+    char dir[1024];
+    snprintf(dir, sizeof dir, "%s", a.out ? a.out : "out/");
+    if (!a.out) {
+        snprintf(dir, sizeof dir, "out/%s", sc.name);
+    }
+
+    /* the search runs without trajectories or load peaks: faster, and only the best run
+       needs them */
+    zp_sim_opts fast = so;
+    fast.output_dt = 0;
+    fast.track_loads = 0;
+    zp_objective ob = {m, m->phi_max - sc.margin * M_PI / 180, so.t_max};
+    progress_ctx pc = {.sc = &sc, .tty = isatty(STDERR_FILENO)};
+    snprintf(pc.checkpoint_dir, sizeof pc.checkpoint_dir, "%s", dir);
+    zp_search_opts o = {.algo = a.algo ? zp_search_algo_find(a.algo) : 0,
+                        .max_evals = sc.max_evals, .seed = sc.seed, .stop = &interrupted,
+                        .progress = on_progress, .user = &pc};
+    struct sigaction sa = {.sa_handler = on_sigint, .sa_flags = SA_RESETHAND}, old;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &old);
+    static zp_search_result res;
+    char err[512] = "";
+    zp_status st = zp_search_run(&ob, &fast, sc.force_min, sc.force_max, &o, &res, err,
+                                 sizeof err);
+    if (pc.shown) {
+        fputc('\n', stderr);
+    }
+    int status = ZP_EXIT_FAIL;
+    zp_sim *best_sim = NULL, *study_sim = NULL;
+    zp_verify v = {0};
+    if (st) {
+        fprintf(stderr, "zipopt: %s; nothing was written\n", err);
+        goto done;
+    }
+    /* verification (always) and robustness (not after Ctrl-C: the user wants out) */
+    st = zp_verify_run(&ob, &so, res.force, sc.seed, res.interrupted ? 0 : NROBUST, 0,
+                       &best_sim, &v, err, sizeof err);
+    if (st) {
+        fprintf(stderr, "zipopt: %s; nothing was written\n", err);
+        goto done;
+    }
+    static zp_result study;
+    double study_f[ZP_MAX_SECTIONS];
+    for (int k = 0; k < m->nsec; k++) {
+        study_f[k] = STUDY_FORCE;
+    }
+    study_sim = zp_sim_create(m, &fast);
+    zp_input in = {.force = study_f};
+    if (!study_sim || zp_sim_run(m, study_sim, &in, &study)) {
+        fprintf(stderr, "zipopt: the study's %d N run failed: %s; nothing was written\n",
+                STUDY_FORCE, study_sim ? study.message : "out of memory");
+        goto done;
+    }
+    zp_report r = {&sc, m, &res, &v, &study, STUDY_FORCE,
+                   zp_search_algo_get(o.algo)->name, zp_method_get(so.method)->name, a.scene,
+                   dir};
+    status = write_outputs(&r, best_sim);
+    if (status == ZP_EXIT_OK) {
+        char cp[1100];
+        snprintf(cp, sizeof cp, "%s/checkpoint.ini", dir);
+        remove(cp); /* superseded by schedule.ini */
+        print_summary(&r);
+        if (res.interrupted) {
+            fputs("zipopt: interrupted; wrote the best schedule found so far\n", stderr);
+            status = ZP_EXIT_FAIL;
+        }
+    }
+done:
+    sigaction(SIGINT, &old, NULL);
+    zp_verify_free(&v);
+    zp_sim_free(best_sim);
+    zp_sim_free(study_sim);
+    zp_model_free(m);
+    return status;
+}

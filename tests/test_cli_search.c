@@ -1,0 +1,128 @@
+/* `zipopt SCENE.ini` as a user runs it (CLI.md, issue 4): the three files and the trajectory
+   written, the schedule file round-trips through `simulate --schedule` to the same finish
+   time, Ctrl-C writes the best so far marked interrupted, bad options exit 2 writing nothing.
+   Independent expectations: the simulate command's own run of the written schedule, and the
+   files on disk. */
+#include <signal.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "check.h"
+
+/* s: simulate writes a trajectory, so its steps stop at output times and the finish time
+   moves within the integrator's tolerance (rtol 1e-8 of ~6 s) */
+#define ROUNDTRIP_TOL 1e-6
+
+static char out[16384];
+
+static int run(const char *cmd) {
+    FILE *p = popen(cmd, "r");
+    size_t n = p ? fread(out, 1, sizeof out - 1, p) : 0;
+    out[n] = '\0';
+    int st = p ? pclose(p) : -1;
+    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+static int exists(const char *path) {
+    struct stat sb;
+    return stat(path, &sb) == 0;
+}
+
+/* the value after "key": in a JSON text */
+static double json_num(const char *text, const char *key) {
+    char pat[64];
+    snprintf(pat, sizeof pat, "\"%s\": ", key);
+    const char *p = strstr(text, pat);
+    return p ? atof(p + strlen(pat)) : NAN;
+}
+
+static void slurp(const char *path, char *buf, size_t n) {
+    FILE *f = fopen(path, "r");
+    size_t k = f ? fread(buf, 1, n - 1, f) : 0;
+    buf[k] = '\0';
+    if (f) {
+        fclose(f);
+    }
+}
+
+int main(void) {
+    char dir[] = "/tmp/zp_cli_searchXXXXXX", cmd[4096], path[2048];
+    static char json[65536];
+    CHECK(mkdtemp(dir) != NULL);
+    snprintf(path, sizeof path, "%s/bare.ini", dir);
+    FILE *f = fopen(path, "w");
+    fputs("[scene]\nname = bare\n[course]\nx_start = 0\nsection = 20 : -x/10 + 10\n"
+          "section = 40 : -x/5 + 12\n[trolley]\nmass = 30\n"
+          "[body]\nlengths = 1\nmasses = 5\ndamping = 2\ndeath_angle = 60\n"
+          "[drive]\nmin = 0\nmax = 300\n[optimize]\nmargin = 10\nmax_evals = 250\n", f);
+    fclose(f);
+
+    /* the search writes its four files */
+    snprintf(cmd, sizeof cmd, "%s %s --out %s/a 2>&1", ZP_EXE, path, dir);
+    CHECK(run(cmd) == 0);
+    const char *files[] = {"report.md", "schedule.ini", "summary.json", "trajectory.csv"};
+    for (int i = 0; i < 4; i++) {
+        snprintf(cmd, sizeof cmd, "%s/a/%s", dir, files[i]);
+        CHECK(exists(cmd));
+    }
+    snprintf(cmd, sizeof cmd, "%s/a/checkpoint.ini", dir);
+    CHECK(!exists(cmd)); /* superseded by schedule.ini */
+    snprintf(cmd, sizeof cmd, "%s/a/summary.json", dir);
+    slurp(cmd, json, sizeof json);
+    double t_search = json_num(json, "time");
+    CHECK(strstr(json, "\"outcome\": \"finished\"") != NULL);
+    CHECK(json_num(json, "margin_deg") >= 10);
+    CHECK(strstr(json, "\"interrupted\": false") != NULL);
+
+    /* the schedule round-trips through simulate */
+    snprintf(cmd, sizeof cmd, "%s simulate %s --schedule %s/a/schedule.ini --json --out %s/b",
+             ZP_EXE, path, dir, dir);
+    CHECK(run(cmd) == 0);
+    CHECK(strstr(out, "\"outcome\": \"finished\"") != NULL);
+    CHECK_NEAR(json_num(out, "time"), t_search, ROUNDTRIP_TOL);
+
+    /* Ctrl-C: the best so far, marked interrupted */
+    pid_t pid = fork();
+    if (pid == 0) {
+        snprintf(cmd, sizeof cmd, "%s/c", dir);
+        freopen("/dev/null", "w", stdout);
+        freopen("/dev/null", "w", stderr);
+        execl(ZP_EXE, ZP_EXE, ZP_SOURCE_DIR "/config/seed.ini", "--out", cmd, "--max-evals",
+              "1000000", (char *)NULL);
+        _exit(127);
+    }
+    snprintf(cmd, sizeof cmd, "%s/c/checkpoint.ini", dir);
+    for (int i = 0; i < 200 && !exists(cmd); i++) {
+        usleep(20000); /* until the first survivable schedule is checkpointed */
+    }
+    CHECK(exists(cmd));
+    usleep(300000);
+    kill(pid, SIGINT);
+    int st;
+    waitpid(pid, &st, 0);
+    CHECK(WIFEXITED(st) && WEXITSTATUS(st) == 1);
+    snprintf(cmd, sizeof cmd, "%s/c/summary.json", dir);
+    slurp(cmd, json, sizeof json);
+    CHECK(strstr(json, "\"interrupted\": true") != NULL);
+    CHECK(strstr(json, "\"found\": true") != NULL);
+    CHECK(json_num(json, "evaluations") < 1000000);
+    snprintf(cmd, sizeof cmd, "%s/c/report.md", dir);
+    CHECK(exists(cmd));
+
+    /* bad options: exit 2, nothing written */
+    snprintf(cmd, sizeof cmd, "%s %s --out %s/d --algorithm nope 2>&1", ZP_EXE, path, dir);
+    CHECK(run(cmd) == 2);
+    CHECK(strstr(out, "nope") != NULL);
+    snprintf(cmd, sizeof cmd, "%s %s --out %s/d --max-evals x 2>&1", ZP_EXE, path, dir);
+    CHECK(run(cmd) == 2);
+    snprintf(cmd, sizeof cmd, "%s/d", dir);
+    CHECK(!exists(cmd));
+
+    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+    CHECK(system(cmd) == 0);
+    return CHECK_DONE();
+}
