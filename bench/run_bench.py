@@ -1,15 +1,17 @@
 #!/usr/bin/python3
-"""Benchmark of the inner simulator: the C simulator (build/zipopt simulate) against the
-straightforward SciPy implementation (bench/scipy_zipline.py) on the seed scene at a
-constant 10 N per section.  Run with Debian's /usr/bin/python3 (it has scipy):
+"""Benchmark of the inner simulator: the C simulator (build/bench_sim: zp_sim_run alone, no
+trajectory or output) against the straightforward SciPy implementation
+(bench/scipy_zipline.py) on the seed scene at a constant 10 N per section.  Run with Debian's
+/usr/bin/python3 (it has scipy):
 
-    /usr/bin/python3 bench/run_bench.py [--zipopt build/zipopt] [--repeat 21]
+    /usr/bin/python3 bench/run_bench.py [--bench-sim build/bench_sim] [--repeat 21]
 
 It
   1. computes the accuracy reference T_ref with SciPy DOP853 at rtol 1e-12, atol 1e-14
      (converged to ~1e-12 s: see the table in bench/README or the report);
-  2. runs the C simulator for each rtol in --c-rtols (atol = rtol/100), --repeat times, and
-     takes the median in-process wall time (stats.wall_s), steps, rhs evaluations, |T - T_ref|;
+  2. runs the C simulator for each method in --methods and rtol in --c-rtols (atol = rtol/100),
+     --repeat times in one process, and takes the median wall time of zp_sim_run, steps,
+     rhs evaluations, |T - T_ref|;
   3. runs SciPy for each rtol in --py-rtols, --py-repeat times (median wall time);
   4. compares the cheapest C setting with |dT| <= --target against the cheapest SciPy one;
   5. measures with valgrind --tool=callgrind the share of one C run's instructions spent
@@ -38,39 +40,17 @@ FORCES = [10.0, 10.0, 10.0]
 T_REF_KNOWN = 21.105089547266
 
 
-def scene_text(seed_text, rtol, atol):
-    """The seed scene with its [solver] rtol/atol lines replaced."""
-    out, section = [], None
-    for line in seed_text.splitlines():
-        m = re.match(r"\s*\[(\w+)\]", line)
-        if m:
-            section = m.group(1)
-        key = line.split("=")[0].strip() if "=" in line else None
-        if section == "solver" and key == "rtol":
-            line = f"rtol = {rtol:g}"
-        elif section == "solver" and key == "atol":
-            line = f"atol = {atol:g}"
-        out.append(line)
-    return "\n".join(out) + "\n"
+def c_cmd(bench_sim, method, rtols, repeat):
+    return [bench_sim, "--repeat", str(repeat), "--method", method, "--force", f"{FORCES[0]:g}"] + \
+        [f"{r:g}" for r in rtols]
 
 
-def write_scene(tmpdir, seed_text, rtol, atol):
-    path = os.path.join(tmpdir, f"bench_rtol{rtol:g}.ini")
-    with open(path, "w") as fh:
-        fh.write(scene_text(seed_text, rtol, atol))
-    return path
-
-
-def c_cmd(zipopt, scene, tmpdir):
-    return [zipopt, "simulate", scene, "--force", ",".join(f"{f:g}" for f in FORCES), "--json",
-            "--out", os.path.join(tmpdir, "out")]
-
-
-def run_c(zipopt, scene, tmpdir):
-    p = subprocess.run(c_cmd(zipopt, scene, tmpdir), capture_output=True, text=True)
+def run_c(bench_sim, method, rtols, repeat):
+    """One bench_sim process: a JSON line per tolerance."""
+    p = subprocess.run(c_cmd(bench_sim, method, rtols, repeat), capture_output=True, text=True)
     if p.returncode != 0:
-        raise RuntimeError(f"{zipopt} exited {p.returncode}: {p.stderr.strip()}")
-    return json.loads(p.stdout)
+        raise RuntimeError(f"{bench_sim} exited {p.returncode}: {p.stderr.strip()}")
+    return [json.loads(line) for line in p.stdout.splitlines()]
 
 
 def run_py(rtol, atol):
@@ -94,10 +74,11 @@ def summarize(runs, t_ref):
     }
 
 
-def callgrind_share(zipopt, scene, tmpdir):
+def callgrind_share(bench_sim, method, rtol):
     """Inclusive instruction share of zp_sim_rhs in one C run (valgrind callgrind)."""
-    outfile = os.path.join(tmpdir, "callgrind.out")
-    cmd = ["valgrind", "--tool=callgrind", f"--callgrind-out-file={outfile}"] + c_cmd(zipopt, scene, tmpdir)
+    outfile = os.path.join(tempfile.mkdtemp(prefix="zipbench"), "callgrind.out")
+    cmd = ["valgrind", "--tool=callgrind", f"--callgrind-out-file={outfile}"] + \
+        c_cmd(bench_sim, method, [rtol], 1)
     p = subprocess.run(cmd, capture_output=True, text=True)
     if p.returncode != 0:
         raise RuntimeError(f"callgrind run failed: {p.stderr[-2000:]}")
@@ -125,11 +106,12 @@ def cheapest(rows, target):
 
 def main():
     ap = argparse.ArgumentParser(description="C simulator vs SciPy benchmark on the seed scene at 10 N")
-    ap.add_argument("--zipopt", default=os.path.join(ROOT, "build", "zipopt"))
-    ap.add_argument("--scene", default=os.path.join(ROOT, "config", "seed.ini"))
+    ap.add_argument("--bench-sim", default=os.path.join(ROOT, "build", "bench_sim"))
+    ap.add_argument("--methods", default="cvode-adams,cvode-bdf,gsl-rk8pd",
+                    help="C methods to time (those the build lacks are skipped)")
     ap.add_argument("--repeat", type=int, default=21, help="C runs per tolerance")
     ap.add_argument("--py-repeat", type=int, default=5, help="SciPy runs per tolerance")
-    ap.add_argument("--c-rtols", default="1e-6,1e-8,1e-10")
+    ap.add_argument("--c-rtols", default="1e-6,1e-7,1e-8,1e-10")
     ap.add_argument("--py-rtols", default="1e-5,1e-6,1e-7,1e-8")
     ap.add_argument("--target", type=float, default=1e-6, help="s: matched accuracy |T - T_ref|")
     ap.add_argument("--csv", default=os.path.join(ROOT, "out", "bench", "bench_sim.csv"))
@@ -147,51 +129,51 @@ def main():
     if ref["outcome"] != "finished" or abs(t_ref - T_REF_KNOWN) > 1e-10:
         print("warning: the reference does not reproduce the stored value", file=sys.stderr)
 
-    rows = []
-    with tempfile.TemporaryDirectory(prefix="zipbench") as tmpdir:
-        seed_text = open(args.scene).read()
-        # 2. C
-        c_rows = []
-        if not args.no_c:
-            if not os.access(args.zipopt, os.X_OK):
-                sys.exit(f"no C simulator at {args.zipopt} (use --no-c for the SciPy part only)")
-            for rtol in c_rtols:
-                scene = write_scene(tmpdir, seed_text, rtol, rtol / 100)
-                runs = [run_c(args.zipopt, scene, tmpdir) for _ in range(args.repeat)]
-                row = {"impl": "C", "rtol": rtol, "atol": rtol / 100, "runs": len(runs)}
-                row.update(summarize(runs, t_ref))
+    # 2. C
+    c_rows = []
+    if not args.no_c:
+        if not os.access(args.bench_sim, os.X_OK):
+            sys.exit(f"no C benchmark at {args.bench_sim} (build it; or --no-c for SciPy only)")
+        for method in args.methods.split(","):
+            try:
+                lines = run_c(args.bench_sim, method, c_rtols, args.repeat)
+            except RuntimeError as e:
+                print(f"  C     {method}: skipped ({e})")
+                continue
+            for d in lines:
+                row = {"impl": f"C {method}", "rtol": d["rtol"], "atol": d["atol"], "runs": args.repeat,
+                       "outcome": d["outcome"], "time": d["time"], "dT": abs(d["time"] - t_ref),
+                       "deterministic": True, "steps": d["steps"], "rhs_evals": d["rhs_evals"],
+                       "wall_s": d["wall_median_s"], "wall_min": d["wall_min_s"]}
                 c_rows.append(row)
-                print(f"  C     rtol {rtol:g}: {row['outcome']} T {row['time']:.12f} "
+                print(f"  C     {method} rtol {row['rtol']:g}: {row['outcome']} T {row['time']:.12f} "
                       f"|dT| {row['dT']:.2e} wall {row['wall_s'] * 1e3:.3f} ms", flush=True)
-        # 3. SciPy
-        py_rows = []
-        for rtol in py_rtols:
-            runs = [run_py(rtol, rtol / 100) for _ in range(args.py_repeat)]
-            row = {"impl": "SciPy", "rtol": rtol, "atol": rtol / 100, "runs": len(runs)}
-            row.update(summarize(runs, t_ref))
-            py_rows.append(row)
-            print(f"  SciPy rtol {rtol:g}: {row['outcome']} T {row['time']:.12f} "
-                  f"|dT| {row['dT']:.2e} wall {row['wall_s'] * 1e3:.1f} ms", flush=True)
-        rows = c_rows + py_rows
-        # 5. callgrind
-        cg = None
-        if c_rows and not args.no_callgrind:
-            rtol = c_rows[0]["rtol"]
-            best_c = cheapest(c_rows, args.target)
-            if best_c:
-                rtol = best_c["rtol"]
-            scene = write_scene(tmpdir, seed_text, rtol, rtol / 100)
-            cg = callgrind_share(args.zipopt, scene, tmpdir)
-            cg["rtol"] = rtol
+    # 3. SciPy
+    py_rows = []
+    for rtol in py_rtols:
+        runs = [run_py(rtol, rtol / 100) for _ in range(args.py_repeat)]
+        row = {"impl": "SciPy", "rtol": rtol, "atol": rtol / 100, "runs": len(runs)}
+        row.update(summarize(runs, t_ref))
+        py_rows.append(row)
+        print(f"  SciPy rtol {rtol:g}: {row['outcome']} T {row['time']:.12f} "
+              f"|dT| {row['dT']:.2e} wall {row['wall_s'] * 1e3:.1f} ms", flush=True)
+    rows = c_rows + py_rows
+    # 5. callgrind on the cheapest C setting that meets the target
+    cg = None
+    best_c = cheapest(c_rows, args.target)
+    if best_c and not args.no_callgrind:
+        cg = callgrind_share(args.bench_sim, best_c["impl"][2:], best_c["rtol"])
+        cg["rtol"] = best_c["rtol"]
+        cg["impl"] = best_c["impl"]
 
     # 6. table and CSV
     print()
-    hdr = f"{'impl':6} {'rtol':>7} {'atol':>7} {'outcome':9} {'T (s)':>17} {'|T-Tref| (s)':>12} " \
+    hdr = f"{'impl':17} {'rtol':>7} {'atol':>7} {'outcome':9} {'T (s)':>17} {'|T-Tref| (s)':>12} " \
           f"{'steps':>6} {'rhs':>6} {'wall med (ms)':>13} {'wall min (ms)':>13} {'runs':>4}"
     print(hdr)
     print("-" * len(hdr))
     for r in rows:
-        print(f"{r['impl']:6} {r['rtol']:7.0e} {r['atol']:7.0e} {r['outcome']:9} {r['time']:17.12f} "
+        print(f"{r['impl']:17} {r['rtol']:7.0e} {r['atol']:7.0e} {r['outcome']:9} {r['time']:17.12f} "
               f"{r['dT']:12.2e} {r['steps']:6d} {r['rhs_evals']:6d} {r['wall_s'] * 1e3:13.4f} "
               f"{r['wall_min'] * 1e3:13.4f} {r['runs']:4d}")
     for r in rows:
@@ -208,7 +190,7 @@ def main():
     else:
         print(f"no SciPy setting met |dT| <= {args.target:g} s")
     if best_c:
-        print(f"cheapest C     with |dT| <= {args.target:g} s: rtol {best_c['rtol']:g} "
+        print(f"cheapest C     with |dT| <= {args.target:g} s: {best_c['impl'][2:]} rtol {best_c['rtol']:g} "
               f"({best_c['wall_s'] * 1e3:.3f} ms, |dT| {best_c['dT']:.1e} s)")
     elif c_rows:
         print(f"no C setting met |dT| <= {args.target:g} s")
@@ -217,7 +199,7 @@ def main():
         print(f"speed ratio C/SciPy wall time at matched accuracy: {ratio:.4g} "
               f"(C is {1 / ratio:.0f}x faster)")
     if cg:
-        print(f"callgrind (C, rtol {cg['rtol']:g}): zp_sim_rhs inclusive {cg['rhs_ir']:,} Ir of "
+        print(f"callgrind ({cg['impl']}, rtol {cg['rtol']:g}): zp_sim_rhs inclusive {cg['rhs_ir']:,} Ir of "
               f"{cg['total_ir']:,} total = {100 * cg['share_total']:.1f}%"
               + (f"; of zp_sim_run ({cg['run_ir']:,} Ir) {100 * cg['share_run']:.1f}%" if cg["run_ir"] else ""))
 
@@ -236,7 +218,7 @@ def main():
             rec["time"] = f"{r['time']:.12f}"
             rec["matched_best"] = int(r is best_c or r is best_py)
             rec["speed_ratio_c_over_scipy"] = f"{ratio:.6g}" if ratio and rec["matched_best"] else ""
-            is_cg = cg and r["impl"] == "C" and r["rtol"] == cg["rtol"]
+            is_cg = cg and r["impl"] == cg["impl"] and r["rtol"] == cg["rtol"]
             rec["rhs_share_total"] = f"{cg['share_total']:.4f}" if is_cg else ""
             rec["rhs_share_run"] = f"{cg['share_run']:.4f}" if is_cg and cg["share_run"] else ""
             w.writerow(rec)

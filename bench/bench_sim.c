@@ -1,0 +1,80 @@
+/* The inner simulator alone (no trajectory, no load tracking, no output): the seed scene at a
+   constant push, repeated in one process. One JSON line per tolerance with the median and
+   smallest wall time of zp_sim_run, steps, rhs evaluations and the finish time.
+   Usage: bench_sim [--repeat N] [--method NAME] [--force F] RTOL [RTOL..]  (atol = rtol/100) */
+#include <gsl/gsl_errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sim.h"
+
+static int cmp_double(const void *a, const void *b) {
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+int main(int argc, char **argv) {
+    int repeat = 21, method = ZP_METHOD_CVODE_ADAMS;
+    double force = 10;
+    int first_rtol = argc;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--repeat") && i + 1 < argc) {
+            repeat = atoi(argv[++i]);
+        } else if (!strcmp(argv[i], "--method") && i + 1 < argc) {
+            method = zp_method_find(argv[++i]);
+        } else if (!strcmp(argv[i], "--force") && i + 1 < argc) {
+            force = atof(argv[++i]);
+        } else {
+            first_rtol = i;
+            break;
+        }
+    }
+    if (repeat < 1 || method < 0 || first_rtol >= argc) {
+        fputs("usage: bench_sim [--repeat N] [--method NAME] [--force F] RTOL [RTOL..]\n", stderr);
+        return 2;
+    }
+    gsl_set_error_handler_off();
+    zp_scene sc;
+    zp_scene_seed(&sc);
+    zp_diag d;
+    zp_diag_init(&d);
+    zp_model *m = zp_model_build(&sc, &d);
+    double *wall = malloc(sizeof *wall * repeat);
+    if (!m || !wall) {
+        return 1;
+    }
+    double f[ZP_MAX_SECTIONS];
+    for (int k = 0; k < m->nsec; k++) {
+        f[k] = force;
+    }
+    zp_input in = {.force = f};
+    static zp_result r;
+    for (int a = first_rtol; a < argc; a++) {
+        double rtol = atof(argv[a]);
+        zp_sim_opts o = {.method = method,
+                         .formulation = ZP_FORM_LAGRANGE,
+                         .rtol = rtol,
+                         .atol = rtol / 100,
+                         .t_max = sc.t_max,
+                         .max_steps = 2000000};
+        zp_sim *s = zp_sim_create(m, &o);
+        for (int k = 0; k < repeat; k++) {
+            if (!s || zp_sim_run(m, s, &in, &r) != ZP_OK) {
+                fprintf(stderr, "bench_sim: run failed: %s\n", s ? r.message : "no workspace");
+                return 1;
+            }
+            wall[k] = r.wall_s;
+        }
+        qsort(wall, repeat, sizeof *wall, cmp_double);
+        printf("{\"method\": \"%s\", \"rtol\": %g, \"atol\": %g, \"outcome\": \"%s\", "
+               "\"time\": %.17g, \"steps\": %ld, \"rhs_evals\": %ld, \"wall_median_s\": %.6g, "
+               "\"wall_min_s\": %.6g}\n",
+               zp_method_get(method)->name, rtol, rtol / 100, zp_sim_outcome_name(r.outcome),
+               r.time, r.steps, r.rhs_evals, wall[repeat / 2], wall[0]);
+        zp_sim_free(s);
+    }
+    free(wall);
+    zp_model_free(m);
+    return 0;
+}
