@@ -257,6 +257,14 @@ void zp_report_write_md(FILE *f, const zp_report *r) {
         }
     }
 
+    if (r->figures) {
+        fputs("\n## Figures\n\n"
+              "The best run: the course with every centre-of-mass path, the energy account, the\n"
+              "relative joint angles against the death angle and the margin, and the loads.\n\n"
+              "![course and paths](course.png)\n\n![energy](energy.png)\n\n"
+              "![joint angles](angles.png)\n\n![loads](loads.png)\n",
+              f);
+    }
     fprintf(f, "\n## Rerun\n\n```\nzipopt %s --out %s          # this search\n"
                "zipopt simulate %s --schedule %s/schedule.ini   # this schedule\n```\n",
             rerun_scene(r), r->out_dir, rerun_scene(r), r->out_dir);

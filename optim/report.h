@@ -19,6 +19,7 @@ typedef struct zp_report {
     const char *method;            /* integrator name */
     const char *scene_arg;         /* the scene file as given, NULL: the built-in seed */
     const char *out_dir;
+    int figures;                   /* 1: course, energy, angles, loads .png beside the report */
 } zp_report;
 
 /* A schedule file: only [drive] forces (CONFIG.md), with comments saying what it is. */

@@ -20,6 +20,8 @@ void zp_cli_usage(FILE *f);
 
 int zp_cmd_simulate(int argc, char **argv);
 int zp_cmd_check(int argc, char **argv);
+int zp_cmd_landscape(int argc, char **argv);
 int zp_cmd_search(int argc, char **argv);
+int zp_cmd_bench(int argc, char **argv);
 
 #endif

@@ -10,6 +10,7 @@
 #include "cli.h"
 #include "out_csv.h"
 #include "out_file.h"
+#include "plot.h"
 #include "report.h"
 #include "search.h"
 #include "verify.h"
@@ -27,18 +28,21 @@ static void on_sigint(int sig) {
 
 static void usage(FILE *f) {
     fputs("usage: zipopt [SCENE.ini] [--out DIR] [--algorithm NAME] [--seed N] [--max-evals N]\n"
+          "              [--no-plot]\n"
           "Searches for the fastest schedule of drive forces, one per course section within\n"
           "[drive] min, max, that brings the spy to the end alive with every relative joint\n"
           "angle at least [optimize] margin below death_angle. With no file: the built-in seed\n"
           "scene. Verifies the best schedule at a 100x tighter tolerance, measures its\n"
           "robustness to +/-2 % and +/-5 % changes of the forces, and writes report.md,\n"
-          "schedule.ini, summary.json and trajectory.csv to out/<scene name>/ (or DIR).\n"
+          "schedule.ini, summary.json, trajectory.csv and the best run's figures (course,\n"
+          "energy, angles, loads: PNG with their gnuplot scripts) to out/<scene name>/ (or DIR).\n"
           "While it runs, the best so far is kept in DIR/checkpoint.ini; Ctrl-C stops the\n"
           "search and writes the best so far, marked interrupted.\n"
           "  --out DIR         output folder\n"
           "  --algorithm NAME  the search strategy (below; default scan-cobyla)\n"
           "  --seed N          overrides [optimize] seed\n"
           "  --max-evals N     overrides [optimize] max_evals (simulations)\n"
+          "  --no-plot         skip the figures\n"
           "strategies:\n",
           f);
     for (int i = 0; i < zp_search_algo_count(); i++) {
@@ -50,6 +54,7 @@ static void usage(FILE *f) {
 typedef struct search_args {
     const char *scene, *out, *algo;
     long seed, max_evals; /* -1: from the scene */
+    int no_plot;
 } search_args;
 
 static int parse_long(const char *opt, const char *text, long *v) {
@@ -72,6 +77,8 @@ static int parse_args(int argc, char **argv, search_args *a) {
             return 1;
         } else if (!strcmp(o, "--out") && has_value) {
             a->out = argv[++i];
+        } else if (!strcmp(o, "--no-plot")) {
+            a->no_plot = 1;
         } else if (!strcmp(o, "--algorithm") && has_value) {
             a->algo = argv[++i];
         } else if (!strcmp(o, "--seed") && has_value) {
@@ -257,9 +264,30 @@ int zp_cmd_search(int argc, char **argv) {
                 STUDY_FORCE, study_sim ? study.message : "out of memory");
         goto done;
     }
+    /* the figures first, so that the report links only those that exist */
+    int figures = 0;
+    if (!a.no_plot) {
+        zp_plot_opts po;
+        zp_plot_opts_default(&po);
+        po.margin = sc.margin * M_PI / 180;
+        po.force = res.force;
+        zp_plot_info info;
+        int nrows;
+        const zp_row *rows = zp_sim_rows(best_sim, &nrows);
+        if (zp_plot_run(dir, m, rows, nrows, v.run, &po, &info, err, sizeof err)) {
+            fprintf(stderr, "zipopt: figures: %s; nothing was written\n", err);
+            goto done;
+        }
+        figures = !info.no_gnuplot;
+        if (info.no_gnuplot) {
+            fputs("zipopt: gnuplot is not installed (apt-get install gnuplot-nox): wrote the "
+                  "figures' data and scripts, not the images\n",
+                  stderr);
+        }
+    }
     zp_report r = {&sc, m, &res, &v, &study, STUDY_FORCE,
                    zp_search_algo_get(o.algo)->name, zp_method_get(so.method)->name, a.scene,
-                   dir};
+                   dir, figures};
     status = write_outputs(&r, best_sim);
     if (status == ZP_EXIT_OK) {
         char cp[1100];

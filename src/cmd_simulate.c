@@ -9,6 +9,7 @@
 #include "out_csv.h"
 #include "out_file.h"
 #include "out_json.h"
+#include "plot.h"
 #include "sim.h"
 
 #define MAX_SAMPLES 10000
@@ -16,6 +17,8 @@
 static void usage(FILE *f) {
     fputs("usage: zipopt simulate SCENE.ini [--force F1,F2,..] [--schedule FILE] [--json]\n"
           "                       [--sample-times T1,T2,..] [--out DIR]\n"
+          "                       [--plot] [--frames-at x=X1,.. | t=T1,..] [--animate]\n"
+          "                       [--fps N] [--size WxH] [--speedup S]\n"
           "Runs one schedule of drive forces (one per course section, N) through the\n"
           "simulator and reports the outcome: finished (finish time), died (time, x, link)\n"
           "or stalled (why).\n"
@@ -24,7 +27,18 @@ static void usage(FILE *f) {
           "  --json              print the result as one JSON object (keys: README, CLI.md)\n"
           "  --sample-times T,.. also report the state at these times (s)\n"
           "  --out DIR           write trajectory.csv and summary.json to DIR\n"
-          "                      (default out/<scene name>/)\n",
+          "                      (default out/<scene name>/)\n"
+          "  --plot              also draw the run with gnuplot into the same folder:\n"
+          "                      course.png (course, sections, kinks, every centre-of-mass\n"
+          "                      path), energy.png, angles.png (death angle and search\n"
+          "                      margin), loads.png; each with its .gp script and data\n"
+          "  --frames-at x=X,..  still frames of the body: frame_x<X>.png where the trolley\n"
+          "  --frames-at t=T,..  first reaches x = X (m), or frame_t<T>.png at time T (s)\n"
+          "  --animate           run.gif (and run.mp4 when ffmpeg is installed)\n"
+          "  --fps N             animation frames per second, 1..100 (default 25)\n"
+          "  --size WxH          animation size in px (default 960 wide, height to fit)\n"
+          "  --speedup S         simulated seconds per second of animation (default 1)\n"
+          "                      --frames-at and --animate imply --plot\n",
           f);
 }
 
@@ -32,6 +46,8 @@ typedef struct sim_args {
     const char *scene, *schedule, *out;
     const char *force_text, *sample_text;
     int json;
+    int plot, animate; /* --frames-at and --animate imply --plot */
+    const char *frames_text, *fps_text, *size_text, *speedup_text;
 } sim_args;
 
 static int parse_args(int argc, char **argv, sim_args *a) {
@@ -52,6 +68,19 @@ static int parse_args(int argc, char **argv, sim_args *a) {
             a->sample_text = argv[++i];
         } else if (!strcmp(o, "--out") && has_value) {
             a->out = argv[++i];
+        } else if (!strcmp(o, "--plot")) {
+            a->plot = 1;
+        } else if (!strcmp(o, "--animate")) {
+            a->plot = a->animate = 1;
+        } else if (!strcmp(o, "--frames-at") && has_value) {
+            a->plot = 1;
+            a->frames_text = argv[++i];
+        } else if (!strcmp(o, "--fps") && has_value) {
+            a->fps_text = argv[++i];
+        } else if (!strcmp(o, "--size") && has_value) {
+            a->size_text = argv[++i];
+        } else if (!strcmp(o, "--speedup") && has_value) {
+            a->speedup_text = argv[++i];
         } else if (o[0] == '-' || a->scene) {
             fprintf(stderr, "zipopt simulate: %s '%s'%s; see zipopt simulate --help\n",
                     o[0] == '-' ? "unknown option or missing value" : "unexpected argument", o,
@@ -91,6 +120,21 @@ static void print_text(const zp_model *m, const zp_result *r) {
     printf("steps: %ld, rhs evaluations: %ld, wall: %.4f s\n", r->steps, r->rhs_evals, r->wall_s);
 }
 
+/* the error estimate beside the answer (docs/trade.md) */
+static void print_estimate(const zp_result *r, const zp_estimate *e) {
+    if (!e->ok) {
+        printf("time error estimate: unavailable, the run at rtol %.0e failed: %s\n", e->rtol,
+               e->message);
+    } else if (e->sensitive) {
+        printf("SENSITIVE: at rtol %.0e the outcome is %s at %.9f s instead of %s: the verdict "
+               "depends on the tolerance\n",
+               e->rtol, zp_sim_outcome_name(e->outcome), e->time, zp_sim_outcome_name(r->outcome));
+    } else {
+        printf("time error estimate: %.2g s (difference from a run at rtol %.0e)\n",
+               e->time_error, e->rtol);
+    }
+}
+
 /* trajectory.csv and summary.json, both or neither */
 static int write_files(const char *dir, const zp_model *m, zp_sim *s, const zp_result *r,
                        const zp_row *smp, int nsmp, const zp_run_meta *meta) {
@@ -112,6 +156,76 @@ static int write_files(const char *dir, const zp_model *m, zp_sim *s, const zp_r
         fprintf(stderr, "zipopt simulate: %s; nothing was written\n", err);
         return ZP_EXIT_FAIL;
     }
+    return ZP_EXIT_OK;
+}
+
+/* the --plot options, checked before the run; 0, or -1 with the message printed */
+static int plot_opts(const sim_args *a, const zp_model *m, const zp_scene *sc, zp_plot_opts *po) {
+    zp_plot_opts_default(po);
+    po->margin = sc->margin * M_PI / 180;
+    po->force = sc->forces;
+    po->animate = a->animate;
+    char why[256] = "", expect[128] = "";
+    const char *opt = NULL;
+    if (a->plot && !(sc->output_dt > 0)) {
+        opt = "--plot";
+        snprintf(why, sizeof why, "[solver] output_dt = %g gives no trajectory", sc->output_dt);
+        snprintf(expect, sizeof expect, "output_dt > 0 in the scene");
+    } else if (a->frames_text && zp_plot_parse_frames(m, a->frames_text, po, why, sizeof why)) {
+        opt = "--frames-at";
+        snprintf(expect, sizeof expect, "x=X1,X2,.. (m, on the course) or t=T1,T2,.. (s)");
+    } else if (a->size_text && zp_plot_parse_size(a->size_text, po, why, sizeof why)) {
+        opt = "--size";
+        snprintf(expect, sizeof expect, "e.g. 960x400");
+    } else if (a->fps_text && (zp_cli_parse_list(a->fps_text, &po->fps, 1, why, sizeof why) != 1 ||
+                               !(po->fps >= 1 && po->fps <= 100))) {
+        opt = "--fps";
+        snprintf(expect, sizeof expect, "one number of frames per second from 1 to 100");
+    } else if (a->speedup_text &&
+               (zp_cli_parse_list(a->speedup_text, &po->speedup, 1, why, sizeof why) != 1 ||
+                !(po->speedup > 0 && po->speedup <= 1000))) {
+        opt = "--speedup";
+        snprintf(expect, sizeof expect, "one number above 0 and at most 1000");
+    }
+    if (opt) {
+        fprintf(stderr, "zipopt simulate: %s: %s%s%s; nothing was written\n", opt,
+                *why ? why : "bad value", *why ? "; expected " : ", expected ", expect);
+        return -1;
+    }
+    return 0;
+}
+
+/* the figures of the run; says what was made (on stderr when stdout carries JSON) */
+static int draw(const char *dir, const zp_model *m, zp_sim *s, const zp_result *r,
+                const zp_plot_opts *po, FILE *say) {
+    int nrows;
+    const zp_row *rows = zp_sim_rows(s, &nrows);
+    zp_plot_info info;
+    char err[1200];
+    if (zp_plot_run(dir, m, rows, nrows, r, po, &info, err, sizeof err)) {
+        fprintf(stderr, "zipopt simulate: %s; no figures were written\n", err);
+        return ZP_EXIT_FAIL;
+    }
+    if (info.nskipped) {
+        fprintf(stderr, "zipopt simulate: %d of the still frames asked for lie beyond the end of "
+                        "the run (t = %.2f s, x = %.2f m) and were not drawn\n",
+                info.nskipped, r->time, r->x);
+    }
+    if (info.no_gnuplot) {
+        fprintf(stderr, "zipopt simulate: gnuplot is not installed (apt-get install gnuplot-nox): "
+                        "no images were drawn; the plot data and the .gp scripts are in %s, run "
+                        "`gnuplot course.gp` (and the other scripts) there once it is\n",
+                dir);
+        return ZP_EXIT_FAIL;
+    }
+    fprintf(say, "figures in %s: course.png energy.png angles.png loads.png", dir);
+    if (info.nframe) {
+        fprintf(say, ", %d still frame%s", info.nframe, info.nframe == 1 ? "" : "s");
+    }
+    if (po->animate) {
+        fprintf(say, ", run.gif (%d frames)%s", info.anim_frames, info.mp4 ? ", run.mp4" : "");
+    }
+    fprintf(say, "\n");
     return ZP_EXIT_OK;
 }
 
@@ -167,6 +281,10 @@ int zp_cmd_simulate(int argc, char **argv) {
         zp_diag_print(&d, stderr);
         goto done;
     }
+    zp_plot_opts po;
+    if (plot_opts(&a, m, &sc, &po)) {
+        goto done;
+    }
     status = ZP_EXIT_FAIL;
     s = zp_sim_create(m, &o);
     if (!s) {
@@ -181,8 +299,10 @@ int zp_cmd_simulate(int argc, char **argv) {
     }
     int nsmp;
     const zp_row *smp = zp_sim_samples(s, &nsmp);
+    zp_estimate est;
+    zp_estimate_run(m, &o, &in, &r, &est);
     zp_run_meta meta = {sc.name, zp_method_get(o.method)->name,
-                        zp_formulation_get(o.formulation)->name, o.rtol, o.atol, sc.forces};
+                        zp_formulation_get(o.formulation)->name, o.rtol, o.atol, sc.forces, &est};
     char dir[1024];
     snprintf(dir, sizeof dir, "%s", a.out ? a.out : "out/");
     if (!a.out) {
@@ -194,8 +314,12 @@ int zp_cmd_simulate(int argc, char **argv) {
             zp_out_json_result(stdout, m, &r, smp, nsmp, &meta);
         } else {
             print_text(m, &r);
+            print_estimate(&r, &est);
             printf("wrote %s/trajectory.csv and %s/summary.json\n", dir, dir);
         }
+    }
+    if (status == ZP_EXIT_OK && a.plot) {
+        status = draw(dir, m, s, &r, &po, a.json ? stderr : stdout);
     }
 done:
     free(samples);

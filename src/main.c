@@ -22,5 +22,11 @@ int main(int argc, char **argv) {
     if (argc >= 2 && !strcmp(argv[1], "check")) {
         return zp_cmd_check(argc - 1, argv + 1);
     }
+    if (argc >= 2 && !strcmp(argv[1], "landscape")) {
+        return zp_cmd_landscape(argc - 1, argv + 1);
+    }
+    if (argc >= 2 && !strcmp(argv[1], "bench")) {
+        return zp_cmd_bench(argc - 1, argv + 1);
+    }
     return zp_cmd_search(argc, argv);
 }

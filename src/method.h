@@ -1,5 +1,5 @@
-/* The integrator interface: advance an ODE with root finding to an output time.
-   CVODE (Adams, BDF) implements it; the simulator sees nothing else. */
+/* The integrator interface: advance an ODE with root finding to an output time. CVODE (Adams,
+   BDF) and GSL odeiv2 (rk8pd, rk4imp) implement it; the simulator sees nothing else. */
 #ifndef ZP_METHOD_H
 #define ZP_METHOD_H
 
@@ -40,7 +40,13 @@ typedef struct zp_method {
     void (*free)(void *w);
 } zp_method;
 
-typedef enum { ZP_METHOD_CVODE_ADAMS, ZP_METHOD_CVODE_BDF, ZP_METHOD_COUNT } zp_method_id;
+typedef enum {
+    ZP_METHOD_CVODE_ADAMS,
+    ZP_METHOD_CVODE_BDF,
+    ZP_METHOD_GSL_RK8PD,
+    ZP_METHOD_GSL_RK4IMP,
+    ZP_METHOD_COUNT
+} zp_method_id;
 
 const zp_method *zp_method_get(int id);
 int zp_method_find(const char *name); /* -1 if unknown */

@@ -8,7 +8,7 @@
 
 void zp_out_set_init(zp_out_set *o) { memset(o, 0, sizeof *o); }
 
-static int make_dirs(const char *dir) {
+int zp_out_make_dirs(const char *dir) {
     char path[1024];
     snprintf(path, sizeof path, "%s", dir);
     for (char *p = path + 1; *p; p++) {
@@ -29,7 +29,7 @@ FILE *zp_out_set_open(zp_out_set *o, const char *dir, const char *name, char *er
         snprintf(err, errlen, "too many output files");
         return NULL;
     }
-    if (make_dirs(dir)) {
+    if (zp_out_make_dirs(dir)) {
         snprintf(err, errlen, "cannot create the folder %s: %s", dir, strerror(errno));
         return NULL;
     }

@@ -17,6 +17,8 @@ typedef struct zp_out_set {
 } zp_out_set;
 
 void zp_out_set_init(zp_out_set *o);
+/* Creates dir and its parents (like mkdir -p); 0, or -1 with errno set. */
+int zp_out_make_dirs(const char *dir);
 /* Creates dir (and its parents) and opens dir/name aside; NULL with a message on failure. */
 FILE *zp_out_set_open(zp_out_set *o, const char *dir, const char *name, char *err, size_t errlen);
 /* Closes and renames every file; on any failure removes them all and reports the first. */

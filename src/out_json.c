@@ -73,6 +73,14 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
     key_num(f, "time", r->time, ",\n  ");
     key_num(f, "x", r->x, ",\n  ");
     key_num(f, "speed", r->v, ",\n");
+    if (meta->estimate) {
+        /* null when the tighter run failed: no estimate, no verdict */
+        const zp_estimate *e = meta->estimate;
+        fputs("  ", f);
+        key_num(f, "time_error", e->ok ? e->time_error : NAN, ", ");
+        key_num(f, "time_error_rtol", e->rtol, ", ");
+        fprintf(f, "\"sensitive\": %s,\n", !e->ok ? "null" : e->sensitive ? "true" : "false");
+    }
     if (r->died_link) {
         fprintf(f, "  \"died_link\": %d,\n", r->died_link);
     } else {

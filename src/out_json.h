@@ -4,6 +4,7 @@
 
 #include <stdio.h>
 
+#include "estimate.h"
 #include "sim.h"
 
 /* What the run was, echoed so a JSON file stands on its own. */
@@ -13,6 +14,7 @@ typedef struct zp_run_meta {
     const char *formulation; /* formulation name */
     double rtol, atol;
     const double *force; /* N, per section */
+    const zp_estimate *estimate; /* borrowed; NULL: no error estimate was made */
 } zp_run_meta;
 
 /* A number that round-trips, or null if it is not finite. */

@@ -1,0 +1,376 @@
+/* `zipopt bench trade [SCENE]`: the work-precision study (docs/trade.md). Every method over a
+   tolerance sweep on three cases of one scene; the error of what users read against a
+   reference run by two methods that agree, against wall time and rhs evaluations; a CSV, a
+   gnuplot script and its log-log plot in out/bench/. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "out_file.h"
+#include "sim.h"
+
+#define NTOL 10          /* rtol 1e-3 .. 1e-12 */
+#define REF_RTOL 1e-13   /* the reference runs' tolerance: tighter than the sweep */
+#define ATOL_RATIO 1e-2  /* atol = rtol / 100, the scene default's ratio */
+#define MAX_IMPULSES 64  /* kink impulses compared per run */
+#define REPEAT_BUDGET 1.0 /* s: wall time the repeats of one configuration may take */
+#define NTARGET 3
+
+static const double targets[NTARGET] = {1e-3, 1e-6, 1e-9}; /* s, on the finish/death time */
+
+/* the seed scene at a surviving schedule, a dying one, and a stiff copy (heavy damping) */
+typedef struct trade_case {
+    const char *name;
+    double force;   /* N, every section */
+    double damping; /* N m s/rad, every joint; < 0: the scene's */
+    int ref_cvode;  /* the CVODE method of the reference pair, with gsl-rk8pd */
+} trade_case;
+
+static const trade_case cases[] = {
+    {"survive", 10, -1, ZP_METHOD_CVODE_ADAMS},
+    {"die", 100, -1, ZP_METHOD_CVODE_ADAMS},
+    {"stiff", 100, 1e4, ZP_METHOD_CVODE_BDF},
+};
+#define NCASE ((int)(sizeof cases / sizeof cases[0]))
+
+/* what a user reads from one run, plus its cost */
+typedef struct reading {
+    int ok; /* 0: numerical failure */
+    zp_outcome outcome;
+    int died_link;
+    double time, x, v;                 /* s, m, m/s */
+    int nimp;                          /* kink crossings */
+    double impulse[MAX_IMPULSES];      /* N s */
+    double angle[ZP_MAX_LINKS];        /* deg, largest |relative joint angle| */
+    double wall;                       /* s, median over repeats */
+    long evals, steps;
+    int repeats;
+} reading;
+
+/* errors against the reference; infinite when the outcome or the kinks crossed differ */
+typedef struct errors {
+    double time, impulse, angle, x, v; /* s, N s, deg, m, m/s */
+} errors;
+
+static int cmp_double(const void *a, const void *b) {
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static reading read_result(const zp_model *m, const zp_result *r) {
+    reading d = {.ok = 1, .outcome = r->outcome, .died_link = r->died_link, .time = r->time,
+                 .x = r->x, .v = r->v, .evals = r->rhs_evals, .steps = r->steps};
+    d.nimp = r->ncross;
+    for (int k = 0; k < r->ncross && k < MAX_IMPULSES; k++) {
+        d.impulse[k] = r->cross[k].impulse;
+    }
+    for (int i = 0; i < m->nlink; i++) {
+        d.angle[i] = r->max_rel_angle[i] * 180 / M_PI;
+    }
+    return d;
+}
+
+/* one configuration: runs repeated within REPEAT_BUDGET (at most max_rep), median wall */
+static reading measure(const zp_model *m, zp_sim_opts o, const double *force, int max_rep) {
+    static zp_result r; /* large */
+    reading d = {0};
+    zp_sim *s = zp_sim_create(m, &o);
+    if (!s) {
+        return d;
+    }
+    zp_input in = {.force = force};
+    double walls[64];
+    int n = 0;
+    for (double spent = 0; n < max_rep && n < 64 && (n == 0 || spent < REPEAT_BUDGET); n++) {
+        if (zp_sim_run(m, s, &in, &r) != ZP_OK) {
+            zp_sim_free(s);
+            return d;
+        }
+        walls[n] = r.wall_s;
+        spent += r.wall_s;
+    }
+    d = read_result(m, &r);
+    qsort(walls, n, sizeof *walls, cmp_double);
+    d.wall = n % 2 ? walls[n / 2] : 0.5 * (walls[n / 2 - 1] + walls[n / 2]);
+    d.repeats = n;
+    zp_sim_free(s);
+    return d;
+}
+
+static errors compare(const zp_model *m, const reading *a, const reading *ref) {
+    errors e = {INFINITY, INFINITY, INFINITY, INFINITY, INFINITY};
+    if (!a->ok || a->outcome != ref->outcome || a->died_link != ref->died_link) {
+        return e;
+    }
+    e.time = fabs(a->time - ref->time);
+    e.x = fabs(a->x - ref->x);
+    e.v = fabs(a->v - ref->v);
+    e.angle = 0;
+    for (int i = 0; i < m->nlink; i++) {
+        e.angle = fmax(e.angle, fabs(a->angle[i] - ref->angle[i]));
+    }
+    if (a->nimp == ref->nimp) {
+        e.impulse = 0;
+        for (int k = 0; k < a->nimp && k < MAX_IMPULSES; k++) {
+            e.impulse = fmax(e.impulse, fabs(a->impulse[k] - ref->impulse[k]));
+        }
+    }
+    return e;
+}
+
+static double worst(errors e) {
+    return fmax(fmax(e.time, e.impulse), fmax(fmax(e.angle, e.x), e.v));
+}
+
+typedef struct trade_args {
+    const char *scene, *out;
+    int repeats;
+} trade_args;
+
+static void usage(FILE *f) {
+    fputs("usage: zipopt bench trade [SCENE.ini] [--repeats N] [--out DIR]\n"
+          "Work-precision study: every method at rtol 1e-3 .. 1e-12 (atol = rtol/100) on the\n"
+          "scene (default: the built-in seed) at 10 N everywhere (survives), 100 N (dies) and\n"
+          "100 N with joint damping 1e4 N m s/rad (stiff). Errors of the finish/death time,\n"
+          "kink impulses, largest joint angles and final x/speed against a reference at rtol\n"
+          "1e-13 by two methods that agree; cost as the median wall time of up to N runs\n"
+          "(default 5) and rhs evaluations. Writes trade.csv, trade.gp and trade.png to DIR\n"
+          "(default out/bench) and prints the fastest method and tolerance reaching a finish\n"
+          "or death time error of 1e-3, 1e-6 and 1e-9 s.\n",
+          f);
+}
+
+static int parse_args(int argc, char **argv, trade_args *a) {
+    *a = (trade_args){.out = "out/bench", .repeats = 5};
+    if (argc < 2 || strcmp(argv[1], "trade")) {
+        if (argc >= 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
+            usage(stdout);
+            return 1;
+        }
+        fputs("zipopt bench: expected a study name: trade; see zipopt bench --help\n", stderr);
+        return -1;
+    }
+    for (int i = 2; i < argc; i++) {
+        const char *o = argv[i];
+        int has_value = i + 1 < argc;
+        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
+            usage(stdout);
+            return 1;
+        } else if (!strcmp(o, "--out") && has_value) {
+            a->out = argv[++i];
+        } else if (!strcmp(o, "--repeats") && has_value) {
+            char *end;
+            long n = strtol(argv[++i], &end, 10);
+            if (*end || n < 1 || n > 64) {
+                fprintf(stderr, "zipopt bench trade: --repeats '%s': expected 1 to 64\n",
+                        argv[i]);
+                return -1;
+            }
+            a->repeats = (int)n;
+        } else if (o[0] == '-' || a->scene) {
+            fprintf(stderr, "zipopt bench trade: %s '%s'; see zipopt bench --help\n",
+                    o[0] == '-' ? "unknown option or missing value" : "unexpected argument", o);
+            return -1;
+        } else {
+            a->scene = o;
+        }
+    }
+    return 0;
+}
+
+/* the plot: error of the finish/death time against wall time, one panel per case, one line
+   per method, read straight from the CSV; a zero error is drawn at the 1e-16 floor */
+static void write_gnuplot(FILE *f) {
+    fputs("# written by zipopt bench trade: work-precision plot from trade.csv\n"
+          "set datafile separator ','\n"
+          "set terminal pngcairo size 1500,520 noenhanced\n"
+          "set output 'trade.png'\n"
+          "set logscale xy\nset format x '%.0e'\nset format y '%.0e'\n"
+          "set xlabel 'wall time per run (s, median)'\n"
+          "set ylabel '|finish/death time - reference| (s)'\n"
+          "set key bottom left\nset grid\n"
+          "lo(e) = e < 1e-16 ? 1e-16 : e\n"
+          "set multiplot layout 1,3\n",
+          f);
+    for (int c = 0; c < NCASE; c++) {
+        fprintf(f, "set title '%s: %g N%s'\nplot ", cases[c].name, cases[c].force,
+                cases[c].damping >= 0 ? ", damping 1e4 N m s/rad" : "");
+        for (int k = 0; k < ZP_METHOD_COUNT; k++) {
+            const char *name = zp_method_get(k)->name;
+            fprintf(f,
+                    "%s'trade.csv' using (strcol(1) eq '%s' && strcol(2) eq '%s' ? $12 : NaN)"
+                    ":(lo($6)) with linespoints title '%s'",
+                    k ? ", \\\n     " : "", cases[c].name, name, name);
+        }
+        fputs("\n", f);
+    }
+    fputs("unset multiplot\n", f);
+}
+
+static void print_error(const char *label, double e) {
+    if (isfinite(e)) {
+        printf("%s %.1e", label, e);
+    } else {
+        printf("%s  wrong  ", label);
+    }
+}
+
+int zp_cmd_bench(int argc, char **argv) {
+    trade_args a;
+    int pa = parse_args(argc, argv, &a);
+    if (pa) {
+        return pa > 0 ? ZP_EXIT_OK : ZP_EXIT_USAGE;
+    }
+    zp_scene base;
+    zp_model *probe = zp_cli_load(a.scene, &base);
+    if (!probe) {
+        return ZP_EXIT_USAGE;
+    }
+    zp_model_free(probe);
+
+    static reading runs[NCASE][ZP_METHOD_COUNT][NTOL];
+    static errors errs[NCASE][ZP_METHOD_COUNT][NTOL];
+    double tols[NTOL];
+    for (int t = 0; t < NTOL; t++) {
+        tols[t] = pow(10, -3 - t);
+    }
+    zp_out_set set;
+    zp_out_set_init(&set);
+    char err[1200] = "";
+    FILE *csv = zp_out_set_open(&set, a.out, "trade.csv", err, sizeof err);
+    FILE *gp = csv ? zp_out_set_open(&set, a.out, "trade.gp", err, sizeof err) : NULL;
+    if (!gp) {
+        zp_out_set_abort(&set);
+        fprintf(stderr, "zipopt bench trade: %s; nothing was written\n", err);
+        return ZP_EXIT_FAIL;
+    }
+    fputs("case,method,rtol,outcome,time_s,err_time_s,err_impulse_Ns,err_angle_deg,err_x_m,"
+          "err_speed_mps,rhs_evals,wall_s,steps,repeats\n",
+          csv);
+    for (int c = 0; c < NCASE; c++) {
+        const trade_case *tc = &cases[c];
+        zp_scene sc = base;
+        sc.nforce = sc.nsec;
+        for (int k = 0; k < sc.nsec; k++) {
+            sc.forces[k] = tc->force;
+        }
+        if (tc->damping >= 0) {
+            sc.ndamping = 1;
+            sc.damping[0] = tc->damping;
+        }
+        zp_diag d;
+        zp_diag_init(&d);
+        zp_model *m = zp_model_build(&sc, &d);
+        zp_sim_opts o;
+        if (!m || zp_sim_opts_from_scene(&sc, &o, &d)) {
+            zp_diag_print(&d, stderr);
+            zp_model_free(m);
+            zp_out_set_abort(&set);
+            return ZP_EXIT_FAIL;
+        }
+        o.output_dt = 0;   /* integration and events only, as the search runs */
+        o.track_loads = 0;
+        /* the reference: gsl-rk8pd and a CVODE method at REF_RTOL, and how well they agree */
+        o.rtol = REF_RTOL;
+        o.atol = REF_RTOL * ATOL_RATIO;
+        o.method = ZP_METHOD_GSL_RK8PD;
+        reading ref = measure(m, o, sc.forces, 1);
+        o.method = tc->ref_cvode;
+        reading ref2 = measure(m, o, sc.forces, 1);
+        errors agree = compare(m, &ref2, &ref);
+        fprintf(stderr, "%s: reference %s at %.9f s by %s and %s, which agree to %.1e s (time), "
+                        "%.1e N s (impulses), %.1e deg (angles), %.1e m (x)\n",
+                tc->name, zp_sim_outcome_name(ref.outcome), ref.time,
+                zp_method_get(ZP_METHOD_GSL_RK8PD)->name, zp_method_get(tc->ref_cvode)->name,
+                agree.time, agree.impulse, agree.angle, agree.x);
+        if (!ref.ok || !isfinite(worst(agree))) {
+            fprintf(stderr, "zipopt bench trade: %s: the reference runs disagree on the "
+                            "outcome; nothing was written\n", tc->name);
+            zp_model_free(m);
+            zp_out_set_abort(&set);
+            return ZP_EXIT_FAIL;
+        }
+        for (int k = 0; k < ZP_METHOD_COUNT; k++) {
+            for (int t = 0; t < NTOL; t++) {
+                o.method = k;
+                o.rtol = tols[t];
+                o.atol = tols[t] * ATOL_RATIO;
+                reading *r = &runs[c][k][t];
+                *r = measure(m, o, sc.forces, a.repeats);
+                errs[c][k][t] = compare(m, r, &ref);
+                const errors *e = &errs[c][k][t];
+                fprintf(csv, "%s,%s,%.0e,%s,%.12g,%.3e,%.3e,%.3e,%.3e,%.3e,%ld,%.6e,%ld,%d\n",
+                        tc->name, zp_method_get(k)->name, tols[t],
+                        r->ok ? zp_sim_outcome_name(r->outcome) : "failed", r->time, e->time,
+                        e->impulse, e->angle, e->x, e->v, r->evals, r->wall, r->steps,
+                        r->repeats);
+            }
+        }
+        zp_model_free(m);
+    }
+    write_gnuplot(gp);
+    if (zp_out_set_commit(&set, err, sizeof err)) {
+        fprintf(stderr, "zipopt bench trade: %s; nothing was written\n", err);
+        return ZP_EXIT_FAIL;
+    }
+
+    /* the table: time error and cost of every configuration */
+    for (int c = 0; c < NCASE; c++) {
+        printf("\n%s (%g N%s): error of the %s time (s) / median wall (ms) / rhs evals\n",
+               cases[c].name, cases[c].force, cases[c].damping >= 0 ? ", c = 1e4" : "",
+               runs[c][0][0].outcome == ZP_OUTCOME_DIED ? "death" : "finish");
+        printf("%-7s", "rtol");
+        for (int k = 0; k < ZP_METHOD_COUNT; k++) {
+            printf(" | %-26s", zp_method_get(k)->name);
+        }
+        printf("\n");
+        for (int t = 0; t < NTOL; t++) {
+            printf("%-7.0e", tols[t]);
+            for (int k = 0; k < ZP_METHOD_COUNT; k++) {
+                const reading *r = &runs[c][k][t];
+                printf(" | ");
+                print_error("", errs[c][k][t].time);
+                printf(" %8.2f %7ld", 1e3 * r->wall, r->evals);
+            }
+            printf("\n");
+        }
+    }
+    /* the fastest configuration reaching each target, per case and over all three */
+    printf("\nfastest to reach a finish/death time error (method, rtol, median wall):\n");
+    for (int g = 0; g < NTARGET; g++) {
+        printf("  <= %.0e s:", targets[g]);
+        for (int c = 0; c <= NCASE; c++) {
+            int bk = -1, bt = -1;
+            double best = INFINITY;
+            for (int k = 0; k < ZP_METHOD_COUNT; k++) {
+                for (int t = 0; t < NTOL; t++) {
+                    double e = 0, w = 0;
+                    for (int cc = c == NCASE ? 0 : c; cc < (c == NCASE ? NCASE : c + 1); cc++) {
+                        e = fmax(e, errs[cc][k][t].time);
+                        w += runs[cc][k][t].wall;
+                    }
+                    if (e <= targets[g] && w < best) {
+                        best = w;
+                        bk = k;
+                        bt = t;
+                    }
+                }
+            }
+            printf("  %s: ", c == NCASE ? "all three" : cases[c].name);
+            if (bk < 0) {
+                printf("none");
+            } else {
+                printf("%s %.0e (%.2f ms)", zp_method_get(bk)->name, tols[bt], 1e3 * best);
+            }
+            fputs(c < NCASE ? ";" : "\n", stdout);
+        }
+    }
+    char cmd[1300];
+    snprintf(cmd, sizeof cmd, "cd '%s' && gnuplot trade.gp", a.out);
+    int plotted = strchr(a.out, '\'') == NULL && system(cmd) == 0;
+    printf("\nwrote %s/trade.csv and %s/trade.gp%s\n", a.out, a.out,
+           plotted ? " and trade.png" : " (gnuplot failed: no plot; install gnuplot-nox)");
+    return ZP_EXIT_OK;
+}

@@ -1,0 +1,445 @@
+/* `zipopt landscape`: the survival landscape (issue 5 item 3): finish time or death over a
+   constant push, and over a 2D slice of two sections' forces through a base schedule. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "cli.h"
+#include "gnuplot.h"
+#include "landscape.h"
+
+#define MAX_1D 100001 /* points of the constant-push sweep */
+#define MAX_2D 1001   /* points per axis of the slice */
+
+static void usage(FILE *f) {
+    fputs(
+        "usage: zipopt landscape SCENE.ini [--force-range A:B:N] [--slice I,J]\n"
+        "                        [--range A:B:N[,C:D:M]] [--force F1,..|--schedule FILE]\n"
+        "                        [--out DIR]\n"
+        "Runs many schedules in parallel (OpenMP; OMP_NUM_THREADS sets the threads) and\n"
+        "draws the outcome over the forces:\n"
+        "  landscape.csv, landscape.png   one constant push in every section, N points from\n"
+        "                                 A to B N (--force-range; default [drive] min:max:201):\n"
+        "                                 finish time, time of death, the survival windows\n"
+        "  landscape_slice.csv, .png      with --slice I,J: the forces of sections I and J\n"
+        "                                 (1-based) over --range (default min:max:41 for\n"
+        "                                 both; A:B:N,C:D:M for each), the other sections at\n"
+        "                                 the base schedule, which is marked\n"
+        "  --force F1,..       the base schedule (default: the scene's [drive] forces)\n"
+        "  --schedule FILE     the base schedule from a schedule file, e.g. the search's\n"
+        "                      schedule.ini: the slice then passes through the best schedule\n"
+        "  --out DIR           the output folder (default out/<scene name>/)\n"
+        "Each image comes with its gnuplot script (.gp); the CSV files are its data. Prints\n"
+        "the survival windows of the constant push on stdout.\n",
+        f);
+}
+
+typedef struct range {
+    double a, b; /* N */
+    int n;       /* points, a and b included */
+} range;
+
+typedef struct land_args {
+    const char *scene, *schedule, *out, *force_text, *range1_text, *slice_text, *range2_text;
+} land_args;
+
+static int parse_args(int argc, char **argv, land_args *a) {
+    memset(a, 0, sizeof *a);
+    for (int i = 1; i < argc; i++) {
+        const char *o = argv[i];
+        int has_value = i + 1 < argc;
+        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
+            usage(stdout);
+            exit(ZP_EXIT_OK);
+        } else if (!strcmp(o, "--force-range") && has_value) {
+            a->range1_text = argv[++i];
+        } else if (!strcmp(o, "--slice") && has_value) {
+            a->slice_text = argv[++i];
+        } else if (!strcmp(o, "--range") && has_value) {
+            a->range2_text = argv[++i];
+        } else if (!strcmp(o, "--force") && has_value) {
+            a->force_text = argv[++i];
+        } else if (!strcmp(o, "--schedule") && has_value) {
+            a->schedule = argv[++i];
+        } else if (!strcmp(o, "--out") && has_value) {
+            a->out = argv[++i];
+        } else if (o[0] == '-' || a->scene) {
+            fprintf(stderr, "zipopt landscape: %s '%s'%s; see zipopt landscape --help\n",
+                    o[0] == '-' ? "unknown option or missing value" : "unexpected argument", o,
+                    o[0] == '-' ? "" : " (one scene file only)");
+            return -1;
+        } else {
+            a->scene = o;
+        }
+    }
+    if (!a->scene) {
+        fputs("zipopt landscape: a scene file is required; see zipopt landscape --help\n", stderr);
+        return -1;
+    }
+    if (a->range2_text && !a->slice_text) {
+        fputs("zipopt landscape: --range: needs --slice I,J; see zipopt landscape --help\n",
+              stderr);
+        return -1;
+    }
+    return 0;
+}
+
+/* "A:B:N" at text; returns the characters read, or -1 */
+static int parse_range(const char *text, range *r, int max) {
+    int used = 0;
+    if (sscanf(text, "%lf:%lf:%d%n", &r->a, &r->b, &r->n, &used) != 3 || !isfinite(r->a) ||
+        !isfinite(r->b) || !(r->a < r->b) || r->n < 2 || r->n > max) {
+        return -1;
+    }
+    return used;
+}
+
+static double at(const range *r, int k) {
+    return r->a + (r->b - r->a) * k / (r->n - 1);
+}
+
+/* the progress line on stderr, when it is a terminal */
+typedef struct progress {
+    struct timespec start, last;
+} progress;
+
+static double since(const struct timespec *a) {
+    struct timespec now;
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    return (double)(now.tv_sec - a->tv_sec) + 1e-9 * (double)(now.tv_nsec - a->tv_nsec);
+}
+
+static void show(void *user, int done, int total) {
+    progress *p = user;
+    if (since(&p->last) > 0.2 || done == total) {
+        clock_gettime(CLOCK_MONOTONIC, &p->last);
+        fprintf(stderr, "\rzipopt landscape: %d/%d runs, %.1f s", done, total, since(&p->start));
+        if (done == total) {
+            fputc('\n', stderr);
+        }
+    }
+}
+
+static const char *outcome_name(const zp_landscape_point *p) {
+    return p->failed ? "failed" : zp_sim_outcome_name(p->outcome);
+}
+
+/* one CSV row's result columns */
+static void write_point(FILE *f, const zp_landscape_point *p) {
+    fprintf(f, ",%s,%s,%.9g,%.9g,%d,%.6g\n", outcome_name(p),
+            p->failed || p->outcome != ZP_OUTCOME_STALLED ? "" : zp_sim_stall_name(p->stall),
+            p->time, p->x, p->died_link, p->max_rel_angle * 180 / M_PI);
+}
+
+static const char *result_header = "outcome,stall_reason,time,x,died_link,max_rel_angle_deg";
+
+/* user text (scene name, file name) for a gnuplot string: quotes and backslashes become
+   backquotes, so no name can end the string early */
+static const char *gp_safe(const char *in, char *out, size_t n) {
+    size_t k = 0;
+    for (; in[k] && k + 1 < n; k++) {
+        out[k] = in[k] == '\'' || in[k] == '"' || in[k] == '\\' ? '`' : in[k];
+    }
+    out[k] = '\0';
+    return out;
+}
+
+/* the gnuplot head both figures share */
+static void head(FILE *f, const char *name, int w, int h) {
+    fprintf(f,
+            "# %s.png (zipopt landscape); %s.csv is its data. Run `gnuplot %s.gp` here to "
+            "redraw.\n"
+            "set terminal pngcairo size %d,%d noenhanced font 'DejaVu Sans,11' linewidth 1.3\n"
+            "set output '%s.png'\n"
+            "set encoding utf8\n"
+            "set datafile separator comma\n"
+            "set border lc rgb '#555555'\n"
+            "set grid lc rgb '#e6e6e6' lt 1 lw 0.8\n",
+            name, name, name, w, h, name);
+}
+
+static void script_1d(FILE *f, const zp_scene *sc, const range *r) {
+    double step = (r->b - r->a) / (r->n - 1);
+    char name[ZP_NAME_MAX];
+    head(f, "landscape", 1100, 640);
+    fprintf(f,
+            "set multiplot title 'Survival landscape of %s: one constant push in every section'\n"
+            "set lmargin 12\nset rmargin 4\n"
+            "set xrange [%g:%g]\n"
+            "# top: finish time and time of death\n"
+            "set origin 0, 0.25\nset size 1, 0.7\nset bmargin 0\nset format x ''\n"
+            "set ylabel 'time (s)'\n"
+            "set key inside right top opaque box lc rgb '#cccccc'\n"
+            "plot 'landscape.csv' using 'force':(strcol('outcome') eq 'finished' ? "
+            "column('time') : NaN) with linespoints pt 7 ps 0.6 lw 2 lc rgb '#2ca02c' "
+            "title 'finished: finish time', \\\n"
+            "     '' using 'force':(strcol('outcome') eq 'died' ? column('time') : NaN) "
+            "with points pt 2 ps 0.8 lw 1.5 lc rgb '#d62728' title 'died: time of death'\n"
+            "# bottom: the outcome of each push as a strip\n"
+            "set origin 0, 0\nset size 1, 0.25\nset tmargin 0\nset bmargin 5.5\n"
+            "set format x '%%g'\nset xlabel 'constant push F (N), the same in every section'\n"
+            "set ylabel 'outcome'\nset yrange [0:1]\nunset ytics\nunset grid\n"
+            "set style fill solid 1 noborder\n"
+            "set key outside below horizontal\n"
+            "plot 'landscape.csv' using 'force':(strcol('outcome') eq 'finished' ? 1 : NaN):"
+            "(%g) with boxes lc rgb '#2ca02c' title 'finished', \\\n"
+            "     '' using 'force':(strcol('outcome') eq 'died' ? 1 : NaN):(%g) with boxes "
+            "lc rgb '#d62728' title 'died', \\\n"
+            "     '' using 'force':(strcol('outcome') eq 'stalled' ? 1 : NaN):(%g) with boxes "
+            "lc rgb '#aaaaaa' title 'stalled', \\\n"
+            "     '' using 'force':(strcol('outcome') eq 'failed' ? 1 : NaN):(%g) with boxes "
+            "lc rgb 'black' title 'integrator failed'\n"
+            "unset multiplot\n",
+            gp_safe(sc->name, name, sizeof name), r->a - step / 2, r->b + step / 2, 1.05 * step,
+            1.05 * step, 1.05 * step, 1.05 * step);
+}
+
+static void script_2d(FILE *f, const zp_scene *sc, int si, int sj, const range *r1, const range *r2,
+                      const double *base, const char *base_name) {
+    double dx = (r1->b - r1->a) / (r1->n - 1), dy = (r2->b - r2->a) / (r2->n - 1);
+    char name[1024];
+    head(f, "landscape_slice", 900, 760);
+    fprintf(f,
+            "set title 'Survival landscape of %s: forces of sections %d and %d, the others at "
+            "the base schedule'\n"
+            "set xlabel 'F%d, section %d (N)'\nset ylabel 'F%d, section %d (N)'\n"
+            "set xrange [%g:%g]\nset yrange [%g:%g]\n"
+            "set size square\n"
+            "set cblabel 'finish time (s)'\n"
+            "set palette defined (0 '#fde725', 1 '#5ec962', 2 '#21918c', 3 '#3b528b', "
+            "4 '#440154')\n"
+            "set style fill solid 1 noborder\n"
+            "set key outside below horizontal\n"
+            "set bmargin 6\n"
+            "unset grid\n",
+            gp_safe(sc->name, name, sizeof name), si + 1, sj + 1, si + 1, si + 1, sj + 1, sj + 1,
+            r1->a - dx / 2, r1->b + dx / 2, r2->a - dy / 2, r2->b + dy / 2);
+    /* the base schedule's label on the side with more room */
+    int right = base[si] > 0.5 * (r1->a + r1->b), upper = base[sj] > 0.5 * (r2->a + r2->b);
+    fputs("set style textbox opaque\n", f);
+    fprintf(f, "$base << EOD\n%.9g,%.9g,\"%s (", base[si], base[sj],
+            gp_safe(base_name, name, sizeof name));
+    for (int k = 0; k < sc->nsec; k++) {
+        fprintf(f, "%s%g", k ? ", " : "", base[k]);
+    }
+    fprintf(f,
+            ") N\"\nEOD\n"
+            "plot 'landscape_slice.csv' using 'f%d':'f%d':(strcol('outcome') eq 'finished' ? "
+            "column('time') : NaN) with image notitle, \\\n"
+            "     '' using 'f%d':'f%d':(%g):(strcol('outcome') eq 'died' ? %g : NaN) "
+            "with boxxyerror lc rgb '#8c2d2d' title 'died', \\\n"
+            "     '' using 'f%d':'f%d':(%g):(strcol('outcome') eq 'stalled' ? %g : NaN) "
+            "with boxxyerror lc rgb '#bbbbbb' title 'stalled', \\\n"
+            "     '' using 'f%d':'f%d':(%g):(strcol('outcome') eq 'failed' ? %g : NaN) "
+            "with boxxyerror lc rgb 'black' title 'integrator failed', \\\n"
+            "     $base using 1:2 with points pt 3 ps 3 lw 3 lc rgb 'white' notitle, \\\n"
+            "     $base using 1:2 with points pt 3 ps 2.4 lw 1.5 lc rgb 'black' "
+            "title 'base schedule', \\\n"
+            "     $base using 1:2:3 with labels %s offset %g, %g tc rgb 'black' boxed "
+            "font ',10' notitle\n",
+            si + 1, sj + 1, si + 1, sj + 1, 0.51 * dx, 0.51 * dy, si + 1, sj + 1, 0.51 * dx,
+            0.51 * dy, si + 1, sj + 1, 0.51 * dx, 0.51 * dy, right ? "right" : "left",
+            right ? -1.5 : 1.5, upper ? -1.2 : 1.2);
+}
+
+/* the survival windows of the constant push, on stdout */
+static void print_windows(const range *r, const zp_landscape_point *p) {
+    int best = -1, nwin = 0;
+    printf("constant push from %g to %g N (%d runs): finishes for", r->a, r->b, r->n);
+    for (int k = 0; k < r->n; k++) {
+        int fin = !p[k].failed && p[k].outcome == ZP_OUTCOME_FINISHED;
+        if (fin && (best < 0 || p[k].time < p[best].time)) {
+            best = k;
+        }
+        if (fin && (k == 0 || p[k - 1].failed || p[k - 1].outcome != ZP_OUTCOME_FINISHED)) {
+            printf("%s %g", nwin++ ? "," : "", at(r, k));
+        }
+        if (fin && (k == r->n - 1 || p[k + 1].failed || p[k + 1].outcome != ZP_OUTCOME_FINISHED)) {
+            printf("..%g N", at(r, k));
+        }
+    }
+    if (best < 0) {
+        printf(" no push in the range\n");
+    } else {
+        printf("\nfastest: %g N, finished in %.3f s\n", at(r, best), p[best].time);
+    }
+}
+
+int zp_cmd_landscape(int argc, char **argv) {
+    land_args a;
+    if (parse_args(argc, argv, &a)) {
+        return ZP_EXIT_USAGE;
+    }
+    zp_scene sc;
+    zp_model *m = zp_cli_load(a.scene, &sc);
+    if (!m) {
+        return ZP_EXIT_USAGE;
+    }
+    int status = ZP_EXIT_USAGE;
+    double *force = NULL;
+    zp_landscape_point *pt = NULL;
+    zp_diag d;
+    zp_diag_init(&d);
+    /* every option checked before any run */
+    if (a.schedule && zp_scene_overlay_schedule(a.schedule, &sc, &d)) {
+        zp_diag_print(&d, stderr);
+        fputs("zipopt landscape: nothing was written\n", stderr);
+        goto done;
+    }
+    char why[256];
+    if (a.force_text) {
+        int n = zp_cli_parse_list(a.force_text, sc.forces, ZP_MAX_SECTIONS, why, sizeof why);
+        if (n != sc.nsec) {
+            fprintf(stderr, "zipopt landscape: --force: %s; expected %d values (one per section)\n",
+                    n < 0 ? why : "wrong number of values", sc.nsec);
+            goto done;
+        }
+    }
+    range r1 = {sc.force_min, sc.force_max, 201};
+    if (a.range1_text && parse_range(a.range1_text, &r1, MAX_1D) != (int)strlen(a.range1_text)) {
+        fprintf(stderr,
+                "zipopt landscape: --force-range: '%s' is not A:B:N; expected forces "
+                "A < B (N) and 2 to %d points\n",
+                a.range1_text, MAX_1D);
+        goto done;
+    }
+    int si = -1, sj = -1;
+    range rx = {sc.force_min, sc.force_max, 41}, ry = rx;
+    if (a.slice_text) {
+        int used = 0;
+        if (sscanf(a.slice_text, "%d,%d%n", &si, &sj, &used) != 2 || a.slice_text[used] || si < 1 ||
+            sj < 1 || si > sc.nsec || sj > sc.nsec || si == sj) {
+            fprintf(stderr,
+                    "zipopt landscape: --slice: '%s' is not I,J; expected two different "
+                    "sections from 1 to %d\n",
+                    a.slice_text, sc.nsec);
+            goto done;
+        }
+        si--;
+        sj--;
+    }
+    if (a.range2_text) {
+        const char *t = a.range2_text;
+        int used = parse_range(t, &rx, MAX_2D);
+        ry = rx;
+        if (used > 0 && t[used] == ',') {
+            int more = parse_range(t + used + 1, &ry, MAX_2D);
+            used = more < 0 ? -1 : used + 1 + more;
+        }
+        if (used != (int)strlen(t)) {
+            fprintf(stderr,
+                    "zipopt landscape: --range: '%s' is not A:B:N or A:B:N,C:D:M; "
+                    "expected forces A < B (N) and 2 to %d points per axis\n",
+                    t, MAX_2D);
+            goto done;
+        }
+    }
+    zp_sim_opts o;
+    if (zp_sim_opts_from_scene(&sc, &o, &d)) {
+        zp_diag_print(&d, stderr);
+        goto done;
+    }
+    o.output_dt = 0; /* outcomes only */
+
+    /* the schedules: the constant pushes, then the slice */
+    status = ZP_EXIT_FAIL;
+    int n1 = r1.n, n2 = si >= 0 ? rx.n * ry.n : 0, ns = sc.nsec;
+    force = malloc(sizeof *force * (size_t)(n1 + n2) * (size_t)ns);
+    pt = malloc(sizeof *pt * (size_t)(n1 + n2));
+    if (!force || !pt) {
+        fputs("zipopt landscape: out of memory; nothing was written\n", stderr);
+        goto done;
+    }
+    for (int k = 0; k < n1; k++) {
+        for (int s = 0; s < ns; s++) {
+            force[(size_t)k * ns + s] = at(&r1, k);
+        }
+    }
+    for (int k = 0; k < n2; k++) {
+        double *f = force + (size_t)(n1 + k) * ns;
+        memcpy(f, sc.forces, sizeof *f * (size_t)ns);
+        f[si] = at(&rx, k % rx.n);
+        f[sj] = at(&ry, k / rx.n);
+    }
+    progress pr;
+    clock_gettime(CLOCK_MONOTONIC, &pr.start);
+    pr.last = pr.start;
+    if (zp_landscape_sweep(m, &o, force, n1 + n2, pt, isatty(STDERR_FILENO) ? show : NULL, &pr)) {
+        fputs("zipopt landscape: cannot create the simulators (out of memory); nothing was "
+              "written\n",
+              stderr);
+        goto done;
+    }
+    double wall = since(&pr.start);
+
+    /* the files, all or nothing */
+    char dir[1024], err[1200];
+    snprintf(dir, sizeof dir, "%s", a.out ? a.out : "");
+    if (!a.out) {
+        snprintf(dir, sizeof dir, "out/%s", sc.name);
+    }
+    zp_gnuplot g;
+    if (zp_gnuplot_begin(&g, dir, err, sizeof err)) {
+        fprintf(stderr, "zipopt landscape: %s; nothing was written\n", err);
+        goto done;
+    }
+    FILE *csv = zp_gnuplot_open(&g, "landscape.csv", 0, err, sizeof err);
+    FILE *gp = csv ? zp_gnuplot_open(&g, "landscape.gp", 1, err, sizeof err) : NULL;
+    FILE *csv2 = gp && n2 ? zp_gnuplot_open(&g, "landscape_slice.csv", 0, err, sizeof err) : gp;
+    FILE *gp2 = csv2 && n2 ? zp_gnuplot_open(&g, "landscape_slice.gp", 1, err, sizeof err) : csv2;
+    if (!gp2) {
+        zp_gnuplot_abort(&g);
+        fprintf(stderr, "zipopt landscape: %s; nothing was written\n", err);
+        goto done;
+    }
+    fprintf(csv, "force,%s\n", result_header);
+    for (int k = 0; k < n1; k++) {
+        fprintf(csv, "%.9g", at(&r1, k));
+        write_point(csv, &pt[k]);
+    }
+    script_1d(gp, &sc, &r1);
+    if (n2) {
+        fprintf(csv2, "f%d,f%d,%s\n", si + 1, sj + 1, result_header);
+        for (int k = 0; k < n2; k++) {
+            const double *f = force + (size_t)(n1 + k) * ns;
+            fprintf(csv2, "%.9g,%.9g", f[si], f[sj]);
+            write_point(csv2, &pt[n1 + k]);
+        }
+        script_2d(gp2, &sc, si, sj, &rx, &ry, sc.forces,
+                  a.schedule     ? a.schedule
+                  : a.force_text ? "--force"
+                                 : "[drive] forces");
+    }
+    int missing;
+    if (zp_gnuplot_finish(&g, &missing, err, sizeof err)) {
+        fprintf(stderr, "zipopt landscape: %s; no figures were written\n", err);
+        goto done;
+    }
+    print_windows(&r1, pt);
+    printf("%d runs in %.2f s; wrote landscape.csv%s to %s\n", n1 + n2, wall,
+           n2 ? ", landscape_slice.csv" : "", dir);
+    if (missing) {
+        fprintf(stderr,
+                "zipopt landscape: gnuplot is not installed (apt-get install gnuplot-nox): "
+                "no images were drawn; the data and the .gp scripts are in %s, run "
+                "`gnuplot landscape.gp` there once it is\n",
+                dir);
+        goto done;
+    }
+    printf("figures: landscape.png%s\n", n2 ? ", landscape_slice.png" : "");
+    if (n2 && (sc.forces[si] < rx.a || sc.forces[si] > rx.b || sc.forces[sj] < ry.a ||
+               sc.forces[sj] > ry.b)) {
+        printf("note: the base schedule (F%d = %g, F%d = %g N) lies outside the slice and is not "
+               "marked\n",
+               si + 1, sc.forces[si], sj + 1, sc.forces[sj]);
+    }
+    status = ZP_EXIT_OK;
+done:
+    free(force);
+    free(pt);
+    zp_model_free(m);
+    return status;
+}

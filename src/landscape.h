@@ -1,0 +1,29 @@
+/* The survival landscape (issue 5): many schedules through the simulator in parallel, each
+   reduced to its outcome and time. */
+#ifndef ZP_LANDSCAPE_H
+#define ZP_LANDSCAPE_H
+
+#include "sim.h"
+
+/* What one schedule's run came to. */
+typedef struct zp_landscape_point {
+    int failed; /* 1: the integrator gave up (ZP_ERR_NUMERIC); the rest is unset */
+    zp_outcome outcome;
+    zp_stall stall;
+    double time;          /* s: finish, death or stall */
+    double x;             /* m, trolley x then */
+    int died_link;        /* 1-based, 0 when nobody died */
+    double max_rel_angle; /* rad, largest |relative joint angle| over every joint */
+} zp_landscape_point;
+
+/* Called after each finished run, serialised; done counts runs finished so far. */
+typedef void (*zp_landscape_progress)(void *user, int done, int total);
+
+/* Runs n schedules (force: n rows of m->nsec values, N) with options o, on every OpenMP thread:
+   one workspace per thread, created one after another before any run (libmatheval is not
+   thread-safe). Fills out[n]; each point is what a single zp_sim_run of that schedule gives.
+   ZP_OK, or ZP_ERR_NOMEM with nothing run. progress may be NULL. */
+zp_status zp_landscape_sweep(const zp_model *m, const zp_sim_opts *o, const double *force, int n,
+                             zp_landscape_point *out, zp_landscape_progress progress, void *user);
+
+#endif

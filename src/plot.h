@@ -1,0 +1,52 @@
+/* Figures of one run (issue 5): the course with every centre-of-mass path, energy, joint
+   angles, loads, still frames and an animation. Each image comes with its data file and the
+   gnuplot script that draws it, so a user can restyle it. */
+#ifndef ZP_PLOT_H
+#define ZP_PLOT_H
+
+#include "sim.h"
+
+#define ZP_PLOT_MAX_FRAMES 64
+
+typedef enum { ZP_PLOT_AT_X, ZP_PLOT_AT_T } zp_plot_at;
+
+typedef struct zp_plot_opts {
+    double margin; /* rad below the death angle that the search keeps (a line on angles.png) */
+    zp_plot_at frame_kind;
+    int nframe;                          /* still frames; 0: none */
+    double frame_at[ZP_PLOT_MAX_FRAMES]; /* m (trolley x) or s (time), per frame_kind */
+    int animate;                         /* 1: run.gif, and run.mp4 when ffmpeg is on PATH */
+    double fps;                          /* animation frames per second, 1 to 100 */
+    int width, height;                   /* px, animation size; height 0: from the course's shape */
+    double speedup;                      /* simulated seconds shown per second of animation */
+    const double *force; /* borrowed, may be NULL: N per section, shown in the labels */
+} zp_plot_opts;
+
+/* What zp_plot_run made. */
+typedef struct zp_plot_info {
+    int no_gnuplot;  /* 1: gnuplot is not on PATH; data and scripts written, no images */
+    int nframe;      /* still frames drawn */
+    int nskipped;    /* still frames asked for that the run never reached */
+    int anim_frames; /* frames in run.gif */
+    int mp4;         /* 1: run.mp4 was made too */
+} zp_plot_info;
+
+/* The defaults: margin 0, no frames, no animation, 25 fps, 960 px wide, speed-up 1. */
+void zp_plot_opts_default(zp_plot_opts *o);
+/* Parses --frames-at text, "x=0,20,60" (m, on m's course) or "t=1,2" (s, >= 0), into o; 0,
+   or -1 with why. */
+int zp_plot_parse_frames(const zp_model *m, const char *text, zp_plot_opts *o, char *why,
+                         size_t whylen);
+/* Parses --size text "WxH" (px) into o; 0, or -1 with why. */
+int zp_plot_parse_size(const char *text, zp_plot_opts *o, char *why, size_t whylen);
+
+/* Draws the run (rows: its trajectory, borrowed; r: its result, for the kinks and the death)
+   into dir: course.png, energy.png, angles.png, loads.png, frame_x<X>.png / frame_t<T>.png
+   and run.gif as o asks, each with its .gp script, and the plot_*.dat data they read; all or
+   nothing. ZP_OK with info filled (also when gnuplot is missing: info->no_gnuplot), or
+   ZP_ERR_IO with why in err and nothing written. Single-threaded: it evaluates m->course. */
+zp_status zp_plot_run(const char *dir, const zp_model *m, const zp_row *rows, int n,
+                      const zp_result *r, const zp_plot_opts *o, zp_plot_info *info, char *err,
+                      size_t errlen);
+
+#endif

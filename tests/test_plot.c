@@ -1,0 +1,483 @@
+/* Figures and the landscape (issue 5): every figure is a real image of the size its script
+   asks for; the data drawn are the trajectory (centres of mass from state.c at each row, link
+   ends one link length apart); a missing gnuplot still leaves data and scripts, a failing one
+   leaves nothing; bad options exit 2 with nothing written; the landscape's points are what
+   independent single runs give, and on the seed show MODEL.md's non-monotone survival: a
+   constant push of 5 N dies, 10 finishes, 15 dies, 20 and 25 finish, 30 dies. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "check.h"
+#include "landscape.h"
+#include "plot.h"
+#include "state.h"
+#include "testutil.h"
+
+#define DATA_TOL 1e-7 /* relative: plot data are printed with 9 significant digits */
+#define LINK_TOL 1e-6 /* m: link ends printed with 9 significant digits */
+
+static char tmp[512];
+static char err[65536]; /* stderr of the last binary run */
+
+static const int seed_pattern_force[] = {5, 10, 15, 20, 25, 30};
+static const zp_outcome seed_pattern[] = {ZP_OUTCOME_DIED,     ZP_OUTCOME_FINISHED,
+                                          ZP_OUTCOME_DIED,     ZP_OUTCOME_FINISHED,
+                                          ZP_OUTCOME_FINISHED, ZP_OUTCOME_DIED};
+
+static int exists(const char *dir, const char *name) {
+    char path[2048];
+    struct stat st;
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    return stat(path, &st) == 0 && S_ISREG(st.st_mode);
+}
+
+static int count_files(const char *dir) {
+    char cmd[1100];
+    snprintf(cmd, sizeof cmd, "ls -A '%s' 2>/dev/null | wc -l", dir);
+    FILE *p = popen(cmd, "r");
+    int n = -1;
+    if (p) {
+        if (fscanf(p, "%d", &n) != 1) {
+            n = -1;
+        }
+        pclose(p);
+    }
+    return n;
+}
+
+static unsigned be32(const unsigned char *b) {
+    return (unsigned)b[0] << 24 | (unsigned)b[1] << 16 | (unsigned)b[2] << 8 | b[3];
+}
+
+/* a PNG's width and height from its signature and IHDR chunk; 0 if it is not a PNG. Also
+   returns the file size in *bytes */
+static int png_size(const char *dir, const char *name, unsigned *w, unsigned *h, long *bytes) {
+    static const unsigned char sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    unsigned char b[24] = {0};
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        return 0;
+    }
+    size_t n = fread(b, 1, sizeof b, f);
+    fseek(f, 0, SEEK_END);
+    *bytes = ftell(f);
+    fclose(f);
+    if (n != sizeof b || memcmp(b, sig, 8) || be32(b + 8) != 13 || memcmp(b + 12, "IHDR", 4)) {
+        return 0;
+    }
+    *w = be32(b + 16);
+    *h = be32(b + 20);
+    return 1;
+}
+
+/* checks one PNG: valid, the expected size (0: any of at least 300 px), not a blank picture */
+static void check_png(const char *dir, const char *name, unsigned want_w, unsigned want_h) {
+    unsigned w = 0, h = 0;
+    long bytes = 0;
+    int ok = png_size(dir, name, &w, &h, &bytes);
+    if (!ok) {
+        fprintf(stderr, "not a PNG: %s/%s\n", dir, name);
+    }
+    CHECK(ok);
+    if (want_w) {
+        CHECK(w == want_w);
+        CHECK(h == want_h);
+    } else {
+        CHECK(w >= 300 && w <= 4000);
+        CHECK(h >= 150 && h <= 4000);
+    }
+    CHECK(bytes > 8000); /* an empty canvas of this size compresses to a few KB */
+}
+
+static char *slurp(const char *dir, const char *name) {
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        return NULL;
+    }
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f);
+    rewind(f);
+    char *s = malloc((size_t)n + 1);
+    if (s) {
+        s[fread(s, 1, (size_t)n, f)] = '\0';
+    }
+    fclose(f);
+    return s;
+}
+
+/* runs the zipopt binary with env in front (e.g. "PATH=/nowhere"); keeps stderr */
+static int run(const char *env, const char *args) {
+    char cmd[8192];
+    snprintf(cmd, sizeof cmd, "env %s '%s' %s >'%s/stdout' 2>'%s/stderr'", env, ZP_EXE, args, tmp,
+             tmp);
+    int st = system(cmd);
+    char *e = slurp(tmp, "stderr");
+    snprintf(err, sizeof err, "%s", e ? e : "");
+    free(e);
+    return st != -1 && WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+static zp_model *seed(zp_scene *sc) {
+    char path[1024];
+    snprintf(path, sizeof path, "%s/config/seed.ini", ZP_SOURCE_DIR);
+    zp_diag d;
+    zp_diag_init(&d);
+    zp_model *m = zp_scene_load(path, sc, &d) == ZP_OK ? zp_model_build(sc, &d) : NULL;
+    if (!m) {
+        zp_diag_print(&d, stderr);
+        abort();
+    }
+    return m;
+}
+
+/* the column of name in a whitespace header line, or -1 */
+static int column(const char *header, const char *name) {
+    char buf[8192];
+    snprintf(buf, sizeof buf, "%s", header);
+    int k = 0;
+    for (char *t = strtok(buf, " \n"); t; t = strtok(NULL, " \n"), k++) {
+        if (!strcmp(t, name)) {
+            return k;
+        }
+    }
+    return -1;
+}
+
+/* plot_run.dat against the rows: time and every centre of mass from state.c */
+static void check_run_data(const char *dir, const zp_model *m, const zp_row *rows, int n) {
+    char path[2048];
+    snprintf(path, sizeof path, "%s/plot_run.dat", dir);
+    FILE *f = fopen(path, "r");
+    CHECK(f != NULL);
+    if (!f) {
+        return;
+    }
+    char line[8192];
+    CHECK(fgets(line, sizeof line, f) != NULL);
+    int ct = column(line, "t"), cc[ZP_MAX_LINKS + 1];
+    CHECK(ct == 0);
+    for (int b = 0; b <= m->nlink; b++) {
+        char name[32];
+        snprintf(name, sizeof name, "com%d_x", b);
+        cc[b] = column(line, name);
+        CHECK(cc[b] > 0);
+    }
+    int k = 0, bad = 0;
+    while (fgets(line, sizeof line, f) && k < n) {
+        double v[128];
+        int nv = 0;
+        for (char *t = strtok(line, " \n"); t && nv < 128; t = strtok(NULL, " \n")) {
+            v[nv++] = atof(t);
+        }
+        double com[ZP_MAX_LINKS + 1][2];
+        zp_state_com(m, &rows[k].c, com);
+        bad += fabs(v[ct] - rows[k].t) > DATA_TOL * fmax(1, rows[k].t);
+        for (int b = 0; b <= m->nlink; b++) {
+            bad += fabs(v[cc[b]] - com[b][0]) > DATA_TOL * fmax(1, fabs(com[b][0]));
+            bad += fabs(v[cc[b] + 1] - com[b][1]) > DATA_TOL * fmax(1, fabs(com[b][1]));
+        }
+        k++;
+    }
+    CHECK(k == n);
+    CHECK(bad == 0);
+    fclose(f);
+}
+
+/* plot_frames.dat: block 0 is the frame at x = x0: the trolley there on the course, each link
+   its own length long and joined to the next */
+static void check_frame_data(const char *dir, const zp_model *m, double x0) {
+    char path[2048];
+    snprintf(path, sizeof path, "%s/plot_frames.dat", dir);
+    FILE *f = fopen(path, "r");
+    CHECK(f != NULL);
+    if (!f) {
+        return;
+    }
+    double px = 0, py = 0;
+    for (int i = 0; i < m->nlink; i++) {
+        double a[7];
+        int link;
+        CHECK(fscanf(f, "%lf %lf %lf %lf %d %lf %lf", &a[0], &a[1], &a[2], &a[3], &link, &a[5],
+                     &a[6]) == 7);
+        CHECK(link == i + 1);
+        if (i == 0) {
+            CHECK_NEAR(a[0], x0, 1e-5);
+            /* positions between rows are interpolated linearly: off the curved course by at
+               most curvature * (row spacing)^2 / 8, well below 1 mm here */
+            CHECK_NEAR(a[1], zp_course_eval(m->course, 0, x0).f, 1e-3);
+        } else {
+            CHECK_NEAR(a[0], px, LINK_TOL);
+            CHECK_NEAR(a[1], py, LINK_TOL);
+        }
+        CHECK_NEAR(hypot(a[2] - a[0], a[3] - a[1]), m->len[i], LINK_TOL);
+        CHECK_NEAR(a[5], 0.5 * (a[0] + a[2]), LINK_TOL); /* uniform rod: centre mid-link */
+        CHECK_NEAR(a[6], 0.5 * (a[1] + a[3]), LINK_TOL);
+        px = a[2];
+        py = a[3];
+    }
+    fclose(f);
+}
+
+static void test_figures(void) {
+    zp_scene sc;
+    zp_model *m = seed(&sc);
+    zp_sim_opts o = tu_opts(&sc, 1e-8);
+    o.output_dt = 0.02;
+    zp_sim *s = zp_sim_create(m, &o);
+    static zp_result r;
+    double force[3] = {20, 20, 20};
+    zp_input in = {.force = force};
+    CHECK(s && zp_sim_run(m, s, &in, &r) == ZP_OK);
+    CHECK(r.outcome == ZP_OUTCOME_FINISHED);
+    int n;
+    const zp_row *rows = zp_sim_rows(s, &n);
+
+    zp_plot_opts po;
+    zp_plot_opts_default(&po);
+    char why[256];
+    CHECK(zp_plot_parse_frames(m, "x=0,20,60,139.5", &po, why, sizeof why) == 0);
+    CHECK(zp_plot_parse_size("480x200", &po, why, sizeof why) == 0);
+    po.animate = 1;
+    po.fps = 10;
+    po.speedup = 4;
+    po.margin = 10 * M_PI / 180;
+    po.force = force;
+    char dir[1024], e[2048];
+    snprintf(dir, sizeof dir, "%s/figs", tmp);
+    zp_plot_info info;
+    CHECK(zp_plot_run(dir, m, rows, n, &r, &po, &info, e, sizeof e) == ZP_OK);
+    CHECK(!info.no_gnuplot);
+    CHECK(info.nframe == 4 && info.nskipped == 0);
+    /* the animation: every speedup/fps seconds of the run, plus its last instant */
+    CHECK(info.anim_frames == (int)floor(r.time / 0.4) + 2);
+
+    check_png(dir, "course.png", 0, 0);
+    check_png(dir, "energy.png", 0, 0);
+    check_png(dir, "angles.png", 0, 0);
+    check_png(dir, "loads.png", 0, 0);
+    const char *frames[] = {"frame_x0.png", "frame_x20.png", "frame_x60.png", "frame_x139.5.png"};
+    for (int i = 0; i < 4; i++) {
+        unsigned w = 0, h = 0;
+        long bytes;
+        CHECK(png_size(dir, frames[i], &w, &h, &bytes));
+        CHECK(w == h && w >= 300); /* equal axis scales in a square picture */
+        check_png(dir, frames[i], w, h);
+    }
+    /* run.gif: a GIF of the asked size (logical screen, little-endian) with many frames */
+    char *gif = slurp(dir, "run.gif");
+    CHECK(gif && !memcmp(gif, "GIF89a", 6));
+    if (gif) {
+        const unsigned char *u = (const unsigned char *)gif;
+        CHECK((u[6] | u[7] << 8) == 480);
+        CHECK((u[8] | u[9] << 8) == 200);
+    }
+    free(gif);
+    const char *scripts[] = {"course.gp",       "energy.gp",    "angles.gp",       "loads.gp",
+                             "frames.gp",       "run.gp",       "plot_course.dat", "plot_run.dat",
+                             "plot_frames.dat", "plot_anim.dat"};
+    for (int i = 0; i < 10; i++) {
+        CHECK(exists(dir, scripts[i]));
+    }
+    check_run_data(dir, m, rows, n);
+    check_frame_data(dir, m, 0); /* block 0: the frame at x = 0 */
+    /* no hidden working folder is left behind */
+    char cmd[2400];
+    snprintf(cmd, sizeof cmd, "ls -A '%s' | grep -q '^\\.'", dir);
+    CHECK(system(cmd) != 0);
+
+    /* a failing gnuplot: nothing is written, and its message is passed on */
+    char fake[1024];
+    snprintf(fake, sizeof fake, "%s/fakebin", tmp);
+    mkdir(fake, 0777);
+    snprintf(cmd, sizeof cmd,
+             "printf '#!/bin/sh\\necho no such terminal >&2\\nexit 1\\n' > '%s/gnuplot' && "
+             "chmod +x '%s/gnuplot'",
+             fake, fake);
+    CHECK(system(cmd) == 0);
+    const char *path = getenv("PATH");
+    char *saved = strdup(path ? path : "");
+    setenv("PATH", fake, 1);
+    snprintf(dir, sizeof dir, "%s/figs_fail", tmp);
+    po.animate = 0;
+    CHECK(zp_plot_run(dir, m, rows, n, &r, &po, &info, e, sizeof e) == ZP_ERR_IO);
+    CHECK(strstr(e, "no such terminal") != NULL);
+    setenv("PATH", saved, 1);
+    free(saved);
+    CHECK(count_files(dir) == 0);
+
+    /* frames the run never reaches are counted, not drawn */
+    zp_plot_opts late = po;
+    CHECK(zp_plot_parse_frames(m, "t=1,1000", &late, why, sizeof why) == 0);
+    snprintf(dir, sizeof dir, "%s/figs_late", tmp);
+    CHECK(zp_plot_run(dir, m, rows, n, &r, &late, &info, e, sizeof e) == ZP_OK);
+    CHECK(info.nframe == 1 && info.nskipped == 1);
+    CHECK(exists(dir, "frame_t1.png") && !exists(dir, "frame_t1000.png"));
+    zp_sim_free(s);
+    zp_model_free(m);
+}
+
+/* a frame at x = 20 m: its data block against the course and the link lengths */
+static void test_frame_geometry(void) {
+    zp_scene sc;
+    zp_model *m = seed(&sc);
+    zp_sim_opts o = tu_opts(&sc, 1e-8);
+    o.output_dt = 0.02;
+    zp_sim *s = zp_sim_create(m, &o);
+    static zp_result r;
+    double force[3] = {100, 100, 100};
+    zp_input in = {.force = force};
+    CHECK(s && zp_sim_run(m, s, &in, &r) == ZP_OK);
+    int n;
+    const zp_row *rows = zp_sim_rows(s, &n);
+    zp_plot_opts po;
+    zp_plot_opts_default(&po);
+    char why[256], dir[1024], e[2048];
+    CHECK(zp_plot_parse_frames(m, "x=20", &po, why, sizeof why) == 0);
+    snprintf(dir, sizeof dir, "%s/figs20", tmp);
+    zp_plot_info info;
+    CHECK(zp_plot_run(dir, m, rows, n, &r, &po, &info, e, sizeof e) == ZP_OK);
+    check_frame_data(dir, m, 20);
+    check_png(dir, "frame_x20.png", 640, 640);
+    zp_sim_free(s);
+    zp_model_free(m);
+}
+
+static void test_cli(void) {
+    char scene[1024], args[4096], dir[1024];
+    snprintf(scene, sizeof scene, "%s/config/seed.ini", ZP_SOURCE_DIR);
+
+    /* no gnuplot on PATH: exit 1, a message naming it, data and scripts written, no image */
+    snprintf(dir, sizeof dir, "%s/nognu", tmp);
+    snprintf(args, sizeof args, "simulate '%s' --force 20,20,20 --plot --out '%s'", scene, dir);
+    CHECK(run("PATH=/nonexistent", args) == 1);
+    CHECK(strstr(err, "gnuplot is not installed") != NULL);
+    CHECK(strstr(err, "gnuplot-nox") != NULL);
+    CHECK(exists(dir, "plot_run.dat") && exists(dir, "course.gp") && exists(dir, "energy.gp"));
+    CHECK(exists(dir, "trajectory.csv"));
+    CHECK(!exists(dir, "course.png"));
+
+    /* bad plot options: exit 2, the option named, nothing written */
+    const struct {
+        const char *opt, *name;
+    } bad[] = {{"--frames-at x=200", "--frames-at"}, {"--frames-at y=3", "--frames-at"},
+               {"--frames-at t=-1", "--frames-at"},  {"--animate --fps 0", "--fps"},
+               {"--animate --size 10x10", "--size"}, {"--animate --speedup -2", "--speedup"}};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        snprintf(dir, sizeof dir, "%s/bad%zu", tmp, i);
+        snprintf(args, sizeof args, "simulate '%s' %s --out '%s'", scene, bad[i].opt, dir);
+        CHECK(run("ZIPOPT_TEST=1", args) == 2);
+        CHECK(strstr(err, bad[i].name) != NULL);
+        CHECK(count_files(dir) <= 0);
+    }
+    const char *badland[] = {"--slice 1,1",
+                             "--slice 1,4",
+                             "--force-range 5:1:3",
+                             "--force-range 0:10:1",
+                             "--slice 1,2 --range 0:10",
+                             "--range 0:10:3",
+                             "--force 1,2"};
+    for (size_t i = 0; i < sizeof badland / sizeof badland[0]; i++) {
+        snprintf(dir, sizeof dir, "%s/badland%zu", tmp, i);
+        snprintf(args, sizeof args, "landscape '%s' %s --out '%s'", scene, badland[i], dir);
+        CHECK(run("ZIPOPT_TEST=1", args) == 2);
+        CHECK(count_files(dir) <= 0);
+    }
+}
+
+/* the landscape's points against independent single runs, and the seed's survival windows */
+static void test_landscape(void) {
+    zp_scene sc;
+    zp_model *m = seed(&sc);
+    zp_sim_opts o = tu_opts(&sc, sc.rtol);
+    o.atol = sc.atol;
+    enum { NP = 6 };
+    double force[NP * 3];
+    for (int k = 0; k < NP; k++) {
+        force[3 * k] = force[3 * k + 1] = force[3 * k + 2] = seed_pattern_force[k];
+    }
+    zp_landscape_point pt[NP];
+    CHECK(zp_landscape_sweep(m, &o, force, NP, pt, NULL, NULL) == ZP_OK);
+    for (int k = 0; k < NP; k++) {
+        zp_input in = {.force = force + 3 * k};
+        const zp_result *r = tu_run(m, &o, &in);
+        CHECK(!pt[k].failed);
+        CHECK(pt[k].outcome == r->outcome);
+        CHECK(pt[k].time == r->time); /* the same run, bit for bit */
+        CHECK(pt[k].died_link == r->died_link);
+        CHECK(r->outcome == seed_pattern[k]);
+        if (r->outcome != seed_pattern[k]) {
+            fprintf(stderr, "constant push %d N: %s\n", seed_pattern_force[k],
+                    zp_sim_outcome_name(r->outcome));
+        }
+    }
+
+    /* the command: the same outcomes in landscape.csv, and a slice cell against its run */
+    char scene[1024], args[4096], dir[1024];
+    snprintf(scene, sizeof scene, "%s/config/seed.ini", ZP_SOURCE_DIR);
+    snprintf(dir, sizeof dir, "%s/land", tmp);
+    snprintf(args, sizeof args,
+             "landscape '%s' --force-range 5:30:6 --slice 1,2 "
+             "--range 5:30:6 --out '%s'",
+             scene, dir);
+    CHECK(run("ZIPOPT_TEST=1", args) == 0);
+    check_png(dir, "landscape.png", 0, 0);
+    check_png(dir, "landscape_slice.png", 0, 0);
+    char *csv = slurp(dir, "landscape.csv");
+    CHECK(csv != NULL);
+    int rowsread = 0;
+    for (char *line = csv ? strchr(csv, '\n') : NULL; line && line[1];
+         line = strchr(line + 1, '\n')) {
+        double f;
+        char outcome[32];
+        if (sscanf(line + 1, "%lf,%31[^,]", &f, outcome) == 2 && rowsread < NP) {
+            CHECK(f == seed_pattern_force[rowsread]);
+            CHECK(!strcmp(outcome, zp_sim_outcome_name(seed_pattern[rowsread])));
+            rowsread++;
+        }
+    }
+    CHECK(rowsread == NP);
+    free(csv);
+    /* slice cell F1 = 10, F2 = 25 with section 3 at the scene's 100 N */
+    csv = slurp(dir, "landscape_slice.csv");
+    CHECK(csv && !strncmp(csv, "f1,f2,outcome", 13));
+    double cell[3] = {10, 25, sc.forces[2]};
+    zp_input in = {.force = cell};
+    const zp_result *r = tu_run(m, &o, &in);
+    char want[64];
+    snprintf(want, sizeof want, "\n10,25,%s,", zp_sim_outcome_name(r->outcome));
+    CHECK(csv && strstr(csv, want) != NULL);
+    int lines = 0;
+    for (char *p = csv; p && *p; p++) {
+        lines += *p == '\n';
+    }
+    CHECK(lines == 1 + 36);
+    free(csv);
+    zp_model_free(m);
+}
+
+int main(void) {
+    snprintf(tmp, sizeof tmp, "%s/zp_plot_XXXXXX", getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp");
+    if (!mkdtemp(tmp)) {
+        perror("mkdtemp");
+        return 1;
+    }
+    test_figures();
+    test_frame_geometry();
+    test_cli();
+    test_landscape();
+    char cmd[1100];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp);
+    if (system(cmd)) {
+        fprintf(stderr, "could not remove %s\n", tmp);
+    }
+    return CHECK_DONE();
+}
