@@ -10,8 +10,11 @@
 #include "events.h"
 #include "impulse.h"
 
-/* two crossings of one kink closer than this (s) mean the trolley has come to rest in it */
+/* ZP_ZENO_RUN crossings of one kink in a row, each closer than ZP_ZENO_DT (s) to the one
+   before, mean the trolley has come to rest in it (an accumulation of ever smaller bounces).
+   One close pair is not enough: a stiff chain can knock a light trolley straight back across */
 #define ZP_ZENO_DT 1e-6
+#define ZP_ZENO_RUN 4
 /* an output time this close (s) to an event shows the state after the event */
 #define ZP_EVENT_TIME_EPS 1e-9
 
@@ -252,18 +255,16 @@ static int cross_kink(zp_sim *s, double t, zp_result *r, int to) {
     s->e_impulse += imp.energy_lost;
     int from = s->sec;
     s->sec = to;
-    /* a run of crossings ever closer together at one kink (Zeno) is a trolley at rest in it */
-    int zeno = 0;
-    for (int i = r->ncross - 1; i >= 0 && i >= r->ncross - 2; i--) {
-        const zp_crossing *p = &r->cross[i];
-        if (fmin(p->from, p->to) == fmin(from, to) && t - p->t < ZP_ZENO_DT) {
-            zeno = 1;
-        }
-    }
     if (r->ncross < ZP_MAX_CROSSINGS) {
         r->cross[r->ncross] = (zp_crossing){t, b, from, to, imp.lambda, imp.energy_lost};
     }
     r->ncross++;
+    /* the last ZP_ZENO_RUN crossings: all at this kink, each close after the one before */
+    int zeno = r->ncross >= ZP_ZENO_RUN && r->ncross <= ZP_MAX_CROSSINGS;
+    for (int i = r->ncross - 1; zeno && i > r->ncross - ZP_ZENO_RUN; i--) {
+        const zp_crossing *p = &r->cross[i], *q = &r->cross[i - 1];
+        zeno = p->x == q->x && p->t - q->t < ZP_ZENO_DT;
+    }
     int dir = to > from ? 1 : -1;
     return zeno || r->ncross >= ZP_MAX_CROSSINGS || departure(s, s->y) * dir < 0;
 }
