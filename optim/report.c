@@ -222,9 +222,12 @@ void zp_report_write_md(FILE *f, const zp_report *r) {
             sc->max_evals);
     fprintf(f, "- simulations: %ld (%ld survived with the margin, %ld gave the integrator up) "
                "from %d local starts\n", s->evals, s->nfeasible, s->nfailed, s->nstarts);
-    fprintf(f, "- wall time: %.2f s on %d threads (%.0f simulations/s); integrator %s, rtol "
-               "%g, atol %g\n", s->wall_s, s->nthreads, s->evals / fmax(s->wall_s, 1e-9),
-            r->method, sc->rtol, sc->atol);
+    fprintf(f, "- wall time: %.2f s on %d threads (%.0f simulations/s)\n", s->wall_s,
+            s->nthreads, s->evals / fmax(s->wall_s, 1e-9));
+    fprintf(f, "- integrators: the search's runs %s at rtol %g, atol %g ([optimize]); the best\n"
+               "  schedule rerun with %s at rtol %g, atol %g ([solver]) and verified 100x tighter\n",
+            sc->search_method, sc->search_rtol, sc->search_rtol / 100, r->method, sc->rtol,
+            sc->atol);
     if (s->nhist > 0) {
         fputs("- best finish time against simulations spent:", f);
         int step = s->nhist > 12 ? s->nhist / 12 : 1;

@@ -222,6 +222,10 @@ int zp_cmd_search(int argc, char **argv) {
     zp_sim_opts fast = so;
     fast.output_dt = 0;
     fast.track_loads = 0;
+    /* ranking schedules needs ~1e-6 s, not the scene's accuracy: [optimize] method, rtol */
+    fast.method = zp_method_find(sc.search_method);
+    fast.rtol = sc.search_rtol;
+    fast.atol = sc.search_rtol / 100;
     zp_objective ob = {m, m->phi_max - sc.margin * M_PI / 180, so.t_max};
     progress_ctx pc = {.sc = &sc, .tty = isatty(STDERR_FILENO)};
     snprintf(pc.checkpoint_dir, sizeof pc.checkpoint_dir, "%s", dir);

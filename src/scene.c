@@ -42,6 +42,8 @@ enum {
     K_MARGIN,
     K_MAX_EVALS,
     K_SEED,
+    K_SEARCH_METHOD,
+    K_SEARCH_RTOL,
     K_COUNT
 };
 
@@ -73,6 +75,8 @@ static const struct {
     [K_MARGIN] = {S_OPTIMIZE, "margin", "a number >= 0 (deg) below death_angle"},
     [K_MAX_EVALS] = {S_OPTIMIZE, "max_evals", "a whole number >= 1"},
     [K_SEED] = {S_OPTIMIZE, "seed", "a whole number >= 0"},
+    [K_SEARCH_METHOD] = {S_OPTIMIZE, "method", "a method name (see zipopt --help)"},
+    [K_SEARCH_RTOL] = {S_OPTIMIZE, "rtol", "a number > 0"},
 };
 
 #define LINE_CAP INI_MAX_LINE     /* inih's line buffer; a longer line is an error, not split */
@@ -704,6 +708,9 @@ static void convert_scene(parse_ctx *c, zp_scene *sc) {
     if (get_whole(c, K_SEED, 0, ULONG_MAX, &u) > 0) {
         sc->seed = u;
     }
+    get_text(c, K_SEARCH_METHOD, sc->search_method, sizeof sc->search_method);
+    sc->line_search_method = c->key_line[K_SEARCH_METHOD];
+    get_number(c, K_SEARCH_RTOL, R_POS, &sc->search_rtol);
 }
 
 /* ---- entry points ---- */
@@ -733,6 +740,9 @@ static void set_defaults(zp_scene *sc, const char *path) {
     sc->margin = 10;
     sc->max_evals = 5000;
     sc->seed = 1;
+    /* the fastest setting that keeps search runs within 1e-6 s (docs/trade.md) */
+    strcpy(sc->search_method, "gsl-rk8pd");
+    sc->search_rtol = 1e-5;
 }
 
 /* the whole file as a string (caller frees), or NULL with a message */

@@ -45,9 +45,11 @@ typedef struct zp_scene {
     double margin;  /* deg */
     long max_evals; /* simulations the search may spend */
     unsigned long seed;
+    char search_method[32]; /* integrator of the search's runs (the answer is rerun with [solver]) */
+    double search_rtol;     /* their rtol; atol = rtol / 100 */
 
     /* lines of keys that later stages judge (0 if absent), for their messages */
-    int line_forces, line_method, line_formulation;
+    int line_forces, line_method, line_formulation, line_search_method;
 } zp_scene;
 
 /* Reads and validates a scene file (every CONFIG.md rule). On error fills d and returns

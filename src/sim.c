@@ -452,5 +452,11 @@ zp_status zp_sim_opts_from_scene(const zp_scene *sc, zp_sim_opts *o, zp_diag *d)
                     "unknown formulation '%s'; expected one of those listed by zipopt --help",
                     sc->formulation);
     }
-    return o->method < 0 || o->formulation < 0 ? ZP_ERR_INPUT : ZP_OK;
+    int search_method = zp_method_find(sc->search_method);
+    if (search_method < 0) {
+        zp_diag_add(d, sc->path, sc->line_search_method, "optimize", "method",
+                    "unknown method '%s'; expected one of those listed by zipopt --help",
+                    sc->search_method);
+    }
+    return o->method < 0 || o->formulation < 0 || search_method < 0 ? ZP_ERR_INPUT : ZP_OK;
 }

@@ -128,6 +128,7 @@ static void test_numbers(void) {
     BAD(17, "seed = -1", 17, "optimize", "seed");
     BAD(17, "seed = 2.5", 17, "optimize", "seed");
     BAD(17, "seed = one", 17, "optimize", "seed");
+    BAD(17, "rtol = 0", 17, "optimize", "rtol");
     BAD(13, "forces = 100, 100\nmin = 10\nmax = 5", 15, "drive", "max");
     BAD(2, "gravity = 9.81#comment", 2, "scene", "gravity"); /* a comment needs a space first */
 
@@ -136,6 +137,9 @@ static void test_numbers(void) {
     CHECK(sc.death_angle == 360);
     GOOD(17, "margin = 0\nmax_evals = 1\nseed = 0", &sc);
     CHECK(sc.margin == 0 && sc.max_evals == 1 && sc.seed == 0);
+    GOOD(17, "method = cvode-bdf\nrtol = 1e-7", &sc); /* the search's own integrator */
+    CHECK(!strcmp(sc.search_method, "cvode-bdf") && sc.search_rtol == 1e-7);
+    CHECK(!strcmp(sc.method, "cvode-adams") && sc.rtol == 1e-8); /* [solver] untouched */
     GOOD(13, "forces = -50, 1.5e2\nmin = -100\nmax = -100", &sc);
     CHECK(sc.forces[0] == -50 && sc.forces[1] == 150 && sc.force_min == -100 &&
           sc.force_max == -100);
@@ -349,6 +353,7 @@ static void test_defaults(void) {
     CHECK(!strcmp(sc.method, "cvode-adams") && !strcmp(sc.formulation, "lagrange"));
     CHECK(sc.rtol == 1e-8 && sc.atol == 1e-10 && sc.t_max == 120 && sc.output_dt == 0.02);
     CHECK(sc.margin == 10 && sc.max_evals == 5000 && sc.seed == 1);
+    CHECK(!strcmp(sc.search_method, "gsl-rk8pd") && sc.search_rtol == 1e-5);
 }
 
 /* CONFIG.md's example, written out here from the spec */
