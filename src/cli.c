@@ -9,6 +9,18 @@ int zp_cli_parse_list(const char *text, double *out, int max, char *why, size_t 
     return zp_scene_parse_list(text, out, max, why, whylen);
 }
 
+int zp_cli_scene_arg(const char *cmd, const char *arg, const char **scene) {
+    const char *sp = *cmd ? " " : "";
+    if (arg[0] == '-' || *scene) {
+        fprintf(stderr, "zipopt%s%s: %s '%s'%s; see zipopt%s%s --help\n", sp, cmd,
+                arg[0] == '-' ? "unknown option or missing value" : "unexpected argument", arg,
+                arg[0] == '-' ? "" : " (one scene file only)", sp, cmd);
+        return -1;
+    }
+    *scene = arg;
+    return 0;
+}
+
 zp_model *zp_cli_load(const char *path, zp_scene *sc) {
     zp_diag d;
     zp_diag_init(&d);

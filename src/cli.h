@@ -11,6 +11,10 @@ enum { ZP_EXIT_OK = 0, ZP_EXIT_FAIL = 1, ZP_EXIT_USAGE = 2 };
 /* Parses "a,b,c" into at most max doubles; returns the count, or -1 (with why) on a bad
    number or an empty item. */
 int zp_cli_parse_list(const char *text, double *out, int max, char *why, size_t whylen);
+/* The positional argument of a command (its scene file): stores arg in *scene unless arg
+   looks like an option or a scene was given already, which it reports for `zipopt <cmd>`
+   (cmd may be "") and returns -1. */
+int zp_cli_scene_arg(const char *cmd, const char *arg, const char **scene);
 /* Loads path (NULL: the built-in seed) and builds the model; prints every diagnostic to
    stderr and returns NULL on bad input. */
 zp_model *zp_cli_load(const char *path, zp_scene *sc);

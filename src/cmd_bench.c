@@ -169,12 +169,8 @@ static int parse_args(int argc, char **argv, trade_args *a) {
                 return -1;
             }
             a->repeats = (int)n;
-        } else if (o[0] == '-' || a->scene) {
-            fprintf(stderr, "zipopt bench trade: %s '%s'; see zipopt bench --help\n",
-                    o[0] == '-' ? "unknown option or missing value" : "unexpected argument", o);
+        } else if (zp_cli_scene_arg("bench trade", o, &a->scene)) {
             return -1;
-        } else {
-            a->scene = o;
         }
     }
     return 0;

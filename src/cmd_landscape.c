@@ -66,13 +66,8 @@ static int parse_args(int argc, char **argv, land_args *a) {
             a->schedule = argv[++i];
         } else if (!strcmp(o, "--out") && has_value) {
             a->out = argv[++i];
-        } else if (o[0] == '-' || a->scene) {
-            fprintf(stderr, "zipopt landscape: %s '%s'%s; see zipopt landscape --help\n",
-                    o[0] == '-' ? "unknown option or missing value" : "unexpected argument", o,
-                    o[0] == '-' ? "" : " (one scene file only)");
+        } else if (zp_cli_scene_arg("landscape", o, &a->scene)) {
             return -1;
-        } else {
-            a->scene = o;
         }
     }
     if (!a->scene) {

@@ -90,13 +90,8 @@ static int parse_args(int argc, char **argv, search_args *a) {
                 fprintf(stderr, "zipopt: --max-evals: at least 1 simulation\n");
                 return -1;
             }
-        } else if (o[0] == '-' || a->scene) {
-            fprintf(stderr, "zipopt: %s '%s'%s; see zipopt --help\n",
-                    o[0] == '-' ? "unknown option or missing value" : "unexpected argument", o,
-                    o[0] == '-' ? "" : " (one scene file only)");
+        } else if (zp_cli_scene_arg("", o, &a->scene)) {
             return -1;
-        } else {
-            a->scene = o;
         }
     }
     if (a->algo && zp_search_algo_find(a->algo) < 0) {

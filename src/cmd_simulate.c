@@ -81,13 +81,8 @@ static int parse_args(int argc, char **argv, sim_args *a) {
             a->size_text = argv[++i];
         } else if (!strcmp(o, "--speedup") && has_value) {
             a->speedup_text = argv[++i];
-        } else if (o[0] == '-' || a->scene) {
-            fprintf(stderr, "zipopt simulate: %s '%s'%s; see zipopt simulate --help\n",
-                    o[0] == '-' ? "unknown option or missing value" : "unexpected argument", o,
-                    o[0] == '-' ? "" : " (one scene file only)");
+        } else if (zp_cli_scene_arg("simulate", o, &a->scene)) {
             return -1;
-        } else {
-            a->scene = o;
         }
     }
     if (!a->scene) {

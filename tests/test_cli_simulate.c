@@ -13,18 +13,7 @@
 static char out[8192];
 
 /* runs a shell command, keeps its stdout in out, returns the exit status */
-static int run(const char *cmd) {
-    FILE *p = popen(cmd, "r");
-    size_t n = p ? fread(out, 1, sizeof out - 1, p) : 0;
-    out[n] = '\0';
-    int st = p ? pclose(p) : -1;
-    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-}
-
-static int exists(const char *path) {
-    struct stat sb;
-    return stat(path, &sb) == 0;
-}
+static int run(const char *cmd) { return tu_sh(cmd, out, sizeof out); }
 
 int main(void) {
     char cmd[2048], dir[] = "/tmp/zp_cli_simXXXXXX";
@@ -68,9 +57,9 @@ int main(void) {
     CHECK(t == r->time);
     char path[1200];
     snprintf(path, sizeof path, "%s/a/trajectory.csv", dir);
-    CHECK(exists(path));
+    CHECK(tu_exists(path));
     snprintf(path, sizeof path, "%s/a/summary.json", dir);
-    CHECK(exists(path));
+    CHECK(tu_exists(path));
 
     /* a schedule file overrides [drive] forces: 10 N finishes where the seed's 100 N dies */
     snprintf(path, sizeof path, "%s/sched.ini", dir);
@@ -95,7 +84,7 @@ int main(void) {
     CHECK(run(cmd) == 1);
     CHECK(strstr(out, "numerical failure") && strstr(out, "nothing was written"));
     snprintf(path, sizeof path, "%s/c", dir);
-    CHECK(!exists(path));
+    CHECK(!tu_exists(path));
 
     zp_model_free(m);
     snprintf(cmd, sizeof cmd, "rm -rf %s", dir);

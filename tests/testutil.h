@@ -4,6 +4,8 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
 
 #include "sim.h"
 
@@ -47,6 +49,20 @@ static inline const zp_result *tu_run(const zp_model *m, const zp_sim_opts *o, c
     }
     zp_sim_free(s);
     return &r;
+}
+
+/* Runs a shell command; its stdout (up to cap - 1 bytes) in out; returns its exit status. */
+static inline int tu_sh(const char *cmd, char *out, size_t cap) {
+    FILE *p = popen(cmd, "r");
+    size_t n = p ? fread(out, 1, cap - 1, p) : 0;
+    out[n] = '\0';
+    int st = p ? pclose(p) : -1;
+    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+static inline int tu_exists(const char *path) {
+    struct stat sb;
+    return stat(path, &sb) == 0;
 }
 
 #endif
