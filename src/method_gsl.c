@@ -31,6 +31,7 @@ typedef struct gsl_work {
     gsl_odeiv2_driver *land; /* owned: a second stepper of the same type for root states */
     gsl_root_fsolver *brent; /* owned */
     double t_stop, h; /* s: end of the run, next step size */
+    double rtol;      /* the requested relative tolerance: how well a root's time need be known */
     long steps, evals;
     /* the last step [t0, t1] with states and (when computed) rates at both ends */
     double t0, t1;
@@ -115,6 +116,7 @@ static void *gsl_create(const gsl_odeiv2_step_type *type, int n, int nroot, cons
     w->user = user;
     w->sys = (gsl_odeiv2_system){g_rhs, g_jac, (size_t)n, w};
     /* the driver's initial step is irrelevant: reset sets h */
+    w->rtol = o->rtol;
     w->run = gsl_odeiv2_driver_alloc_y_new(&w->sys, type, 1e-6, o->atol, o->rtol);
     w->land = gsl_odeiv2_driver_alloc_y_new(&w->sys, type, 1e-6, o->atol, o->rtol);
     w->brent = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
@@ -297,7 +299,9 @@ static int find_root(gsl_work *w, double *t, double *y, int *roots) {
     for (int it = 0; it < NEWTON_MAX && slope != 0; it++) {
         w->root(tr, y, w->gtmp, w->user);
         double tn = fmin(fmax(tr - w->gtmp[best] / slope, w->t0), w->t1);
-        if (!isfinite(tn) || tn == tr) {
+        /* converged (Newton squares the error): a correction this small is below what the
+           integration itself resolves, and landing it would cost a whole step */
+        if (!isfinite(tn) || fabs(tn - tr) <= 1e-2 * w->rtol * (w->t1 - w->t0)) {
             break;
         }
         tr = tn;
