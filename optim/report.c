@@ -217,6 +217,19 @@ void zp_report_write_md(FILE *f, const zp_report *r) {
         }
     }
 
+    /* design loads of the best run, sampled at every step (MODEL.md sign conventions) */
+    const zp_load_peaks *pk = &run->peaks;
+    fputs("\n## Loads\n\n| joint | peak reaction (N) | link | peak felt acceleration (g) |\n"
+          "|---|---|---|---|\n", f);
+    for (int i = 0; i < r->m->nlink; i++) {
+        fprintf(f, "| %d | %.1f | %d | %.2f |\n", i + 1, pk->joint[i], i + 1, pk->acc_g[i]);
+    }
+    fprintf(f, "\nNormal force of the course on the trolley: %.1f N to %.1f N%s. Felt "
+               "acceleration is |a - g| at a link's centre of mass (1 g hanging at rest).\n",
+            pk->normal_min, pk->normal_max,
+            pk->normal_min < 0 ? " (negative: the trolley pulls on the course, which must "
+                                 "hold it from above too)" : "");
+
     fputs("\n## Search\n\n", f);
     fprintf(f, "- algorithm: %s, seed %lu, budget %ld simulations\n", r->algo, sc->seed,
             sc->max_evals);

@@ -5,6 +5,7 @@
    files on disk. */
 #include <signal.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -72,6 +73,22 @@ int main(void) {
     /* the same forces (written in full) through the same solver: the same bits, since output
        requests never change the integrator's steps */
     CHECK(json_num(out, "time") == t_search);
+
+    /* the report's loads are those of that same run; the figures it links exist */
+    static char report[65536];
+    snprintf(cmd, sizeof cmd, "%s/a/report.md", dir);
+    slurp(cmd, report, sizeof report);
+    const char *jp = strstr(out, "\"joint_peak\": [");
+    CHECK(jp != NULL);
+    char row[64];
+    snprintf(row, sizeof row, "| 1 | %.1f |", jp ? atof(jp + strlen("\"joint_peak\": [")) : 0);
+    CHECK(strstr(report, "## Loads") && strstr(report, row));
+    const char *figs[] = {"course", "energy", "angles", "loads"};
+    for (int i = 0; i < 4; i++) {
+        snprintf(row, sizeof row, "](%s.png)", figs[i]);
+        snprintf(cmd, sizeof cmd, "%s/a/%s.png", dir, figs[i]);
+        CHECK(strstr(report, row) && tu_exists(cmd));
+    }
 
     /* Ctrl-C: the best so far, marked interrupted */
     pid_t pid = fork();

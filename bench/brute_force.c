@@ -1,0 +1,88 @@
+/* A brute-force reference for the search (issue 4): uniform random schedules over the scene's
+   [drive] box, on every core, for a fixed wall time; the fastest that finishes with the margin
+   kept. Same integrator as the search's runs ([optimize] method, rtol).
+   Usage: brute_force SCENE.ini SECONDS [SEED] */
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_rng.h>
+#include <math.h>
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "cli.h"
+#include "sim.h"
+
+int main(int argc, char **argv) {
+    if (argc < 3) {
+        fputs("usage: brute_force SCENE.ini SECONDS [SEED]\n", stderr);
+        return 2;
+    }
+    gsl_set_error_handler_off();
+    double seconds = atof(argv[2]);
+    unsigned long seed = argc > 3 ? strtoul(argv[3], NULL, 10) : 1;
+    zp_scene sc;
+    zp_model *m = zp_cli_load(argv[1], &sc);
+    zp_diag d;
+    zp_diag_init(&d);
+    zp_sim_opts o;
+    if (!m || zp_sim_opts_from_scene(&sc, &o, &d)) {
+        return 2;
+    }
+    o.method = zp_method_find(sc.search_method);
+    o.rtol = sc.search_rtol;
+    o.atol = sc.search_rtol / 100;
+    o.output_dt = 0;
+    o.track_loads = 0;
+    double limit = m->phi_max - sc.margin * M_PI / 180;
+    int nt = omp_get_max_threads();
+    zp_sim **sims = malloc(sizeof *sims * nt);
+    for (int i = 0; i < nt; i++) {
+        sims[i] = zp_sim_create(m, &o); /* serially: libmatheval is not thread-safe */
+    }
+    double best_t = INFINITY, best_f[ZP_MAX_SECTIONS] = {0};
+    long total = 0, feasible = 0;
+    double t0 = omp_get_wtime();
+#pragma omp parallel reduction(+ : total, feasible)
+    {
+        int id = omp_get_thread_num();
+        gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+        gsl_rng_set(rng, seed * 1000 + id);
+        static zp_result rs[64];
+        zp_result *r = &rs[id];
+        double f[ZP_MAX_SECTIONS];
+        zp_input in = {.force = f};
+        while (omp_get_wtime() - t0 < seconds) {
+            for (int k = 0; k < m->nsec; k++) {
+                f[k] = sc.force_min + (sc.force_max - sc.force_min) * gsl_rng_uniform(rng);
+            }
+            total++;
+            if (zp_sim_run(m, sims[id], &in, r) || r->outcome != ZP_OUTCOME_FINISHED) {
+                continue;
+            }
+            int ok = 1;
+            for (int i = 0; i < m->nlink; i++) {
+                ok &= r->max_rel_angle[i] <= limit;
+            }
+            if (!ok) {
+                continue;
+            }
+            feasible++;
+#pragma omp critical
+            if (r->time < best_t) {
+                best_t = r->time;
+                for (int k = 0; k < m->nsec; k++) {
+                    best_f[k] = f[k];
+                }
+            }
+        }
+        gsl_rng_free(rng);
+    }
+    printf("brute force: %ld schedules in %.0f s on %d threads (%.0f/s), %ld finish with the "
+           "margin\nbest: %.6f s at", total, omp_get_wtime() - t0, nt,
+           total / (omp_get_wtime() - t0), feasible, best_t);
+    for (int k = 0; k < m->nsec; k++) {
+        printf(" %.4f", best_f[k]);
+    }
+    printf(" N\n");
+    return 0;
+}
