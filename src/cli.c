@@ -57,10 +57,12 @@ void zp_cli_print_registries(FILE *f) {
 
 void zp_cli_usage(FILE *f) {
     fputs("usage:\n"
-          "  zipopt [SCENE.ini] [--out DIR]\n"
+          "  zipopt [SCENE.ini] [--out DIR] [--algorithm NAME] [--seed N] [--max-evals N]\n"
+          "         [--no-plot]\n"
           "      Search for the fastest survivable schedule of drive forces (one per course\n"
-          "      section) and write report.md, schedule.ini, summary.json and the best run's\n"
-          "      trajectory to out/<scene name>/ (or DIR). With no file: the built-in seed scene.\n"
+          "      section), verify it 100x tighter and write report.md, schedule.ini,\n"
+          "      summary.json, the best run's trajectory and figures to out/<scene name>/\n"
+          "      (or DIR). With no file: the built-in seed scene. See zipopt SCENE --help.\n"
           "  zipopt simulate SCENE.ini [--force F1,F2,..] [--schedule FILE] [--json]\n"
           "                  [--sample-times T1,T2,..] [--out DIR]\n"
           "      Run one schedule through the simulator: --force or --schedule replace the\n"
