@@ -21,6 +21,30 @@ int zp_cli_scene_arg(const char *cmd, const char *arg, const char **scene) {
     return 0;
 }
 
+int zp_cli_apply_forces(const char *cmd, zp_scene *sc, const char *schedule,
+                        const char *force_text) {
+    zp_diag d;
+    zp_diag_init(&d);
+    if (schedule && zp_scene_overlay_schedule(schedule, sc, &d)) {
+        zp_diag_print(&d, stderr);
+        fprintf(stderr, "zipopt %s: nothing was written\n", cmd);
+        return -1;
+    }
+    if (force_text) {
+        char why[256];
+        int n = zp_cli_parse_list(force_text, sc->forces, ZP_MAX_SECTIONS, why, sizeof why);
+        if (n != sc->nsec) {
+            fprintf(stderr,
+                    "zipopt %s: --force: %s; expected %d values (one per section); nothing "
+                    "was written\n",
+                    cmd, n < 0 ? why : "wrong number of values", sc->nsec);
+            return -1;
+        }
+        sc->nforce = n;
+    }
+    return 0;
+}
+
 zp_model *zp_cli_load(const char *path, zp_scene *sc) {
     zp_diag d;
     zp_diag_init(&d);

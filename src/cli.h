@@ -15,6 +15,10 @@ int zp_cli_parse_list(const char *text, double *out, int max, char *why, size_t 
    looks like an option or a scene was given already, which it reports for `zipopt <cmd>`
    (cmd may be "") and returns -1. */
 int zp_cli_scene_arg(const char *cmd, const char *arg, const char **scene);
+/* Lays a schedule file (may be NULL), then a --force list (may be NULL), over sc's forces,
+   reporting problems for `zipopt <cmd>` (with "nothing was written"); 0 or -1. */
+int zp_cli_apply_forces(const char *cmd, zp_scene *sc, const char *schedule,
+                        const char *force_text);
 /* Loads path (NULL: the built-in seed) and builds the model; prints every diagnostic to
    stderr and returns NULL on bad input. */
 zp_model *zp_cli_load(const char *path, zp_scene *sc);

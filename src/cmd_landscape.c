@@ -279,19 +279,8 @@ int zp_cmd_landscape(int argc, char **argv) {
     zp_diag d;
     zp_diag_init(&d);
     /* every option checked before any run */
-    if (a.schedule && zp_scene_overlay_schedule(a.schedule, &sc, &d)) {
-        zp_diag_print(&d, stderr);
-        fputs("zipopt landscape: nothing was written\n", stderr);
+    if (zp_cli_apply_forces("landscape", &sc, a.schedule, a.force_text)) {
         goto done;
-    }
-    char why[256];
-    if (a.force_text) {
-        int n = zp_cli_parse_list(a.force_text, sc.forces, ZP_MAX_SECTIONS, why, sizeof why);
-        if (n != sc.nsec) {
-            fprintf(stderr, "zipopt landscape: --force: %s; expected %d values (one per section)\n",
-                    n < 0 ? why : "wrong number of values", sc.nsec);
-            goto done;
-        }
     }
     range r1 = {sc.force_min, sc.force_max, 201};
     if (a.range1_text && parse_range(a.range1_text, &r1, MAX_1D) != (int)strlen(a.range1_text)) {

@@ -239,20 +239,10 @@ int zp_cmd_simulate(int argc, char **argv) {
     double *samples = NULL;
     zp_diag d;
     zp_diag_init(&d);
-    if (a.schedule && zp_scene_overlay_schedule(a.schedule, &sc, &d)) {
-        zp_diag_print(&d, stderr);
+    if (zp_cli_apply_forces("simulate", &sc, a.schedule, a.force_text)) {
         goto done;
     }
     char why[256];
-    if (a.force_text) {
-        int n = zp_cli_parse_list(a.force_text, sc.forces, ZP_MAX_SECTIONS, why, sizeof why);
-        if (n != sc.nsec) {
-            fprintf(stderr, "zipopt simulate: --force: %s; expected %d values (one per section)\n",
-                    n < 0 ? why : "wrong number of values", sc.nsec);
-            goto done;
-        }
-        sc.nforce = n;
-    }
     int nsample = 0;
     if (a.sample_text) {
         samples = malloc(sizeof *samples * MAX_SAMPLES);
