@@ -45,6 +45,14 @@ int zp_cli_apply_forces(const char *cmd, zp_scene *sc, const char *schedule,
     return 0;
 }
 
+void zp_cli_out_dir(const char *out, const zp_scene *sc, char *dir, size_t cap) {
+    if (out) {
+        snprintf(dir, cap, "%s", out);
+    } else {
+        snprintf(dir, cap, "out/%s", sc->name);
+    }
+}
+
 zp_model *zp_cli_load(const char *path, zp_scene *sc) {
     zp_diag d;
     zp_diag_init(&d);

@@ -19,6 +19,8 @@ int zp_cli_scene_arg(const char *cmd, const char *arg, const char **scene);
    reporting problems for `zipopt <cmd>` (with "nothing was written"); 0 or -1. */
 int zp_cli_apply_forces(const char *cmd, zp_scene *sc, const char *schedule,
                         const char *force_text);
+/* The output folder: --out DIR if given, else out/<scene name> (CLI.md "Files"). */
+void zp_cli_out_dir(const char *out, const zp_scene *sc, char *dir, size_t cap);
 /* Loads path (NULL: the built-in seed) and builds the model; prints every diagnostic to
    stderr and returns NULL on bad input. */
 zp_model *zp_cli_load(const char *path, zp_scene *sc);

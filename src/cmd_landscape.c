@@ -361,10 +361,7 @@ int zp_cmd_landscape(int argc, char **argv) {
 
     /* the files, all or nothing */
     char dir[1024], err[1200];
-    snprintf(dir, sizeof dir, "%s", a.out ? a.out : "");
-    if (!a.out) {
-        snprintf(dir, sizeof dir, "out/%s", sc.name);
-    }
+    zp_cli_out_dir(a.out, &sc, dir, sizeof dir);
     zp_gnuplot g;
     if (zp_gnuplot_begin(&g, dir, err, sizeof err)) {
         fprintf(stderr, "zipopt landscape: %s; nothing was written\n", err);

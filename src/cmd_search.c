@@ -207,10 +207,7 @@ int zp_cmd_search(int argc, char **argv) {
         return ZP_EXIT_USAGE;
     }
     char dir[1024];
-    snprintf(dir, sizeof dir, "%s", a.out ? a.out : "out/");
-    if (!a.out) {
-        snprintf(dir, sizeof dir, "out/%s", sc.name);
-    }
+    zp_cli_out_dir(a.out, &sc, dir, sizeof dir);
 
     /* the search runs without trajectories or load peaks: faster, and only the best run
        needs them */

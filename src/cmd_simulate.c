@@ -289,10 +289,7 @@ int zp_cmd_simulate(int argc, char **argv) {
     zp_run_meta meta = {sc.name, zp_method_get(o.method)->name,
                         zp_formulation_get(o.formulation)->name, o.rtol, o.atol, sc.forces, &est};
     char dir[1024];
-    snprintf(dir, sizeof dir, "%s", a.out ? a.out : "out/");
-    if (!a.out) {
-        snprintf(dir, sizeof dir, "out/%s", sc.name);
-    }
+    zp_cli_out_dir(a.out, &sc, dir, sizeof dir);
     status = write_files(dir, m, s, &r, smp, nsmp, &meta);
     if (status == ZP_EXIT_OK) {
         if (a.json) {
