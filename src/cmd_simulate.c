@@ -213,7 +213,7 @@ static int draw(const char *dir, const zp_model *m, zp_sim *s, const zp_result *
                 dir);
         return ZP_EXIT_FAIL;
     }
-    fprintf(say, "figures in %s: course.png energy.png angles.png loads.png", dir);
+    fprintf(say, "figures in %s: course.png (and .svg) energy.png angles.png loads.png", dir);
     if (info.nframe) {
         fprintf(say, ", %d still frame%s", info.nframe, info.nframe == 1 ? "" : "s");
     }

@@ -330,7 +330,11 @@ static void script_course(FILE *f, const zp_model *m, const zp_result *r, const 
                 "lc rgb '#d62728' title 'death (link %d)'",
                 ps.com[i][0], ps.com[i][1], i);
     }
-    fputc('\n', f);
+    /* the long paths also as a vector image, to zoom into one stretch of the course */
+    fprintf(f,
+            "\nset terminal svg size %d,%d dynamic enhanced font 'DejaVu Sans,11' linewidth 1.3 "
+            "background rgb 'white'\nset output 'course.svg'\nreplot\n",
+            COURSE_W, h);
 }
 
 static void script_energy(FILE *f, const zp_model *m, const zp_result *r) {

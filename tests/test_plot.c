@@ -261,6 +261,15 @@ static void test_figures(void) {
     CHECK(info.anim_frames == (int)floor(r.time / 0.4) + 2);
 
     check_png(dir, "course.png", 0, 0);
+    /* the course also as SVG: a vector image of the same size */
+    unsigned cw = 0, ch = 0;
+    long cbytes = 0;
+    png_size(dir, "course.png", &cw, &ch, &cbytes);
+    char viewbox[64];
+    snprintf(viewbox, sizeof viewbox, "viewBox=\"0 0 %u %u\"", cw, ch);
+    char *svg = slurp(dir, "course.svg");
+    CHECK(svg && strstr(svg, "<svg") && strstr(svg, viewbox) && strstr(svg, "<path"));
+    free(svg);
     check_png(dir, "energy.png", 0, 0);
     check_png(dir, "angles.png", 0, 0);
     check_png(dir, "loads.png", 0, 0);
