@@ -87,6 +87,14 @@ static int check_course(zp_model *m, const zp_scene *sc, zp_diag *d) {
     return ok;
 }
 
+zp_course *zp_model_course(const zp_model *m, char *err, size_t errlen) {
+    const char *exprs[ZP_MAX_SECTIONS];
+    for (int k = 0; k < m->nsec; k++) {
+        exprs[k] = m->expr[k];
+    }
+    return zp_course_create(m->nsec, exprs, err, errlen);
+}
+
 zp_model *zp_model_build(const zp_scene *sc, zp_diag *d) {
     zp_model *m = calloc(1, sizeof *m);
     if (!m) {
@@ -96,14 +104,12 @@ zp_model *zp_model_build(const zp_scene *sc, zp_diag *d) {
     m->g = sc->gravity;
     m->nsec = sc->nsec;
     m->xb[0] = sc->x_start;
-    const char *exprs[ZP_MAX_SECTIONS];
     for (int k = 0; k < sc->nsec; k++) {
         m->xb[k + 1] = sc->x_end[k];
         memcpy(m->expr[k], sc->expr[k], ZP_EXPR_MAX);
-        exprs[k] = m->expr[k];
     }
     char err[256] = "";
-    m->course = zp_course_create(m->nsec, exprs, err, sizeof err);
+    m->course = zp_model_course(m, err, sizeof err);
     if (!m->course) {
         /* the message names the 1-based section; its line is that section's key */
         int k = 0;

@@ -106,12 +106,8 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
         zp_sim_free(s);
         return NULL;
     }
-    const char *exprs[ZP_MAX_SECTIONS];
-    for (int k = 0; k < m->nsec; k++) {
-        exprs[k] = m->expr[k];
-    }
     char err[256];
-    s->course = zp_course_create(m->nsec, exprs, err, sizeof err);
+    s->course = zp_model_course(m, err, sizeof err);
     s->n = s->form->nstate(m);
     s->nroot = zp_events_count(m);
     s->fwork = s->form->create(m);
@@ -143,11 +139,12 @@ static zp_chain chain_of(const zp_sim *s, const double *y) {
 }
 
 static zp_row row_of(zp_sim *s, double t, const double *y) {
-    zp_row r = {.t = t, .sec = s->sec, .c = chain_of(s, y)};
+    zp_drive_now dn = drive_now(s, y[0]); /* its course point serves the chain too */
+    zp_row r = {.t = t, .sec = s->sec};
+    s->form->to_chain(s->m, &dn.tr, y, &r.c);
     r.w_drive = y[s->n - 2];
     r.w_damp = y[s->n - 1];
     r.e_impulse = s->e_impulse;
-    zp_drive_now dn = drive_now(s, y[0]);
     s->form->rhs(s->m, s->fwork, &dn, y, s->ydot, &r.loads);
     zp_load_peaks *p = &s->peaks;
     p->normal_min = fmin(p->normal_min, r.loads.normal);
@@ -244,10 +241,11 @@ static int cross_kink(zp_sim *s, double t, zp_result *r, int to) {
     const zp_model *m = s->m;
     double b = m->xb[to > s->sec ? to : s->sec];
     zp_chain c = chain_of(s, s->y);
+    zp_track entered = zp_course_eval(s->course, to, b);
     c.q[0] = b;
-    c.q[1] = zp_course_eval(s->course, to, b).f;
+    c.q[1] = entered.f;
     zp_impulse imp;
-    if (zp_impulse_apply(m, zp_course_eval(s->course, to, b).fp, &c, &imp)) {
+    if (zp_impulse_apply(m, entered.fp, &c, &imp)) {
         return -1;
     }
     double wk[2] = {s->y[s->n - 2], s->y[s->n - 1]};
@@ -281,11 +279,11 @@ static void finish_result(zp_sim *s, zp_result *r, double t, zp_outcome o, zp_st
     r->w_drive = s->y[s->n - 2];
     r->w_damp = s->y[s->n - 1];
     r->e_impulse = s->e_impulse;
-    r->peaks = s->peaks;
     /* the last row shows the end state */
     if (s->rows && s->nrows < s->cap_rows && (s->nrows == 0 || s->rows[s->nrows - 1].t < t)) {
         s->rows[s->nrows++] = row_of(s, t, s->y);
     }
+    r->peaks = s->peaks; /* after the last row, whose loads count too */
 }
 
 static zp_status fail(zp_sim *s, zp_result *r, double t, const char *why) {
@@ -365,27 +363,19 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
         /* outputs up to the event from the dense output; one on a kink shows the state after */
         emit_outputs(s, in, ev == ZP_EVENT_KINK ? t - ZP_EVENT_TIME_EPS : t, 1, &next_row,
                      &next_sample);
-        switch (ev) {
-        case ZP_EVENT_NONE:
+        if (ev == ZP_EVENT_NONE) {
             continue;
-        case ZP_EVENT_DEATH:
-            add_stats(s, r);
-            r->died_link = link + 1;
-            finish_result(s, r, t, ZP_OUTCOME_DIED, ZP_STALL_NONE);
-            return ZP_OK;
-        case ZP_EVENT_FINISH:
-            add_stats(s, r);
-            finish_result(s, r, t, ZP_OUTCOME_FINISHED, ZP_STALL_NONE);
-            return ZP_OK;
-        case ZP_EVENT_ROLLBACK:
-            add_stats(s, r);
-            finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_ROLLED_BACK);
-            return ZP_OK;
-        case ZP_EVENT_KINK:
-        case ZP_EVENT_COUNT:
-            break;
         }
         add_stats(s, r);
+        if (ev != ZP_EVENT_KINK) {
+            r->died_link = ev == ZP_EVENT_DEATH ? link + 1 : 0;
+            finish_result(s, r, t,
+                          ev == ZP_EVENT_DEATH    ? ZP_OUTCOME_DIED
+                          : ev == ZP_EVENT_FINISH ? ZP_OUTCOME_FINISHED
+                                                  : ZP_OUTCOME_STALLED,
+                          ev == ZP_EVENT_ROLLBACK ? ZP_STALL_ROLLED_BACK : ZP_STALL_NONE);
+            return ZP_OK;
+        }
         int trapped = cross_kink(s, t, r, to);
         if (trapped < 0) {
             return fail(s, r, t, "the mass matrix is not positive definite at the kink");
