@@ -1,7 +1,8 @@
 /* The inner simulator alone (no trajectory, no load tracking, no output): the seed scene at a
    constant push, repeated in one process. One JSON line per tolerance with the median and
    smallest wall time of zp_sim_run, steps, rhs evaluations and the finish time.
-   Usage: bench_sim [--repeat N] [--method NAME] [--force F] RTOL [RTOL..]  (atol = rtol/100) */
+   Usage: bench_sim [--repeat N] [--method NAME] [--formulation NAME] [--force F] RTOL [RTOL..]
+   (atol = rtol/100) */
 #include <gsl/gsl_errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -15,7 +16,7 @@ static int cmp_double(const void *a, const void *b) {
 }
 
 int main(int argc, char **argv) {
-    int repeat = 21, method = ZP_METHOD_CVODE_ADAMS;
+    int repeat = 21, method = ZP_METHOD_CVODE_ADAMS, form = ZP_FORM_LAGRANGE;
     double force = 10;
     int first_rtol = argc;
     for (int i = 1; i < argc; i++) {
@@ -23,6 +24,8 @@ int main(int argc, char **argv) {
             repeat = atoi(argv[++i]);
         } else if (!strcmp(argv[i], "--method") && i + 1 < argc) {
             method = zp_method_find(argv[++i]);
+        } else if (!strcmp(argv[i], "--formulation") && i + 1 < argc) {
+            form = zp_formulation_find(argv[++i]);
         } else if (!strcmp(argv[i], "--force") && i + 1 < argc) {
             force = atof(argv[++i]);
         } else {
@@ -30,8 +33,10 @@ int main(int argc, char **argv) {
             break;
         }
     }
-    if (repeat < 1 || method < 0 || first_rtol >= argc) {
-        fputs("usage: bench_sim [--repeat N] [--method NAME] [--force F] RTOL [RTOL..]\n", stderr);
+    if (repeat < 1 || method < 0 || form < 0 || first_rtol >= argc) {
+        fputs("usage: bench_sim [--repeat N] [--method NAME] [--formulation NAME] [--force F] "
+              "RTOL [RTOL..]\n",
+              stderr);
         return 2;
     }
     gsl_set_error_handler_off();
@@ -53,7 +58,7 @@ int main(int argc, char **argv) {
     for (int a = first_rtol; a < argc; a++) {
         double rtol = atof(argv[a]);
         zp_sim_opts o = {.method = method,
-                         .formulation = ZP_FORM_LAGRANGE,
+                         .formulation = form,
                          .rtol = rtol,
                          .atol = rtol / 100,
                          .t_max = sc.t_max,
@@ -67,11 +72,12 @@ int main(int argc, char **argv) {
             wall[k] = r.wall_s;
         }
         qsort(wall, repeat, sizeof *wall, cmp_double);
-        printf("{\"method\": \"%s\", \"rtol\": %g, \"atol\": %g, \"outcome\": \"%s\", "
-               "\"time\": %.17g, \"steps\": %ld, \"rhs_evals\": %ld, \"wall_median_s\": %.6g, "
-               "\"wall_min_s\": %.6g}\n",
-               zp_method_get(method)->name, rtol, rtol / 100, zp_sim_outcome_name(r.outcome),
-               r.time, r.steps, r.rhs_evals, wall[repeat / 2], wall[0]);
+        printf("{\"method\": \"%s\", \"formulation\": \"%s\", \"rtol\": %g, \"atol\": %g, "
+               "\"outcome\": \"%s\", \"time\": %.17g, \"steps\": %ld, \"rhs_evals\": %ld, "
+               "\"wall_median_s\": %.6g, \"wall_min_s\": %.6g, \"constraint_residual\": %.3g}\n",
+               zp_method_get(method)->name, zp_formulation_get(form)->name, rtol, rtol / 100,
+               zp_sim_outcome_name(r.outcome), r.time, r.steps, r.rhs_evals, wall[repeat / 2],
+               wall[0], r.constraint_residual);
         zp_sim_free(s);
     }
     free(wall);
