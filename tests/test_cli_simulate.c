@@ -45,10 +45,7 @@ int main(void) {
 
     /* the same run in this process: the CLI adds nothing and loses nothing */
     zp_scene sc;
-    zp_scene_seed(&sc);
-    zp_diag d;
-    zp_diag_init(&d);
-    zp_model *m = zp_model_build(&sc, &d);
+    zp_model *m = tu_seed_model(&sc);
     zp_sim_opts o = tu_opts(&sc, sc.rtol);
     o.atol = sc.atol;
     zp_input in = {.force = sc.forces};

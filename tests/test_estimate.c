@@ -34,10 +34,7 @@ static double threshold(const zp_model *m, zp_sim_opts o) {
 
 int main(void) {
     zp_scene sc;
-    zp_scene_seed(&sc);
-    zp_diag d;
-    zp_diag_init(&d);
-    zp_model *m = zp_model_build(&sc, &d);
+    zp_model *m = tu_seed_model(&sc);
     CHECK(m != NULL);
     double force[ZP_MAX_SECTIONS] = {10, 10, 10};
     zp_input in = {.force = force};

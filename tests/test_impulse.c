@@ -58,10 +58,7 @@ static void check_one(const zp_model *m, gsl_rng *rng, double s_out, double s_in
 
 int main(void) {
     zp_scene sc;
-    zp_scene_seed(&sc);
-    zp_diag d;
-    zp_diag_init(&d);
-    zp_model *m = zp_model_build(&sc, &d);
+    zp_model *m = tu_seed_model(&sc);
     CHECK(m != NULL);
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
     for (int trial = 0; trial < 100; trial++) {

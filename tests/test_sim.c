@@ -128,10 +128,7 @@ static void check_conservation(void) {
 /* the seed at 10 N crosses both kinks and finishes: E - E0 = W_drive - W_damp - impulse loss */
 static void check_audit(void) {
     zp_scene sc;
-    zp_scene_seed(&sc);
-    zp_diag d;
-    zp_diag_init(&d);
-    zp_model *m = zp_model_build(&sc, &d);
+    zp_model *m = tu_seed_model(&sc);
     double f[3] = {10, 10, 10}, prev = INFINITY;
     for (double rtol = 1e-6; rtol >= 1e-10; rtol /= 100) {
         zp_sim_opts o = tu_opts(&sc, rtol);
@@ -152,10 +149,7 @@ static void check_audit(void) {
 /* no drive on the seed: the dampers only take energy, row by row, and it never finishes */
 static void check_dampers(void) {
     zp_scene sc;
-    zp_scene_seed(&sc);
-    zp_diag d;
-    zp_diag_init(&d);
-    zp_model *m = zp_model_build(&sc, &d);
+    zp_model *m = tu_seed_model(&sc);
     double f[3] = {0, 0, 0};
     zp_sim_opts o = tu_opts(&sc, 1e-8);
     o.output_dt = 0.05;
@@ -179,10 +173,7 @@ static void check_dampers(void) {
 /* the study's 100 N kills: the same joint at the same time at every tolerance and method */
 static void check_seed_death(void) {
     zp_scene sc;
-    zp_scene_seed(&sc);
-    zp_diag d;
-    zp_diag_init(&d);
-    zp_model *m = zp_model_build(&sc, &d);
+    zp_model *m = tu_seed_model(&sc);
     zp_sim_opts ref_o = tu_opts(&sc, 1e-12);
     zp_input in = {.force = sc.forces};
     zp_result ref = *tu_run(m, &ref_o, &in);
@@ -265,10 +256,7 @@ static void check_zeno_vee(void) {
    exact: no trajectory row exceeds it, and the finest rows come close to it */
 static void check_samples_and_extremes(void) {
     zp_scene sc;
-    zp_scene_seed(&sc);
-    zp_diag d;
-    zp_diag_init(&d);
-    zp_model *m = zp_model_build(&sc, &d);
+    zp_model *m = tu_seed_model(&sc);
     double f[3] = {10, 10, 10};
     zp_sim_opts o = tu_opts(&sc, 1e-9);
     zp_input in = {.force = f};
@@ -309,10 +297,7 @@ static void check_samples_and_extremes(void) {
 /* same inputs, same bits: one workspace twice, and a second workspace on the same model */
 static void check_reproducible(void) {
     zp_scene sc;
-    zp_scene_seed(&sc);
-    zp_diag d;
-    zp_diag_init(&d);
-    zp_model *m = zp_model_build(&sc, &d);
+    zp_model *m = tu_seed_model(&sc);
     double f[3] = {20, 12, 25};
     zp_sim_opts o = tu_opts(&sc, 1e-8);
     zp_input in = {.force = f};
@@ -342,10 +327,7 @@ static void check_reproducible(void) {
 /* forces beyond what doubles can integrate end in a numerical failure with a message */
 static void check_numeric_failure(void) {
     zp_scene sc;
-    zp_scene_seed(&sc);
-    zp_diag d;
-    zp_diag_init(&d);
-    zp_model *m = zp_model_build(&sc, &d);
+    zp_model *m = tu_seed_model(&sc);
     double f[3] = {1e300, 1e300, 1e300};
     zp_sim_opts o = tu_opts(&sc, 1e-8);
     zp_input in = {.force = f};

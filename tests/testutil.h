@@ -24,6 +24,19 @@ static inline zp_model *tu_model(const char *ini, zp_scene *sc) {
     return m;
 }
 
+/* The built-in seed scene and its model; aborts if it does not build (a broken test). */
+static inline zp_model *tu_seed_model(zp_scene *sc) {
+    zp_diag d;
+    zp_diag_init(&d);
+    zp_scene_seed(sc);
+    zp_model *m = zp_model_build(sc, &d);
+    if (!m) {
+        zp_diag_print(&d, stderr);
+        abort();
+    }
+    return m;
+}
+
 /* Options of the scene with the given tolerance (atol = rtol / 100) and no trajectory. */
 static inline zp_sim_opts tu_opts(const zp_scene *sc, double rtol) {
     zp_sim_opts o;
