@@ -4,10 +4,10 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 void zp_estimate_run(const zp_model *m, const zp_sim_opts *o, const zp_input *in,
                      const zp_result *r, zp_estimate *e) {
-    static zp_result tight; /* large: kept off the stack */
     zp_sim_opts ot = *o;
     ot.rtol = fmax(o->rtol / ZP_ESTIMATE_FACTOR, ZP_ESTIMATE_RTOL_MIN);
     ot.atol = o->atol * ot.rtol / o->rtol;
@@ -15,21 +15,22 @@ void zp_estimate_run(const zp_model *m, const zp_sim_opts *o, const zp_input *in
     ot.track_loads = 0;
     zp_input it = {.force = in->force, .start = in->start};
     *e = (zp_estimate){.rtol = ot.rtol, .atol = ot.atol, .time_error = NAN};
-    zp_sim *s = zp_sim_create(m, &ot);
+    /* heap, not static: a library function keeps no state between calls (or threads) */
+    zp_result *tight = malloc(sizeof *tight);
+    zp_sim *s = tight ? zp_sim_create(m, &ot) : NULL;
     if (!s) {
         snprintf(e->message, sizeof e->message, "cannot create the simulator (out of memory)");
-        return;
-    }
-    if (zp_sim_run(m, s, &it, &tight) != ZP_OK) {
-        snprintf(e->message, sizeof e->message, "%s", tight.message);
+    } else if (zp_sim_run(m, s, &it, tight) != ZP_OK) {
+        snprintf(e->message, sizeof e->message, "%s", tight->message);
     } else {
         e->ok = 1;
-        e->outcome = tight.outcome;
-        e->died_link = tight.died_link;
-        e->time = tight.time;
-        e->time_error = fabs(r->time - tight.time);
-        e->sensitive = tight.outcome != r->outcome || tight.died_link != r->died_link ||
-                       tight.stall != r->stall;
+        e->outcome = tight->outcome;
+        e->died_link = tight->died_link;
+        e->time = tight->time;
+        e->time_error = fabs(r->time - tight->time);
+        e->sensitive = tight->outcome != r->outcome || tight->died_link != r->died_link ||
+                       tight->stall != r->stall;
     }
     zp_sim_free(s);
+    free(tight);
 }
