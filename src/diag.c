@@ -49,14 +49,3 @@ void zp_diag_print(const zp_diag *d, FILE *f) {
         fprintf(f, "... and %d more message%s\n", d->dropped, d->dropped == 1 ? "" : "s");
     }
 }
-
-const char *zp_status_name(zp_status st) {
-    static const char *const names[ZP_STATUS_COUNT] = {
-        [ZP_OK] = "ok",
-        [ZP_ERR_INPUT] = "bad input",
-        [ZP_ERR_NUMERIC] = "numerical failure",
-        [ZP_ERR_IO] = "input/output error",
-        [ZP_ERR_NOMEM] = "out of memory",
-    };
-    return ((int)st >= 0 && st < ZP_STATUS_COUNT) ? names[st] : "unknown status";
-}

@@ -29,6 +29,5 @@ void zp_diag_add(zp_diag *d, const char *file, int line, const char *section, co
                  const char *fmt, ...) __attribute__((format(printf, 6, 7)));
 void zp_diag_print(const zp_diag *d, FILE *f);
 
-const char *zp_status_name(zp_status st);
 
 #endif

@@ -148,11 +148,3 @@ void zp_model_free(zp_model *m) {
     zp_course_free(m->course);
     free(m);
 }
-
-int zp_model_section_at(const zp_model *m, double x) {
-    int k = 0;
-    while (k + 1 < m->nsec && x >= m->xb[k + 1]) {
-        k++;
-    }
-    return k;
-}

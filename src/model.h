@@ -49,8 +49,6 @@ void zp_model_free(zp_model *m);
 /* A new set of course evaluators for m's sections, owned by the caller (one per thread);
    NULL with why in err. */
 zp_course *zp_model_course(const zp_model *m, char *err, size_t errlen);
-/* The section (0-based) that contains x, preferring the one to the right at a boundary. */
-int zp_model_section_at(const zp_model *m, double x);
 /* Names for the user-typed drive directions (CONFIG.md), and lookup (-1 if unknown). */
 const char *zp_model_drive_name(zp_drive_dir d);
 int zp_model_drive_find(const char *name);
