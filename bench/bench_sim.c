@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "scene_read.h"
 #include "sim.h"
 
 static int cmp_double(const void *a, const void *b) {

@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "scene.h"
+#include "scene_read.h"
 
 /* a small valid scene; cases replace one of its lines (1-based) */
 static const char *const base[] = {

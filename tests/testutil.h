@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 
+#include "scene_read.h"
 #include "sim.h"
 
 /* Builds a model from scene text; aborts the test on bad input (a broken test, not a check). */

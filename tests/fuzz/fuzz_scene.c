@@ -7,6 +7,7 @@
 
 #include "course.h"
 #include "model.h"
+#include "scene_read.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

@@ -4,7 +4,7 @@
 #define ZP_CLI_H
 
 #include "model.h"
-#include "scene.h"
+#include "scene_read.h"
 
 enum { ZP_EXIT_OK = 0, ZP_EXIT_FAIL = 1, ZP_EXIT_USAGE = 2 };
 

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "gnuplot.h"
+#include "scene_read.h"
 #include "state.h"
 
 #define DEG (180.0 / M_PI)

@@ -1,4 +1,5 @@
-/* A scene file (CONFIG.md) as parsed text: values in the file's units, with the line of each key. */
+/* The scene description (CONFIG.md): plain data in the file's units, with the line of each key.
+   The reader (io/scene_read.h) fills it; the model is built from it. */
 #ifndef ZP_SCENE_H
 #define ZP_SCENE_H
 
@@ -51,18 +52,5 @@ typedef struct zp_scene {
     /* lines of keys that later stages judge (0 if absent), for their messages */
     int line_forces, line_method, line_formulation, line_search_method;
 } zp_scene;
-
-/* Reads and validates a scene file (every CONFIG.md rule). On error fills d and returns
-   ZP_ERR_INPUT; sc then holds defaults plus whatever parsed. */
-zp_status zp_scene_load(const char *path, zp_scene *sc, zp_diag *d);
-/* The same from text in memory; path only names it in messages. */
-zp_status zp_scene_load_string(const char *text, const char *path, zp_scene *sc, zp_diag *d);
-/* The built-in seed scene (CONFIG.md's example). */
-void zp_scene_seed(zp_scene *sc);
-/* Lays a schedule file (only [drive] forces) over sc. */
-zp_status zp_scene_overlay_schedule(const char *path, zp_scene *sc, zp_diag *d);
-/* Parses "a, b, c" (finite decimal numbers, CONFIG.md lists) into at most max doubles;
-   returns the count, or -1 with why on an empty or bad item or more than max items. */
-int zp_scene_parse_list(const char *text, double *out, int max, char *why, size_t whylen);
 
 #endif

@@ -1,6 +1,6 @@
 /* Scene files (CONFIG.md) -> zp_scene: inih splits the lines; this file applies every rule of
    CONFIG.md and reports each violation as FILE:LINE: [section] key: what; expected. */
-#include "scene.h"
+#include "scene_read.h"
 
 #include <ctype.h>
 #include <errno.h>

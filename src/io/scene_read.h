@@ -1,0 +1,21 @@
+/* Reading scene files (CONFIG.md): INI text -> zp_scene, every rule checked, every problem
+   reported with file, line and key. */
+#ifndef ZP_SCENE_READ_H
+#define ZP_SCENE_READ_H
+
+#include "scene.h"
+
+/* Reads and validates a scene file (every CONFIG.md rule). On error fills d and returns
+   ZP_ERR_INPUT; sc then holds defaults plus whatever parsed. */
+zp_status zp_scene_load(const char *path, zp_scene *sc, zp_diag *d);
+/* The same from text in memory; path only names it in messages. */
+zp_status zp_scene_load_string(const char *text, const char *path, zp_scene *sc, zp_diag *d);
+/* The built-in seed scene (CONFIG.md's example). */
+void zp_scene_seed(zp_scene *sc);
+/* Lays a schedule file (only [drive] forces) over sc. */
+zp_status zp_scene_overlay_schedule(const char *path, zp_scene *sc, zp_diag *d);
+/* Parses "a, b, c" (finite decimal numbers, CONFIG.md lists) into at most max doubles;
+   returns the count, or -1 with why on an empty or bad item or more than max items. */
+int zp_scene_parse_list(const char *text, double *out, int max, char *why, size_t whylen);
+
+#endif
