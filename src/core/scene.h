@@ -49,8 +49,33 @@ typedef struct zp_scene {
     char search_method[32]; /* integrator of the search's runs (the answer is rerun with [solver]) */
     double search_rtol;     /* their rtol; atol = rtol / 100 */
 
+    /* [limits] (CONFIG.md): each 0 when absent, meaning off */
+    double max_g;             /* g, peak felt acceleration |a - g| / g at any link's centre */
+    double max_joint_force;   /* N, peak joint reaction at any joint */
+    double max_arrival_speed; /* km/h, trolley speed at x_end */
+    double max_kink_dv;       /* m/s, |v+ - v-| of the trolley at any kink */
+
+    /* [robust] (CONFIG.md): ranges in % of nominal; {100, 100} and 0 when absent */
+    int robust;                   /* 1 when the scene has a [robust] section */
+    double force_error;           /* %, each section's force * (1 + u), |u| <= p / 100 */
+    double mass_range[2];         /* % of the nominal link masses, all links together */
+    double length_range[2];       /* % of the nominal link lengths, all links together */
+    double trolley_mass_range[2]; /* % of the nominal trolley mass */
+    double damping_range[2];      /* % of the nominal joint damping */
+    double start_angle;           /* deg, each link may start swung by up to this either way */
+    int robust_samples;           /* scenarios every candidate is held to (default 64) */
+    int verify_samples;           /* fresh scenarios the answer is checked on (default 2000) */
+
+    /* [physics] (CONFIG.md, MODEL.md "Optional effects"): all off when absent */
+    int ndrag;                             /* 0: no drag; else nlink + 1 */
+    double drag_area[ZP_MAX_LINKS + 1];    /* m^2, Cd*A of the trolley, then each link */
+    double air_density;                    /* kg/m^3 (default 1.225) */
+    double wind;                           /* m/s, horizontal, + toward +x */
+    double rolling;                        /* rolling-resistance coefficient mu (default 0) */
+    double kink_radius;                    /* m, 0: sharp kinks */
+
     /* lines of keys that later stages judge (0 if absent), for their messages */
-    int line_forces, line_method, line_formulation, line_search_method;
+    int line_forces, line_method, line_formulation, line_search_method, line_kink_radius;
 } zp_scene;
 
 #endif

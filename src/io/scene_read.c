@@ -743,6 +743,14 @@ static void set_defaults(zp_scene *sc, const char *path) {
     /* the fastest setting that keeps search runs within 1e-6 s (docs/trade.md) */
     strcpy(sc->search_method, "gsl-rk8pd");
     sc->search_rtol = 1e-5;
+    /* [robust] ranges at 100 % of nominal mean "not varied" */
+    for (int i = 0; i < 2; i++) {
+        sc->mass_range[i] = sc->length_range[i] = 100;
+        sc->trolley_mass_range[i] = sc->damping_range[i] = 100;
+    }
+    sc->robust_samples = 64;
+    sc->verify_samples = 2000;
+    sc->air_density = 1.225;
 }
 
 /* the whole file as a string (caller frees), or NULL with a message */
