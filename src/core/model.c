@@ -88,11 +88,7 @@ static int check_course(zp_model *m, const zp_scene *sc, zp_diag *d) {
 }
 
 zp_course *zp_model_course(const zp_model *m, char *err, size_t errlen) {
-    const char *exprs[ZP_MAX_SECTIONS];
-    for (int k = 0; k < m->nsec; k++) {
-        exprs[k] = m->expr[k];
-    }
-    return zp_course_create(m->nsec, exprs, err, errlen);
+    return zp_course_for_thread(m->course, err, errlen);
 }
 
 zp_model *zp_model_build(const zp_scene *sc, zp_diag *d) {
@@ -109,7 +105,11 @@ zp_model *zp_model_build(const zp_scene *sc, zp_diag *d) {
         memcpy(m->expr[k], sc->expr[k], ZP_EXPR_MAX);
     }
     char err[256] = "";
-    m->course = zp_model_course(m, err, sizeof err);
+    const char *exprs[ZP_MAX_SECTIONS];
+    for (int k = 0; k < m->nsec; k++) {
+        exprs[k] = m->expr[k];
+    }
+    m->course = zp_course_create(m->nsec, exprs, err, sizeof err);
     if (!m->course) {
         /* the message names the 1-based section; its line is that section's key */
         int k = 0;
