@@ -10,7 +10,8 @@
 /* Design note: each node becomes one assignment to a local in the pool's order (operands come
    first), so subtrees shared between f, f' and f'' are computed once; the functions are GCC
    builtins, so GCC may merge sin and cos of one argument. Floating-point contraction is off,
-   as in the rest of the build: the code does exactly the operations of zp_expr_eval. */
+   as in the rest of the build: the code does exactly the operations of zp_expr_eval, with
+   the C library's functions, as libmatheval does. */
 
 struct zp_jit {
     gcc_jit_result *result; /* owned */
@@ -122,7 +123,12 @@ zp_jit *zp_jit_compile(const zp_expr *e, int nfn, int nout, const int *roots, ch
     }
     set_options(g.ctx);
     g.dbl = gcc_jit_context_get_type(g.ctx, GCC_JIT_TYPE_DOUBLE);
-    g.builtin[ZP_EX_POW] = gcc_jit_context_get_builtin_function(g.ctx, "__builtin_pow");
+    /* pow is the library's, not the builtin: GCC would turn pow(u, 2) into u * u, which
+       differs from the interpreter's pow in the last bit at some u */
+    gcc_jit_param *pw[2] = {gcc_jit_context_new_param(g.ctx, NULL, g.dbl, "a"),
+                            gcc_jit_context_new_param(g.ctx, NULL, g.dbl, "b")};
+    g.builtin[ZP_EX_POW] = gcc_jit_context_new_function(g.ctx, NULL, GCC_JIT_FUNCTION_IMPORTED,
+                                                        g.dbl, "pow", 2, pw, 0);
     for (int op = ZP_EX_SQRT; op < ZP_EX_COUNT; op++) {
         char name[32];
         snprintf(name, sizeof name, "__builtin_%s", zp_expr_func_name((zp_ex_op)op));
