@@ -15,6 +15,12 @@ void zp_events_directions(const zp_model *m, int *dir) {
     }
 }
 
+void zp_events_state_only(const zp_model *m, int *flag) {
+    for (int i = 0; i < zp_events_count(m); i++) {
+        flag[i] = i >= ZP_ROOT_DEATH + m->nlink;
+    }
+}
+
 void zp_events_eval(const zp_model *m, int sec, double x, const double *phi, const double *w,
                     double *g) {
     g[ZP_ROOT_LEFT] = x - m->xb[sec];
