@@ -4,7 +4,9 @@
 
 #include <math.h>
 
-int zp_events_count(const zp_model *m) { return 2 + 2 * m->nlink; }
+int zp_events_count(const zp_model *m) {
+    return 2 + 2 * m->nlink;
+}
 
 void zp_events_directions(const zp_model *m, int *dir) {
     dir[ZP_ROOT_LEFT] = -1;

@@ -2,10 +2,15 @@
    per group of expressions, every node computed once into a local. */
 #include "jit.h"
 
+#include <dlfcn.h>
+#include <errno.h>
 #include <libgccjit.h>
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 /* Design note: each node becomes one assignment to a local in the pool's order (operands come
    first), so subtrees shared between f, f' and f'' are computed once; the functions are GCC
@@ -14,7 +19,8 @@
    the C library's functions, as libmatheval does. */
 
 struct zp_jit {
-    gcc_jit_result *result; /* owned */
+    gcc_jit_result *result; /* owned: code compiled in memory, or */
+    void *dl;               /* owned: the cache file loaded */
     int nfn;
     zp_jit_fn fn[]; /* nfn */
 };
@@ -109,66 +115,195 @@ static void set_options(gcc_jit_context *ctx) {
     gcc_jit_context_set_int_option(ctx, GCC_JIT_INT_OPTION_OPTIMIZATION_LEVEL, 1);
     gcc_jit_context_add_command_line_option(ctx, "-ffp-contract=off");
     gcc_jit_context_set_bool_option(ctx, GCC_JIT_BOOL_OPTION_DEBUGINFO, 0);
+    /* the driver in its own process: the embedded one exits the program when it cannot run
+       the assembler (no binutils, or no PATH), where a failed compile must fall back */
+    gcc_jit_context_set_bool_use_external_driver(ctx, 1);
+    /* a failure is reported once, by the caller's notice */
+    gcc_jit_context_set_bool_print_errors_to_stderr(ctx, 0);
+}
+
+/* The on-disk cache: every command pays the compile (tens of ms, mostly the assembler and
+   linker run as processes) only the first time a scene's course is seen. The file is named by
+   one hash of everything the code is made from (nodes, roots, options, libgccjit's version,
+   this generator's version) and holds a second, checked after loading. */
+#define ZP_JIT_GENERATOR 1 /* raise when the generated code changes for the same pool */
+
+/* FNV-1a over the pool, roots and versions, from basis h */
+static unsigned long long pool_hash(unsigned long long h, const zp_expr *e, int nfn, int nout,
+                                    const int *roots) {
+    int head[6] = {ZP_JIT_GENERATOR,
+                   gcc_jit_version_major(),
+                   gcc_jit_version_minor(),
+                   gcc_jit_version_patchlevel(),
+                   nfn,
+                   nout};
+    const void *part[3] = {head, roots, e->node};
+    size_t len[3] = {sizeof head, sizeof *roots * (size_t)nfn * nout,
+                     sizeof *e->node * (size_t)e->n};
+    for (int p = 0; p < 3; p++) {
+        const unsigned char *b = part[p];
+        for (size_t i = 0; i < len[p]; i++) {
+            h = (h ^ b[i]) * 1099511628211ULL;
+        }
+    }
+    return h;
+}
+
+/* the cache file for this pool in path (empty when there is no cache directory), and the
+   check value in key */
+static void cache_names(const zp_expr *e, int nfn, int nout, const int *roots, char *path,
+                        size_t pathlen, char *key, size_t keylen) {
+    unsigned long long h1 = pool_hash(14695981039346656037ULL, e, nfn, nout, roots);
+    unsigned long long h2 = pool_hash(h1 ^ 0x9e3779b97f4a7c15ULL, e, nfn, nout, roots);
+    snprintf(key, keylen, "%016llx%016llx", h1, h2);
+    const char *xdg = getenv("XDG_CACHE_HOME"), *home = getenv("HOME");
+    char dir[PATH_MAX - 64]; /* room for the file name */
+    path[0] = '\0';
+    if (xdg && *xdg) {
+        snprintf(dir, sizeof dir, "%s/zipopt", xdg);
+    } else if (home && *home) {
+        snprintf(dir, sizeof dir, "%s/.cache/zipopt", home);
+    } else {
+        return;
+    }
+    /* the parent may be missing too (a fresh $HOME): make both levels */
+    char parent[sizeof dir];
+    snprintf(parent, sizeof parent, "%s", dir);
+    char *slash = strrchr(parent, '/');
+    if (slash) {
+        *slash = '\0';
+        mkdir(parent, 0700);
+    }
+    if (mkdir(dir, 0700) == 0 || errno == EEXIST) {
+        snprintf(path, pathlen, "%s/course-%016llx.so", dir, h1);
+    }
+}
+
+/* the nfn functions from handle (a loaded file or a compile result) through get */
+static int resolve(zp_jit *j, int nfn, void *(*get)(void *, const char *), void *handle) {
+    for (int i = 0; i < nfn; i++) {
+        char name[32];
+        snprintf(name, sizeof name, "zp_expr_fn%d", i);
+        /* the one cast from object to function pointer that a JIT needs (POSIX allows it) */
+        void *code = get(handle, name);
+        memcpy(&j->fn[i], &code, sizeof code);
+        if (!code) {
+            return -1;
+        }
+    }
+    j->nfn = nfn;
+    return 0;
+}
+
+static void *result_get(void *r, const char *name) {
+    return gcc_jit_result_get_code(r, name);
+}
+
+/* a loaded cache file whose key matches; 0 on success */
+static int load_cached(zp_jit *j, const char *path, const char *key, int nfn) {
+    void *dl = path[0] ? dlopen(path, RTLD_NOW | RTLD_LOCAL) : NULL;
+    const char *const *stored = dl ? dlsym(dl, "zp_expr_key") : NULL;
+    if (!stored || strcmp(*stored, key) || resolve(j, nfn, dlsym, dl)) {
+        if (dl) {
+            dlclose(dl);
+        }
+        return -1;
+    }
+    j->dl = dl;
+    return 0;
+}
+
+/* the pool's functions, and the key as an exported string, in g's context */
+static int generate(gen *g, const zp_expr *e, int nfn, int nout, const int *roots,
+                    const char *key) {
+    char *used = malloc((size_t)e->n + 1);
+    if (!used) {
+        return -1;
+    }
+    for (int i = 0; i < nfn; i++) {
+        char name[32];
+        snprintf(name, sizeof name, "zp_expr_fn%d", i);
+        build_function(g, e, name, nout, roots + (size_t)i * nout, used);
+    }
+    free(used);
+    gcc_jit_type *str = gcc_jit_context_get_type(g->ctx, GCC_JIT_TYPE_CONST_CHAR_PTR);
+    gcc_jit_lvalue *k =
+        gcc_jit_context_new_global(g->ctx, NULL, GCC_JIT_GLOBAL_EXPORTED, str, "zp_expr_key");
+    gcc_jit_global_set_initializer_rvalue(k, gcc_jit_context_new_string_literal(g->ctx, key));
+    return 0;
+}
+
+static void declare_functions(gen *g) {
+    g->dbl = gcc_jit_context_get_type(g->ctx, GCC_JIT_TYPE_DOUBLE);
+    /* pow is the library's, not the builtin: GCC would turn pow(u, 2) into u * u, which
+       differs from the interpreter's pow in the last bit at some u */
+    gcc_jit_param *pw[2] = {gcc_jit_context_new_param(g->ctx, NULL, g->dbl, "a"),
+                            gcc_jit_context_new_param(g->ctx, NULL, g->dbl, "b")};
+    g->builtin[ZP_EX_POW] = gcc_jit_context_new_function(g->ctx, NULL, GCC_JIT_FUNCTION_IMPORTED,
+                                                         g->dbl, "pow", 2, pw, 0);
+    for (int op = ZP_EX_SQRT; op < ZP_EX_COUNT; op++) {
+        char name[32];
+        snprintf(name, sizeof name, "__builtin_%s", zp_expr_func_name((zp_ex_op)op));
+        g->builtin[op] = gcc_jit_context_get_builtin_function(g->ctx, name);
+    }
+}
+
+/* compiles into the cache file (written aside, then renamed: concurrent commands never see
+   half a file) and loads it; else compiles in memory */
+static int compile(zp_jit *j, gen *g, const char *path, const char *key, int nfn, char *err,
+                   size_t errlen) {
+    if (path[0]) {
+        char tmp[PATH_MAX + 32];
+        snprintf(tmp, sizeof tmp, "%s.%ld.tmp", path, (long)getpid());
+        gcc_jit_context_compile_to_file(g->ctx, GCC_JIT_OUTPUT_KIND_DYNAMIC_LIBRARY, tmp);
+        int ok = !gcc_jit_context_get_first_error(g->ctx) && rename(tmp, path) == 0 &&
+                 load_cached(j, path, key, nfn) == 0;
+        remove(tmp);
+        if (ok) {
+            return 0;
+        }
+    }
+    if (!gcc_jit_context_get_first_error(g->ctx)) {
+        j->result = gcc_jit_context_compile(g->ctx);
+    }
+    if (!j->result || resolve(j, nfn, result_get, j->result)) {
+        const char *why = gcc_jit_context_get_first_error(g->ctx);
+        snprintf(err, errlen, "libgccjit: %s", why ? why : "compile failed");
+        return -1;
+    }
+    return 0;
 }
 
 zp_jit *zp_jit_compile(const zp_expr *e, int nfn, int nout, const int *roots, char *err,
                        size_t errlen) {
     zp_jit *j = calloc(1, sizeof *j + sizeof j->fn[0] * (size_t)nfn);
-    gen g = {.val = calloc((size_t)e->n + 1, sizeof *g.val)};
-    char *used = malloc((size_t)e->n + 1);
-    g.ctx = gcc_jit_context_acquire();
-    if (!j || !g.val || !used || !g.ctx) {
+    if (!j) {
         snprintf(err, errlen, "out of memory");
-        goto fail;
+        return NULL;
     }
-    set_options(g.ctx);
-    g.dbl = gcc_jit_context_get_type(g.ctx, GCC_JIT_TYPE_DOUBLE);
-    /* pow is the library's, not the builtin: GCC would turn pow(u, 2) into u * u, which
-       differs from the interpreter's pow in the last bit at some u */
-    gcc_jit_param *pw[2] = {gcc_jit_context_new_param(g.ctx, NULL, g.dbl, "a"),
-                            gcc_jit_context_new_param(g.ctx, NULL, g.dbl, "b")};
-    g.builtin[ZP_EX_POW] = gcc_jit_context_new_function(g.ctx, NULL, GCC_JIT_FUNCTION_IMPORTED,
-                                                        g.dbl, "pow", 2, pw, 0);
-    for (int op = ZP_EX_SQRT; op < ZP_EX_COUNT; op++) {
-        char name[32];
-        snprintf(name, sizeof name, "__builtin_%s", zp_expr_func_name((zp_ex_op)op));
-        g.builtin[op] = gcc_jit_context_get_builtin_function(g.ctx, name);
+    char path[PATH_MAX], key[40];
+    cache_names(e, nfn, nout, roots, path, sizeof path, key, sizeof key);
+    if (load_cached(j, path, key, nfn) == 0) {
+        return j;
     }
-    for (int i = 0; i < nfn; i++) {
-        char name[32];
-        snprintf(name, sizeof name, "zp_expr_fn%d", i);
-        build_function(&g, e, name, nout, roots + (size_t)i * nout, used);
+    gen g = {.val = calloc((size_t)e->n + 1, sizeof *g.val), .ctx = gcc_jit_context_acquire()};
+    int bad = !g.val || !g.ctx;
+    if (bad) {
+        snprintf(err, errlen, "out of memory");
+    } else {
+        set_options(g.ctx);
+        declare_functions(&g);
+        bad = generate(&g, e, nfn, nout, roots, key) || compile(j, &g, path, key, nfn, err, errlen);
     }
-    j->result = gcc_jit_context_compile(g.ctx);
-    if (!j->result) {
-        const char *why = gcc_jit_context_get_first_error(g.ctx);
-        snprintf(err, errlen, "libgccjit: %s", why ? why : "compile failed");
-        goto fail;
-    }
-    j->nfn = nfn;
-    for (int i = 0; i < nfn; i++) {
-        char name[32];
-        snprintf(name, sizeof name, "zp_expr_fn%d", i);
-        /* the one cast from object to function pointer that a JIT needs (POSIX allows it) */
-        void *code = gcc_jit_result_get_code(j->result, name);
-        memcpy(&j->fn[i], &code, sizeof code);
-        if (!j->fn[i]) {
-            snprintf(err, errlen, "libgccjit: no code for %s", name);
-            goto fail;
-        }
-    }
-    gcc_jit_context_release(g.ctx);
-    free(g.val);
-    free(used);
-    return j;
-fail:
     if (g.ctx) {
         gcc_jit_context_release(g.ctx);
     }
     free(g.val);
-    free(used);
-    zp_jit_free(j);
-    return NULL;
+    if (bad) {
+        zp_jit_free(j);
+        return NULL;
+    }
+    return j;
 }
 
 zp_jit_fn zp_jit_get(const zp_jit *j, int i) {
@@ -181,6 +316,9 @@ void zp_jit_free(zp_jit *j) {
     }
     if (j->result) {
         gcc_jit_result_release(j->result);
+    }
+    if (j->dl) {
+        dlclose(j->dl);
     }
     free(j);
 }

@@ -22,7 +22,7 @@
 
 typedef struct gsl_work {
     int n, nroot;
-    int *dir; /* owned, nroot: +1/-1 only that direction of crossing, 0 both */
+    int *dir;        /* owned, nroot: +1/-1 only that direction of crossing, 0 both */
     int *state_only; /* owned, nroot: 1 where one landing step suffices (no Newton on t) */
     zp_rhs_fn rhs;
     zp_root_fn root;
@@ -31,7 +31,7 @@ typedef struct gsl_work {
     gsl_odeiv2_driver *run;  /* owned: step, control and evolve of the integration */
     gsl_odeiv2_driver *land; /* owned: a second stepper of the same type for root states */
     gsl_root_fsolver *brent; /* owned */
-    double t_stop, h; /* s: end of the run, next step size */
+    double t_stop, h;        /* s: end of the run, next step size */
     double rtol, atol; /* the requested tolerances (rtol: how well a root's time need be known) */
     long steps, evals;
     /* the last step [t0, t1] with states and (when computed) rates at both ends */
@@ -41,10 +41,10 @@ typedef struct gsl_work {
     /* roots are searched in (tlo, t1]: glo = g at tlo, g1 = g at t1 */
     int pending; /* the step's end has not been reported yet */
     double tlo;
-    double *glo, *g1, *gtmp;  /* owned, nroot */
-    double *ytmp, *yerr; /* owned, n: scratch */
-    double *fj;          /* owned, 2n: the Jacobian's base and perturbed rates */
-    int iroot;                /* component Brent is working on */
+    double *glo, *g1, *gtmp; /* owned, nroot */
+    double *ytmp, *yerr;     /* owned, n: scratch */
+    double *fj;              /* owned, 2n: the Jacobian's base and perturbed rates */
+    int iroot;               /* component Brent is working on */
 } gsl_work;
 
 /* the rhs as GSL sees it: >0 (non-finite rates) makes GSL retry with a smaller step */
@@ -136,8 +136,8 @@ static void *gsl_create(const gsl_odeiv2_step_type *type, int n, int nroot, cons
     w->ytmp = calloc(n, sizeof(double));
     w->yerr = calloc(n, sizeof(double));
     w->fj = calloc(2 * (size_t)n, sizeof(double));
-    if (!w->run || !w->land || !w->brent || !w->dir || !w->state_only || !w->glo || !w->g1 || !w->gtmp ||
-        !w->y0 || !w->y1 || !w->f0 || !w->f1 || !w->ytmp || !w->yerr || !w->fj) {
+    if (!w->run || !w->land || !w->brent || !w->dir || !w->state_only || !w->glo || !w->g1 ||
+        !w->gtmp || !w->y0 || !w->y1 || !w->f0 || !w->f1 || !w->ytmp || !w->yerr || !w->fj) {
         gsl_free_work(w);
         return NULL;
     }
@@ -153,8 +153,8 @@ static void *rk8pd_create(int n, int nroot, const int *rootdir, zp_rhs_fn rhs, z
     return gsl_create(gsl_odeiv2_step_rk8pd, n, nroot, rootdir, rhs, root, user, o);
 }
 
-static void *rk4imp_create(int n, int nroot, const int *rootdir, zp_rhs_fn rhs,
-                           zp_root_fn root, void *user, const zp_method_opts *o) {
+static void *rk4imp_create(int n, int nroot, const int *rootdir, zp_rhs_fn rhs, zp_root_fn root,
+                           void *user, const zp_method_opts *o) {
     return gsl_create(gsl_odeiv2_step_rk4imp, n, nroot, rootdir, rhs, root, user, o);
 }
 
@@ -186,8 +186,8 @@ static double first_step(gsl_work *w, double t0, const double *y0) {
     d1 = sqrt(d1 / w->n);
     d2 = sqrt(d2 / w->n) / h0;
     int order = (int)gsl_odeiv2_step_order(w->run->s);
-    double h1 = fmax(d1, d2) <= 1e-15 ? fmax(1e-6, h0 * 1e-3)
-                                       : pow(0.01 / fmax(d1, d2), 1.0 / (order + 1));
+    double h1 =
+        fmax(d1, d2) <= 1e-15 ? fmax(1e-6, h0 * 1e-3) : pow(0.01 / fmax(d1, d2), 1.0 / (order + 1));
     return fmin(100 * h0, h1);
 }
 
@@ -288,8 +288,8 @@ static int bracket_root(gsl_work *w, int i, double *lo, double *hi) {
 /* y at time t by one GSL step from the step's start; falls back to the interpolant */
 static void land(gsl_work *w, double t, double *y) {
     memcpy(y, w->y0, sizeof(double) * w->n);
-    if (t > w->t0 && gsl_odeiv2_step_apply(w->land->s, w->t0, t - w->t0, y, w->yerr, w->f0,
-                                            NULL, &w->sys) == GSL_SUCCESS) {
+    if (t > w->t0 && gsl_odeiv2_step_apply(w->land->s, w->t0, t - w->t0, y, w->yerr, w->f0, NULL,
+                                           &w->sys) == GSL_SUCCESS) {
         return;
     }
     hermite(w, t, y);
@@ -354,8 +354,7 @@ static int find_root(gsl_work *w, double *t, double *y, int *roots) {
     return 1;
 }
 
-static zp_adv gsl_advance(void *work, double *t, double *y, int *roots, char *err,
-                          size_t errlen) {
+static zp_adv gsl_advance(void *work, double *t, double *y, int *roots, char *err, size_t errlen) {
     gsl_work *w = work;
     if (!w->pending) {
         /* a new step from the end of the last one */
@@ -365,8 +364,8 @@ static zp_adv gsl_advance(void *work, double *t, double *y, int *roots, char *er
         w->have_f1 = 0;
         w->t0 = w->tlo = w->t1;
         double tt = w->t0;
-        int st = gsl_odeiv2_evolve_apply(w->run->e, w->run->c, w->run->s, &w->sys, &tt,
-                                         w->t_stop, &w->h, w->y1);
+        int st = gsl_odeiv2_evolve_apply(w->run->e, w->run->c, w->run->s, &w->sys, &tt, w->t_stop,
+                                         &w->h, w->y1);
         if (st != GSL_SUCCESS) {
             memcpy(w->y1, w->y0, sizeof(double) * w->n);
             *t = w->t0;
