@@ -2,11 +2,13 @@
    "Course" (seed) and hand-derived derivatives of every allowed function; the compiled code
    agrees with libmatheval on every scene in config/ and on random expressions; bad
    expressions are refused. */
+#include <dirent.h>
 #include <gsl/gsl_rng.h>
 #include <math.h>
 #include <matheval.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "check.h"
 #include "course.h"
@@ -255,6 +257,62 @@ static void test_random_compiled(void) {
     gsl_rng_free(r);
 }
 
+/* the number of files in dir; *ino the inode of the last (a file rewritten gets a new one) */
+static int count_files(const char *dir, unsigned long *ino) {
+    DIR *d = opendir(dir);
+    int n = 0;
+    for (struct dirent *de; d && (de = readdir(d));) {
+        if (de->d_name[0] != '.') {
+            n++;
+            *ino = (unsigned long)de->d_ino;
+        }
+    }
+    if (d) {
+        closedir(d);
+    }
+    return n;
+}
+
+/* the compiled code is cached on disk: a second course of the same text loads the file (no
+   new one) and evaluates the same; a damaged file is not loaded but replaced */
+static void test_cache(const char *cache) {
+    const char *expr[] = {"sinh(x/7) + x^3/1000"};
+    char dir[1100], err[256];
+    snprintf(dir, sizeof dir, "%s/zipopt", cache);
+    double v[3][3];
+    unsigned long ino[3] = {0, 0, 0};
+    for (int round = 0; round < 3; round++) {
+        if (round == 2) { /* damage the file: same name, no key */
+            char path[1400];
+            DIR *d = opendir(dir);
+            for (struct dirent *de; d && (de = readdir(d));) {
+                if (de->d_name[0] != '.') {
+                    snprintf(path, sizeof path, "%s/%s", dir, de->d_name);
+                }
+            }
+            closedir(d);
+            FILE *f = fopen(path, "w");
+            CHECK(f && fputs("not a library\n", f) >= 0);
+            fclose(f);
+        }
+        zp_course *built = zp_course_create(1, expr, err, sizeof err);
+        zp_course *c = built ? zp_course_for_thread(built, err, sizeof err) : NULL;
+        CHECK(c && zp_course_compiled(c));
+        zp_track t = c ? zp_course_eval(c, 0, 2.5) : (zp_track){0, 0, 0};
+        v[round][0] = t.f;
+        v[round][1] = t.fp;
+        v[round][2] = t.fpp;
+        CHECK(count_files(dir, &ino[round]) == 1);
+        zp_course_free(c);
+        zp_course_free(built);
+    }
+    CHECK(ino[1] == ino[0] && ino[2] != ino[0]); /* loaded, then replaced */
+    for (int k = 0; k < 3; k++) {
+        CHECK(v[1][k] == v[0][k] && v[2][k] == v[0][k]);
+    }
+    CHECK(v[0][0] == sinh(2.5 / 7) + pow(2.5, 3) / 1000);
+}
+
 /* each bad text is refused by zp_course_check and by zp_course_create, which names the
    (1-based) section and says why */
 static void test_bad(const char *bad, const char *why_part) {
@@ -271,6 +329,11 @@ static void test_bad(const char *bad, const char *why_part) {
 }
 
 int main(void) {
+    /* the compiled code's cache in a directory of this run's own */
+    char cache[] = "/tmp/zp_test_course_XXXXXX";
+    CHECK(mkdtemp(cache) != NULL);
+    setenv("XDG_CACHE_HOME", cache, 1);
+    test_cache(cache);
     test_seed_course();
     test_functions();
     test_scenes_compiled();
@@ -290,5 +353,20 @@ int main(void) {
     CHECK(zp_course_check("-(x/10 - 12)^2 + 10", err, sizeof err) == 0);
     CHECK(zp_course_check("(x^2)^3 + x^(2^3)", err, sizeof err) == 0);
     zp_course_free(NULL);
+    /* the cache directory and its files, two levels */
+    char dir[1100], path[1400];
+    snprintf(dir, sizeof dir, "%s/zipopt", cache);
+    DIR *d = opendir(dir);
+    for (struct dirent *de; d && (de = readdir(d));) {
+        snprintf(path, sizeof path, "%s/%s", dir, de->d_name);
+        if (de->d_name[0] != '.') {
+            remove(path);
+        }
+    }
+    if (d) {
+        closedir(d);
+    }
+    rmdir(dir);
+    rmdir(cache);
     return CHECK_DONE();
 }

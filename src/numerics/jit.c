@@ -6,6 +6,7 @@
 #include <errno.h>
 #include <libgccjit.h>
 #include <limits.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,6 +18,72 @@
    builtins, so GCC may merge sin and cos of one argument. Floating-point contraction is off,
    as in the rest of the build: the code does exactly the operations of zp_expr_eval, with
    the C library's functions, as libmatheval does. */
+
+/* libgccjit is opened on the first compile, not linked: loading its 30 MB costs every command
+   tens of milliseconds at start, and a machine without it falls back to the interpreter */
+#define ZP_JIT_API(X)                                                                              \
+    X(gcc_jit_block_add_assignment)                                                                \
+    X(gcc_jit_block_end_with_void_return)                                                          \
+    X(gcc_jit_context_acquire)                                                                     \
+    X(gcc_jit_context_add_command_line_option)                                                     \
+    X(gcc_jit_context_compile)                                                                     \
+    X(gcc_jit_context_compile_to_file)                                                             \
+    X(gcc_jit_context_get_builtin_function)                                                        \
+    X(gcc_jit_context_get_first_error)                                                             \
+    X(gcc_jit_context_get_type)                                                                    \
+    X(gcc_jit_context_new_array_access)                                                            \
+    X(gcc_jit_context_new_binary_op)                                                               \
+    X(gcc_jit_context_new_call)                                                                    \
+    X(gcc_jit_context_new_function)                                                                \
+    X(gcc_jit_context_new_global)                                                                  \
+    X(gcc_jit_context_new_param)                                                                   \
+    X(gcc_jit_context_new_rvalue_from_double)                                                      \
+    X(gcc_jit_context_new_rvalue_from_int)                                                         \
+    X(gcc_jit_context_new_string_literal)                                                          \
+    X(gcc_jit_context_new_unary_op)                                                                \
+    X(gcc_jit_context_release)                                                                     \
+    X(gcc_jit_context_set_bool_option)                                                             \
+    X(gcc_jit_context_set_bool_print_errors_to_stderr)                                             \
+    X(gcc_jit_context_set_bool_use_external_driver)                                                \
+    X(gcc_jit_context_set_int_option)                                                              \
+    X(gcc_jit_function_new_block)                                                                  \
+    X(gcc_jit_function_new_local)                                                                  \
+    X(gcc_jit_global_set_initializer_rvalue)                                                       \
+    X(gcc_jit_lvalue_as_rvalue)                                                                    \
+    X(gcc_jit_param_as_rvalue)                                                                     \
+    X(gcc_jit_result_get_code)                                                                     \
+    X(gcc_jit_result_release)                                                                      \
+    X(gcc_jit_type_get_pointer)
+static struct jit_api {
+#define ZP_JIT_SLOT(f) __typeof__(f) *f;
+    ZP_JIT_API(ZP_JIT_SLOT)
+} api;
+#define J(f) (api.f)
+
+/* the library's functions into api, once per process (callers hold the course's lock, and
+   every thread stores the same values); 0 on success, else why in err */
+static int open_api(char *err, size_t errlen) {
+    static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
+    static int state; /* 0 not tried, 1 open, -1 failed */
+    pthread_mutex_lock(&lock);
+    if (state == 0) {
+        void *lib = dlopen("libgccjit.so.0", RTLD_NOW | RTLD_LOCAL);
+        state = lib ? 1 : -1;
+#define ZP_JIT_LOAD(f)                                                                             \
+    if (state == 1) {                                                                              \
+        void *sym = dlsym(lib, #f);                                                                \
+        memcpy(&api.f, &sym, sizeof sym);                                                          \
+        state = sym ? 1 : -1;                                                                      \
+    }
+        ZP_JIT_API(ZP_JIT_LOAD)
+    }
+    int ok = state == 1;
+    pthread_mutex_unlock(&lock);
+    if (!ok) {
+        snprintf(err, errlen, "libgccjit.so.0 (Debian package libgccjit0) cannot be loaded");
+    }
+    return ok ? 0 : -1;
+}
 
 struct zp_jit {
     gcc_jit_result *result; /* owned: code compiled in memory, or */
@@ -39,37 +106,37 @@ static gcc_jit_rvalue *node_value(gen *g, const zp_ex_node *p, gcc_jit_param *x)
                                                             [ZP_EX_DIV] = GCC_JIT_BINARY_OP_DIVIDE};
     switch (p->op) {
     case ZP_EX_NUM:
-        return gcc_jit_context_new_rvalue_from_double(g->ctx, g->dbl, p->value);
+        return J(gcc_jit_context_new_rvalue_from_double)(g->ctx, g->dbl, p->value);
     case ZP_EX_X:
-        return gcc_jit_param_as_rvalue(x);
+        return J(gcc_jit_param_as_rvalue)(x);
     case ZP_EX_NEG:
-        return gcc_jit_context_new_unary_op(g->ctx, NULL, GCC_JIT_UNARY_OP_MINUS, g->dbl,
-                                            g->val[p->a]);
+        return J(gcc_jit_context_new_unary_op)(g->ctx, NULL, GCC_JIT_UNARY_OP_MINUS, g->dbl,
+                                               g->val[p->a]);
     case ZP_EX_ADD:
     case ZP_EX_SUB:
     case ZP_EX_MUL:
     case ZP_EX_DIV:
-        return gcc_jit_context_new_binary_op(g->ctx, NULL, bin[p->op], g->dbl, g->val[p->a],
-                                             g->val[p->b]);
+        return J(gcc_jit_context_new_binary_op)(g->ctx, NULL, bin[p->op], g->dbl, g->val[p->a],
+                                                g->val[p->b]);
     case ZP_EX_POW: {
         gcc_jit_rvalue *args[2] = {g->val[p->a], g->val[p->b]};
-        return gcc_jit_context_new_call(g->ctx, NULL, g->builtin[ZP_EX_POW], 2, args);
+        return J(gcc_jit_context_new_call)(g->ctx, NULL, g->builtin[ZP_EX_POW], 2, args);
     }
     default:
-        return gcc_jit_context_new_call(g->ctx, NULL, g->builtin[p->op], 1, &g->val[p->a]);
+        return J(gcc_jit_context_new_call)(g->ctx, NULL, g->builtin[p->op], 1, &g->val[p->a]);
     }
 }
 
 /* function `name`: out[k] = expression roots[k], k < nout */
 static void build_function(gen *g, const zp_expr *e, const char *name, int nout, const int *roots,
                            char *used) {
-    gcc_jit_type *void_t = gcc_jit_context_get_type(g->ctx, GCC_JIT_TYPE_VOID);
+    gcc_jit_type *void_t = J(gcc_jit_context_get_type)(g->ctx, GCC_JIT_TYPE_VOID);
     gcc_jit_param *prm[2] = {
-        gcc_jit_context_new_param(g->ctx, NULL, g->dbl, "x"),
-        gcc_jit_context_new_param(g->ctx, NULL, gcc_jit_type_get_pointer(g->dbl), "out")};
-    gcc_jit_function *f = gcc_jit_context_new_function(g->ctx, NULL, GCC_JIT_FUNCTION_EXPORTED,
-                                                       void_t, name, 2, prm, 0);
-    gcc_jit_block *blk = gcc_jit_function_new_block(f, NULL);
+        J(gcc_jit_context_new_param)(g->ctx, NULL, g->dbl, "x"),
+        J(gcc_jit_context_new_param)(g->ctx, NULL, J(gcc_jit_type_get_pointer)(g->dbl), "out")};
+    gcc_jit_function *f = J(gcc_jit_context_new_function)(g->ctx, NULL, GCC_JIT_FUNCTION_EXPORTED,
+                                                          void_t, name, 2, prm, 0);
+    gcc_jit_block *blk = J(gcc_jit_function_new_block)(f, NULL);
     /* the nodes these roots need: operands precede their nodes */
     int top = 0;
     memset(used, 0, (size_t)e->n);
@@ -93,58 +160,59 @@ static void build_function(gen *g, const zp_expr *e, const char *name, int nout,
         if (e->node[i].op != ZP_EX_NUM && e->node[i].op != ZP_EX_X) {
             char local[24];
             snprintf(local, sizeof local, "t%d", i);
-            gcc_jit_lvalue *t = gcc_jit_function_new_local(f, NULL, g->dbl, local);
-            gcc_jit_block_add_assignment(blk, NULL, t, v);
-            v = gcc_jit_lvalue_as_rvalue(t);
+            gcc_jit_lvalue *t = J(gcc_jit_function_new_local)(f, NULL, g->dbl, local);
+            J(gcc_jit_block_add_assignment)(blk, NULL, t, v);
+            v = J(gcc_jit_lvalue_as_rvalue)(t);
         }
         g->val[i] = v;
     }
-    gcc_jit_type *int_t = gcc_jit_context_get_type(g->ctx, GCC_JIT_TYPE_INT);
+    gcc_jit_type *int_t = J(gcc_jit_context_get_type)(g->ctx, GCC_JIT_TYPE_INT);
     for (int k = 0; k < nout; k++) {
-        gcc_jit_lvalue *slot =
-            gcc_jit_context_new_array_access(g->ctx, NULL, gcc_jit_param_as_rvalue(prm[1]),
-                                             gcc_jit_context_new_rvalue_from_int(g->ctx, int_t, k));
-        gcc_jit_block_add_assignment(blk, NULL, slot, g->val[roots[k]]);
+        gcc_jit_lvalue *slot = J(gcc_jit_context_new_array_access)(
+            g->ctx, NULL, J(gcc_jit_param_as_rvalue)(prm[1]),
+            J(gcc_jit_context_new_rvalue_from_int)(g->ctx, int_t, k));
+        J(gcc_jit_block_add_assignment)(blk, NULL, slot, g->val[roots[k]]);
     }
-    gcc_jit_block_end_with_void_return(blk, NULL);
+    J(gcc_jit_block_end_with_void_return)(blk, NULL);
 }
 
 static void set_options(gcc_jit_context *ctx) {
     /* -O1 already does the work of straight-line code (CSE, scheduling) and compiles in a
        fraction of -O2's time, which every command pays once per scene */
-    gcc_jit_context_set_int_option(ctx, GCC_JIT_INT_OPTION_OPTIMIZATION_LEVEL, 1);
-    gcc_jit_context_add_command_line_option(ctx, "-ffp-contract=off");
-    gcc_jit_context_set_bool_option(ctx, GCC_JIT_BOOL_OPTION_DEBUGINFO, 0);
+    J(gcc_jit_context_set_int_option)(ctx, GCC_JIT_INT_OPTION_OPTIMIZATION_LEVEL, 1);
+    J(gcc_jit_context_add_command_line_option)(ctx, "-ffp-contract=off");
+    J(gcc_jit_context_set_bool_option)(ctx, GCC_JIT_BOOL_OPTION_DEBUGINFO, 0);
     /* the driver in its own process: the embedded one exits the program when it cannot run
        the assembler (no binutils, or no PATH), where a failed compile must fall back */
-    gcc_jit_context_set_bool_use_external_driver(ctx, 1);
+    J(gcc_jit_context_set_bool_use_external_driver)(ctx, 1);
     /* a failure is reported once, by the caller's notice */
-    gcc_jit_context_set_bool_print_errors_to_stderr(ctx, 0);
+    J(gcc_jit_context_set_bool_print_errors_to_stderr)(ctx, 0);
 }
 
 /* The on-disk cache: every command pays the compile (tens of ms, mostly the assembler and
    linker run as processes) only the first time a scene's course is seen. The file is named by
-   one hash of everything the code is made from (nodes, roots, options, libgccjit's version,
-   this generator's version) and holds a second, checked after loading. */
+   one hash of everything the code is made from (nodes, roots, this generator's version) and
+   holds a second, checked after loading. */
 #define ZP_JIT_GENERATOR 1 /* raise when the generated code changes for the same pool */
 
-/* FNV-1a over the pool, roots and versions, from basis h */
+static unsigned long long fnv(unsigned long long h, const void *data, size_t len) {
+    const unsigned char *b = data;
+    for (size_t i = 0; i < len; i++) {
+        h = (h ^ b[i]) * 1099511628211ULL;
+    }
+    return h;
+}
+
+/* FNV-1a over the pool (field by field: a node has padding), roots and versions, from h */
 static unsigned long long pool_hash(unsigned long long h, const zp_expr *e, int nfn, int nout,
                                     const int *roots) {
-    int head[6] = {ZP_JIT_GENERATOR,
-                   gcc_jit_version_major(),
-                   gcc_jit_version_minor(),
-                   gcc_jit_version_patchlevel(),
-                   nfn,
-                   nout};
-    const void *part[3] = {head, roots, e->node};
-    size_t len[3] = {sizeof head, sizeof *roots * (size_t)nfn * nout,
-                     sizeof *e->node * (size_t)e->n};
-    for (int p = 0; p < 3; p++) {
-        const unsigned char *b = part[p];
-        for (size_t i = 0; i < len[p]; i++) {
-            h = (h ^ b[i]) * 1099511628211ULL;
-        }
+    int head[3] = {ZP_JIT_GENERATOR, nfn, nout};
+    h = fnv(h, head, sizeof head);
+    h = fnv(h, roots, sizeof *roots * (size_t)nfn * nout);
+    for (int i = 0; i < e->n; i++) {
+        const zp_ex_node *p = &e->node[i];
+        int ops[3] = {(int)p->op, p->a, p->b};
+        h = fnv(fnv(h, ops, sizeof ops), &p->value, sizeof p->value);
     }
     return h;
 }
@@ -196,7 +264,7 @@ static int resolve(zp_jit *j, int nfn, void *(*get)(void *, const char *), void 
 }
 
 static void *result_get(void *r, const char *name) {
-    return gcc_jit_result_get_code(r, name);
+    return J(gcc_jit_result_get_code)(r, name);
 }
 
 /* a loaded cache file whose key matches; 0 on success */
@@ -226,25 +294,25 @@ static int generate(gen *g, const zp_expr *e, int nfn, int nout, const int *root
         build_function(g, e, name, nout, roots + (size_t)i * nout, used);
     }
     free(used);
-    gcc_jit_type *str = gcc_jit_context_get_type(g->ctx, GCC_JIT_TYPE_CONST_CHAR_PTR);
+    gcc_jit_type *str = J(gcc_jit_context_get_type)(g->ctx, GCC_JIT_TYPE_CONST_CHAR_PTR);
     gcc_jit_lvalue *k =
-        gcc_jit_context_new_global(g->ctx, NULL, GCC_JIT_GLOBAL_EXPORTED, str, "zp_expr_key");
-    gcc_jit_global_set_initializer_rvalue(k, gcc_jit_context_new_string_literal(g->ctx, key));
+        J(gcc_jit_context_new_global)(g->ctx, NULL, GCC_JIT_GLOBAL_EXPORTED, str, "zp_expr_key");
+    J(gcc_jit_global_set_initializer_rvalue)(k, J(gcc_jit_context_new_string_literal)(g->ctx, key));
     return 0;
 }
 
 static void declare_functions(gen *g) {
-    g->dbl = gcc_jit_context_get_type(g->ctx, GCC_JIT_TYPE_DOUBLE);
+    g->dbl = J(gcc_jit_context_get_type)(g->ctx, GCC_JIT_TYPE_DOUBLE);
     /* pow is the library's, not the builtin: GCC would turn pow(u, 2) into u * u, which
        differs from the interpreter's pow in the last bit at some u */
-    gcc_jit_param *pw[2] = {gcc_jit_context_new_param(g->ctx, NULL, g->dbl, "a"),
-                            gcc_jit_context_new_param(g->ctx, NULL, g->dbl, "b")};
-    g->builtin[ZP_EX_POW] = gcc_jit_context_new_function(g->ctx, NULL, GCC_JIT_FUNCTION_IMPORTED,
-                                                         g->dbl, "pow", 2, pw, 0);
+    gcc_jit_param *pw[2] = {J(gcc_jit_context_new_param)(g->ctx, NULL, g->dbl, "a"),
+                            J(gcc_jit_context_new_param)(g->ctx, NULL, g->dbl, "b")};
+    g->builtin[ZP_EX_POW] = J(gcc_jit_context_new_function)(g->ctx, NULL, GCC_JIT_FUNCTION_IMPORTED,
+                                                            g->dbl, "pow", 2, pw, 0);
     for (int op = ZP_EX_SQRT; op < ZP_EX_COUNT; op++) {
         char name[32];
         snprintf(name, sizeof name, "__builtin_%s", zp_expr_func_name((zp_ex_op)op));
-        g->builtin[op] = gcc_jit_context_get_builtin_function(g->ctx, name);
+        g->builtin[op] = J(gcc_jit_context_get_builtin_function)(g->ctx, name);
     }
 }
 
@@ -255,19 +323,19 @@ static int compile(zp_jit *j, gen *g, const char *path, const char *key, int nfn
     if (path[0]) {
         char tmp[PATH_MAX + 32];
         snprintf(tmp, sizeof tmp, "%s.%ld.tmp", path, (long)getpid());
-        gcc_jit_context_compile_to_file(g->ctx, GCC_JIT_OUTPUT_KIND_DYNAMIC_LIBRARY, tmp);
-        int ok = !gcc_jit_context_get_first_error(g->ctx) && rename(tmp, path) == 0 &&
+        J(gcc_jit_context_compile_to_file)(g->ctx, GCC_JIT_OUTPUT_KIND_DYNAMIC_LIBRARY, tmp);
+        int ok = !J(gcc_jit_context_get_first_error)(g->ctx) && rename(tmp, path) == 0 &&
                  load_cached(j, path, key, nfn) == 0;
         remove(tmp);
         if (ok) {
             return 0;
         }
     }
-    if (!gcc_jit_context_get_first_error(g->ctx)) {
-        j->result = gcc_jit_context_compile(g->ctx);
+    if (!J(gcc_jit_context_get_first_error)(g->ctx)) {
+        j->result = J(gcc_jit_context_compile)(g->ctx);
     }
     if (!j->result || resolve(j, nfn, result_get, j->result)) {
-        const char *why = gcc_jit_context_get_first_error(g->ctx);
+        const char *why = J(gcc_jit_context_get_first_error)(g->ctx);
         snprintf(err, errlen, "libgccjit: %s", why ? why : "compile failed");
         return -1;
     }
@@ -286,7 +354,11 @@ zp_jit *zp_jit_compile(const zp_expr *e, int nfn, int nout, const int *roots, ch
     if (load_cached(j, path, key, nfn) == 0) {
         return j;
     }
-    gen g = {.val = calloc((size_t)e->n + 1, sizeof *g.val), .ctx = gcc_jit_context_acquire()};
+    if (open_api(err, errlen)) {
+        free(j);
+        return NULL;
+    }
+    gen g = {.val = calloc((size_t)e->n + 1, sizeof *g.val), .ctx = J(gcc_jit_context_acquire)()};
     int bad = !g.val || !g.ctx;
     if (bad) {
         snprintf(err, errlen, "out of memory");
@@ -296,7 +368,7 @@ zp_jit *zp_jit_compile(const zp_expr *e, int nfn, int nout, const int *roots, ch
         bad = generate(&g, e, nfn, nout, roots, key) || compile(j, &g, path, key, nfn, err, errlen);
     }
     if (g.ctx) {
-        gcc_jit_context_release(g.ctx);
+        J(gcc_jit_context_release)(g.ctx);
     }
     free(g.val);
     if (bad) {
@@ -315,7 +387,7 @@ void zp_jit_free(zp_jit *j) {
         return;
     }
     if (j->result) {
-        gcc_jit_result_release(j->result);
+        J(gcc_jit_result_release)(j->result);
     }
     if (j->dl) {
         dlclose(j->dl);
