@@ -165,7 +165,8 @@ static void check_hanging(int form) {
     o.formulation = form;
     o.t_max = 5;
     double times[] = {0, 1, 4.5};
-    zp_input in = {.force = sc.forces, .sample_t = times, .nsample = 3};
+    zp_schedule in_sched = tu_sched(m, sc.forces);
+    zp_input in = {.sched = &in_sched, .sample_t = times, .nsample = 3};
     zp_sim *s = zp_sim_create(m, &o);
     static zp_result r;
     CHECK(zp_sim_run(m, s, &in, &r) == ZP_OK);
@@ -205,7 +206,8 @@ static void check_agree(const char *what, const zp_model *m, const zp_scene *sc,
     for (int f = 0; f < 2; f++) {
         zp_sim_opts o = tu_opts(sc, TIGHT_RTOL);
         o.formulation = f;
-        zp_input in = {.force = force, .sample_t = times, .nsample = 7};
+        zp_schedule in_sched = tu_sched(m, force);
+        zp_input in = {.sched = &in_sched, .sample_t = times, .nsample = 7};
         zp_sim *s = zp_sim_create(m, &o);
         CHECK(zp_sim_run(m, s, &in, &r[f]) == ZP_OK);
         const zp_row *rows = zp_sim_samples(s, &ns[f]);
@@ -325,7 +327,8 @@ static void check_drift(void) {
         zp_sim_opts o = tu_opts(&sc, 1e-8);
         o.formulation = ZP_FORM_NEWTON;
         o.t_max = t_max[k];
-        zp_input in = {.force = sc.forces};
+        zp_schedule in_sched = tu_sched(m, sc.forces);
+        zp_input in = {.sched = &in_sched};
         const zp_result *r = tu_run(m, &o, &in);
         CHECK(r->outcome == ZP_OUTCOME_STALLED && r->stall == ZP_STALL_T_MAX);
         drift[k] = r->constraint_residual;

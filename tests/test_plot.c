@@ -235,7 +235,8 @@ static void test_figures(void) {
     zp_sim *s = zp_sim_create(m, &o);
     static zp_result r;
     double force[3] = {20, 20, 20};
-    zp_input in = {.force = force};
+    zp_schedule in_sched = tu_sched(m, force);
+    zp_input in = {.sched = &in_sched};
     CHECK(s && zp_sim_run(m, s, &in, &r) == ZP_OK);
     CHECK(r.outcome == ZP_OUTCOME_FINISHED);
     int n;
@@ -250,7 +251,7 @@ static void test_figures(void) {
     po.fps = 10;
     po.speedup = 4;
     po.margin = 10 * M_PI / 180;
-    po.force = force;
+    po.sched = &in_sched;
     char dir[1024], e[2048];
     snprintf(dir, sizeof dir, "%s/figs", tmp);
     zp_plot_info info;
@@ -343,7 +344,8 @@ static void test_frame_geometry(void) {
     zp_sim *s = zp_sim_create(m, &o);
     static zp_result r;
     double force[3] = {100, 100, 100};
-    zp_input in = {.force = force};
+    zp_schedule in_sched = tu_sched(m, force);
+    zp_input in = {.sched = &in_sched};
     CHECK(s && zp_sim_run(m, s, &in, &r) == ZP_OK);
     int n;
     const zp_row *rows = zp_sim_rows(s, &n);
@@ -416,7 +418,8 @@ static void test_landscape(void) {
     zp_landscape_point pt[NP];
     CHECK(zp_landscape_sweep(m, &o, force, NP, pt, NULL, NULL) == ZP_OK);
     for (int k = 0; k < NP; k++) {
-        zp_input in = {.force = force + 3 * k};
+        zp_schedule in_sched = tu_sched(m, force + 3 * k);
+        zp_input in = {.sched = &in_sched};
         const zp_result *r = tu_run(m, &o, &in);
         CHECK(!pt[k].failed);
         CHECK(pt[k].outcome == r->outcome);
@@ -459,7 +462,8 @@ static void test_landscape(void) {
     csv = slurp(dir, "landscape_slice.csv");
     CHECK(csv && !strncmp(csv, "f1,f2,outcome", 13));
     double cell[3] = {10, 25, sc.forces[2]};
-    zp_input in = {.force = cell};
+    zp_schedule in_sched = tu_sched(m, cell);
+    zp_input in = {.sched = &in_sched};
     const zp_result *r = tu_run(m, &o, &in);
     char want[64];
     snprintf(want, sizeof want, "\n10,25,%s,", zp_sim_outcome_name(r->outcome));

@@ -65,6 +65,11 @@ static inline const zp_result *tu_run(const zp_model *m, const zp_sim_opts *o, c
     return &r;
 }
 
+/* Per-section constant forces f (N, one per section of m) as a schedule. */
+static inline zp_schedule tu_sched(const zp_model *m, const double *f) {
+    return zp_schedule_sections(m->nsec, f, 0, 0);
+}
+
 /* Runs a shell command; its stdout (up to cap - 1 bytes) in out; returns its exit status. */
 static inline int tu_sh(const char *cmd, char *out, size_t cap) {
     FILE *p = popen(cmd, "r");

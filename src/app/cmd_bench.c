@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "setup.h"
 #include "out_file.h"
 #include "sim.h"
 
@@ -73,14 +74,15 @@ static reading read_result(const zp_model *m, const zp_result *r) {
 }
 
 /* one configuration: runs repeated within REPEAT_BUDGET (at most max_rep), median wall */
-static reading measure(const zp_model *m, zp_sim_opts o, const double *force, int max_rep) {
+static reading measure(const zp_model *m, zp_sim_opts o, const zp_schedule *sched,
+                       int max_rep) {
     static zp_result r; /* large */
     reading d = {0};
     zp_sim *s = zp_sim_create(m, &o);
     if (!s) {
         return d;
     }
-    zp_input in = {.force = force};
+    zp_input in = {.sched = sched};
     double walls[64];
     int n = 0;
     for (double spent = 0; n < max_rep && n < 64 && (n == 0 || spent < REPEAT_BUDGET); n++) {
@@ -219,12 +221,12 @@ int zp_cmd_bench(int argc, char **argv) {
     if (pa) {
         return pa > 0 ? ZP_EXIT_OK : ZP_EXIT_USAGE;
     }
-    zp_scene base;
-    zp_model *probe = zp_cli_load(a.scene, &base);
-    if (!probe) {
+    static zp_setup base; /* large: kept off the stack */
+    zp_overrides none = ZP_OVERRIDES_NONE;
+    if (zp_setup_load("bench trade", a.scene, &none, &base)) {
         return ZP_EXIT_USAGE;
     }
-    zp_model_free(probe);
+    zp_setup_free(&base);
 
     static reading runs[NCASE][ZP_METHOD_COUNT][NTOL];
     static errors errs[NCASE][ZP_METHOD_COUNT][NTOL];
@@ -247,11 +249,12 @@ int zp_cmd_bench(int argc, char **argv) {
           csv);
     for (int c = 0; c < NCASE; c++) {
         const trade_case *tc = &cases[c];
-        zp_scene sc = base;
-        sc.nforce = sc.nsec;
+        zp_scene sc = base.sc;
+        double push[ZP_MAX_SECTIONS];
         for (int k = 0; k < sc.nsec; k++) {
-            sc.forces[k] = tc->force;
+            push[k] = tc->force;
         }
+        zp_schedule sched = zp_schedule_sections(sc.nsec, push, 0, 0);
         if (tc->damping >= 0) {
             sc.ndamping = 1;
             sc.damping[0] = tc->damping;
@@ -272,9 +275,9 @@ int zp_cmd_bench(int argc, char **argv) {
         o.rtol = REF_RTOL;
         o.atol = REF_RTOL * ATOL_RATIO;
         o.method = ZP_METHOD_GSL_RK8PD;
-        reading ref = measure(m, o, sc.forces, 1);
+        reading ref = measure(m, o, &sched, 1);
         o.method = tc->ref_cvode;
-        reading ref2 = measure(m, o, sc.forces, 1);
+        reading ref2 = measure(m, o, &sched, 1);
         errors agree = compare(m, &ref2, &ref);
         fprintf(stderr, "%s: reference %s at %.9f s by %s and %s, which agree to %.1e s (time), "
                         "%.1e N s (impulses), %.1e deg (angles), %.1e m (x)\n",
@@ -294,7 +297,7 @@ int zp_cmd_bench(int argc, char **argv) {
                 o.rtol = tols[t];
                 o.atol = tols[t] * ATOL_RATIO;
                 reading *r = &runs[c][k][t];
-                *r = measure(m, o, sc.forces, a.repeats);
+                *r = measure(m, o, &sched, a.repeats);
                 errs[c][k][t] = compare(m, r, &ref);
                 const errors *e = &errs[c][k][t];
                 fprintf(csv, "%s,%s,%.0e,%s,%.12g,%.3e,%.3e,%.3e,%.3e,%.3e,%ld,%.6e,%ld,%d\n",

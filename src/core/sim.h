@@ -36,7 +36,7 @@ typedef struct zp_sim_opts {
 } zp_sim_opts;
 
 typedef struct zp_input {
-    const double *force;   /* borrowed; N, one per section */
+    const zp_schedule *sched; /* borrowed; the drive force at (t, x, section) */
     const zp_chain *start; /* borrowed; NULL: the MODEL.md start. Its x must lie in section 1
                               and its y on the course; for tests and split runs */
     const double *sample_t; /* borrowed; s, ascending sample times (may be NULL) */
@@ -91,7 +91,8 @@ typedef struct zp_result {
 
 typedef struct zp_sim zp_sim;
 
-/* Options from the scene's [solver] section. */
+/* Options from the scene's [solver] section; its method and formulation names judged against
+   their registries (into d). */
 zp_status zp_sim_opts_from_scene(const zp_scene *sc, zp_sim_opts *o, zp_diag *d);
 zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o);
 void zp_sim_free(zp_sim *s);

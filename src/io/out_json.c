@@ -68,7 +68,7 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
     key_num(f, "rtol", meta->rtol, ", ");
     key_num(f, "atol", meta->atol, ",\n");
     fputs("  \"forces\": ", f);
-    num_list(f, meta->force, m->nsec, 1.0);
+    num_list(f, meta->sched->p, meta->sched->np, 1.0);
     fprintf(f, ",\n  \"outcome\": \"%s\",\n  ", zp_sim_outcome_name(r->outcome));
     key_num(f, "time", r->time, ",\n  ");
     key_num(f, "x", r->x, ",\n  ");

@@ -13,7 +13,7 @@ typedef struct zp_run_meta {
     const char *method;      /* integrator name */
     const char *formulation; /* formulation name */
     double rtol, atol;
-    const double *force; /* N, per section */
+    const zp_schedule *sched; /* borrowed: the drive schedule that ran */
     const zp_estimate *estimate; /* borrowed; NULL: no error estimate was made */
 } zp_run_meta;
 

@@ -215,8 +215,10 @@ static void outcome_text(const zp_result *r, char *buf, size_t len) {
 }
 
 static void section_text(const zp_plot_opts *o, int sec, char *buf, size_t len) {
-    if (o->force) {
-        snprintf(buf, len, "section %d (%g N)", sec + 1, o->force[sec]);
+    if (o->sched) {
+        char drive[32];
+        zp_schedule_label(o->sched, sec, drive, sizeof drive);
+        snprintf(buf, len, "section %d (%s)", sec + 1, drive);
     } else {
         snprintf(buf, len, "section %d", sec + 1);
     }

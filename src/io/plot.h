@@ -19,7 +19,7 @@ typedef struct zp_plot_opts {
     double fps;                          /* animation frames per second, 1 to 100 */
     int width, height;                   /* px, animation size; height 0: from the course's shape */
     double speedup;                      /* simulated seconds shown per second of animation */
-    const double *force; /* borrowed, may be NULL: N per section, shown in the labels */
+    const zp_schedule *sched; /* borrowed, may be NULL: each section's drive in the labels */
 } zp_plot_opts;
 
 /* What zp_plot_run made. */
