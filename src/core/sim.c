@@ -150,11 +150,11 @@ static zp_row row_of(zp_sim *s, double t, const double *y) {
     zp_load_peaks *p = &s->peaks;
     p->normal_min = fmin(p->normal_min, r.loads.normal);
     p->normal_max = fmax(p->normal_max, r.loads.normal);
+    double joint[ZP_MAX_LINKS], acc_g[ZP_MAX_LINKS];
+    zp_row_loads(s->m, &r.loads, joint, acc_g);
     for (int i = 0; i < s->m->nlink; i++) {
-        p->joint[i] = fmax(p->joint[i], hypot(r.loads.joint[i][0], r.loads.joint[i][1]));
-        /* felt (proper) acceleration |a - g|: 1 g hanging at rest */
-        p->acc_g[i] = fmax(p->acc_g[i],
-                           hypot(r.loads.acc[i + 1][0], r.loads.acc[i + 1][1] + s->m->g) / s->m->g);
+        p->joint[i] = fmax(p->joint[i], joint[i]);
+        p->acc_g[i] = fmax(p->acc_g[i], acc_g[i]);
     }
     return r;
 }

@@ -6,6 +6,7 @@
 #include "formulation.h"
 #include "method.h"
 #include "model.h"
+#include "row.h"
 
 typedef enum {
     ZP_OUTCOME_FINISHED,
@@ -50,15 +51,6 @@ typedef struct zp_crossing {
     double impulse;     /* N s, Lambda of MODEL.md */
     double energy_lost; /* J */
 } zp_crossing;
-
-/* One sampled instant: the state in chain coordinates plus what the outputs need. */
-typedef struct zp_row {
-    double t;     /* s */
-    int sec;      /* 0-based */
-    zp_chain c;
-    double w_drive, w_damp, e_impulse; /* J, cumulative */
-    zp_loads loads;
-} zp_row;
 
 /* Extremes of the loads (MODEL.md forces) over a run, taken wherever the simulator evaluates
    them: the start, every integrator step, every output row and sample, and the state just

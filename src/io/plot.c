@@ -163,28 +163,25 @@ static box write_run(FILE *f, const zp_model *m, const zp_row *rows, int n) {
     double e0 = 0;
     for (int k = 0; k < n; k++) {
         const zp_row *r = &rows[k];
-        double com[ZP_MAX_LINKS + 1][2], phi[ZP_MAX_LINKS], w[ZP_MAX_LINKS];
-        zp_state_com(m, &r->c, com);
-        zp_state_relative(m, &r->c, phi, w);
-        zp_energy e = zp_state_energy(m, &r->c);
-        double total = e.kinetic + e.potential;
+        zp_row_view v;
+        zp_row_derive(m, r, &v);
+        double total = v.e.kinetic + v.e.potential;
         if (k == 0) {
             e0 = total - r->w_drive + r->w_damp + r->e_impulse;
         }
-        fprintf(f, "%.9g %d %.9g %.9g %.9g", r->t, r->sec + 1, r->c.q[0], r->c.q[1],
-                hypot(r->c.v[0], r->c.v[1]));
+        fprintf(f, "%.9g %d %.9g %.9g %.9g", r->t, r->sec + 1, r->c.q[0], r->c.q[1], v.speed);
         for (int i = 0; i <= m->nlink; i++) {
-            fprintf(f, " %.9g %.9g", com[i][0], com[i][1]);
-            grow(&b, com[i][0], com[i][1]);
+            fprintf(f, " %.9g %.9g", v.com[i][0], v.com[i][1]);
+            grow(&b, v.com[i][0], v.com[i][1]);
         }
         for (int i = 0; i < m->nlink; i++) {
-            fprintf(f, " %.9g", phi[i] * DEG);
+            fprintf(f, " %.9g", v.phi[i] * DEG);
         }
-        fprintf(f, " %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g", e.kinetic, e.potential, total,
+        fprintf(f, " %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g", v.e.kinetic, v.e.potential, total,
                 r->w_drive, r->w_damp, r->e_impulse, e0 + r->w_drive - r->w_damp - r->e_impulse,
                 r->loads.normal);
         for (int i = 0; i < m->nlink; i++) {
-            fprintf(f, " %.9g", hypot(r->loads.joint[i][0], r->loads.joint[i][1]));
+            fprintf(f, " %.9g", v.joint[i]);
         }
         fputc('\n', f);
     }
