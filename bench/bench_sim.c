@@ -56,7 +56,7 @@ int main(int argc, char **argv) {
     }
     zp_schedule sched = zp_schedule_sections(m->nsec, f, 0, 0);
     zp_input in = {.sched = &sched};
-    static zp_result r;
+    zp_result r;
     for (int a = first_rtol; a < argc; a++) {
         double rtol = atof(argv[a]);
         zp_sim_opts o = {.method = method,

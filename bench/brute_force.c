@@ -41,8 +41,8 @@ int main(int argc, char **argv) {
         int id = omp_get_thread_num();
         gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
         gsl_rng_set(rng, seed * 1000 + id);
-        static zp_result rs[64];
-        zp_result *r = &rs[id];
+        zp_result res;
+        zp_result *r = &res;
         zp_schedule sched = *box;
         double *f = sched.p;
         zp_input in = {.sched = &sched};

@@ -211,9 +211,10 @@ void zp_report_write_md(FILE *f, const zp_report *r) {
     } else {
         fputs("| t (s) | x (m) | sections | impulse (N s) | energy lost (J) |\n"
               "|---|---|---|---|---|\n", f);
-        int n = run->ncross < ZP_MAX_CROSSINGS ? run->ncross : ZP_MAX_CROSSINGS;
+        int n;
+        const zp_crossing *cross = zp_sim_crossings(r->best, &n);
         for (int i = 0; i < n; i++) {
-            const zp_crossing *c = &run->cross[i];
+            const zp_crossing *c = &cross[i];
             fprintf(f, "| %.4f | %g | %d -> %d | %.3f | %.2f |\n", c->t, c->x, c->from + 1,
                     c->to + 1, c->impulse, c->energy_lost);
         }

@@ -13,6 +13,7 @@ typedef struct zp_report {
     const zp_model *m;             /* borrowed */
     const zp_search_result *res;   /* borrowed */
     const zp_verify *v;            /* borrowed: v->run is the best run at the scene's tolerance */
+    const zp_sim *best;            /* borrowed: the workspace of v->run (its kink crossings) */
     const zp_result *study;        /* borrowed: the study's constant push, study_force */
     double study_force;            /* N */
     const char *algo;              /* strategy name */

@@ -255,7 +255,7 @@ static void test_figures(void) {
     char dir[1024], e[2048];
     snprintf(dir, sizeof dir, "%s/figs", tmp);
     zp_plot_info info;
-    CHECK(zp_plot_run(dir, m, rows, n, &r, &po, &info, e, sizeof e) == ZP_OK);
+    CHECK(zp_plot_run(dir, m, s, &r, &po, &info, e, sizeof e) == ZP_OK);
     CHECK(!info.no_gnuplot);
     CHECK(info.nframe == 4 && info.nskipped == 0);
     /* the animation: every speedup/fps seconds of the run, plus its last instant */
@@ -318,7 +318,7 @@ static void test_figures(void) {
     setenv("PATH", fake, 1);
     snprintf(dir, sizeof dir, "%s/figs_fail", tmp);
     po.animate = 0;
-    CHECK(zp_plot_run(dir, m, rows, n, &r, &po, &info, e, sizeof e) == ZP_ERR_IO);
+    CHECK(zp_plot_run(dir, m, s, &r, &po, &info, e, sizeof e) == ZP_ERR_IO);
     CHECK(strstr(e, "no such terminal") != NULL);
     setenv("PATH", saved, 1);
     free(saved);
@@ -328,7 +328,7 @@ static void test_figures(void) {
     zp_plot_opts late = po;
     CHECK(zp_plot_parse_frames(m, "t=1,1000", &late, why, sizeof why) == 0);
     snprintf(dir, sizeof dir, "%s/figs_late", tmp);
-    CHECK(zp_plot_run(dir, m, rows, n, &r, &late, &info, e, sizeof e) == ZP_OK);
+    CHECK(zp_plot_run(dir, m, s, &r, &late, &info, e, sizeof e) == ZP_OK);
     CHECK(info.nframe == 1 && info.nskipped == 1);
     CHECK(exists(dir, "frame_t1.png") && !exists(dir, "frame_t1000.png"));
     zp_sim_free(s);
@@ -347,15 +347,13 @@ static void test_frame_geometry(void) {
     zp_schedule in_sched = tu_sched(m, force);
     zp_input in = {.sched = &in_sched};
     CHECK(s && zp_sim_run(m, s, &in, &r) == ZP_OK);
-    int n;
-    const zp_row *rows = zp_sim_rows(s, &n);
     zp_plot_opts po;
     zp_plot_opts_default(&po);
     char why[256], dir[1024], e[2048];
     CHECK(zp_plot_parse_frames(m, "x=20", &po, why, sizeof why) == 0);
     snprintf(dir, sizeof dir, "%s/figs20", tmp);
     zp_plot_info info;
-    CHECK(zp_plot_run(dir, m, rows, n, &r, &po, &info, e, sizeof e) == ZP_OK);
+    CHECK(zp_plot_run(dir, m, s, &r, &po, &info, e, sizeof e) == ZP_OK);
     check_frame_data(dir, m, 20);
     check_png(dir, "frame_x20.png", 640, 640);
     zp_sim_free(s);

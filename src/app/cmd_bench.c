@@ -60,12 +60,14 @@ static int cmp_double(const void *a, const void *b) {
     return (x > y) - (x < y);
 }
 
-static reading read_result(const zp_model *m, const zp_result *r) {
+static reading read_result(const zp_model *m, const zp_result *r, const zp_sim *s) {
     reading d = {.ok = 1, .outcome = r->outcome, .died_link = r->died_link, .time = r->time,
                  .x = r->x, .v = r->v, .evals = r->rhs_evals, .steps = r->steps};
+    int n;
+    const zp_crossing *cross = zp_sim_crossings(s, &n);
     d.nimp = r->ncross;
-    for (int k = 0; k < r->ncross && k < MAX_IMPULSES; k++) {
-        d.impulse[k] = r->cross[k].impulse;
+    for (int k = 0; k < n && k < MAX_IMPULSES; k++) {
+        d.impulse[k] = cross[k].impulse;
     }
     for (int i = 0; i < m->nlink; i++) {
         d.angle[i] = r->max_rel_angle[i] * 180 / M_PI;
@@ -76,7 +78,7 @@ static reading read_result(const zp_model *m, const zp_result *r) {
 /* one configuration: runs repeated within REPEAT_BUDGET (at most max_rep), median wall */
 static reading measure(const zp_model *m, zp_sim_opts o, const zp_schedule *sched,
                        int max_rep) {
-    static zp_result r; /* large */
+    zp_result r;
     reading d = {0};
     zp_sim *s = zp_sim_create(m, &o);
     if (!s) {
@@ -93,7 +95,7 @@ static reading measure(const zp_model *m, zp_sim_opts o, const zp_schedule *sche
         walls[n] = r.wall_s;
         spent += r.wall_s;
     }
-    d = read_result(m, &r);
+    d = read_result(m, &r, s);
     qsort(walls, n, sizeof *walls, cmp_double);
     d.wall = n % 2 ? walls[n / 2] : 0.5 * (walls[n / 2 - 1] + walls[n / 2]);
     d.repeats = n;

@@ -235,7 +235,7 @@ int zp_cmd_search(int argc, char **argv) {
         fprintf(stderr, "zipopt: %s; nothing was written\n", err);
         goto done;
     }
-    static zp_result study;
+    zp_result study;
     double study_f[ZP_MAX_SECTIONS];
     for (int k = 0; k < m->nsec; k++) {
         study_f[k] = STUDY_FORCE;
@@ -257,9 +257,7 @@ int zp_cmd_search(int argc, char **argv) {
         zp_schedule best = zp_schedule_with(&st.sched, res.force);
         po.sched = &best;
         zp_plot_info info;
-        int nrows;
-        const zp_row *rows = zp_sim_rows(best_sim, &nrows);
-        if (zp_plot_run(dir, m, rows, nrows, v.run, &po, &info, err, sizeof err)) {
+        if (zp_plot_run(dir, m, best_sim, v.run, &po, &info, err, sizeof err)) {
             fprintf(stderr, "zipopt: figures: %s; nothing was written\n", err);
             goto done;
         }
@@ -270,7 +268,7 @@ int zp_cmd_search(int argc, char **argv) {
                   stderr);
         }
     }
-    zp_report r = {sc, m, &res, &v, &study, STUDY_FORCE,
+    zp_report r = {sc, m, &res, &v, best_sim, &study, STUDY_FORCE,
                    zp_search_algo_get(o.algo)->name, zp_method_get(st.sim.method)->name, a.scene,
                    dir, figures, &st.search, &st.sim, &st.sched, st.seed, st.max_evals};
     status = write_outputs(&r, best_sim);

@@ -133,7 +133,7 @@ static void print_estimate(const zp_result *r, const zp_estimate *e) {
 
 /* trajectory.csv and summary.json, both or neither */
 static int write_files(const char *dir, const zp_model *m, zp_sim *s, const zp_result *r,
-                       const zp_row *smp, int nsmp, const zp_run_meta *meta) {
+                       const zp_run_meta *meta) {
     zp_out_set set;
     zp_out_set_init(&set);
     char err[1200] = "";
@@ -147,7 +147,7 @@ static int write_files(const char *dir, const zp_model *m, zp_sim *s, const zp_r
     int nrows;
     const zp_row *rows = zp_sim_rows(s, &nrows);
     zp_out_csv_trajectory(csv, m, rows, nrows);
-    zp_out_json_result(js, m, r, smp, nsmp, meta);
+    zp_out_json_result(js, m, r, s, meta);
     if (zp_out_set_commit(&set, err, sizeof err)) {
         fprintf(stderr, "zipopt simulate: %s; nothing was written\n", err);
         return ZP_EXIT_FAIL;
@@ -197,11 +197,9 @@ static int plot_opts(const sim_args *a, const zp_setup *st, zp_plot_opts *po) {
 /* the figures of the run; says what was made (on stderr when stdout carries JSON) */
 static int draw(const char *dir, const zp_model *m, zp_sim *s, const zp_result *r,
                 const zp_plot_opts *po, FILE *say) {
-    int nrows;
-    const zp_row *rows = zp_sim_rows(s, &nrows);
     zp_plot_info info;
     char err[1200];
-    if (zp_plot_run(dir, m, rows, nrows, r, po, &info, err, sizeof err)) {
+    if (zp_plot_run(dir, m, s, r, po, &info, err, sizeof err)) {
         fprintf(stderr, "zipopt simulate: %s; no figures were written\n", err);
         return ZP_EXIT_FAIL;
     }
@@ -272,24 +270,22 @@ int zp_cmd_simulate(int argc, char **argv) {
         fputs("zipopt simulate: cannot create the simulator (out of memory)\n", stderr);
         goto done;
     }
-    static zp_result r; /* large: kept off the stack */
+    zp_result r;
     zp_input in = {.sched = &st.sched, .sample_t = samples, .nsample = nsample};
     if (zp_sim_run(m, s, &in, &r)) {
         fprintf(stderr, "zipopt simulate: %s; nothing was written\n", r.message);
         goto done;
     }
-    int nsmp;
-    const zp_row *smp = zp_sim_samples(s, &nsmp);
     zp_estimate est;
     zp_estimate_run(m, &o, &in, &r, &est);
     zp_run_meta meta = {st.sc.name, zp_method_get(o.method)->name,
                         zp_formulation_get(o.formulation)->name, o.rtol, o.atol, &st.sched, &est};
     char dir[1024];
     zp_cli_out_dir(a.out, &st.sc, dir, sizeof dir);
-    status = write_files(dir, m, s, &r, smp, nsmp, &meta);
+    status = write_files(dir, m, s, &r, &meta);
     if (status == ZP_EXIT_OK) {
         if (a.json) {
-            zp_out_json_result(stdout, m, &r, smp, nsmp, &meta);
+            zp_out_json_result(stdout, m, &r, s, &meta);
         } else {
             print_text(m, &r);
             print_estimate(&r, &est);

@@ -41,6 +41,8 @@ struct zp_sim {
     zp_row *samples; /* owned, cap_samples */
     int nsamples, cap_samples;
     zp_load_peaks peaks; /* so far; every evaluation of the loads updates them */
+    zp_crossing *cross;  /* owned, ZP_MAX_CROSSINGS */
+    int ncross;          /* kept in cross (the result counts all) */
 };
 
 /* course and drive at time t and the trolley's x on the current section */
@@ -91,6 +93,7 @@ void zp_sim_free(zp_sim *s) {
     free(s->roots);
     free(s->rows);
     free(s->samples);
+    free(s->cross);
     free(s);
 }
 
@@ -116,6 +119,7 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
     s->ydot = calloc(s->n, sizeof *s->ydot);
     s->yout = calloc(s->n, sizeof *s->yout);
     s->roots = calloc(s->nroot, sizeof *s->roots);
+    s->cross = malloc(sizeof *s->cross * ZP_MAX_CROSSINGS);
     int dir[2 + 2 * ZP_MAX_LINKS];
     zp_events_directions(m, dir);
     zp_method_opts mo = {o->rtol, o->atol, o->max_steps};
@@ -124,7 +128,8 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
         s->cap_rows = (int)fmin(o->t_max / o->output_dt + 2, 1e7);
         s->rows = malloc(sizeof *s->rows * s->cap_rows);
     }
-    if (!s->course || !s->fwork || !s->y || !s->ydot || !s->yout || !s->roots || !s->mwork ||
+    if (!s->course || !s->fwork || !s->y || !s->ydot || !s->yout || !s->roots || !s->cross ||
+        !s->mwork ||
         (o->output_dt > 0 && !s->rows)) {
         zp_sim_free(s);
         return NULL;
@@ -254,14 +259,14 @@ static int cross_kink(zp_sim *s, double t, zp_result *r, int to) {
     s->e_impulse += imp.energy_lost;
     int from = s->sec;
     s->sec = to;
-    if (r->ncross < ZP_MAX_CROSSINGS) {
-        r->cross[r->ncross] = (zp_crossing){t, b, from, to, imp.lambda, imp.energy_lost};
+    if (s->ncross < ZP_MAX_CROSSINGS) {
+        s->cross[s->ncross++] = (zp_crossing){t, b, from, to, imp.lambda, imp.energy_lost};
     }
     r->ncross++;
     /* the last ZP_ZENO_RUN crossings: all at this kink, each close after the one before */
     int zeno = r->ncross >= ZP_ZENO_RUN && r->ncross <= ZP_MAX_CROSSINGS;
     for (int i = r->ncross - 1; zeno && i > r->ncross - ZP_ZENO_RUN; i--) {
-        const zp_crossing *p = &r->cross[i], *q = &r->cross[i - 1];
+        const zp_crossing *p = &s->cross[i], *q = &s->cross[i - 1];
         zeno = p->x == q->x && p->t - q->t < ZP_ZENO_DT;
     }
     int dir = to > from ? 1 : -1;
@@ -417,7 +422,7 @@ zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     s->nbreak = zp_schedule_breaks(in->sched, s->breaks, ZP_SCHED_MAX_BREAKS);
     s->sec = 0;
     s->e_impulse = 0;
-    s->nrows = s->nsamples = 0;
+    s->nrows = s->nsamples = s->ncross = 0;
     s->peaks = (zp_load_peaks){.normal_min = INFINITY, .normal_max = -INFINITY};
     zp_status st = run(m, s, in, r);
     clock_gettime(CLOCK_MONOTONIC, &t1);
@@ -433,6 +438,11 @@ const zp_row *zp_sim_rows(const zp_sim *s, int *n) {
 const zp_row *zp_sim_samples(const zp_sim *s, int *n) {
     *n = s->nsamples;
     return s->samples;
+}
+
+const zp_crossing *zp_sim_crossings(const zp_sim *s, int *n) {
+    *n = s->ncross;
+    return s->cross;
 }
 
 static const char *const outcome_names[ZP_OUTCOME_COUNT] = {"finished", "died", "stalled"};

@@ -70,12 +70,12 @@ typedef struct zp_result {
     int died_link;  /* 1-based, 0 when nobody died */
     double max_rel_angle[ZP_MAX_LINKS]; /* rad, largest |phi_i| over the run */
     double max_speed;                   /* m/s, largest trolley speed at a step (track_loads) */
-    int ncross;                         /* kink crossings (all of them) */
-    zp_crossing cross[ZP_MAX_CROSSINGS];
+    int ncross;                         /* kink crossings (all of them; the first
+                                           ZP_MAX_CROSSINGS are in zp_sim_crossings) */
     double e_initial, e_final;          /* J */
     double w_drive, w_damp, e_impulse;  /* J: drive work, damper loss, impulse loss */
     double constraint_residual;         /* m */
-    zp_load_peaks peaks;                /* the kink impulses are in cross[] */
+    zp_load_peaks peaks;                /* the kink impulses are in zp_sim_crossings */
     long steps, rhs_evals;
     double wall_s;
     char message[256]; /* why a run failed (status ZP_ERR_NUMERIC) */
@@ -95,6 +95,9 @@ zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
    next run. */
 const zp_row *zp_sim_rows(const zp_sim *s, int *n);
 const zp_row *zp_sim_samples(const zp_sim *s, int *n);
+/* Kink crossings of the last run, in time order (at most ZP_MAX_CROSSINGS); valid until the
+   next run. */
+const zp_crossing *zp_sim_crossings(const zp_sim *s, int *n);
 
 const char *zp_sim_outcome_name(zp_outcome o);
 const char *zp_sim_stall_name(zp_stall s);
