@@ -24,7 +24,8 @@ zp_status zp_landscape_sweep(const zp_model *m, const zp_sim_opts *o, const doub
             int t = omp_get_thread_num();
 #pragma omp for schedule(dynamic)
             for (int k = 0; k < n; k++) {
-                zp_schedule sched = zp_schedule_sections(m->nsec, force + (size_t)k * m->nsec, 0, 0);
+                zp_schedule sched =
+                    zp_schedule_sections(m->nsec, force + (size_t)k * m->nsec, 0, 0);
                 zp_input in = {.sched = &sched};
                 zp_result *r = &res[t];
                 zp_landscape_point *p = &out[k];

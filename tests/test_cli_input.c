@@ -211,9 +211,10 @@ static void test_all_at_once(void) {
         CHECK(untouched(fresh));
     }
     /* a reader's problem and a registry name together */
-    snprintf(text, sizeof text, "[course]\nx_start = 0\nsection = 10 : x/5\n[trolley]\n"
-                                "mass = -10\n[body]\nlengths = 1\nmasses = 2\n"
-                                "[solver]\nmethod = rk45\n");
+    snprintf(text, sizeof text,
+             "[course]\nx_start = 0\nsection = 10 : x/5\n[trolley]\n"
+             "mass = -10\n[body]\nlengths = 1\nmasses = 2\n"
+             "[solver]\nmethod = rk45\n");
     write_file(scene, text);
     snprintf(args, sizeof args, "simulate '%s' --out '%s'", scene, fresh);
     CHECK(run(args) == 2);

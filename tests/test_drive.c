@@ -29,7 +29,7 @@ static void test_sections(void) {
 }
 
 static void test_round_trip(void) {
-    const double v[] = {59.589211512356975, 1.0 / 3, -0.1, 5e-324, DBL_MAX, -DBL_MIN, 0, 1e22,
+    const double v[] = {59.589211512356975,  1.0 / 3, -0.1, 5e-324, DBL_MAX, -DBL_MIN, 0, 1e22,
                         -123456789.123456789};
     int n = (int)(sizeof v / sizeof *v);
     zp_schedule s = zp_schedule_sections(n, v, 0, 0), back;

@@ -8,8 +8,8 @@
 #include <string.h>
 
 #include "cli.h"
-#include "setup.h"
 #include "out_file.h"
+#include "setup.h"
 #include "sim.h"
 
 #define NTOL 10          /* rtol 1e-3 .. 1e-12 */
@@ -76,8 +76,7 @@ static reading read_result(const zp_model *m, const zp_result *r, const zp_sim *
 }
 
 /* one configuration: runs repeated within REPEAT_BUDGET (at most max_rep), median wall */
-static reading measure(const zp_model *m, zp_sim_opts o, const zp_schedule *sched,
-                       int max_rep) {
+static reading measure(const zp_model *m, zp_sim_opts o, const zp_schedule *sched, int max_rep) {
     zp_result r;
     reading d = {0};
     zp_sim *s = zp_sim_create(m, &o);

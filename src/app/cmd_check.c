@@ -5,9 +5,9 @@
 #include <string.h>
 
 #include "cli.h"
-#include "setup.h"
 #include "formulation.h"
 #include "method.h"
+#include "setup.h"
 #include "sim.h"
 
 static void usage(FILE *f) {

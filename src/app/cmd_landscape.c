@@ -8,9 +8,9 @@
 #include <unistd.h>
 
 #include "cli.h"
-#include "setup.h"
 #include "gnuplot.h"
 #include "landscape.h"
+#include "setup.h"
 
 #define MAX_1D 100001 /* points of the constant-push sweep */
 #define MAX_2D 1001   /* points per axis of the slice */
@@ -406,8 +406,7 @@ int zp_cmd_landscape(int argc, char **argv) {
         goto done;
     }
     printf("figures: landscape.png%s\n", n2 ? ", landscape_slice.png" : "");
-    if (n2 && (base[si] < rx.a || base[si] > rx.b || base[sj] < ry.a ||
-               base[sj] > ry.b)) {
+    if (n2 && (base[si] < rx.a || base[si] > rx.b || base[sj] < ry.a || base[sj] > ry.b)) {
         printf("note: the base schedule (F%d = %g, F%d = %g N) lies outside the slice and is not "
                "marked\n",
                si + 1, base[si], sj + 1, base[sj]);

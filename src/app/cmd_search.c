@@ -8,12 +8,12 @@
 #include <unistd.h>
 
 #include "cli.h"
-#include "setup.h"
 #include "out_csv.h"
 #include "out_file.h"
 #include "plot.h"
 #include "report.h"
 #include "search.h"
+#include "setup.h"
 #include "verify.h"
 
 #define STUDY_FORCE 100 /* N per section: the original study's push */

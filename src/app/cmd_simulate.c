@@ -6,11 +6,11 @@
 #include <string.h>
 
 #include "cli.h"
-#include "setup.h"
 #include "out_csv.h"
 #include "out_file.h"
 #include "out_json.h"
 #include "plot.h"
+#include "setup.h"
 #include "sim.h"
 
 #define MAX_SAMPLES 10000
@@ -167,8 +167,7 @@ static int plot_opts(const sim_args *a, const zp_setup *st, zp_plot_opts *po) {
     const char *opt = NULL;
     if (a->plot && !(st->sim.output_dt > 0)) {
         opt = "--plot";
-        snprintf(why, sizeof why, "[solver] output_dt = %g gives no trajectory",
-                 st->sim.output_dt);
+        snprintf(why, sizeof why, "[solver] output_dt = %g gives no trajectory", st->sim.output_dt);
         snprintf(expect, sizeof expect, "output_dt > 0 in the scene");
     } else if (a->frames_text && zp_plot_parse_frames(m, a->frames_text, po, why, sizeof why)) {
         opt = "--frames-at";

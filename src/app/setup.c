@@ -5,7 +5,6 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "numtext.h"
 #include "scene_read.h"
 
 /* [optimize] method: the search's integrator, judged with the [solver] names */

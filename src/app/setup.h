@@ -17,14 +17,14 @@ typedef struct zp_overrides {
 #define ZP_OVERRIDES_NONE ((zp_overrides){NULL, NULL, -1, 0})
 
 typedef struct zp_setup {
-    zp_scene sc;         /* the scene as read: names, lines and settings for messages */
-    zp_model *m;         /* owned */
-    zp_sim_opts sim;     /* [solver]: the runs a command shows */
-    zp_sim_opts search;  /* the search's runs: [optimize] method and rtol (atol = rtol / 100),
-                            no trajectory, no load peaks */
-    zp_schedule sched;   /* [drive] forces with [drive] min, max as bounds, or the overrides */
-    double limit;        /* rad, largest relative joint angle the search allows: death - margin */
-    long max_evals;      /* simulations the search may spend */
+    zp_scene sc;        /* the scene as read: names, lines and settings for messages */
+    zp_model *m;        /* owned */
+    zp_sim_opts sim;    /* [solver]: the runs a command shows */
+    zp_sim_opts search; /* the search's runs: [optimize] method and rtol (atol = rtol / 100),
+                           no trajectory, no load peaks */
+    zp_schedule sched;  /* [drive] forces with [drive] min, max as bounds, or the overrides */
+    double limit;       /* rad, largest relative joint angle the search allows: death - margin */
+    long max_evals;     /* simulations the search may spend */
     unsigned long seed;
 } zp_setup;
 

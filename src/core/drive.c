@@ -9,7 +9,9 @@
 
 static const char *const dir_names[ZP_DRIVE_COUNT] = {"horizontal", "tangent"};
 
-const char *zp_drive_dir_name(zp_drive_dir d) { return dir_names[d]; }
+const char *zp_drive_dir_name(zp_drive_dir d) {
+    return dir_names[d];
+}
 
 int zp_drive_dir_find(const char *name) {
     for (int i = 0; i < ZP_DRIVE_COUNT; i++) {

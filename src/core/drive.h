@@ -23,10 +23,10 @@ typedef enum {
 
 typedef struct zp_schedule {
     zp_sched_kind kind;
-    int nsec;                        /* sections of the course it drives */
-    int np;                          /* parameters */
-    double p[ZP_SCHED_MAX_PARAMS];   /* the parameters, in the kind's units */
-    double lo[ZP_SCHED_MAX_PARAMS];  /* search bounds of each parameter */
+    int nsec;                       /* sections of the course it drives */
+    int np;                         /* parameters */
+    double p[ZP_SCHED_MAX_PARAMS];  /* the parameters, in the kind's units */
+    double lo[ZP_SCHED_MAX_PARAMS]; /* search bounds of each parameter */
     double hi[ZP_SCHED_MAX_PARAMS];
 } zp_schedule;
 

@@ -6,9 +6,9 @@
 
 #include "sim.h"
 
-#define ZP_ESTIMATE_FACTOR 100.0 /* how much tighter the second run is (estimate, verify) */
+#define ZP_ESTIMATE_FACTOR 100.0   /* how much tighter the second run is (estimate, verify) */
 #define ZP_ESTIMATE_RTOL_MIN 1e-14 /* tighter than this is below round-off for every method */
-#define ZP_VERIFY_DT 1e-4 /* s: finish times at the two tolerances must agree to this */
+#define ZP_VERIFY_DT 1e-4          /* s: finish times at the two tolerances must agree to this */
 
 typedef struct zp_estimate {
     double rtol, atol;  /* of the tighter run */

@@ -8,8 +8,8 @@
 
 /* One sampled instant: the state in chain coordinates plus what the outputs need. */
 typedef struct zp_row {
-    double t;     /* s */
-    int sec;      /* 0-based */
+    double t; /* s */
+    int sec;  /* 0-based */
     zp_chain c;
     double w_drive, w_damp, e_impulse; /* J, cumulative */
     zp_loads loads;

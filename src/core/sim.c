@@ -129,8 +129,7 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
         s->rows = malloc(sizeof *s->rows * s->cap_rows);
     }
     if (!s->course || !s->fwork || !s->y || !s->ydot || !s->yout || !s->roots || !s->cross ||
-        !s->mwork ||
-        (o->output_dt > 0 && !s->rows)) {
+        !s->mwork || (o->output_dt > 0 && !s->rows)) {
         zp_sim_free(s);
         return NULL;
     }

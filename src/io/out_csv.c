@@ -50,8 +50,7 @@ void zp_out_csv_trajectory(FILE *f, const zp_model *m, const zp_row *rows, int n
             fprintf(f, ",%.10g,%.10g", v.com[b][0], v.com[b][1]);
         }
         fprintf(f, ",%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g", v.e.kinetic, v.e.potential,
-                v.e.kinetic + v.e.potential, r->w_drive, r->w_damp, r->e_impulse,
-                r->loads.normal);
+                v.e.kinetic + v.e.potential, r->w_drive, r->w_damp, r->e_impulse, r->loads.normal);
         for (int i = 0; i < m->nlink; i++) {
             fprintf(f, ",%.10g,%.10g", r->loads.joint[i][0], r->loads.joint[i][1]);
         }

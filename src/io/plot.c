@@ -368,8 +368,7 @@ static void script_energy(FILE *f, const zp_model *m, const zp_result *r, const 
 }
 
 static void script_angles(FILE *f, const zp_model *m, const zp_result *r, const kinks *kk,
-                          const zp_plot_opts *o,
-                          const zp_row *last) {
+                          const zp_plot_opts *o, const zp_row *last) {
     double dmax = m->phi_max * DEG, keep = (m->phi_max - o->margin) * DEG;
     head_png(f, m, "angles", "relative joint angles against time", FIG_W, 560, 0);
     fprintf(f,
