@@ -28,8 +28,8 @@ static void check_track(zp_track t, double f, double fp, double fpp) {
 
 static void test_seed_course(void) {
     const char *expr[] = {"(x/10 - 3)^2 + 1", "-x/10 + 16", "-(x/10 - 12)^2 + 10"};
-    char err[256] = "";
-    zp_course *c = zp_course_create(3, expr, err, sizeof err);
+    zp_course_err e;
+    zp_course *c = zp_course_create(3, expr, &e);
     CHECK(c != NULL);
     if (!c) {
         return;
@@ -62,14 +62,14 @@ static void test_functions(void) {
         "2*cosh(x/4) - 3*sin(2*x)",     "sqrt(1 + x^2) + exp(-x/3)", "log(2 + x) + tan(x/5)",
         "tanh(x) + sinh(x/2) * cos(x)", "1.5e-3*x^3 + 2E+1",
     };
-    char err[256] = "";
-    zp_course *built = zp_course_create(5, expr, err, sizeof err);
+    zp_course_err err;
+    zp_course *built = zp_course_create(5, expr, &err);
     CHECK(built != NULL);
     if (!built) {
-        fprintf(stderr, "%s\n", err);
+        fprintf(stderr, "%s\n", err.what);
         return;
     }
-    zp_course *compiled = zp_course_for_thread(built, err, sizeof err);
+    zp_course *compiled = zp_course_for_thread(built, &err);
     CHECK(compiled && zp_course_compiled(compiled) && !zp_course_compiled(built));
     for (zp_course *c = built; c; c = c == built ? compiled : NULL) {
         check_functions(c);
@@ -163,13 +163,14 @@ static int agree_with_matheval(const zp_course *c, int sec, const char *text, do
 static void test_scenes_compiled(void) {
     static const char *const scenes[] = {"seed", "flat", "human", "smooth", "straight", "valley"};
     for (size_t i = 0; i < sizeof scenes / sizeof *scenes; i++) {
-        char path[1024], err[256];
+        char path[1024];
+        zp_course_err err;
         snprintf(path, sizeof path, "%s/config/%s.ini", ZP_SOURCE_DIR, scenes[i]);
         zp_scene sc;
         zp_diag d;
         zp_diag_init(&d);
         zp_model *m = zp_scene_load(path, &sc, &d) == ZP_OK ? zp_model_build(&sc, &d) : NULL;
-        zp_course *c = m ? zp_model_course(m, err, sizeof err) : NULL;
+        zp_course *c = m ? zp_model_course(m, &err) : NULL;
         CHECK(c && zp_course_compiled(c));
         for (int k = 0; c && k < m->nsec; k++) {
             CHECK(agree_with_matheval(c, k, m->expr[k], m->xb[k], m->xb[k + 1], 1001) == 3 * 1001);
@@ -218,9 +219,9 @@ static void random_expr(gsl_rng *r, int depth, char *buf, size_t len) {
    general power's second derivative cancels too much for random nesting) */
 static void test_powers(void) {
     const char *expr[] = {"x^x", "2^x", "(1 + x)^(x/2)", "exp(x)^sin(x)"};
-    char err[256];
-    zp_course *built = zp_course_create(4, expr, err, sizeof err);
-    zp_course *c = built ? zp_course_for_thread(built, err, sizeof err) : NULL;
+    zp_course_err err;
+    zp_course *built = zp_course_create(4, expr, &err);
+    zp_course *c = built ? zp_course_for_thread(built, &err) : NULL;
     CHECK(c && zp_course_compiled(c));
     for (int k = 0; c && k < 4; k++) {
         CHECK(agree_with_matheval(c, k, expr[k], 0.25, 2, 64) == 3 * 64);
@@ -235,16 +236,17 @@ static void test_random_compiled(void) {
     gsl_rng_set(r, 1);
     int compared = 0;
     for (int batch = 0; batch < 25; batch++) {
-        char text[8][512], err[256];
+        char text[8][512];
+        zp_course_err err;
         const char *expr[8];
         for (int k = 0; k < 8; k++) {
             text[k][0] = '\0';
             random_expr(r, 1 + (int)gsl_rng_uniform_int(r, 4), text[k], sizeof text[k]);
             expr[k] = text[k];
         }
-        zp_course *built = zp_course_create(8, expr, err, sizeof err);
+        zp_course *built = zp_course_create(8, expr, &err);
         CHECK(built != NULL);
-        zp_course *c = built ? zp_course_for_thread(built, err, sizeof err) : NULL;
+        zp_course *c = built ? zp_course_for_thread(built, &err) : NULL;
         CHECK(c && zp_course_compiled(c));
         for (int k = 0; c && k < 8; k++) {
             compared += agree_with_matheval(c, k, text[k], 0.25, 2, 64);
@@ -277,7 +279,8 @@ static int count_files(const char *dir, unsigned long *ino) {
    new one) and evaluates the same; a damaged file is not loaded but replaced */
 static void test_cache(const char *cache) {
     const char *expr[] = {"sinh(x/7) + x^3/1000"};
-    char dir[1100], err[256];
+    char dir[1100];
+    zp_course_err err;
     snprintf(dir, sizeof dir, "%s/zipopt", cache);
     double v[3][3];
     unsigned long ino[3] = {0, 0, 0};
@@ -295,8 +298,8 @@ static void test_cache(const char *cache) {
             CHECK(f && fputs("not a library\n", f) >= 0);
             fclose(f);
         }
-        zp_course *built = zp_course_create(1, expr, err, sizeof err);
-        zp_course *c = built ? zp_course_for_thread(built, err, sizeof err) : NULL;
+        zp_course *built = zp_course_create(1, expr, &err);
+        zp_course *c = built ? zp_course_for_thread(built, &err) : NULL;
         CHECK(c && zp_course_compiled(c));
         zp_track t = c ? zp_course_eval(c, 0, 2.5) : (zp_track){0, 0, 0};
         v[round][0] = t.f;
@@ -323,9 +326,9 @@ static void test_bad(const char *bad, const char *why_part) {
         CHECK(0);
     }
     const char *expr[] = {"x", bad};
-    err[0] = '\0';
-    CHECK(zp_course_create(2, expr, err, sizeof err) == NULL);
-    CHECK(strstr(err, "section 2") != NULL);
+    zp_course_err e;
+    CHECK(zp_course_create(2, expr, &e) == NULL);
+    CHECK(e.section == 2 && strstr(e.what, "section 2") != NULL);
 }
 
 int main(void) {

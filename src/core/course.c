@@ -221,12 +221,13 @@ static void code_release(course_code *code) {
     }
 }
 
-zp_course *zp_course_create(int nsec, const char *const *expr, char *err, size_t errlen) {
+zp_course *zp_course_create(int nsec, const char *const *expr, zp_course_err *e) {
     assert(nsec >= 0);
+    *e = (zp_course_err){0, ""};
     zp_course *c = calloc(1, sizeof *c + (size_t)nsec * sizeof c->sec[0]);
     if (!c || !(c->lazy = calloc(1, sizeof *c->lazy)) ||
         !(c->text = calloc((size_t)nsec + 1, sizeof *c->text))) {
-        snprintf(err, errlen, "out of memory");
+        snprintf(e->what, sizeof e->what, "out of memory");
         zp_course_free(c);
         return NULL;
     }
@@ -234,13 +235,15 @@ zp_course *zp_course_create(int nsec, const char *const *expr, char *err, size_t
     for (int k = 0; k < nsec; k++) {
         char why[256];
         if (compile(expr[k], &c->sec[k], why, sizeof why)) {
-            snprintf(err, errlen, "section %d: f(x) = `%s`: %s", k + 1, expr[k], why);
+            e->section = k + 1;
+            snprintf(e->what, sizeof e->what, "section %d: f(x) = `%.200s`: %s", k + 1, expr[k],
+                     why);
             zp_course_free(c);
             return NULL;
         }
         c->nsec = k + 1;
         if (!(c->text[k] = strdup(expr[k]))) {
-            snprintf(err, errlen, "out of memory");
+            snprintf(e->what, sizeof e->what, "out of memory");
             zp_course_free(c);
             return NULL;
         }
@@ -295,7 +298,7 @@ static course_code *compile_code(const zp_course *c, char *err, size_t errlen) {
     return code;
 }
 
-zp_course *zp_course_for_thread(const zp_course *c, char *err, size_t errlen) {
+zp_course *zp_course_for_thread(const zp_course *c, zp_course_err *e) {
     assert(c->lazy);
     course_lazy *lz = c->lazy;
     pthread_mutex_lock(&lz->lock);
@@ -315,12 +318,12 @@ zp_course *zp_course_for_thread(const zp_course *c, char *err, size_t errlen) {
     }
     pthread_mutex_unlock(&lz->lock);
     if (!code) {
-        return zp_course_create(c->nsec, (const char *const *)c->text, err, errlen);
+        return zp_course_create(c->nsec, (const char *const *)c->text, e);
     }
     zp_course *h = calloc(1, sizeof *h + (size_t)c->nsec * sizeof h->sec[0]);
     if (!h) {
         code_release(code);
-        snprintf(err, errlen, "out of memory");
+        *e = (zp_course_err){0, "out of memory"};
         return NULL;
     }
     h->nsec = c->nsec;

@@ -14,16 +14,21 @@ typedef struct zp_track {
     double fpp; /* 1/m */
 } zp_track;
 
-/* Builds nsec expressions in x. Returns NULL and writes err (naming the section, 1-based)
-   when one does not parse or uses a variable other than x. The course's own evaluators
-   (libmatheval) are not thread-safe: it serves one thread, and hands out handles for the
-   others through zp_course_for_thread. */
-zp_course *zp_course_create(int nsec, const char *const *expr, char *err, size_t errlen);
+/* Why a course did not compile. */
+typedef struct zp_course_err {
+    int section;    /* 1-based section whose f(x) failed; 0: none in particular (out of memory) */
+    char what[512]; /* "section 2: f(x) = `x +`: syntax error; expected .." */
+} zp_course_err;
+
+/* Builds nsec expressions in x. Returns NULL and fills e when one does not parse or uses a
+   variable other than x. The course's own evaluators (libmatheval) are not thread-safe: it
+   serves one thread, and hands out handles for the others through zp_course_for_thread. */
+zp_course *zp_course_create(int nsec, const char *const *expr, zp_course_err *e);
 /* A course for one simulating thread, owned by the caller (zp_course_free): the sections
    compiled to native code (compiled once per c on the first call, shared read-only, any thread
    may evaluate), or, when the compiler fails or ZIPOPT_NO_JIT is set (a one-line notice on
-   stderr), a new interpreted course, which must then be made serially. NULL with why in err. */
-zp_course *zp_course_for_thread(const zp_course *c, char *err, size_t errlen);
+   stderr), a new interpreted course, which must then be made serially. NULL with why in e. */
+zp_course *zp_course_for_thread(const zp_course *c, zp_course_err *e);
 /* 1 when c evaluates compiled code, 0 when it interprets. */
 int zp_course_compiled(const zp_course *c);
 void zp_course_free(zp_course *c);
