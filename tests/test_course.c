@@ -12,8 +12,8 @@
 
 #include "check.h"
 #include "course.h"
-#include "scene_read.h"
 #include "model.h"
+#include "scene_read.h"
 
 /* the derivatives are symbolic, so only round-off separates them from the closed forms */
 static double round_off(double v) {
@@ -99,11 +99,11 @@ static void check_functions(const zp_course *c) {
 }
 
 /* The compiled f, f', f'' of section sec against libmatheval's own evaluators of text at npt
-   points over [lo, hi]: finite where libmatheval is, and then within 1e-14 of the largest |value| of
-   that derivative over the points (its scale: a zero crossing is no excuse and no trap).
-   Returns the points compared. */
-static int agree_with_matheval(const zp_course *c, int sec, const char *text, double lo,
-                               double hi, int npt) {
+   points over [lo, hi]: finite where libmatheval is, and then within 1e-14 of the largest |value|
+   of that derivative over the points (its scale: a zero crossing is no excuse and no trap). Returns
+   the points compared. */
+static int agree_with_matheval(const zp_course *c, int sec, const char *text, double lo, double hi,
+                               int npt) {
     char *buf = strdup(text); /* evaluator_create takes a writable string */
     void *ev[3] = {evaluator_create(buf)};
     free(buf);
@@ -146,8 +146,8 @@ static int agree_with_matheval(const zp_course *c, int sec, const char *text, do
         }
         compared++;
         if (!(fabs(got[i] - ref[i]) <= 1e-14 * scale[i % 3] * zp_tol_scale())) {
-            fprintf(stderr, "`%s` d%d/dx%d at x = %.17g: compiled %.17g, libmatheval %.17g\n",
-                    text, i % 3, i % 3, lo + (hi - lo) * (i / 3) / (npt - 1), got[i], ref[i]);
+            fprintf(stderr, "`%s` d%d/dx%d at x = %.17g: compiled %.17g, libmatheval %.17g\n", text,
+                    i % 3, i % 3, lo + (hi - lo) * (i / 3) / (npt - 1), got[i], ref[i]);
             CHECK(0);
         }
     }
@@ -182,8 +182,8 @@ static void test_scenes_compiled(void) {
 
 /* a random expression in x of the CONFIG.md grammar, depth levels deep, appended to buf */
 static void random_expr(gsl_rng *r, int depth, char *buf, size_t len) {
-    static const char *const funcs[] = {"sqrt", "exp", "log", "sin", "cos",
-                                        "tan", "sinh", "cosh", "tanh"};
+    static const char *const funcs[] = {"sqrt", "exp",  "log",  "sin", "cos",
+                                        "tan",  "sinh", "cosh", "tanh"};
     size_t used = strlen(buf);
     unsigned kind = depth <= 0 ? gsl_rng_uniform_int(r, 2) : 2 + gsl_rng_uniform_int(r, 5);
     if (kind == 0) {
