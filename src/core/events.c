@@ -5,6 +5,10 @@
 #include <math.h>
 
 int zp_events_count(const zp_model *m) {
+    return 2 + 2 * m->nlink + (m->physics & ZP_PHYS_ROLLING ? 1 : 0);
+}
+
+int zp_events_rest(const zp_model *m) {
     return 2 + 2 * m->nlink;
 }
 
@@ -15,11 +19,14 @@ void zp_events_directions(const zp_model *m, int *dir) {
         dir[ZP_ROOT_DEATH + i] = -1;
         dir[ZP_ROOT_DEATH + m->nlink + i] = 0;
     }
+    if (m->physics & ZP_PHYS_ROLLING) {
+        dir[zp_events_rest(m)] = 0;
+    }
 }
 
 void zp_events_state_only(const zp_model *m, int *flag) {
     for (int i = 0; i < zp_events_count(m); i++) {
-        flag[i] = i >= ZP_ROOT_DEATH + m->nlink;
+        flag[i] = i >= ZP_ROOT_DEATH + m->nlink && i < zp_events_rest(m);
     }
 }
 
@@ -53,6 +60,9 @@ zp_event zp_events_classify(const zp_model *m, int sec, const int *roots, int *l
         }
         *to = sec - 1;
         return ZP_EVENT_KINK;
+    }
+    if (m->physics & ZP_PHYS_ROLLING && roots[zp_events_rest(m)]) {
+        return ZP_EVENT_REST;
     }
     return ZP_EVENT_NONE;
 }

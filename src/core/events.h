@@ -5,7 +5,8 @@
 
 #include "model.h"
 
-/* g layout: [0] x - left end, [1] x - right end, [2+i] phi_max - |phi_i|, [2+N+i] w_i */
+/* g layout: [0] x - left end, [1] x - right end, [2+i] phi_max - |phi_i|, [2+N+i] w_i, and
+   with rolling resistance [2+2N] the trolley's x' (filled by the simulator) */
 enum { ZP_ROOT_LEFT = 0, ZP_ROOT_RIGHT = 1, ZP_ROOT_DEATH = 2 };
 
 typedef enum {
@@ -14,10 +15,13 @@ typedef enum {
     ZP_EVENT_FINISH,
     ZP_EVENT_ROLLBACK,
     ZP_EVENT_KINK,
+    ZP_EVENT_REST, /* the trolley's velocity along the course passes zero */
     ZP_EVENT_COUNT
 } zp_event;
 
 int zp_events_count(const zp_model *m);
+/* Index of the root on the trolley's x' (rolling resistance only). */
+int zp_events_rest(const zp_model *m);
 /* Directions that matter: leaving through either end, |phi| rising through phi_max. */
 void zp_events_directions(const zp_model *m, int *dir);
 /* 1 for the roots whose time matters only through the state there (the extrema: phi is
@@ -26,7 +30,7 @@ void zp_events_state_only(const zp_model *m, int *flag);
 void zp_events_eval(const zp_model *m, int sec, double x, const double *phi, const double *w,
                     double *g);
 /* What the roots found on section sec mean, in priority order death > finish > roll-back >
-   kink. Sets *link (0-based, death) or *to (entered section, kink). */
+   kink > rest. Sets *link (0-based, death) or *to (entered section, kink). */
 zp_event zp_events_classify(const zp_model *m, int sec, const int *roots, int *link, int *to);
 
 #endif

@@ -14,7 +14,12 @@
  * (w_j = th_j' - th_{j-1}' the joint rates; F the drive force vector). M is symmetric
  * positive definite: Cholesky. Loads come from the accelerations: the normal force from
  * the whole system's momentum balance, the joint reactions from each link's, bottom up.
- * State: y = (x, th_1..N, x', th_1'..N', W_drive, W_damp).
+ * Optional effects (MODEL.md): drag F_b at each centre of mass adds the generalized forces
+ *   Q_x = sum_b F_b . (1, f'),  Q_j = n_j . (d_j F_j + l_j sum_{i>j} F_i);
+ * rolling resistance -mu |N| sgn(s') along the tangent adds Q_x = -mu |N| sgn(x') |(1, f')| in
+ * the x row only, and N is affine in q'': with u = M^-1 e_x, q'' = q''_0 + Q_x u and
+ * N = N_0 + Q_x N_u, solved for |N| in closed form (N_u = sum_j B_j (s_j - f' c_j) u_j / |.|).
+ * State: y = (x, th_1..N, x', th_1'..N', the model's work integrals).
  *
  * Design note: the simulations take the fixed-size path (fast_rhs: arrays on the stack,
  * unrolled per N, the velocity sums of R in O(N) from C_jk = l_j B_k (j < k), a Cholesky of
@@ -26,13 +31,17 @@
 
 #include "formulation.h"
 
+typedef int (*fast_fn)(const zp_model *, const zp_drive_now *, const double *, double *,
+                       zp_loads *);
+
 typedef struct lagrange_work {
     gsl_matrix *M;
-    gsl_vector *R, *acc;
+    gsl_vector *R, *acc, *u;
+    fast_fn fast; /* the fixed-size equations for this model's N and effects */
 } lagrange_work;
 
 static int lagrange_nstate(const zp_model *m) {
-    return 2 * (m->nlink + 1) + 2;
+    return 2 * (m->nlink + 1) + m->nwork;
 }
 
 static void lagrange_free(void *work) {
@@ -43,8 +52,11 @@ static void lagrange_free(void *work) {
     gsl_matrix_free(w->M);
     gsl_vector_free(w->R);
     gsl_vector_free(w->acc);
+    gsl_vector_free(w->u);
     free(w);
 }
+
+static fast_fn fast_for(const zp_model *m);
 
 static void *lagrange_create(const zp_model *m) {
     lagrange_work *w = calloc(1, sizeof *w);
@@ -55,14 +67,16 @@ static void *lagrange_create(const zp_model *m) {
     w->M = gsl_matrix_alloc(nq, nq);
     w->R = gsl_vector_alloc(nq);
     w->acc = gsl_vector_alloc(nq);
-    if (!w->M || !w->R || !w->acc) {
+    w->u = gsl_vector_alloc(nq);
+    w->fast = fast_for(m);
+    if (!w->M || !w->R || !w->acc || !w->u) {
         lagrange_free(w);
         return NULL;
     }
     return w;
 }
 
-static void lagrange_from_chain(const zp_model *m, const zp_chain *c, const double wk[2],
+static void lagrange_from_chain(const zp_model *m, const zp_chain *c, const double *wk,
                                 double *y) {
     int nq = m->nlink + 1;
     y[0] = c->q[0];
@@ -71,8 +85,9 @@ static void lagrange_from_chain(const zp_model *m, const zp_chain *c, const doub
         y[1 + i] = c->q[2 + i];
         y[nq + 1 + i] = c->v[2 + i];
     }
-    y[2 * nq] = wk[0];
-    y[2 * nq + 1] = wk[1];
+    for (int k = 0; k < m->nwork; k++) {
+        y[2 * nq + k] = wk[k];
+    }
 }
 
 static void lagrange_to_chain(const zp_model *m, const zp_track *tr, const double *y, zp_chain *c) {
@@ -98,9 +113,11 @@ static void lagrange_relative(const zp_model *m, const double *y, double *phi, d
     }
 }
 
-/* centre-of-mass accelerations, joint reactions and normal force from q'' */
-static void lagrange_loads(const zp_model *m, const zp_drive_now *dn, const double *y,
-                           const double *qdd, zp_loads *ld) {
+/* centre-of-mass accelerations, joint reactions and normal force from q''; fx, fy the force on
+   the system other than gravity and the course, fd NULL or the drag on each body */
+static void lagrange_loads(const zp_model *m, const zp_drive_now *dn, double fx, double fy,
+                           double (*fd)[2], const double *y, const double *qdd,
+                           zp_loads *ld) {
     int n = m->nlink, nq = n + 1;
     double xd = y[nq], fp = dn->tr.fp;
     double ax = qdd[0], ay = fp * qdd[0] + dn->tr.fpp * xd * xd; /* joint above the link */
@@ -118,15 +135,88 @@ static void lagrange_loads(const zp_model *m, const zp_drive_now *dn, const doub
         sy += m->mass[i] * (ld->acc[i + 1][1] + m->g);
     }
     /* momentum of the whole system: sum m (a - g) = F + N n, n = (-f', 1)/|.| */
-    ld->normal = ((sx - dn->fx) * -fp + (sy - dn->fy)) / sqrt(1 + fp * fp);
+    ld->normal = ((sx - fx) * -fp + (sy - fy)) / sqrt(1 + fp * fp);
     /* link i: m_i (a_i - g) = R_i - R_{i+1}, with R the force of the parent on the child */
     double rx = 0, ry = 0;
     for (int i = n - 1; i >= 0; i--) {
         rx += m->mass[i] * ld->acc[i + 1][0];
         ry += m->mass[i] * (ld->acc[i + 1][1] + m->g);
+        if (fd) {
+            rx -= fd[i + 1][0];
+            ry -= fd[i + 1][1];
+        }
         ld->joint[i][0] = rx;
         ld->joint[i][1] = ry;
     }
+}
+
+/* drag on every body at its centre of mass (thd the angle rates): the force on each in fd,
+   their sum in ftot, their generalized forces in Q (x, then each angle); returns the power
+   they take out */
+static inline double drag_terms(const zp_model *m, double fp, double xd, const double *s,
+                                const double *c, const double *thd, int n, double fd[][2],
+                                double *ftot, double *Q) {
+    double px = xd, py = fp * xd, pout = 0; /* velocity of the joint above the current link */
+    for (int b = 0; b <= n; b++) {
+        double vx = px, vy = py;
+        if (b > 0) {
+            int i = b - 1;
+            vx += m->half[i] * c[i] * thd[i];
+            vy += m->half[i] * s[i] * thd[i];
+            px += m->len[i] * c[i] * thd[i];
+            py += m->len[i] * s[i] * thd[i];
+        }
+        double rx = vx - m->wind, k = m->drag_k[b] * hypot(rx, vy);
+        fd[b][0] = -k * rx;
+        fd[b][1] = -k * vy;
+        pout -= fd[b][0] * vx + fd[b][1] * vy;
+    }
+    double sx = 0, sy = 0; /* drag on the links below link j */
+    for (int j = n - 1; j >= 0; j--) {
+        Q[1 + j] = c[j] * (m->half[j] * fd[j + 1][0] + m->len[j] * sx) +
+                   s[j] * (m->half[j] * fd[j + 1][1] + m->len[j] * sy);
+        sx += fd[j + 1][0];
+        sy += fd[j + 1][1];
+    }
+    ftot[0] = sx + fd[0][0];
+    ftot[1] = sy + fd[0][1];
+    Q[0] = ftot[0] + fp * ftot[1];
+    return pout;
+}
+
+/* rolling resistance: its generalized force (x row only) along u = M^-1 e_x added to qdd,
+   with N affine in it; with dn->hold the force that keeps x'' = 0 instead, its tangential
+   value in *hold. fx, fy: the force on the system other than gravity, course and friction.
+   Returns the power the friction takes out. */
+static inline double friction_terms(const zp_model *m, const zp_drive_now *dn, double xd,
+                                    double fx, double fy, const double *s, const double *c,
+                                    const double *wd2, int n, const double *u, double *qdd,
+                                    double *hold) {
+    double fp = dn->tr.fp, sq = sqrt(1 + fp * fp);
+    double sx = m->mtot * qdd[0], sy = m->mtot * (fp * qdd[0] + dn->tr.fpp * xd * xd), nu = 0;
+    for (int j = 0; j < n; j++) {
+        sx += m->B[j] * (c[j] * qdd[1 + j] - s[j] * wd2[j]);
+        sy += m->B[j] * (s[j] * qdd[1 + j] + c[j] * wd2[j]);
+        nu += m->B[j] * (s[j] - fp * c[j]) * u[1 + j];
+    }
+    double n0 = (-fp * (sx - fx) + (sy + m->mtot * m->g - fy)) / sq, q;
+    nu /= sq;
+    if (dn->hold) {
+        q = -qdd[0] / u[0];
+        *hold = q / sq;
+    } else {
+        double dir = xd != 0 ? xd : qdd[0]; /* from rest: against the motion it starts */
+        double cf = -m->mu * ((dir > 0) - (dir < 0)) * sq;
+        double N = n0 / (1 - cf * nu);
+        if (N < 0) {
+            N = n0 / (1 + cf * nu);
+        }
+        q = cf * fabs(N);
+    }
+    for (int i = 0; i <= n; i++) {
+        qdd[i] += q * u[i];
+    }
+    return -q * xd;
 }
 
 static int lagrange_rhs_general(const zp_model *m, void *work, const zp_drive_now *dn,
@@ -161,14 +251,32 @@ static int lagrange_rhs_general(const zp_model *m, void *work, const zp_drive_no
         pdamp += m->damp[j] * wj[j] * wj[j];
     }
     gsl_vector_set(lw->R, 0, Rx);
-    if (!isfinite(Rx) || !isfinite(pdamp)) {
+    double fd[ZP_MAX_LINKS + 1][2], f[2] = {dn->fx, dn->fy}, pdrag = 0, pfric = 0, hold = 0;
+    if (m->physics & ZP_PHYS_DRAG) {
+        double Q[ZP_MAX_LINKS + 1], ftot[2];
+        pdrag = drag_terms(m, fp, xd, s, c, y + nq + 1, n, fd, ftot, Q);
+        for (int i = 0; i < nq; i++) {
+            gsl_vector_set(lw->R, i, gsl_vector_get(lw->R, i) + Q[i]);
+        }
+        f[0] += ftot[0];
+        f[1] += ftot[1];
+    }
+    if (!isfinite(Rx) || !isfinite(pdamp) || !isfinite(pdrag)) {
         return 1;
     }
     /* only the lower triangle is read by the Cholesky factorization */
     if (gsl_linalg_cholesky_decomp1(M) || gsl_linalg_cholesky_solve(M, lw->R, lw->acc)) {
         return 1;
     }
-    const double *qdd = gsl_vector_const_ptr(lw->acc, 0);
+    double *qdd = gsl_vector_ptr(lw->acc, 0);
+    if (m->physics & ZP_PHYS_ROLLING) {
+        gsl_vector_set_basis(lw->R, 0);
+        if (gsl_linalg_cholesky_solve(M, lw->R, lw->u)) {
+            return 1;
+        }
+        pfric = friction_terms(m, dn, xd, f[0], f[1], s, c, wd2, n,
+                               gsl_vector_const_ptr(lw->u, 0), qdd, &hold);
+    }
     for (int i = 0; i < nq; i++) {
         ydot[i] = y[nq + i];
         ydot[nq + i] = qdd[i];
@@ -178,16 +286,20 @@ static int lagrange_rhs_general(const zp_model *m, void *work, const zp_drive_no
     }
     ydot[2 * nq] = (dn->fx + dn->fy * fp) * xd;
     ydot[2 * nq + 1] = pdamp;
+    if (m->nwork > 2) {
+        ydot[2 * nq + 2] = pdrag;
+        ydot[2 * nq + 3] = pfric;
+    }
     if (loads) {
-        lagrange_loads(m, dn, y, qdd, loads);
+        lagrange_loads(m, dn, f[0], f[1], m->physics & ZP_PHYS_DRAG ? fd : NULL, y, qdd, loads);
+        loads->hold = hold;
     }
     return 0;
 }
 
-/* M y = R for the SPD M of size nq (lower triangle read, overwritten by its Cholesky
-   factor); 0, or 1 when M is not positive definite */
-static inline int cholesky_solve(double M[ZP_MAX_LINKS + 1][ZP_MAX_LINKS + 1], const double *R,
-                                 double *yout, int nq) {
+/* M's Cholesky factor in its lower triangle (M SPD of size nq, lower triangle read); 0, or 1
+   when M is not positive definite */
+static inline int cholesky_factor(double M[ZP_MAX_LINKS + 1][ZP_MAX_LINKS + 1], int nq) {
     for (int j = 0; j < nq; j++) {
         double d = M[j][j];
         for (int k = 0; k < j; k++) {
@@ -205,6 +317,12 @@ static inline int cholesky_solve(double M[ZP_MAX_LINKS + 1][ZP_MAX_LINKS + 1], c
             M[i][j] = v / M[j][j];
         }
     }
+    return 0;
+}
+
+/* M y = R with M's factor from cholesky_factor */
+static inline void cholesky_subst(double M[ZP_MAX_LINKS + 1][ZP_MAX_LINKS + 1], const double *R,
+                                  double *yout, int nq) {
     for (int i = 0; i < nq; i++) {
         double v = R[i];
         for (int k = 0; k < i; k++) {
@@ -219,12 +337,12 @@ static inline int cholesky_solve(double M[ZP_MAX_LINKS + 1][ZP_MAX_LINKS + 1], c
         }
         yout[i] = v / M[i][i];
     }
-    return 0;
 }
 
-/* the equations of motion for n links, n a constant where it is inlined */
+/* the equations of motion for n links with the effects phys (ZP_PHYS_* flags), both constants
+   where it is inlined */
 static inline int fast_rhs(const zp_model *m, const zp_drive_now *dn, const double *y, double *ydot,
-                           zp_loads *loads, int n) {
+                           zp_loads *loads, int n, int phys) {
     const int nq = n + 1;
     double fp = dn->tr.fp, fpp = dn->tr.fpp, xd = y[nq];
     double s[ZP_MAX_LINKS], c[ZP_MAX_LINKS], wd2[ZP_MAX_LINKS], wj[ZP_MAX_LINKS + 1];
@@ -262,8 +380,24 @@ static inline int fast_rhs(const zp_model *m, const zp_drive_now *dn, const doub
         uc += m->len[j] * c[j] * wd2[j];
         pdamp += m->damp[j] * wj[j] * wj[j];
     }
-    if (!isfinite(R[0]) || !isfinite(pdamp) || cholesky_solve(M, R, qdd, nq)) {
+    double fd[ZP_MAX_LINKS + 1][2], f[2] = {dn->fx, dn->fy}, pdrag = 0, pfric = 0, hold = 0;
+    if (phys & ZP_PHYS_DRAG) {
+        double Q[ZP_MAX_LINKS + 1], ftot[2];
+        pdrag = drag_terms(m, fp, xd, s, c, y + nq + 1, n, fd, ftot, Q);
+        for (int i = 0; i < nq; i++) {
+            R[i] += Q[i];
+        }
+        f[0] += ftot[0];
+        f[1] += ftot[1];
+    }
+    if (!isfinite(R[0]) || !isfinite(pdamp) || !isfinite(pdrag) || cholesky_factor(M, nq)) {
         return 1;
+    }
+    cholesky_subst(M, R, qdd, nq);
+    if (phys & ZP_PHYS_ROLLING) {
+        double ex[ZP_MAX_LINKS + 1] = {1}, u[ZP_MAX_LINKS + 1];
+        cholesky_subst(M, ex, u, nq);
+        pfric = friction_terms(m, dn, xd, f[0], f[1], s, c, wd2, n, u, qdd, &hold);
     }
     for (int i = 0; i < nq; i++) {
         ydot[i] = y[nq + i];
@@ -274,17 +408,27 @@ static inline int fast_rhs(const zp_model *m, const zp_drive_now *dn, const doub
     }
     ydot[2 * nq] = (dn->fx + dn->fy * fp) * xd;
     ydot[2 * nq + 1] = pdamp;
+    if (phys) {
+        ydot[2 * nq + 2] = pdrag;
+        ydot[2 * nq + 3] = pfric;
+    }
     if (loads) {
-        lagrange_loads(m, dn, y, qdd, loads);
+        lagrange_loads(m, dn, f[0], f[1], phys & ZP_PHYS_DRAG ? fd : NULL, y, qdd, loads);
+        loads->hold = hold;
     }
     return 0;
 }
 
-#define FAST_RHS(N)                                                                                \
-    static int fast_rhs##N(const zp_model *m, const zp_drive_now *dn, const double *y,             \
-                           double *ydot, zp_loads *loads) {                                        \
-        return fast_rhs(m, dn, y, ydot, loads, N);                                                 \
+#define FAST_RHS_P(N, P, NAME)                                                                     \
+    static int NAME(const zp_model *m, const zp_drive_now *dn, const double *y, double *ydot,     \
+                    zp_loads *loads) {                                                             \
+        return fast_rhs(m, dn, y, ydot, loads, N, P);                                              \
     }
+#define FAST_RHS(N)                                                                                \
+    FAST_RHS_P(N, 0, fast_rhs##N)                                                                  \
+    FAST_RHS_P(N, ZP_PHYS_DRAG, fast_rhs##N##_drag)                                                \
+    FAST_RHS_P(N, ZP_PHYS_ROLLING, fast_rhs##N##_roll)                                             \
+    FAST_RHS_P(N, ZP_PHYS_DRAG | ZP_PHYS_ROLLING, fast_rhs##N##_drag_roll)
 FAST_RHS(1)
 FAST_RHS(2)
 FAST_RHS(3)
@@ -293,15 +437,19 @@ FAST_RHS(5)
 FAST_RHS(6)
 FAST_RHS(7)
 FAST_RHS(8)
+#define FAST_ROW(N) {fast_rhs##N, fast_rhs##N##_drag, fast_rhs##N##_roll, fast_rhs##N##_drag_roll}
+
+/* the variant with exactly the model's terms: chosen here once, never tested per evaluation */
+static fast_fn fast_for(const zp_model *m) {
+    static const fast_fn by_n[ZP_MAX_LINKS][4] = {FAST_ROW(1), FAST_ROW(2), FAST_ROW(3),
+                                                  FAST_ROW(4), FAST_ROW(5), FAST_ROW(6),
+                                                  FAST_ROW(7), FAST_ROW(8)};
+    return by_n[m->nlink - 1][m->physics & (ZP_PHYS_DRAG | ZP_PHYS_ROLLING)];
+}
 
 static int lagrange_rhs(const zp_model *m, void *work, const zp_drive_now *dn, const double *y,
                         double *ydot, zp_loads *loads) {
-    static int (*const by_n[ZP_MAX_LINKS + 1])(const zp_model *, const zp_drive_now *,
-                                               const double *, double *, zp_loads *) = {
-        NULL,      fast_rhs1, fast_rhs2, fast_rhs3, fast_rhs4,
-        fast_rhs5, fast_rhs6, fast_rhs7, fast_rhs8};
-    (void)work;
-    return by_n[m->nlink](m, dn, y, ydot, loads);
+    return ((const lagrange_work *)work)->fast(m, dn, y, ydot, loads);
 }
 
 const zp_formulation zp_form_lagrange = {

@@ -21,7 +21,11 @@
  * BDF; the default method is Adams, so the stabilization lives in the equations and serves
  * every method. A kink restart goes through from_chain, which puts the state back exactly on
  * the constraints.
- * State: y = (X, Y, x_1, y_1, th_1, .., X', Y', x_1', .., W_drive, W_damp). */
+ * Optional effects (MODEL.md): drag at each centre of mass adds to that body's momentum row;
+ * rolling resistance replaces the frictionless row by (C.t) = -mu sgn(X') |C.n| for the course
+ * force C = (Nx, Ny), t and n the unit tangent and normal, with the sign of C.n taken + and
+ * the system solved again with - when that was wrong; held at rest, the row is a0x = 0.
+ * State: y = (X, Y, x_1, y_1, th_1, .., X', Y', x_1', .., the model's work integrals). */
 #include <gsl/gsl_linalg.h>
 #include <math.h>
 #include <stdlib.h>
@@ -33,16 +37,21 @@
    integrator would have to follow (50/s cuts the drift 10x but costs 1.5x the steps) */
 #define NE_STAB_RATE 5.0
 
-typedef struct newton_work {
-    gsl_matrix *A;
+typedef struct newton_work newton_work;
+typedef int (*newton_fn)(const zp_model *, newton_work *, const zp_drive_now *, const double *,
+                         double *, zp_loads *);
+
+struct newton_work {
+    gsl_matrix *A, *lu; /* lu: A's factors where A must be kept (rolling resistance) */
     gsl_vector *b, *z;
     gsl_permutation *perm;
-} newton_work;
+    newton_fn fn; /* the equations with this model's effects */
+};
 
 /* positions per body coordinate: trolley (X, Y), link i (x, y, th) at 2 + 3i */
 static int npos(const zp_model *m) { return 2 + 3 * m->nlink; }
 
-static int newton_nstate(const zp_model *m) { return 2 * npos(m) + 2; }
+static int newton_nstate(const zp_model *m) { return 2 * npos(m) + m->nwork; }
 
 static void newton_free(void *work) {
     newton_work *w = work;
@@ -50,11 +59,14 @@ static void newton_free(void *work) {
         return;
     }
     gsl_matrix_free(w->A);
+    gsl_matrix_free(w->lu);
     gsl_vector_free(w->b);
     gsl_vector_free(w->z);
     gsl_permutation_free(w->perm);
     free(w);
 }
+
+static newton_fn newton_for(const zp_model *m);
 
 static void *newton_create(const zp_model *m) {
     newton_work *w = calloc(1, sizeof *w);
@@ -63,17 +75,19 @@ static void *newton_create(const zp_model *m) {
     }
     size_t nz = 5 * m->nlink + 4;
     w->A = gsl_matrix_alloc(nz, nz);
+    w->lu = gsl_matrix_alloc(nz, nz);
     w->b = gsl_vector_alloc(nz);
     w->z = gsl_vector_alloc(nz);
     w->perm = gsl_permutation_alloc(nz);
-    if (!w->A || !w->b || !w->z || !w->perm) {
+    w->fn = newton_for(m);
+    if (!w->A || !w->lu || !w->b || !w->z || !w->perm) {
         newton_free(w);
         return NULL;
     }
     return w;
 }
 
-static void newton_from_chain(const zp_model *m, const zp_chain *c, const double wk[2],
+static void newton_from_chain(const zp_model *m, const zp_chain *c, const double *wk,
                               double *y) {
     int np = npos(m);
     double pos[ZP_MAX_LINKS + 1][2], vel[ZP_MAX_LINKS + 1][2];
@@ -90,8 +104,9 @@ static void newton_from_chain(const zp_model *m, const zp_chain *c, const double
             y[np + k + 2] = c->v[1 + b];
         }
     }
-    y[2 * np] = wk[0];
-    y[2 * np + 1] = wk[1];
+    for (int k = 0; k < m->nwork; k++) {
+        y[2 * np + k] = wk[k];
+    }
 }
 
 /* the trolley and the angles are chain coordinates already; the centres follow from them */
@@ -140,9 +155,8 @@ static void joint_gap(const zp_model *m, const double *y, int i, double J[2], do
     Jd[1] = vy - (y[np + k + 1] - d * s * w);
 }
 
-static double newton_residual(const zp_model *m, const zp_course *course, int sec,
-                              const double *y) {
-    double r = fabs(y[1] - zp_course_eval(course, sec, y[0]).f);
+static double newton_residual(const zp_model *m, const zp_track *tr, const double *y) {
+    double r = fabs(y[1] - tr->f);
     for (int i = 0; i < m->nlink; i++) {
         double J[2], Jd[2];
         joint_gap(m, y, i, J, Jd);
@@ -151,9 +165,75 @@ static double newton_residual(const zp_model *m, const zp_course *course, int se
     return r;
 }
 
-static int newton_rhs(const zp_model *m, void *work, const zp_drive_now *dn, const double *y,
-                      double *ydot, zp_loads *loads) {
-    newton_work *nw = work;
+/* drag on every body at its centre of mass added to the momentum rows; returns the power it
+   takes out */
+static double newton_drag(const zp_model *m, const double *y, gsl_vector *b) {
+    int np = npos(m);
+    double pout = 0;
+    for (int bd = 0; bd <= m->nlink; bd++) {
+        int k = bd ? 2 + 3 * (bd - 1) : 0;
+        double vx = y[np + k], vy = y[np + k + 1], rx = vx - m->wind;
+        double kk = m->drag_k[bd] * hypot(rx, vy), fx = -kk * rx, fy = -kk * vy;
+        gsl_vector_set(b, k, gsl_vector_get(b, k) + fx);
+        gsl_vector_set(b, k + 1, gsl_vector_get(b, k + 1) + fy);
+        pout -= fx * vx + fy * vy;
+    }
+    return pout;
+}
+
+/* the course row: frictionless (cf = 0), or the course force's tangential part cf |normal
+   part| with the normal part's sign sn, or (hold) the trolley at rest along the course */
+static void course_row(gsl_matrix *A, int rn, double fp, double cf, double sn, int hold) {
+    for (int j = 0; j < (int)A->size2; j++) {
+        gsl_matrix_set(A, rn + 1, j, 0);
+    }
+    if (hold) {
+        gsl_matrix_set(A, rn + 1, 0, 1);
+        return;
+    }
+    gsl_matrix_set(A, rn + 1, rn, 1 + cf * sn * fp);
+    gsl_matrix_set(A, rn + 1, rn + 1, fp - cf * sn);
+}
+
+/* A z = b, A kept (its LU factors go to lu) */
+static int newton_solve(newton_work *nw) {
+    int sign = 0;
+    gsl_matrix_memcpy(nw->lu, nw->A);
+    return gsl_linalg_LU_decomp(nw->lu, nw->perm, &sign) ||
+           gsl_linalg_LU_solve(nw->lu, nw->perm, nw->b, nw->z);
+}
+
+/* A z = b with the course row of rolling resistance: against x' (from rest, against the
+   motion the frictionless system starts), the normal part's sign tried + first; or held */
+static int newton_friction(const zp_model *m, newton_work *nw, const zp_drive_now *dn,
+                           double xd) {
+    const int rn = npos(m) + 2 * m->nlink;
+    const double fp = dn->tr.fp, *z = gsl_vector_const_ptr(nw->z, 0);
+    double dir = xd;
+    if (dn->hold || dir == 0) {
+        course_row(nw->A, rn, fp, 0, 1, dn->hold);
+        if (newton_solve(nw)) {
+            return 1;
+        }
+        if (dn->hold) {
+            return 0;
+        }
+        dir = z[0];
+    }
+    double cf = -m->mu * ((dir > 0) - (dir < 0));
+    course_row(nw->A, rn, fp, cf, 1, 0);
+    if (newton_solve(nw)) {
+        return 1;
+    }
+    if (-fp * z[rn] + z[rn + 1] < 0) {
+        course_row(nw->A, rn, fp, cf, -1, 0);
+        return newton_solve(nw);
+    }
+    return 0;
+}
+
+static int newton_rhs_with(const zp_model *m, newton_work *nw, const zp_drive_now *dn,
+                           const double *y, double *ydot, zp_loads *loads, int phys) {
     const int n = m->nlink, np = npos(m), rr = np, rn = np + 2 * n; /* reaction, normal cols */
     const double a = NE_STAB_RATE, fp = dn->tr.fp;
     gsl_matrix *A = nw->A;
@@ -230,9 +310,18 @@ static int newton_rhs(const zp_model *m, void *work, const zp_drive_now *dn, con
     gsl_vector_set(b, rn, dn->tr.fpp * xd * xd - 2 * a * Kd - a * a * K);
     gsl_matrix_set(A, rn + 1, rn, 1);
     gsl_matrix_set(A, rn + 1, rn + 1, fp);
+    double pdrag = 0;
+    if (phys & ZP_PHYS_DRAG) {
+        pdrag = newton_drag(m, y, b);
+    }
 
     int sign = 0;
-    if (gsl_linalg_LU_decomp(A, nw->perm, &sign) || gsl_linalg_LU_solve(A, nw->perm, b, nw->z)) {
+    if (phys & ZP_PHYS_ROLLING) {
+        if (newton_friction(m, nw, dn, xd)) {
+            return 1;
+        }
+    } else if (gsl_linalg_LU_decomp(A, nw->perm, &sign) ||
+               gsl_linalg_LU_solve(A, nw->perm, b, nw->z)) {
         return 1;
     }
     const double *z = gsl_vector_const_ptr(nw->z, 0);
@@ -245,7 +334,13 @@ static int newton_rhs(const zp_model *m, void *work, const zp_drive_now *dn, con
     }
     ydot[2 * np] = dn->fx * xd + dn->fy * y[np + 1];
     ydot[2 * np + 1] = pdamp;
+    double sq = sqrt(1 + fp * fp), ft = (z[rn] + fp * z[rn + 1]) / sq; /* course's tangential */
+    if (phys) {
+        ydot[2 * np + 2] = pdrag;
+        ydot[2 * np + 3] = -ft * (xd + fp * y[np + 1]) / sq;
+    }
     if (loads) {
+        loads->hold = ft;
         loads->normal = (-fp * z[rn] + z[rn + 1]) / sqrt(1 + fp * fp);
         loads->acc[0][0] = z[0];
         loads->acc[0][1] = z[1];
@@ -257,6 +352,29 @@ static int newton_rhs(const zp_model *m, void *work, const zp_drive_now *dn, con
         }
     }
     return 0;
+}
+
+#define NEWTON_RHS(P, NAME)                                                                        \
+    static int NAME(const zp_model *m, newton_work *w, const zp_drive_now *dn, const double *y,   \
+                    double *ydot, zp_loads *loads) {                                               \
+        return newton_rhs_with(m, w, dn, y, ydot, loads, P);                                       \
+    }
+NEWTON_RHS(0, newton_plain)
+NEWTON_RHS(ZP_PHYS_DRAG, newton_drag_only)
+NEWTON_RHS(ZP_PHYS_ROLLING, newton_roll)
+NEWTON_RHS(ZP_PHYS_DRAG | ZP_PHYS_ROLLING, newton_drag_roll)
+
+/* the equations with exactly the model's terms, chosen once */
+static newton_fn newton_for(const zp_model *m) {
+    static const newton_fn by_phys[4] = {newton_plain, newton_drag_only, newton_roll,
+                                         newton_drag_roll};
+    return by_phys[m->physics & (ZP_PHYS_DRAG | ZP_PHYS_ROLLING)];
+}
+
+static int newton_rhs(const zp_model *m, void *work, const zp_drive_now *dn, const double *y,
+                      double *ydot, zp_loads *loads) {
+    newton_work *nw = work;
+    return nw->fn(m, nw, dn, y, ydot, loads);
 }
 
 const zp_formulation zp_form_newton = {

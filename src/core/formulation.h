@@ -1,17 +1,25 @@
 /* The formulation interface: one way of writing the equations of motion of MODEL.md.
    State contract shared by all formulations (so events are written once):
-     y[0]          trolley x (m)
-     y[n-2], y[n-1] drive work and damper loss (J), integrated alongside
-   everything else is the formulation's own; to_chain/from_chain convert to MODEL.md's q. */
+     y[0]              trolley x (m); y[(n - nwork) / 2] its rate x' (m/s)
+     y[n - nwork ..]   the model's nwork work integrals (J), in zp_work order: drive work and
+                       damper loss, and with drag or rolling resistance also drag and friction
+                       work taken out
+   everything else is the formulation's own; to_chain/from_chain convert to MODEL.md's q.
+   Each formulation picks, once in create, equations holding only the terms the model names. */
 #ifndef ZP_FORMULATION_H
 #define ZP_FORMULATION_H
 
 #include "state.h"
 
+/* The work integrals at the state's end (zp_model.nwork of them). */
+enum { ZP_W_DRIVE, ZP_W_DAMP, ZP_W_DRAG, ZP_W_FRICTION, ZP_W_MAX };
+
 /* The drive and the course under the trolley at this instant (set by the simulator). */
 typedef struct zp_drive_now {
     zp_track tr;    /* course at the trolley's x, on the current section */
     double fx, fy;  /* N, drive force on the trolley */
+    int hold;       /* with rolling resistance, 1: rates and loads with the trolley held at rest
+                       (x'' = 0), the holding tangential force in zp_loads.hold */
 } zp_drive_now;
 
 /* Loads, computed on request (outputs, not the hot path). */
@@ -19,6 +27,8 @@ typedef struct zp_loads {
     double normal;                   /* N, course on trolley along (-f', 1)/|.|: + pushes up */
     double joint[ZP_MAX_LINKS][2];   /* N, force of the parent on link i at joint i */
     double acc[ZP_MAX_LINKS + 1][2]; /* m/s^2, centre-of-mass accelerations, body 0 trolley */
+    double hold; /* N, with zp_drive_now.hold: the course's force along (1, f')/|.| that keeps
+                    the trolley at rest */
 } zp_loads;
 
 typedef struct zp_formulation {
@@ -28,8 +38,9 @@ typedef struct zp_formulation {
     /* Workspace sized from the model (no allocation afterwards); NULL on failure. */
     void *(*create)(const zp_model *m);
     void (*free)(void *work);
-    /* State from chain coordinates (positions on the constraints); work terms set to w[2]. */
-    void (*from_chain)(const zp_model *m, const zp_chain *c, const double w[2], double *y);
+    /* State from chain coordinates (positions on the constraints); the work integrals set to
+       w (m->nwork entries). */
+    void (*from_chain)(const zp_model *m, const zp_chain *c, const double *w, double *y);
     /* Chain coordinates of y; tr is the course at y[0] on the current section. */
     void (*to_chain)(const zp_model *m, const zp_track *tr, const double *y, zp_chain *c);
     /* Relative joint angles phi_i (rad) and rates w_i (rad/s): the root functions' inputs. */
@@ -38,9 +49,9 @@ typedef struct zp_formulation {
        integrator may retry with a smaller step). loads may be NULL. */
     int (*rhs)(const zp_model *m, void *work, const zp_drive_now *dn, const double *y,
                double *ydot, zp_loads *loads);
-    /* Largest violation of the formulation's own position constraints (m); NULL: none. */
-    double (*constraint_residual)(const zp_model *m, const zp_course *course, int sec,
-                                  const double *y);
+    /* Largest violation of the formulation's own position constraints (m), tr the course at
+       y[0]; NULL: none. */
+    double (*constraint_residual)(const zp_model *m, const zp_track *tr, const double *y);
 } zp_formulation;
 
 /* ZP_FORM_<ID> for every line of formulations.def */

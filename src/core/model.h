@@ -15,6 +15,19 @@ typedef struct zp_kink {
     double slope_out; /* f' of the right section at the boundary */
 } zp_kink;
 
+/* A rounded kink (MODEL.md "Optional effects"): the circle of radius r tangent to the section
+   on the left at x1 and to the one on the right at x2, x1 < b < x2. */
+typedef struct zp_arc {
+    int kink;        /* index into zp_model.kink */
+    double x1, x2;   /* m, where the circle touches the sections */
+    double cx, cy;   /* m, its centre */
+    double r;        /* m */
+    double side;     /* +1: centre above (the slope rises through the arc), -1: below */
+} zp_arc;
+
+/* The optional effects a model carries, each term evaluated only when its flag is set. */
+enum { ZP_PHYS_DRAG = 1, ZP_PHYS_ROLLING = 2, ZP_PHYS_ROUNDED = 4 };
+
 typedef struct zp_model {
     double g; /* m/s^2, acts in -y */
 
@@ -35,6 +48,17 @@ typedef struct zp_model {
     double phi_max;               /* rad, death angle */
     zp_drive_dir drive;
 
+    /* [physics]: physics is the ZP_PHYS_* flags of the effects present, chosen once here */
+    int physics;
+    double drag_k[ZP_MAX_LINKS + 1]; /* kg/m, rho CdA / 2 of the trolley, then each link */
+    double wind;                     /* m/s, +x */
+    double mu;                       /* rolling-resistance coefficient */
+    int nwork;                       /* work integrals at the state's end: drive, dampers, and
+                                        with drag or rolling also drag, friction */
+    int narc;
+    zp_arc arc[ZP_MAX_SECTIONS];
+    int arc_at[ZP_MAX_SECTIONS + 1]; /* index of the arc around boundary xb[k], or -1 */
+
     /* derived for the equations of motion (MODEL.md chain coordinates) */
     double mtot;                                 /* kg, trolley + links */
     double B[ZP_MAX_LINKS];                      /* kg m, m_j d_j + l_j sum_{i>j} m_i */
@@ -45,6 +69,9 @@ typedef struct zp_model {
    and finds the kinks. Returns NULL and fills d on bad input. */
 zp_model *zp_model_build(const zp_scene *sc, zp_diag *d);
 void zp_model_free(zp_model *m);
+/* The course under the trolley on section sec at x, arcs included (the plain course when the
+   model has none); course: the caller's evaluators. */
+zp_track zp_model_track(const zp_model *m, const zp_course *course, int sec, double x);
 /* A course for one simulating thread (zp_course_for_thread: compiled code shared by all),
    owned by the caller; NULL with why in e. */
 zp_course *zp_model_course(const zp_model *m, zp_course_err *e);

@@ -12,6 +12,7 @@ typedef struct zp_row {
     int sec;  /* 0-based */
     zp_chain c;
     double w_drive, w_damp, e_impulse; /* J, cumulative */
+    double w_drag, w_fric;             /* J, cumulative, taken out (0 without [physics]) */
     zp_loads loads;
 } zp_row;
 

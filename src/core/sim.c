@@ -18,8 +18,12 @@
 /* an output time this close (s) to an event shows the state after the event */
 #define ZP_EVENT_TIME_EPS 1e-9
 
+typedef zp_track (*track_fn)(const zp_model *m, const zp_course *c, int sec, double x);
+
 struct zp_sim {
     const zp_model *m; /* borrowed */
+    track_fn track;    /* the course with its arcs, or the plain course (chosen at create) */
+    int w0;            /* index of the first work integral in the state */
     zp_sim_opts o;
     const zp_formulation *form;
     void *fwork; /* owned */
@@ -45,9 +49,15 @@ struct zp_sim {
     int ncross;          /* kept in cross (the result counts all) */
 };
 
-/* course and drive at time t and the trolley's x on the current section */
-static zp_drive_now drive_now(const zp_sim *s, double t, double x) {
-    zp_drive_now dn = {zp_course_eval(s->course, s->sec, x), 0, 0};
+static zp_track plain_track(const zp_model *m, const zp_course *c, int sec, double x) {
+    (void)m;
+    return zp_course_eval(c, sec, x);
+}
+
+/* course and drive at time t and the trolley's x on the current section; track a constant
+   where inlined */
+static inline zp_drive_now drive_at(const zp_sim *s, track_fn track, double t, double x) {
+    zp_drive_now dn = {track(s->m, s->course, s->sec, x), 0, 0, 0};
     double F = zp_schedule_force(s->sched, t, x, s->sec);
     if (s->m->drive == ZP_DRIVE_TANGENT) {
         double norm = sqrt(1 + dn.tr.fp * dn.tr.fp);
@@ -59,11 +69,21 @@ static zp_drive_now drive_now(const zp_sim *s, double t, double x) {
     return dn;
 }
 
-/* the equations of motion as the integrator sees them */
+static zp_drive_now drive_now(const zp_sim *s, double t, double x) {
+    return drive_at(s, s->track, t, x);
+}
+
+/* the equations of motion as the integrator sees them: on the plain course, or with arcs */
 int zp_sim_rhs(double t, const double *y, double *ydot, void *user);
 int zp_sim_rhs(double t, const double *y, double *ydot, void *user) {
     zp_sim *s = user;
-    zp_drive_now dn = drive_now(s, t, y[0]);
+    zp_drive_now dn = drive_at(s, plain_track, t, y[0]);
+    return s->form->rhs(s->m, s->fwork, &dn, y, ydot, NULL);
+}
+
+static int sim_rhs_rounded(double t, const double *y, double *ydot, void *user) {
+    zp_sim *s = user;
+    zp_drive_now dn = drive_at(s, zp_model_track, t, y[0]);
     return s->form->rhs(s->m, s->fwork, &dn, y, ydot, NULL);
 }
 
@@ -73,6 +93,14 @@ static int sim_root(double t, const double *y, double *g, void *user) {
     (void)t;
     s->form->relative(s->m, y, phi, w);
     zp_events_eval(s->m, s->sec, y[0], phi, w, g);
+    return 0;
+}
+
+/* with rolling resistance also the trolley's x' (the state contract puts it at w0 / 2) */
+static int sim_root_rolling(double t, const double *y, double *g, void *user) {
+    zp_sim *s = user;
+    sim_root(t, y, g, user);
+    g[zp_events_rest(s->m)] = y[s->w0 / 2];
     return 0;
 }
 
@@ -113,6 +141,8 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
     zp_course_err ce;
     s->course = zp_model_course(m, &ce);
     s->n = s->form->nstate(m);
+    s->w0 = s->n - m->nwork;
+    s->track = m->physics & ZP_PHYS_ROUNDED ? zp_model_track : plain_track;
     s->nroot = zp_events_count(m);
     s->fwork = s->form->create(m);
     s->y = calloc(s->n, sizeof *s->y);
@@ -120,12 +150,15 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
     s->yout = calloc(s->n, sizeof *s->yout);
     s->roots = calloc(s->nroot, sizeof *s->roots);
     s->cross = malloc(sizeof *s->cross * ZP_MAX_CROSSINGS);
-    int dir[2 + 2 * ZP_MAX_LINKS];
+    int dir[3 + 2 * ZP_MAX_LINKS];
     zp_events_directions(m, dir);
-    int state_only[2 + 2 * ZP_MAX_LINKS];
+    int state_only[3 + 2 * ZP_MAX_LINKS];
     zp_events_state_only(m, state_only);
     zp_method_opts mo = {o->rtol, o->atol, o->max_steps, state_only};
-    s->mwork = s->meth->create(s->n, s->nroot, dir, zp_sim_rhs, sim_root, s, &mo);
+    s->mwork = s->meth->create(s->n, s->nroot, dir,
+                               m->physics & ZP_PHYS_ROUNDED ? sim_rhs_rounded : zp_sim_rhs,
+                               m->physics & ZP_PHYS_ROLLING ? sim_root_rolling : sim_root, s,
+                               &mo);
     if (o->output_dt > 0) {
         s->cap_rows = (int)fmin(o->t_max / o->output_dt + 2, 1e7);
         s->rows = malloc(sizeof *s->rows * s->cap_rows);
@@ -140,7 +173,7 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
 
 static zp_chain chain_of(const zp_sim *s, const double *y) {
     zp_chain c;
-    zp_track tr = zp_course_eval(s->course, s->sec, y[0]);
+    zp_track tr = s->track(s->m, s->course, s->sec, y[0]);
     s->form->to_chain(s->m, &tr, y, &c);
     return c;
 }
@@ -149,8 +182,12 @@ static zp_row row_of(zp_sim *s, double t, const double *y) {
     zp_drive_now dn = drive_now(s, t, y[0]); /* its course point serves the chain too */
     zp_row r = {.t = t, .sec = s->sec};
     s->form->to_chain(s->m, &dn.tr, y, &r.c);
-    r.w_drive = y[s->n - 2];
-    r.w_damp = y[s->n - 1];
+    r.w_drive = y[s->w0 + ZP_W_DRIVE];
+    r.w_damp = y[s->w0 + ZP_W_DAMP];
+    if (s->m->nwork > ZP_W_DRAG) {
+        r.w_drag = y[s->w0 + ZP_W_DRAG];
+        r.w_fric = y[s->w0 + ZP_W_FRICTION];
+    }
     r.e_impulse = s->e_impulse;
     s->form->rhs(s->m, s->fwork, &dn, y, s->ydot, &r.loads);
     zp_load_peaks *p = &s->peaks;
@@ -170,6 +207,19 @@ static int departure(zp_sim *s, double t, const double *y) {
     zp_row r = row_of(s, t, y);
     double v = r.c.v[0] != 0 ? r.c.v[0] : r.loads.acc[0][0];
     return (v > 0) - (v < 0);
+}
+
+/* with rolling resistance, at rest: whether static friction holds the trolley (MODEL.md:
+   the tangential force that keeps x'' = 0 within mu |N| then) */
+static int held(zp_sim *s, double t, const double *y) {
+    if (!(s->m->physics & ZP_PHYS_ROLLING)) {
+        return 0;
+    }
+    zp_drive_now dn = drive_now(s, t, y[0]);
+    dn.hold = 1;
+    zp_loads ld;
+    return s->form->rhs(s->m, s->fwork, &dn, y, s->ydot, &ld) == 0 &&
+           fabs(ld.hold) <= s->m->mu * fabs(ld.normal);
 }
 
 /* the next output time (row or sample), or INFINITY */
@@ -228,8 +278,9 @@ static void track_extremes(zp_sim *s, double t, const double *y, zp_result *r) {
         r->max_speed = fmax(r->max_speed, hypot(c.v[0], c.v[1]));
     }
     if (s->form->constraint_residual) {
-        r->constraint_residual = fmax(r->constraint_residual,
-                                      s->form->constraint_residual(s->m, s->course, s->sec, y));
+        zp_track tr = s->track(s->m, s->course, s->sec, y[0]);
+        r->constraint_residual =
+            fmax(r->constraint_residual, s->form->constraint_residual(s->m, &tr, y));
     }
 }
 
@@ -248,14 +299,17 @@ static int cross_kink(zp_sim *s, double t, zp_result *r, int to) {
     const zp_model *m = s->m;
     double b = m->xb[to > s->sec ? to : s->sec];
     zp_chain c = chain_of(s, s->y);
-    zp_track entered = zp_course_eval(s->course, to, b);
+    zp_track entered = s->track(m, s->course, to, b);
     c.q[0] = b;
     c.q[1] = entered.f;
-    zp_impulse imp;
-    if (zp_impulse_apply(m, entered.fp, &c, &imp)) {
+    zp_impulse imp = {0, 0};
+    if (m->physics & ZP_PHYS_ROUNDED) {
+        c.v[1] = entered.fp * c.v[0]; /* an arc has no kink: only onto the course at b */
+    } else if (zp_impulse_apply(m, entered.fp, &c, &imp)) {
         return -1;
     }
-    double wk[2] = {s->y[s->n - 2], s->y[s->n - 1]};
+    double wk[ZP_W_MAX];
+    memcpy(wk, s->y + s->w0, sizeof *wk * m->nwork);
     s->form->from_chain(m, &c, wk, s->y);
     s->e_impulse += imp.energy_lost;
     int from = s->sec;
@@ -283,8 +337,12 @@ static void finish_result(zp_sim *s, zp_result *r, double t, zp_outcome o, zp_st
     r->v = hypot(c.v[0], c.v[1]);
     zp_energy e = zp_state_energy(s->m, &c);
     r->e_final = e.kinetic + e.potential;
-    r->w_drive = s->y[s->n - 2];
-    r->w_damp = s->y[s->n - 1];
+    r->w_drive = s->y[s->w0 + ZP_W_DRIVE];
+    r->w_damp = s->y[s->w0 + ZP_W_DAMP];
+    if (s->m->nwork > ZP_W_DRAG) {
+        r->w_drag = s->y[s->w0 + ZP_W_DRAG];
+        r->w_fric = s->y[s->w0 + ZP_W_FRICTION];
+    }
     r->e_impulse = s->e_impulse;
     /* the last row shows the end state */
     if (s->rows && s->nrows < s->cap_rows && (s->nrows == 0 || s->rows[s->nrows - 1].t < t)) {
@@ -327,7 +385,7 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     } else {
         zp_state_start(m, s->course, &c);
     }
-    const double zero_work[2] = {0, 0};
+    const double zero_work[ZP_W_MAX] = {0};
     s->form->from_chain(m, &c, zero_work, s->y);
     zp_energy e0 = zp_state_energy(m, &c);
     r->e_initial = e0.kinetic + e0.potential;
@@ -335,6 +393,10 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     double t = 0, next_row = 0;
     int next_sample = 0;
     emit_outputs(s, in, t, 0, &next_row, &next_sample);
+    if (held(s, t, s->y)) {
+        finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_HELD_BY_FRICTION);
+        return ZP_OK;
+    }
     /* a root finder ignores a root at t0: a start that rolls back at once is caught here */
     if (departure(s, t, s->y) < 0) {
         finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_ROLLED_BACK);
@@ -391,6 +453,17 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             continue;
         }
         add_stats(s, r);
+        if (ev == ZP_EVENT_REST) {
+            /* held, or off the other way: friction turns round, the integrator restarts */
+            if (held(s, t, s->y)) {
+                finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_HELD_BY_FRICTION);
+                return ZP_OK;
+            }
+            if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
+                return fail(s, r, t, "the integrator could not restart at rest");
+            }
+            continue;
+        }
         if (ev != ZP_EVENT_KINK) {
             r->died_link = ev == ZP_EVENT_DEATH ? link + 1 : 0;
             finish_result(s, r, t,
@@ -448,7 +521,7 @@ const zp_crossing *zp_sim_crossings(const zp_sim *s, int *n) {
 
 static const char *const outcome_names[ZP_OUTCOME_COUNT] = {"finished", "died", "stalled"};
 static const char *const stall_names[ZP_STALL_COUNT] = {"none", "t_max", "rolled_back",
-                                                        "trapped_at_kink"};
+                                                        "trapped_at_kink", "held_by_friction"};
 
 const char *zp_sim_outcome_name(zp_outcome o) { return outcome_names[o]; }
 const char *zp_sim_stall_name(zp_stall s) { return stall_names[s]; }

@@ -20,6 +20,7 @@ typedef enum {
     ZP_STALL_T_MAX,
     ZP_STALL_ROLLED_BACK,
     ZP_STALL_TRAPPED_AT_KINK,
+    ZP_STALL_HELD_BY_FRICTION,
     ZP_STALL_COUNT
 } zp_stall;
 
@@ -74,6 +75,7 @@ typedef struct zp_result {
                                            ZP_MAX_CROSSINGS are in zp_sim_crossings) */
     double e_initial, e_final;          /* J */
     double w_drive, w_damp, e_impulse;  /* J: drive work, damper loss, impulse loss */
+    double w_drag, w_fric;              /* J: drag and friction work taken out ([physics]) */
     double constraint_residual;         /* m */
     zp_load_peaks peaks;                /* the kink impulses are in zp_sim_crossings */
     long steps, rhs_evals;
