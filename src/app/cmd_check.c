@@ -56,6 +56,34 @@ static void print_course(const zp_model *m) {
                l.fp, r.fp, r.fp - l.fp, (atan(r.fp) - atan(l.fp)) * 180 / M_PI,
                kink ? "kink" : "smooth");
     }
+    for (int i = 0; i < m->narc; i++) {
+        const zp_arc *a = &m->arc[i];
+        printf("  arc %d (kink at x = %g m): radius %g m over x in [%.6g, %.6g] m, centre (%.6g, "
+               "%.6g) m\n",
+               i + 1, m->kink[a->kink].x, a->r, a->x1, a->x2, a->cx, a->cy);
+    }
+}
+
+/* the [physics] effects the model carries */
+static void print_physics(const zp_scene *sc, const zp_model *m) {
+    if (!m->physics) {
+        return;
+    }
+    printf("physics:");
+    if (m->physics & ZP_PHYS_DRAG) {
+        printf(" drag CdA");
+        for (int b = 0; b <= m->nlink; b++) {
+            printf("%s %g", b ? "," : "", sc->drag_area[b]);
+        }
+        printf(" m^2 (trolley, links), air %g kg/m^3, wind %g m/s;", sc->air_density, m->wind);
+    }
+    if (m->physics & ZP_PHYS_ROLLING) {
+        printf(" rolling resistance %g;", m->mu);
+    }
+    if (m->physics & ZP_PHYS_ROUNDED) {
+        printf(" kinks rounded, radius %g m;", sc->kink_radius);
+    }
+    putchar('\n');
 }
 
 static void print_scene(const zp_setup *st) {
@@ -85,6 +113,7 @@ static void print_scene(const zp_setup *st) {
            sc->output_dt);
     printf("optimize: margin %g deg, max_evals %ld, seed %lu\n", sc->margin, sc->max_evals,
            sc->seed);
+    print_physics(sc, m);
 }
 
 int zp_cmd_check(int argc, char **argv) {

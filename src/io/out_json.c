@@ -102,7 +102,7 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
         key_num(f, "x", c->x, ", ");
         fprintf(f, "\"from_section\": %d, \"to_section\": %d, ", c->from + 1, c->to + 1);
         key_num(f, "impulse", c->impulse, ", ");
-        key_num(f, "energy_lost", c->energy_lost, "}");
+        key_num(f, "energy_lost", c->energy_lost, m->narc ? ", \"rounded\": true}" : "}");
     }
     fputs(nk ? "\n  ],\n" : "],\n", f);
     fprintf(f, "  \"kink_crossings\": %d,\n  \"max_rel_angle\": ", r->ncross);
@@ -113,8 +113,13 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
     key_num(f, "drive_work", r->w_drive, ", ");
     key_num(f, "damper_work", r->w_damp, ", ");
     key_num(f, "impulse_loss", r->e_impulse, ", ");
-    key_num(f, "residual", r->e_final - r->e_initial - r->w_drive + r->w_damp + r->e_impulse,
-            "},\n  ");
+    double res = r->e_final - r->e_initial - r->w_drive + r->w_damp + r->e_impulse;
+    if (m->physics) {
+        key_num(f, "drag_work", r->w_drag, ", ");
+        key_num(f, "friction_work", r->w_fric, ", ");
+        res += r->w_drag + r->w_fric;
+    }
+    key_num(f, "residual", res, "},\n  ");
     key_num(f, "constraint_residual", r->constraint_residual, ",\n");
     fputs("  \"loads\": {\"joint_peak\": ", f);
     num_list(f, r->peaks.joint, m->nlink, 1.0);

@@ -159,6 +159,9 @@ static box write_run(FILE *f, const zp_model *m, const zp_row *rows, int n) {
     for (int i = 1; i <= m->nlink; i++) {
         fprintf(f, " joint%d", i);
     }
+    if (m->physics) {
+        fputs(" drag_loss friction_loss", f);
+    }
     fputc('\n', f);
     double e0 = 0;
     for (int k = 0; k < n; k++) {
@@ -167,7 +170,7 @@ static box write_run(FILE *f, const zp_model *m, const zp_row *rows, int n) {
         zp_row_derive(m, r, &v);
         double total = v.e.kinetic + v.e.potential;
         if (k == 0) {
-            e0 = total - r->w_drive + r->w_damp + r->e_impulse;
+            e0 = total - r->w_drive + r->w_damp + r->e_impulse + r->w_drag + r->w_fric;
         }
         fprintf(f, "%.9g %d %.9g %.9g %.9g", r->t, r->sec + 1, r->c.q[0], r->c.q[1], v.speed);
         for (int i = 0; i <= m->nlink; i++) {
@@ -178,10 +181,14 @@ static box write_run(FILE *f, const zp_model *m, const zp_row *rows, int n) {
             fprintf(f, " %.9g", v.phi[i] * DEG);
         }
         fprintf(f, " %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g", v.e.kinetic, v.e.potential, total,
-                r->w_drive, r->w_damp, r->e_impulse, e0 + r->w_drive - r->w_damp - r->e_impulse,
+                r->w_drive, r->w_damp, r->e_impulse,
+                e0 + r->w_drive - r->w_damp - r->e_impulse - r->w_drag - r->w_fric,
                 r->loads.normal);
         for (int i = 0; i < m->nlink; i++) {
             fprintf(f, " %.9g", v.joint[i]);
+        }
+        if (m->physics) {
+            fprintf(f, " %.9g %.9g", r->w_drag, r->w_fric);
         }
         fputc('\n', f);
     }
@@ -363,8 +370,16 @@ static void script_energy(FILE *f, const zp_model *m, const zp_result *r, const 
           "     '' using 't':'damper_loss' with lines lw 2 lc rgb '#9467bd' "
           "title 'damper loss', \\\n"
           "     '' using 't':'kink_loss' with lines lw 2 lc rgb '#d62728' "
-          "title 'kink losses'\n",
+          "title 'kink losses'",
           f);
+    if (m->physics) {
+        fputs(", \\\n     '' using 't':'drag_loss' with lines lw 2 lc rgb '#17becf' "
+              "title 'drag work', \\\n"
+              "     '' using 't':'friction_loss' with lines lw 2 lc rgb '#8c564b' "
+              "title 'friction work'",
+              f);
+    }
+    fputc('\n', f);
 }
 
 static void script_angles(FILE *f, const zp_model *m, const zp_result *r, const kinks *kk,
