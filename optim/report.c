@@ -116,6 +116,42 @@ static void md_gain(FILE *f, const char *what, double t_best, double t_other) {
             100 * (t_other - t_best) / t_other);
 }
 
+/* the kink impulses of the best run */
+static void md_kinks(FILE *f, const zp_result *run, const zp_sim *best) {
+    fputs("## Kink impulses\n\n", f);
+    if (run->ncross == 0) {
+        fputs("No kinks crossed.\n", f);
+    } else {
+        fputs("| t (s) | x (m) | sections | impulse (N s) | energy lost (J) |\n"
+              "|---|---|---|---|---|\n", f);
+        int n;
+        const zp_crossing *cross = zp_sim_crossings(best, &n);
+        for (int i = 0; i < n; i++) {
+            const zp_crossing *c = &cross[i];
+            fprintf(f, "| %.4f | %g | %d -> %d | %.3f | %.2f |\n", c->t, c->x, c->from + 1,
+                    c->to + 1, c->impulse, c->energy_lost);
+        }
+    }
+}
+
+/* the rounded kinks: each arc's peak normal force and felt acceleration in the best run */
+static void md_arcs(FILE *f, const zp_model *m, const zp_sim *best) {
+    int n;
+    const zp_arc_peaks *ap = zp_sim_arc_peaks(best, &n);
+    fputs("## Arcs (rounded kinks: no impulse)\n\n| kink at x (m) | arc x (m) | radius (m) | "
+          "normal force (N) | peak felt acceleration (g) |\n|---|---|---|---|---|\n",
+          f);
+    for (int i = 0; i < n; i++) {
+        const zp_arc *a = &m->arc[i];
+        fprintf(f, "| %g | %.2f to %.2f | %g |", m->kink[a->kink].x, a->x1, a->x2, a->r);
+        if (ap[i].visited) {
+            fprintf(f, " %.1f to %.1f | %.2f |\n", ap[i].normal_min, ap[i].normal_max, ap[i].acc_g);
+        } else {
+            fputs(" not reached | not reached |\n", f);
+        }
+    }
+}
+
 void zp_report_write_md(FILE *f, const zp_report *r) {
     const zp_search_result *s = r->res;
     const zp_verify *v = r->v;
@@ -205,19 +241,10 @@ void zp_report_write_md(FILE *f, const zp_report *r) {
                 BRAKE_KMH);
     }
 
-    fputs("## Kink impulses\n\n", f);
-    if (run->ncross == 0) {
-        fputs("No kinks crossed.\n", f);
+    if (r->m->narc) {
+        md_arcs(f, r->m, r->best);
     } else {
-        fputs("| t (s) | x (m) | sections | impulse (N s) | energy lost (J) |\n"
-              "|---|---|---|---|---|\n", f);
-        int n;
-        const zp_crossing *cross = zp_sim_crossings(r->best, &n);
-        for (int i = 0; i < n; i++) {
-            const zp_crossing *c = &cross[i];
-            fprintf(f, "| %.4f | %g | %d -> %d | %.3f | %.2f |\n", c->t, c->x, c->from + 1,
-                    c->to + 1, c->impulse, c->energy_lost);
-        }
+        md_kinks(f, run, r->best);
     }
 
     /* design loads of the best run, sampled at every step (MODEL.md sign conventions) */

@@ -45,6 +45,7 @@ struct zp_sim {
     zp_row *samples; /* owned, cap_samples */
     int nsamples, cap_samples;
     zp_load_peaks peaks; /* so far; every evaluation of the loads updates them */
+    zp_arc_peaks arc_peaks[ZP_MAX_SECTIONS]; /* the same on each arc */
     zp_crossing *cross;  /* owned, ZP_MAX_CROSSINGS */
     int ncross;          /* kept in cross (the result counts all) */
 };
@@ -198,6 +199,17 @@ static zp_row row_of(zp_sim *s, double t, const double *y) {
     for (int i = 0; i < s->m->nlink; i++) {
         p->joint[i] = fmax(p->joint[i], joint[i]);
         p->acc_g[i] = fmax(p->acc_g[i], acc_g[i]);
+    }
+    for (int a = 0; a < s->m->narc; a++) {
+        zp_arc_peaks *ap = &s->arc_peaks[a];
+        if (r.c.q[0] >= s->m->arc[a].x1 && r.c.q[0] <= s->m->arc[a].x2) {
+            ap->normal_min = ap->visited ? fmin(ap->normal_min, r.loads.normal) : r.loads.normal;
+            ap->normal_max = ap->visited ? fmax(ap->normal_max, r.loads.normal) : r.loads.normal;
+            for (int i = 0; i < s->m->nlink; i++) {
+                ap->acc_g = fmax(ap->acc_g, acc_g[i]);
+            }
+            ap->visited = 1;
+        }
     }
     return r;
 }
@@ -498,6 +510,7 @@ zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     s->e_impulse = 0;
     s->nrows = s->nsamples = s->ncross = 0;
     s->peaks = (zp_load_peaks){.normal_min = INFINITY, .normal_max = -INFINITY};
+    memset(s->arc_peaks, 0, sizeof s->arc_peaks);
     zp_status st = run(m, s, in, r);
     clock_gettime(CLOCK_MONOTONIC, &t1);
     r->wall_s = (t1.tv_sec - t0.tv_sec) + 1e-9 * (t1.tv_nsec - t0.tv_nsec);
@@ -517,6 +530,11 @@ const zp_row *zp_sim_samples(const zp_sim *s, int *n) {
 const zp_crossing *zp_sim_crossings(const zp_sim *s, int *n) {
     *n = s->ncross;
     return s->cross;
+}
+
+const zp_arc_peaks *zp_sim_arc_peaks(const zp_sim *s, int *n) {
+    *n = s->m->narc;
+    return s->arc_peaks;
 }
 
 static const char *const outcome_names[ZP_OUTCOME_COUNT] = {"finished", "died", "stalled"};

@@ -62,6 +62,13 @@ typedef struct zp_load_peaks {
     double acc_g[ZP_MAX_LINKS];    /* g, largest felt acceleration |a - g| of link i's centre */
 } zp_load_peaks;
 
+/* Extremes of the loads on one rounded kink's arc (x in [x1, x2]), sampled like the peaks. */
+typedef struct zp_arc_peaks {
+    int visited;                   /* 1 once a load was sampled on the arc */
+    double normal_min, normal_max; /* N */
+    double acc_g;                  /* g, largest felt acceleration of any link's centre */
+} zp_arc_peaks;
+
 typedef struct zp_result {
     zp_outcome outcome;
     zp_stall stall;
@@ -100,6 +107,8 @@ const zp_row *zp_sim_samples(const zp_sim *s, int *n);
 /* Kink crossings of the last run, in time order (at most ZP_MAX_CROSSINGS); valid until the
    next run. */
 const zp_crossing *zp_sim_crossings(const zp_sim *s, int *n);
+/* Load peaks of the last run on each arc of a model with rounded kinks (zp_model.narc). */
+const zp_arc_peaks *zp_sim_arc_peaks(const zp_sim *s, int *n);
 
 const char *zp_sim_outcome_name(zp_outcome o);
 const char *zp_sim_stall_name(zp_stall s);
