@@ -315,7 +315,28 @@ static void check_radius_does_not_fit(void) {
     zp_model_free(m);
 }
 
+/* the same from the command line: exit 2, file:line:key naming the kink, nothing written */
+static void check_radius_cli(void) {
+    char dir[] = "/tmp/zp_physics_XXXXXX", path[256], cmd[1024], out[4096];
+    CHECK(mkdtemp(dir) != NULL);
+    snprintf(path, sizeof path, "%s/round.ini", dir);
+    FILE *f = fopen(path, "w");
+    fputs("[course]\nx_start = 0\nsection = 60 : 0.5*x\nsection = 100 : 30 - 0.1*(x - 60)\n"
+          "[trolley]\nmass = 30\n[body]\nlengths = 5\nmasses = 15\n"
+          "[physics]\nrolling = 0.01\nkink_radius = 400\n",
+          f);
+    fclose(f);
+    snprintf(cmd, sizeof cmd, "cd %s && '%s' simulate round.ini 2>&1", dir, ZP_EXE);
+    CHECK(tu_sh(cmd, out, sizeof out) == 2);
+    CHECK(strstr(out, "round.ini:12: [physics] kink_radius:") && strstr(out, "x = 60"));
+    snprintf(cmd, sizeof cmd, "%s/out", dir);
+    CHECK(!tu_exists(cmd));
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+    CHECK(system(cmd) == 0);
+}
+
 int main(void) {
+    check_radius_cli();
     check_radius_does_not_fit();
     check_random_states();
     for (int f = 0; f < 2; f++) {
