@@ -2,6 +2,11 @@
    number lists, and the usage text with the method and formulation registries. */
 #include "cli.h"
 
+#include <errno.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
 #include "formulation.h"
 #include "method.h"
 
@@ -9,15 +14,129 @@ int zp_cli_parse_list(const char *text, double *out, int max, char *why, size_t 
     return zp_scene_parse_list(text, out, max, why, whylen);
 }
 
-int zp_cli_scene_arg(const char *cmd, const char *arg, const char **scene) {
+void zp_cli_error(const char *cmd, const char *fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    int n = vsnprintf(NULL, 0, fmt, ap);
+    va_end(ap);
+    char *text = n >= 0 ? malloc((size_t)n + 1) : NULL;
+    fprintf(stderr, "zipopt%s%s: ", *cmd ? " " : "", cmd);
+    if (text) {
+        va_start(ap, fmt);
+        vsnprintf(text, (size_t)n + 1, fmt, ap);
+        va_end(ap);
+        zp_diag_put_escaped(stderr, text);
+    } else {
+        fputs(fmt, stderr);
+    }
+    fputc('\n', stderr);
+    free(text);
+}
+
+void zp_cli_opts_begin(void) {
+    optind = 0; /* glibc: 0 starts a fresh scan */
+    opterr = 0; /* the messages are ours: one per mistake */
+}
+
+static const struct option *opt_by_val(const struct option *opts, int val) {
+    for (; opts->name; opts++) {
+        if (opts->val == val) {
+            return opts;
+        }
+    }
+    return NULL;
+}
+
+/* `--name` or `--name=value` that getopt_long refused: unknown or ambiguous */
+static void bad_long(const char *cmd, const char *arg, const struct option *opts) {
+    size_t len = strcspn(arg + 2, "=");
+    char name[64];
+    snprintf(name, sizeof name, "%.*s", (int)(len < 63 ? len : 63), arg + 2);
+    char list[512] = "";
+    int nprefix = 0, n = 0;
+    const char *names[64];
+    for (const struct option *o = opts; o->name && n < 64; o++) {
+        names[n++] = o->name;
+        if (!strncmp(o->name, name, len)) {
+            size_t used = strlen(list);
+            snprintf(list + used, sizeof list - used, "%s--%s", nprefix++ ? ", " : "", o->name);
+        }
+    }
+    if (nprefix > 1) {
+        zp_cli_error(cmd, "option '--%s' is ambiguous: %s; see zipopt%s%s --help", name, list,
+                     *cmd ? " " : "", cmd);
+        return;
+    }
+    int near = zp_diag_nearest(name, names, n);
+    if (near >= 0) {
+        zp_cli_error(cmd, "unknown option '--%s'; did you mean '--%s'? (see zipopt%s%s --help)",
+                     name, names[near], *cmd ? " " : "", cmd);
+    } else {
+        zp_cli_error(cmd, "unknown option '--%s'; see zipopt%s%s --help", name, *cmd ? " " : "",
+                     cmd);
+    }
+}
+
+int zp_cli_opts_next(const char *cmd, int argc, char **argv, const struct option *opts) {
+    int c = getopt_long(argc, argv, ":h", opts, NULL);
+    if (c != '?' && c != ':') {
+        return c;
+    }
     const char *sp = *cmd ? " " : "";
-    if (arg[0] == '-' || *scene) {
-        fprintf(stderr, "zipopt%s%s: %s '%s'%s; see zipopt%s%s --help\n", sp, cmd,
-                arg[0] == '-' ? "unknown option or missing value" : "unexpected argument", arg,
-                arg[0] == '-' ? "" : " (one scene file only)", sp, cmd);
+    const char *arg = argv[optind - 1];
+    const struct option *o = opt_by_val(opts, optopt);
+    if (c == ':') {
+        zp_cli_error(cmd, "option '--%s' requires an argument; see zipopt%s%s --help",
+                     o ? o->name : arg + 2, sp, cmd);
+    } else if (o && !strncmp(arg, "--", 2)) {
+        zp_cli_error(cmd, "option '--%s' takes no value; see zipopt%s%s --help", o->name, sp,
+                     cmd);
+    } else if (optopt == 0 && !strncmp(arg, "--", 2)) {
+        bad_long(cmd, arg, opts);
+    } else {
+        zp_cli_error(cmd, "unknown option '-%c'; see zipopt%s%s --help", optopt, sp, cmd);
+    }
+    return '?';
+}
+
+int zp_cli_path_ok(const char *cmd, const char *opt, const char *path) {
+    size_t n = strlen(path);
+    if (n > ZP_CLI_PATH_MAX) {
+        zp_cli_error(cmd, "%s%sthe path is %zu characters long; at most %d are supported", opt,
+                     *opt ? ": " : "", n, ZP_CLI_PATH_MAX);
         return -1;
     }
-    *scene = arg;
+    return 0;
+}
+
+int zp_cli_scene_operand(const char *cmd, int argc, char **argv, const char **scene) {
+    const char *sp = *cmd ? " " : "";
+    if (optind < argc && zp_cli_path_ok(cmd, "the scene file", argv[optind])) {
+        return -1;
+    }
+    if (optind + 1 < argc) {
+        zp_cli_error(cmd, "unexpected argument '%s' (one scene file only); see zipopt%s%s --help",
+                     argv[optind + 1], sp, cmd);
+        return -1;
+    }
+    if (optind < argc) {
+        *scene = argv[optind];
+    }
+    return 0;
+}
+
+int zp_cli_whole(const char *cmd, const char *opt, const char *text, unsigned long lo,
+                 unsigned long hi, unsigned long *out) {
+    char *end;
+    errno = 0;
+    unsigned long v = strtoul(text, &end, 10);
+    int digits = *text && strspn(text, "0123456789") == strlen(text);
+    if (!digits || errno || v < lo || v > hi) {
+        zp_cli_error(cmd, "%s: '%s' is %s; expected a whole number from %lu to %lu", opt, text,
+                     digits ? "out of range" : "not a whole number", lo, hi);
+        return -1;
+    }
+    *out = v;
     return 0;
 }
 
@@ -34,10 +153,10 @@ int zp_cli_apply_forces(const char *cmd, zp_scene *sc, const char *schedule,
         char why[256];
         int n = zp_cli_parse_list(force_text, sc->forces, ZP_MAX_SECTIONS, why, sizeof why);
         if (n != sc->nsec) {
-            fprintf(stderr,
-                    "zipopt %s: --force: %s; expected %d values (one per section); nothing "
-                    "was written\n",
-                    cmd, n < 0 ? why : "wrong number of values", sc->nsec);
+            zp_cli_error(cmd,
+                         "--force: %s; expected %d values (one per section); nothing was "
+                         "written",
+                         n < 0 ? why : "wrong number of values", sc->nsec);
             return -1;
         }
         sc->nforce = n;
@@ -68,8 +187,7 @@ zp_model *zp_cli_load(const char *path, zp_scene *sc) {
     zp_diag_print(&d, stderr);
     if (!m) {
         int n = d.n + d.dropped;
-        fprintf(stderr, "zipopt: %s: %d error%s; nothing was written\n", sc->path, n,
-                n == 1 ? "" : "s");
+        zp_cli_error("", "%s: %d error%s; nothing was written", sc->path, n, n == 1 ? "" : "s");
     }
     return m;
 }

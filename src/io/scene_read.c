@@ -123,38 +123,6 @@ static int find_section(const char *name) {
     return -1;
 }
 
-/* edit distance with adjacent transpositions counting 1, so `lenghts` is 1 from `lengths` */
-static int edit_distance(const char *a, const char *b) {
-    enum { N = 40 };
-    size_t na = strlen(a), nb = strlen(b);
-    if (na >= N || nb >= N) {
-        return N;
-    }
-    int dp[N + 1][N + 1];
-    for (size_t i = 0; i <= na; i++) {
-        for (size_t j = 0; j <= nb; j++) {
-            if (i == 0 || j == 0) {
-                dp[i][j] = (int)(i + j);
-                continue;
-            }
-            int best = dp[i - 1][j - 1] + (a[i - 1] != b[j - 1]);
-            best = dp[i - 1][j] + 1 < best ? dp[i - 1][j] + 1 : best;
-            best = dp[i][j - 1] + 1 < best ? dp[i][j - 1] + 1 : best;
-            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] &&
-                dp[i - 2][j - 2] + 1 < best) {
-                best = dp[i - 2][j - 2] + 1;
-            }
-            dp[i][j] = best;
-        }
-    }
-    return dp[na][nb];
-}
-
-/* close enough to be a typo: about one slip per four letters */
-static int is_near(const char *typed, const char *valid) {
-    return edit_distance(typed, valid) <= 1 + (int)strlen(valid) / 4;
-}
-
 static void trim(char *s) {
     size_t a = 0, n = strlen(s);
     while (isspace((unsigned char)s[a])) {
@@ -167,15 +135,19 @@ static void trim(char *s) {
     s[n - a] = '\0';
 }
 
-/* a finite decimal number taking the whole text: no hex, inf, nan or trailing junk */
+/* a finite decimal number taking the whole text: no hex, inf, nan or trailing junk; -1 if it
+   is not one, -2 if it is beyond the largest double (1e400) */
 static int parse_number(const char *text, double *out) {
     if (!*text || strspn(text, "0123456789+-.eE") != strlen(text)) {
         return -1;
     }
     char *end;
     double v = strtod(text, &end);
-    if (*end || !isfinite(v)) {
+    if (*end) {
         return -1;
+    }
+    if (!isfinite(v)) {
+        return -2;
     }
     *out = v;
     return 0;
@@ -203,8 +175,10 @@ static int parse_items(const char *text, double *out, int max, char *why, size_t
             }
             return -1;
         }
-        if (parse_number(buf, &v)) {
-            snprintf(why, whylen, "item %d `%s` is not a number", n + 1, buf);
+        int bad_number = parse_number(buf, &v);
+        if (bad_number) {
+            snprintf(why, whylen, "item %d `%s` is %s", n + 1, buf,
+                     bad_number == -2 ? "out of range (beyond 1.8e308)" : "not a number");
             return -1;
         }
         if (n < max) {
@@ -288,7 +262,7 @@ static void unknown_section(parse_ctx *c, const char *name) {
         return;
     }
     for (int s = 0; s < S_COUNT; s++) {
-        if (is_near(name, sec_names[s])) {
+        if (zp_diag_is_near(name, sec_names[s])) {
             bad(c, c->line, NULL, NULL, "unknown section [%s]; did you mean [%s]?", name,
                 sec_names[s]);
             return;
@@ -316,8 +290,8 @@ static void unknown_key(parse_ctx *c, int s, const char *name) {
     }
     int best = -1, best_d = 0;
     for (int k = 0; k < K_COUNT; k++) {
-        if (keys[k].sec == s && is_near(name, keys[k].name)) {
-            int dk = edit_distance(name, keys[k].name);
+        if (keys[k].sec == s && zp_diag_is_near(name, keys[k].name)) {
+            int dk = zp_diag_edit_distance(name, keys[k].name);
             if (best < 0 || dk < best_d) {
                 best = k;
                 best_d = dk;
@@ -480,8 +454,12 @@ static int get_number(parse_ctx *c, int k, range r, double *out) {
     }
     double v;
     char what[LINE_CAP + 64];
-    if (parse_number(c->val[k], &v)) {
-        snprintf(what, sizeof what, c->val[k][0] ? "`%s` is not a number" : "no value%s",
+    int bad_number = parse_number(c->val[k], &v);
+    if (bad_number) {
+        snprintf(what, sizeof what,
+                 !c->val[k][0]      ? "no value%s"
+                 : bad_number == -2 ? "`%s` is out of range (beyond 1.8e308)"
+                                    : "`%s` is not a number",
                  c->val[k]);
         bad_key(c, k, what);
         return -1;
