@@ -62,6 +62,7 @@ static const struct option options[] = {
     {NULL, 0, NULL, 0},
 };
 
+/* 1: --help was shown; -1: a mistake (reported) */
 static int parse_args(int argc, char **argv, land_args *a) {
     memset(a, 0, sizeof *a);
     zp_cli_opts_begin();
@@ -69,7 +70,7 @@ static int parse_args(int argc, char **argv, land_args *a) {
         switch (c) {
         case 'h':
             usage(stdout);
-            exit(ZP_EXIT_OK);
+            return 1;
         case O_FORCE_RANGE:
             a->range1_text = optarg;
             break;
@@ -347,8 +348,9 @@ static void print_json(const zp_scene *sc, const range *r, const zp_landscape_po
 
 int zp_cmd_landscape(int argc, char **argv) {
     land_args a;
-    if (parse_args(argc, argv, &a)) {
-        return ZP_EXIT_USAGE;
+    int pa = parse_args(argc, argv, &a);
+    if (pa) {
+        return pa > 0 ? ZP_EXIT_OK : ZP_EXIT_USAGE;
     }
     zp_scene sc;
     zp_model *m = zp_cli_load(a.scene, &sc);

@@ -69,6 +69,7 @@ static const struct option options[] = {
     {NULL, 0, NULL, 0},
 };
 
+/* 1: --help was shown; -1: a mistake (reported) */
 static int parse_args(int argc, char **argv, sim_args *a) {
     memset(a, 0, sizeof *a);
     zp_cli_opts_begin();
@@ -76,7 +77,7 @@ static int parse_args(int argc, char **argv, sim_args *a) {
         switch (c) {
         case 'h':
             usage(stdout);
-            exit(ZP_EXIT_OK);
+            return 1;
         case O_JSON: a->json = 1; break;
         case O_FORCE: a->force_text = optarg; break;
         case O_SCHEDULE: a->schedule = optarg; break;
@@ -252,8 +253,9 @@ static int draw(const char *dir, const zp_model *m, zp_sim *s, const zp_result *
 
 int zp_cmd_simulate(int argc, char **argv) {
     sim_args a;
-    if (parse_args(argc, argv, &a)) {
-        return ZP_EXIT_USAGE;
+    int pa = parse_args(argc, argv, &a);
+    if (pa) {
+        return pa > 0 ? ZP_EXIT_OK : ZP_EXIT_USAGE;
     }
     zp_scene sc;
     zp_model *m = zp_cli_load(a.scene, &sc);

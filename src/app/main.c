@@ -33,11 +33,31 @@ static int unknown_command(const char *word) {
     return 1;
 }
 
+/* the overview, then every command's own --help: the text zipopt(1) is made from */
+static void usage_all(void) {
+    zp_cli_usage(stdout);
+    char prog[] = "zipopt", help[] = "--help";
+    char *args[] = {prog, help, NULL};
+    printf("\nThe search, zipopt [SCENE.ini]:\n\n");
+    zp_cmd_search(2, args);
+    for (int i = 0; i < NCOMMAND; i++) {
+        char name[16];
+        snprintf(name, sizeof name, "%s", commands[i].name);
+        args[0] = name;
+        printf("\nzipopt %s:\n\n", name);
+        commands[i].run(2, args);
+    }
+}
+
 int main(int argc, char **argv) {
     /* GSL's default handler aborts; every GSL call's status is checked instead */
     gsl_set_error_handler_off();
     if (argc >= 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
         zp_cli_usage(stdout);
+        return ZP_EXIT_OK;
+    }
+    if (argc >= 2 && !strcmp(argv[1], "--help-all")) {
+        usage_all();
         return ZP_EXIT_OK;
     }
     if (argc >= 2 && !strcmp(argv[1], "--version")) {
