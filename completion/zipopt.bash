@@ -1,5 +1,6 @@
 # bash completion for zipopt: the commands, each command's options, scene files (*.ini),
 # folders for --out and the search strategies for --algorithm (asked of zipopt itself).
+
 # appends the lines read (names with spaces stay whole) to COMPREPLY
 _zipopt_add() {
     local line
