@@ -198,8 +198,8 @@ static void expect(const char *args, int status, const char *want) {
     CHECK(st == status);
     CHECK(said);
     if (st != status || !said) {
-        fprintf(stderr, "  zipopt %s: status %d (wanted %d), wanted `%s` in stderr:\n%s", args,
-                st, status, want ? want : "", err);
+        fprintf(stderr, "  zipopt %s: status %d (wanted %d), wanted `%s` in stderr:\n%s", args, st,
+                status, want ? want : "", err);
     }
 }
 
@@ -241,8 +241,10 @@ static void test_options(const char *scene) {
 static void test_limits(const char *scene) {
     char args[8192], dir[4096];
     snprintf(dir, sizeof dir, "%s/lim", tmp);
-    snprintf(args, sizeof args, "--seed 99999999999999999999999 --max-evals 1 --no-plot --out "
-             "'%s' '%s'", dir, scene);
+    snprintf(args, sizeof args,
+             "--seed 99999999999999999999999 --max-evals 1 --no-plot --out "
+             "'%s' '%s'",
+             dir, scene);
     expect(args, 2, "--seed: '99999999999999999999999' is out of range");
     CHECK(untouched(dir));
     snprintf(args, sizeof args, "simulate '%s' --force 1e400 --out '%s'", scene, dir);
@@ -260,7 +262,8 @@ static void test_limits(const char *scene) {
     /* a 1010-character output folder: refused, not truncated into another folder */
     size_t len = strlen(dir);
     while (len < 1010) {
-        len += (size_t)snprintf(dir + len, sizeof dir - len, "/%s", "dddddddddddddddddddddddddddddd");
+        len +=
+            (size_t)snprintf(dir + len, sizeof dir - len, "/%s", "dddddddddddddddddddddddddddddd");
     }
     snprintf(args, sizeof args, "simulate '%s' --out '%s'", scene, dir);
     expect(args, 2, "at most 900");
@@ -269,10 +272,11 @@ static void test_limits(const char *scene) {
     CHECK(untouched(lim));
 
     /* frames of run.gif: capped before anything is written */
-    snprintf(args, sizeof args, "simulate '%s' --force 50 --animate --speedup 1e-9 --out '%s'", scene, lim);
-    expect(args, 2, "at most 20000");
-    snprintf(args, sizeof args, "simulate '%s' --force 50 --animate --speedup 0.001 --fps 100 --out '%s'",
+    snprintf(args, sizeof args, "simulate '%s' --force 50 --animate --speedup 1e-9 --out '%s'",
              scene, lim);
+    expect(args, 2, "at most 20000");
+    snprintf(args, sizeof args,
+             "simulate '%s' --force 50 --animate --speedup 0.001 --fps 100 --out '%s'", scene, lim);
     expect(args, 2, "at most 20000");
     CHECK(untouched(lim));
 }

@@ -89,8 +89,7 @@ int zp_cli_opts_next(const char *cmd, int argc, char **argv, const struct option
         zp_cli_error(cmd, "option '--%s' requires an argument; see zipopt%s%s --help",
                      o ? o->name : arg + 2, sp, cmd);
     } else if (o && !strncmp(arg, "--", 2)) {
-        zp_cli_error(cmd, "option '--%s' takes no value; see zipopt%s%s --help", o->name, sp,
-                     cmd);
+        zp_cli_error(cmd, "option '--%s' takes no value; see zipopt%s%s --help", o->name, sp, cmd);
     } else if (optopt == 0 && !strncmp(arg, "--", 2)) {
         bad_long(cmd, arg, opts);
     } else {

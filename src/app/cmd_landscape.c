@@ -318,8 +318,8 @@ static void print_json(const zp_scene *sc, const range *r, const zp_landscape_po
                        int sj, int n2, double wall, const char *dir, int figures) {
     printf("{\"scene\": ");
     zp_out_json_string(stdout, sc->name);
-    printf(", \"force_from\": %.17g, \"force_to\": %.17g, \"points\": %d, \"windows\": [",
-           r->a, r->b, r->n);
+    printf(", \"force_from\": %.17g, \"force_to\": %.17g, \"points\": %d, \"windows\": [", r->a,
+           r->b, r->n);
     for (int k = 0, nwin = 0; k < r->n; k++) {
         if (window_starts(p, k)) {
             printf("%s[%.17g, ", nwin++ ? ", " : "", at(r, k));
@@ -501,9 +501,10 @@ int zp_cmd_landscape(int argc, char **argv) {
     fprintf(say, "figures: landscape.png%s\n", n2 ? ", landscape_slice.png" : "");
     if (n2 && (sc.forces[si] < rx.a || sc.forces[si] > rx.b || sc.forces[sj] < ry.a ||
                sc.forces[sj] > ry.b)) {
-        fprintf(say, "note: the base schedule (F%d = %g, F%d = %g N) lies outside the slice and is not "
-               "marked\n",
-               si + 1, sc.forces[si], sj + 1, sc.forces[sj]);
+        fprintf(say,
+                "note: the base schedule (F%d = %g, F%d = %g N) lies outside the slice and is not "
+                "marked\n",
+                si + 1, sc.forces[si], sj + 1, sc.forces[sj]);
     }
     status = ZP_EXIT_OK;
 done:

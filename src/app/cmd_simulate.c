@@ -51,8 +51,19 @@ typedef struct sim_args {
     const char *frames_text, *fps_text, *size_text, *speedup_text;
 } sim_args;
 
-enum { O_JSON = ZP_OPT_FIRST, O_FORCE, O_SCHEDULE, O_SAMPLES, O_OUT, O_PLOT, O_ANIMATE,
-       O_FRAMES, O_FPS, O_SIZE, O_SPEEDUP };
+enum {
+    O_JSON = ZP_OPT_FIRST,
+    O_FORCE,
+    O_SCHEDULE,
+    O_SAMPLES,
+    O_OUT,
+    O_PLOT,
+    O_ANIMATE,
+    O_FRAMES,
+    O_FPS,
+    O_SIZE,
+    O_SPEEDUP
+};
 static const struct option options[] = {
     {"help", no_argument, NULL, 'h'},
     {"json", no_argument, NULL, O_JSON},
@@ -78,18 +89,42 @@ static int parse_args(int argc, char **argv, sim_args *a) {
         case 'h':
             usage(stdout);
             return 1;
-        case O_JSON: a->json = 1; break;
-        case O_FORCE: a->force_text = optarg; break;
-        case O_SCHEDULE: a->schedule = optarg; break;
-        case O_SAMPLES: a->sample_text = optarg; break;
-        case O_OUT: a->out = optarg; break;
-        case O_PLOT: a->plot = 1; break;
-        case O_ANIMATE: a->plot = a->animate = 1; break;
-        case O_FRAMES: a->plot = 1; a->frames_text = optarg; break;
-        case O_FPS: a->fps_text = optarg; break;
-        case O_SIZE: a->size_text = optarg; break;
-        case O_SPEEDUP: a->speedup_text = optarg; break;
-        default: return -1;
+        case O_JSON:
+            a->json = 1;
+            break;
+        case O_FORCE:
+            a->force_text = optarg;
+            break;
+        case O_SCHEDULE:
+            a->schedule = optarg;
+            break;
+        case O_SAMPLES:
+            a->sample_text = optarg;
+            break;
+        case O_OUT:
+            a->out = optarg;
+            break;
+        case O_PLOT:
+            a->plot = 1;
+            break;
+        case O_ANIMATE:
+            a->plot = a->animate = 1;
+            break;
+        case O_FRAMES:
+            a->plot = 1;
+            a->frames_text = optarg;
+            break;
+        case O_FPS:
+            a->fps_text = optarg;
+            break;
+        case O_SIZE:
+            a->size_text = optarg;
+            break;
+        case O_SPEEDUP:
+            a->speedup_text = optarg;
+            break;
+        default:
+            return -1;
         }
     }
     if (zp_cli_scene_operand("simulate", argc, argv, &a->scene) ||
@@ -195,8 +230,8 @@ static int plot_opts(const sim_args *a, const zp_model *m, const zp_scene *sc, z
         snprintf(expect, sizeof expect, "one number above 0 and at most 1000");
     }
     if (opt) {
-        zp_cli_error("simulate", "%s: %s%s%s; nothing was written", opt,
-                     *why ? why : "bad value", *why ? "; expected " : ", expected ", expect);
+        zp_cli_error("simulate", "%s: %s%s%s; nothing was written", opt, *why ? why : "bad value",
+                     *why ? "; expected " : ", expected ", expect);
         return -1;
     }
     return 0;

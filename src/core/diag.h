@@ -41,5 +41,4 @@ int zp_diag_is_near(const char *typed, const char *valid);
    for "did you mean" hints. */
 int zp_diag_nearest(const char *typed, const char *const *names, int n);
 
-
 #endif
