@@ -231,6 +231,8 @@ static void test_options(const char *scene) {
     CHECK(err_lines() == 1);
     snprintf(args, sizeof args, "check '%s' --json=yes", scene);
     expect(args, 2, "option '--json' takes no value");
+    snprintf(args, sizeof args, "--algorithm scan-cobila '%s'", scene);
+    expect(args, 2, "did you mean 'scan-cobyla'?");
     snprintf(args, sizeof args, "simulat '%s'", scene);
     expect(args, 2, "unknown command 'simulat'; did you mean 'simulate'?");
     CHECK(err_lines() == 1);

@@ -108,7 +108,15 @@ static int parse_args(int argc, char **argv, search_args *a) {
         return -1;
     }
     if (a->algo && zp_search_algo_find(a->algo) < 0) {
-        zp_cli_error("", "--algorithm '%s' is unknown; see zipopt --help for the list", a->algo);
+        const char *names[64];
+        int n = 0;
+        for (; n < zp_search_algo_count() && n < 64; n++) {
+            names[n] = zp_search_algo_get(n)->name;
+        }
+        int near = zp_diag_nearest(a->algo, names, n);
+        zp_cli_error("", "--algorithm '%s' is unknown%s%s%s (the list: zipopt SCENE --help)",
+                     a->algo, near >= 0 ? "; did you mean '" : "", near >= 0 ? names[near] : "",
+                     near >= 0 ? "'?" : "");
         return -1;
     }
     return 0;
