@@ -1,5 +1,5 @@
-/* What the commands share (CLI.md): loading a scene into a model with every message on stderr,
-   number lists, and the usage text with the method and formulation registries. */
+/* What the commands share (CLI.md): options by getopt_long with one message per mistake,
+   loading a scene into a model with every message on stderr, number lists, the usage text. */
 #include "cli.h"
 
 #include <errno.h>
@@ -126,9 +126,8 @@ int zp_cli_scene_operand(const char *cmd, int argc, char **argv, const char **sc
 
 int zp_cli_whole(const char *cmd, const char *opt, const char *text, unsigned long lo,
                  unsigned long hi, unsigned long *out) {
-    char *end;
     errno = 0;
-    unsigned long v = strtoul(text, &end, 10);
+    unsigned long v = strtoul(text, NULL, 10);
     int digits = *text && strspn(text, "0123456789") == strlen(text);
     if (!digits || errno || v < lo || v > hi) {
         zp_cli_error(cmd, "%s: '%s' is %s; expected a whole number from %lu to %lu", opt, text,

@@ -1,5 +1,5 @@
-/* Command-line helpers shared by the commands: scene loading with the usual messages,
-   number lists, usage text. Commands return the process exit status (0, 1, 2). */
+/* Command-line helpers shared by the commands: option parsing, scene loading with the usual
+   messages, number lists, usage text. Commands return the process exit status (0, 1, 2). */
 #ifndef ZP_CLI_H
 #define ZP_CLI_H
 
