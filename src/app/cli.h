@@ -1,12 +1,12 @@
-/* Command-line helpers shared by the commands: option parsing, scene loading with the usual
-   messages, number lists, usage text. Commands return the process exit status (0, 1, 2). */
+/* Command-line helpers shared by the commands: option parsing, the scene operand, number
+   lists, usage text (loading is setup.h). Commands return the process exit status (0, 1, 2). */
 #ifndef ZP_CLI_H
 #define ZP_CLI_H
 
 #include <getopt.h>
+#include <stdio.h>
 
-#include "model.h"
-#include "scene_read.h"
+#include "scene.h"
 
 enum { ZP_EXIT_OK = 0, ZP_EXIT_FAIL = 1, ZP_EXIT_USAGE = 2 };
 
@@ -40,15 +40,8 @@ int zp_cli_path_ok(const char *cmd, const char *opt, const char *path);
    of range, or not a whole number). */
 int zp_cli_whole(const char *cmd, const char *opt, const char *text, unsigned long lo,
                  unsigned long hi, unsigned long *out);
-/* Lays a schedule file (may be NULL), then a --force list (may be NULL), over sc's forces,
-   reporting problems for `zipopt <cmd>` (with "nothing was written"); 0 or -1. */
-int zp_cli_apply_forces(const char *cmd, zp_scene *sc, const char *schedule,
-                        const char *force_text);
 /* The output folder: --out DIR if given, else out/<scene name> (CLI.md "Files"). */
 void zp_cli_out_dir(const char *out, const zp_scene *sc, char *dir, size_t cap);
-/* Loads path (NULL: the built-in seed) and builds the model; prints every diagnostic to
-   stderr and returns NULL on bad input. */
-zp_model *zp_cli_load(const char *path, zp_scene *sc);
 /* The registries' names and docs, for --help. */
 void zp_cli_print_registries(FILE *f);
 void zp_cli_usage(FILE *f);

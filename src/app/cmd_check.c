@@ -8,6 +8,7 @@
 #include "formulation.h"
 #include "method.h"
 #include "out_json.h"
+#include "setup.h"
 #include "sim.h"
 
 static void usage(FILE *f) {
@@ -65,7 +66,9 @@ static void print_course(const zp_model *m) {
     }
 }
 
-static void print_scene(const zp_scene *sc, const zp_model *m) {
+static void print_scene(const zp_setup *st) {
+    const zp_scene *sc = &st->sc;
+    const zp_model *m = st->m;
     printf("scene: %s (%s)\n", sc->name, sc->path);
     printf("gravity: %g m/s^2\n", m->g);
     print_course(m);
@@ -76,9 +79,11 @@ static void print_scene(const zp_scene *sc, const zp_model *m) {
         printf("  link %d: length %g m, mass %g kg, inertia %.6g kg m^2, damping %g N m s/rad\n",
                i + 1, m->len[i], m->mass[i], m->inertia[i], m->damp[i]);
     }
-    printf("drive: %s; forces (N):", zp_model_drive_name(m->drive));
-    for (int k = 0; k < sc->nsec; k++) {
-        printf("%s %g", k ? "," : "", sc->forces[k]);
+    printf("drive: %s; forces:", zp_drive_dir_name(m->drive));
+    for (int k = 0; k < m->nsec; k++) {
+        char label[64];
+        zp_schedule_label(&st->sched, k, label, sizeof label);
+        printf("%s %s", k ? "," : "", label);
     }
     printf("%s; search bounds [%g, %g] N\n", sc->nforce ? "" : " (none given)", sc->force_min,
            sc->force_max);
@@ -118,7 +123,9 @@ static void json_str(const char *key, const char *v, const char *sep) {
 }
 
 /* --json: the scene as read (README "check --json"), one object on stdout */
-static void print_json(const zp_scene *sc, const zp_model *m) {
+static void print_json(const zp_setup *st) {
+    const zp_scene *sc = &st->sc;
+    const zp_model *m = st->m;
     printf("{");
     json_str("scene", sc->name, ", ");
     json_str("path", sc->path, ", ");
@@ -148,7 +155,7 @@ static void print_json(const zp_scene *sc, const zp_model *m) {
     json_list("masses", m->mass, m->nlink, ", ");
     json_list("inertias", m->inertia, m->nlink, ", ");
     json_list("damping", m->damp, m->nlink, ", ");
-    json_str("drive", zp_model_drive_name(m->drive), ", ");
+    json_str("drive", zp_drive_dir_name(m->drive), ", ");
     json_list("forces", sc->forces, sc->nforce ? sc->nsec : 0, ", ");
     json_num("force_min", sc->force_min, ", ");
     json_num("force_max", sc->force_max, ", ");
@@ -183,25 +190,17 @@ int zp_cmd_check(int argc, char **argv) {
         zp_cli_error("check", "a scene file is required; see zipopt check --help");
         return ZP_EXIT_USAGE;
     }
-    zp_scene sc;
-    zp_model *m = zp_cli_load(path, &sc);
-    if (!m) {
-        return ZP_EXIT_USAGE;
-    }
-    /* the solver's names are judged against the registries, as `simulate` does */
-    zp_diag d;
-    zp_diag_init(&d);
-    zp_sim_opts o;
-    if (zp_sim_opts_from_scene(&sc, &o, &d) != ZP_OK) {
-        zp_diag_print(&d, stderr);
-        zp_model_free(m);
+    /* judged exactly as every command judges it, registry names included */
+    static zp_setup st; /* large: kept off the stack */
+    zp_overrides none = ZP_OVERRIDES_NONE;
+    if (zp_setup_load("check", path, &none, &st)) {
         return ZP_EXIT_USAGE;
     }
     if (json) {
-        print_json(&sc, m);
+        print_json(&st);
     } else {
-        print_scene(&sc, m);
+        print_scene(&st);
     }
-    zp_model_free(m);
+    zp_setup_free(&st);
     return ZP_EXIT_OK;
 }
