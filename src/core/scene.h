@@ -12,6 +12,23 @@
 #define ZP_EXPR_MAX 256
 #define ZP_NAME_MAX 128
 
+/* Bounds the reader holds [solver] to (CONFIG.md), each also as text for its messages.
+   Tolerances: tighter than 1e-14 (rtol) is below round-off for every method; looser than
+   1e-2 answers nothing worth the name; atol in m, m/s, rad. t_max: CVODE sizes its first step
+   from it (a first step of ~1e50 s fails at t = 0); a ride of 11 days is past any course.
+   Rows: t_max / output_dt + 1 trajectory rows at most, refused before running. */
+#define ZP_RTOL_MIN 1e-14
+#define ZP_RTOL_MAX 1e-2
+#define ZP_ATOL_MIN 1e-16
+#define ZP_ATOL_MAX 1.0
+#define ZP_T_MAX_MAX 1e6
+#define ZP_MAX_ROWS 10000000
+#define ZP_RTOL_MIN_S "1e-14"
+#define ZP_RTOL_MAX_S "1e-2"
+#define ZP_ATOL_MIN_S "1e-16"
+#define ZP_ATOL_MAX_S "1"
+#define ZP_T_MAX_MAX_S "1e6"
+
 typedef struct zp_scene {
     char path[1024];           /* the file this came from, for messages */
     char name[ZP_NAME_MAX];    /* [scene] name, default: the file's stem */
