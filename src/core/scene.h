@@ -16,13 +16,14 @@
    Tolerances: tighter than 1e-14 (rtol) is below round-off for every method; looser than
    1e-2 answers nothing worth the name; atol in m, m/s, rad. t_max: CVODE sizes its first step
    from it (a first step of ~1e50 s fails at t = 0); a ride of 11 days is past any course.
-   Rows: t_max / output_dt + 1 trajectory rows at most, refused before running. */
+   Rows: t_max / output_dt + 1 trajectory rows at most, refused before running (each row is
+   held in memory, about 0.5 kB, and written to trajectory.csv: 1e6 rows is 0.5 GB). */
 #define ZP_RTOL_MIN 1e-14
 #define ZP_RTOL_MAX 1e-2
 #define ZP_ATOL_MIN 1e-16
 #define ZP_ATOL_MAX 1.0
 #define ZP_T_MAX_MAX 1e6
-#define ZP_MAX_ROWS 10000000
+#define ZP_MAX_ROWS 1000000
 #define ZP_RTOL_MIN_S "1e-14"
 #define ZP_RTOL_MAX_S "1e-2"
 #define ZP_ATOL_MIN_S "1e-16"

@@ -54,7 +54,7 @@ static int value_of(const char *name, size_t n, int has_prev, const double *y0, 
         }
         if (!y0) {
             snprintf(why, whylen, "`y0` is unknown: the previous section has no finite end height");
-            return -1;
+            return -2;
         }
         v = *y0;
     } else {
@@ -80,7 +80,7 @@ int zp_scene_expr_subst(const char *in, int has_prev, const double *y0, char *ou
             r = value_of(p, (size_t)(q - p), has_prev, y0, num, sizeof num, why, whylen);
         }
         if (r < 0) {
-            return -1;
+            return r;
         }
         if (r ? put(out, cap, &len, num, strlen(num)) : put(out, cap, &len, p, (size_t)(q - p))) {
             snprintf(why, whylen,

@@ -157,7 +157,7 @@ void zp_scene_read_physics(parse_ctx *c, zp_scene *sc);
 
 /* in with `pi`, `e` and `y0` (*y0; y0 NULL: unknown, as after a bad previous section) written
    as numbers into out (cap bytes); 0, or -1 with why: y0 where no section precedes (has_prev 0),
-   or the result too long */
+   or the result too long; -2 with why: y0 where it is unknown */
 int zp_scene_expr_subst(const char *in, int has_prev, const double *y0, char *out, size_t cap,
                         char *why, size_t whylen);
 /* f(x) of a (substituted) expression at x: 0, or -1 when it does not compile or is not finite */

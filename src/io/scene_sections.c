@@ -23,9 +23,10 @@ void zp_scene_read_scene(parse_ctx *c, zp_scene *sc) {
 }
 
 /* one `section = x_end : f(x)` line (k, 0-based); prev is the x it must pass (prev_ok: known),
-   y0 the previous section's end height (NULL: none known). 1 when x_end is known. */
+   y0 the previous section's end height (NULL: none known; prev_bad: that section is in error).
+   1 when x_end is known. */
 static int read_section(parse_ctx *c, zp_scene *sc, int k, int prev_ok, double prev,
-                        const double *y0) {
+                        const double *y0, int prev_bad) {
     int line = c->sect_line[k];
     char *text = c->sect_val[k];
     sc->sec_line[k] = line;
@@ -51,9 +52,15 @@ static int read_section(parse_ctx *c, zp_scene *sc, int k, int prev_ok, double p
                      sc->x_end[k], prev);
     }
     char why[ZP_DIAG_TEXT / 2];
-    if (zp_scene_expr_subst(expr, k > 0, y0, sc->expr[k], ZP_EXPR_MAX, why, sizeof why) ||
-        zp_course_check(sc->expr[k], why, sizeof why)) {
+    int st = zp_scene_expr_subst(expr, k > 0, y0, sc->expr[k], ZP_EXPR_MAX, why, sizeof why);
+    if (st == 0 && zp_course_check(sc->expr[k], why, sizeof why)) {
+        st = -1;
+    }
+    /* y0 unknown after a previous section in error: that error is already reported */
+    if (st == -1 || (st == -2 && !prev_bad)) {
         zp_scene_bad(c, line, "course", "section", "f(x) = `%s`: %s", expr, why);
+    }
+    if (st) {
         sc->expr[k][0] = '\0';
     }
     return ok;
@@ -75,7 +82,8 @@ void zp_scene_read_course(parse_ctx *c, zp_scene *sc) {
         double y0;
         int have_y0 = k > 0 && prev_ok && sc->expr[k - 1][0] &&
                       zp_scene_expr_end(sc->expr[k - 1], prev, &y0) == 0;
-        prev_ok = read_section(c, sc, k, prev_ok, prev, have_y0 ? &y0 : NULL);
+        int prev_bad = k > 0 && (!prev_ok || !sc->expr[k - 1][0]);
+        prev_ok = read_section(c, sc, k, prev_ok, prev, have_y0 ? &y0 : NULL, prev_bad);
         prev = sc->x_end[k];
     }
 }
