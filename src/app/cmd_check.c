@@ -7,16 +7,18 @@
 #include "cli.h"
 #include "formulation.h"
 #include "method.h"
+#include "scene_read.h"
 #include "sim.h"
 
 static void usage(FILE *f) {
     fputs("usage: zipopt check SCENE.ini\n"
           "Validates a scene file against every rule of CONFIG.md (all problems are listed on\n"
           "stderr as FILE:LINE: [section] key: what; expected, with exit status 2) and prints\n"
-          "the scene: each course section with f(x), f'(x) and f''(x); each boundary between\n"
-          "sections with its height, slope jump and whether it is a kink; the trolley and the\n"
-          "body's links (length, mass, inertia, damping); the drive, solver and search\n"
-          "settings. Writes no files.\n",
+          "the scene: each course section with f(x) and f, f', f'' at its ends; each boundary\n"
+          "between sections with its height, slope jump and whether it is a kink; the trolley\n"
+          "and the body's links (length, mass, inertia, damping); the drive, solver and search\n"
+          "settings; every key zipopt added with its value. Warns on stderr when a force lies\n"
+          "outside [min, max]. Writes no files.\n",
           f);
 }
 
@@ -36,8 +38,12 @@ static void print_course(const zp_model *m) {
     for (int k = 0; k < m->nsec; k++) {
         printf("  section %d: x in [%g, %g] m\n", k + 1, m->xb[k], m->xb[k + 1]);
         printf("    f(x)   = %s\n", m->expr[k]);
-        printf("    f'(x)  = %s\n", zp_course_deriv_text(m->course, k, 1));
-        printf("    f''(x) = %s\n", zp_course_deriv_text(m->course, k, 2));
+        /* libmatheval's derivative text is unsimplified: its values at the ends say more */
+        for (int end = 0; end < 2; end++) {
+            zp_track t = zp_course_eval(m->course, k, m->xb[k + end]);
+            printf("    at x = %g: f = %.10g m, f' = %.10g, f'' = %.10g 1/m\n", m->xb[k + end],
+                   t.f, t.fp, t.fpp);
+        }
     }
     if (m->nsec == 1) {
         return;
@@ -80,6 +86,21 @@ static void print_scene(const zp_scene *sc, const zp_model *m) {
            sc->output_dt);
     printf("optimize: margin %g deg, max_evals %ld, seed %lu\n", sc->margin, sc->max_evals,
            sc->seed);
+    printf("added by zipopt (keys the file does not give, with the values taken):\n");
+    zp_scene_print_added(sc, stdout, "  ");
+}
+
+/* forces the search could never pick: legal for `simulate`, but worth a word */
+static void warn_forces(const zp_scene *sc) {
+    for (int k = 0; k < sc->nforce; k++) {
+        if (sc->forces[k] < sc->force_min || sc->forces[k] > sc->force_max) {
+            fprintf(stderr,
+                    "%s:%d: [drive] forces: warning: item %d (%g N) is outside [min, max] = "
+                    "[%g, %g] N, the search's bounds\n",
+                    sc->path, sc->line_forces, k + 1, sc->forces[k], sc->force_min,
+                    sc->force_max);
+        }
+    }
 }
 
 int zp_cmd_check(int argc, char **argv) {
@@ -117,6 +138,7 @@ int zp_cmd_check(int argc, char **argv) {
         return ZP_EXIT_USAGE;
     }
     print_scene(&sc, m);
+    warn_forces(&sc);
     zp_model_free(m);
     return ZP_EXIT_OK;
 }

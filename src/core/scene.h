@@ -92,6 +92,10 @@ typedef struct zp_scene {
     double rolling;                        /* rolling-resistance coefficient mu (default 0) */
     double kink_radius;                    /* m, 0: sharp kinks */
 
+    /* bit k set: the file gave key k of the reader's table (io/scene_read.h), so `check` can
+       show every key zipopt added itself */
+    unsigned long long given;
+
     /* lines of keys that later stages judge (0 if absent), for their messages */
     int line_forces, line_method, line_formulation, line_search_method, line_kink_radius;
 } zp_scene;

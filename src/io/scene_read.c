@@ -104,6 +104,11 @@ static zp_status load_text(const char *text, size_t len, const char *path, zp_sc
     c->d = d;
     zp_scene_parse_text(c, text, len);
     read_sections(c, sc);
+    for (int k = 0; k < K_COUNT; k++) {
+        if (c->key_line[k] || (k == K_SECTION && c->nsect)) {
+            sc->given |= 1ull << k;
+        }
+    }
     int nbad = zp_scene_flush(c);
     free(c);
     return nbad ? ZP_ERR_INPUT : ZP_OK;
