@@ -215,12 +215,13 @@ static int take_line(parse_ctx *c, const char **s, size_t *len) {
     size_t n = nl ? (size_t)(nl - p) : c->len - c->pos;
     c->pos += n + (nl != NULL);
     c->line++;
+    /* reported; the line is read up to it, so the NUL is the only message */
     const char *nul = memchr(p, '\0', n);
     if (nul) {
         zp_scene_bad(c, c->line, NULL, NULL,
                      "a NUL byte at column %zu; expected a text file without NUL bytes",
                      (size_t)(nul - p) + 1);
-        n = 0;
+        n = (size_t)(nul - p);
     }
     if (n > 0 && p[n - 1] == '\r') {
         n--;
