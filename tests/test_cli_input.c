@@ -182,6 +182,26 @@ static void test_configs(void) {
     CHECK_NEAR(inertia, 15.0 * 5 * 5 / 12, 1e-5 * 31.25);
 }
 
+/* `check` shows slopes as numbers (x/5: f' = 0.2, f'' = 0), every key it added with the value
+   taken (CONFIG.md's defaults), and warns on stderr about a force the search could not pick */
+static void test_check_shows(void) {
+    char text[1024], path[1024], args[2048];
+    snprintf(text, sizeof text, "%s[drive]\nforces = 600\n[solver]\natol = 1e-9\n", valid);
+    snprintf(path, sizeof path, "%s/shows.ini", tmp);
+    write_file(path, text);
+    snprintf(args, sizeof args, "check '%s'", path);
+    CHECK(run(args) == 0);
+    CHECK(strstr(out, "at x = 10: f = 2 m, f' = 0.2, f'' = 0 1/m") != NULL);
+    CHECK(strstr(out, "[solver] rtol = 1e-08\n") && strstr(out, "[body] death_angle = 180\n") &&
+          strstr(out, "[drive] max = 500\n") && strstr(out, "[optimize] margin = 10\n") &&
+          strstr(out, "[limits]: none given"));
+    CHECK(!strstr(out, "[solver] atol") && !strstr(out, "[drive] forces =")); /* given */
+    CHECK(strstr(err, "shows.ini:10: [drive] forces: warning: item 1 (600 N) is outside") != NULL);
+    if (!strstr(err, "warning")) {
+        fprintf(stderr, "  stdout:\n%s  stderr:\n%s", out, err);
+    }
+}
+
 int main(void) {
     snprintf(tmp, sizeof tmp, "%s/zp_cli_XXXXXX", getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp");
     if (!mkdtemp(tmp)) {
@@ -190,6 +210,7 @@ int main(void) {
     }
     test_bad_scenes();
     test_configs();
+    test_check_shows();
     char cmd[1100];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp);
     CHECK(system(cmd) == 0);

@@ -470,8 +470,7 @@ static void test_physics(void) {
     /* the base scene has 2 links: 3 areas */
     BAD_HINT(17, "margin = 10\n[physics]\ndrag_area = 0.05, 0.2", 19, "physics", "drag_area",
              "2 values, expected 3");
-    BAD(17, "margin = 10\n[physics]\ndrag_area = 0.05, 0.2, 0.3, 0.1", 19, "physics",
-        "drag_area");
+    BAD(17, "margin = 10\n[physics]\ndrag_area = 0.05, 0.2, 0.3, 0.1", 19, "physics", "drag_area");
     BAD(17, "margin = 10\n[physics]\ndrag_area = 0.05, -0.2, 0.3", 19, "physics", "drag_area");
     BAD(17, "margin = 10\n[physics]\nair_density = -1", 19, "physics", "air_density");
     BAD_HINT(17, "margin = 10\n[physics]\ndrag_area = 0.05, 0.2, 0.3\nair_density = 0", 20,
@@ -491,8 +490,8 @@ static void test_physics(void) {
          "rolling = 0.01\nkink_radius = 2",
          &sc);
     CHECK(sc.ndrag == 3 && sc.drag_area[0] == 0.05 && sc.drag_area[1] == 0 &&
-          sc.drag_area[2] == 0.3 && sc.air_density == 1.2 && sc.wind == -3 &&
-          sc.rolling == 0.01 && sc.kink_radius == 2 && sc.line_kink_radius == 23);
+          sc.drag_area[2] == 0.3 && sc.air_density == 1.2 && sc.wind == -3 && sc.rolling == 0.01 &&
+          sc.kink_radius == 2 && sc.line_kink_radius == 23);
 }
 
 /* [solver] bounds: tolerances within meaningful ranges, t_max and the trajectory's size */
@@ -605,16 +604,16 @@ static void test_course_probing(void) {
     CHECK(build(with_line(6, "section = 100 : -x/10 + 16.001"), &d, &sc, NULL, NULL) ==
           ZP_ERR_INPUT);
     CHECK(has_message(&d, "t.ini:6: [course] section: ") && has_message(&d, "1e-9 (1 + |y|)"));
-    CHECK(build(with_line(6, "section = 100 : -x/10 + 16 + 0*sqrt((x-80.3)^2-1e-4)"), &d, &sc,
-                NULL, NULL) == ZP_ERR_INPUT);
+    CHECK(build(with_line(6, "section = 100 : -x/10 + 16 + 0*sqrt((x-80.3)^2-1e-4)"), &d, &sc, NULL,
+                NULL) == ZP_ERR_INPUT);
     CHECK(has_message(&d, "t.ini:6: [course] section: ") && has_message(&d, "near x = 80.2"));
     CHECK(build(with_line(6, "section = 100 : -x/10 + 16 + tan(x/10) - tan(6)"), &d, &sc, NULL,
                 NULL) == ZP_ERR_INPUT);
     CHECK(has_message(&d, "t.ini:6: [course] section: ") && has_message(&d, "near x = 78.5"));
     /* -10 tanh(100 (x - 80)): a 20 m drop over a few cm, smooth; f'' = inf/inf far from 80 */
     double x[3] = {60, 80, 100}, y[3];
-    zp_status st = build(with_line(6, "section = 100 : y0 - 10 - 10*tanh(100*(x-80))"), &d, &sc,
-                         x, y);
+    zp_status st =
+        build(with_line(6, "section = 100 : y0 - 10 - 10*tanh(100*(x-80))"), &d, &sc, x, y);
     CHECK(st == ZP_OK);
     if (st != ZP_OK) {
         show(&d);

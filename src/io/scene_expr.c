@@ -4,6 +4,7 @@
 #include <ctype.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "course.h"
@@ -18,22 +19,6 @@ static int put(char *out, size_t cap, size_t *len, const char *s, size_t n) {
     *len += n;
     out[*len] = '\0';
     return 0;
-}
-
-/* the end of a number starting at p (digits, point, exponent), so `1e5` keeps its `e` */
-static const char *number_end(const char *p) {
-    while (isdigit((unsigned char)*p) || *p == '.') {
-        p++;
-    }
-    if ((*p == 'e' || *p == 'E') &&
-        (isdigit((unsigned char)p[1]) ||
-         ((p[1] == '+' || p[1] == '-') && isdigit((unsigned char)p[2])))) {
-        p += 2;
-        while (isdigit((unsigned char)*p)) {
-            p++;
-        }
-    }
-    return p;
 }
 
 /* the number a name stands for, as text in parentheses (a negative y0 stays one operand);
@@ -73,7 +58,10 @@ int zp_scene_expr_subst(const char *in, int has_prev, const double *y0, char *ou
         char num[40];
         int r = 0;
         if (isdigit((unsigned char)*p) || *p == '.') {
-            q = number_end(p);
+            /* a number whole, so the `e` of `1e5` stays its exponent */
+            char *end;
+            strtod(p, &end);
+            q = end > p ? end : p + 1;
         } else if (isalpha((unsigned char)*p) || *p == '_') {
             for (q = p; isalnum((unsigned char)*q) || *q == '_'; q++) {
             }

@@ -72,6 +72,7 @@ int zp_scene_parse_list(const char *text, double *out, int max, char *why, size_
     }
     return n;
 }
+
 void zp_scene_bad_key(parse_ctx *c, int k, const char *fmt, ...) {
     char what[LINE_CAP + 64];
     va_list ap;
@@ -93,6 +94,7 @@ void zp_scene_bad_count(parse_ctx *c, int k, int n, const char *fmt, ...) {
     zp_scene_bad(c, c->key_line[k], sec_of(k), zp_scene_keys[k].name, "%d value%s, expected %s", n,
                  n == 1 ? "" : "s", what);
 }
+
 void zp_scene_missing(parse_ctx *c, int k, const char *what) {
     int line = c->sec_line[zp_scene_keys[k].sec] ? c->sec_line[zp_scene_keys[k].sec] : c->line;
     zp_scene_bad(c, line, sec_of(k), zp_scene_keys[k].name, "missing; required: %s", what);
