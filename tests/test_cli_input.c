@@ -200,6 +200,20 @@ static void test_check_shows(void) {
     if (!strstr(err, "warning")) {
         fprintf(stderr, "  stdout:\n%s  stderr:\n%s", out, err);
     }
+    /* the boundary height printed (sqrt(10): many digits), typed back as the next section, is
+       within the continuity tolerance */
+    const char *rest = strstr(valid, "[trolley]");
+    snprintf(text, sizeof text,
+             "[course]\nx_start = 1\nsection = 10 : sqrt(x)\nsection = 20 : sqrt(10) + 0*x\n%s", rest);
+    write_file(path, text);
+    run(args);
+    const char *y = strstr(out, "x = 10 m, y = ");
+    char typed[64] = "";
+    CHECK(y && sscanf(y + strlen("x = 10 m, y = "), "%63[0-9.]", typed) == 1);
+    snprintf(text, sizeof text,
+             "[course]\nx_start = 1\nsection = 10 : sqrt(x)\nsection = 20 : %s\n%s", typed, rest);
+    write_file(path, text);
+    CHECK(run(args) == 0 && strlen(typed) > 8);
 }
 
 int main(void) {

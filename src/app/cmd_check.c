@@ -57,7 +57,8 @@ static void print_course(const zp_model *m) {
         for (int i = 0; i < m->nkink; i++) {
             kink |= m->kink[i].left == k - 1;
         }
-        printf("  x = %g m, y = %.6g m: slope %.6g -> %.6g (jump %+.6g, %.3g deg): %s\n", x, l.f,
+        /* 10 digits: typed back, the height is within the continuity tolerance 1e-9 (1 + |y|) */
+        printf("  x = %g m, y = %.10g m: slope %.6g -> %.6g (jump %+.6g, %.3g deg): %s\n", x, l.f,
                l.fp, r.fp, r.fp - l.fp, (atan(r.fp) - atan(l.fp)) * 180 / M_PI,
                kink ? "kink" : "smooth");
     }
