@@ -8,6 +8,7 @@
 #include "formulation.h"
 #include "method.h"
 #include "scene_read.h"
+#include "setup.h"
 #include "sim.h"
 
 static void usage(FILE *f) {
@@ -64,7 +65,9 @@ static void print_course(const zp_model *m) {
     }
 }
 
-static void print_scene(const zp_scene *sc, const zp_model *m) {
+static void print_scene(const zp_setup *st) {
+    const zp_scene *sc = &st->sc;
+    const zp_model *m = st->m;
     printf("scene: %s (%s)\n", sc->name, sc->path);
     printf("gravity: %g m/s^2\n", m->g);
     print_course(m);
@@ -75,9 +78,11 @@ static void print_scene(const zp_scene *sc, const zp_model *m) {
         printf("  link %d: length %g m, mass %g kg, inertia %.6g kg m^2, damping %g N m s/rad\n",
                i + 1, m->len[i], m->mass[i], m->inertia[i], m->damp[i]);
     }
-    printf("drive: %s; forces (N):", zp_model_drive_name(m->drive));
-    for (int k = 0; k < sc->nsec; k++) {
-        printf("%s %g", k ? "," : "", sc->forces[k]);
+    printf("drive: %s; forces:", zp_drive_dir_name(m->drive));
+    for (int k = 0; k < m->nsec; k++) {
+        char label[64];
+        zp_schedule_label(&st->sched, k, label, sizeof label);
+        printf("%s %s", k ? "," : "", label);
     }
     printf("%s; search bounds [%g, %g] N\n", sc->nforce ? "" : " (none given)", sc->force_min,
            sc->force_max);
@@ -92,14 +97,14 @@ static void print_scene(const zp_scene *sc, const zp_model *m) {
 }
 
 /* forces the search could never pick: legal for `simulate`, but worth a word */
-static void warn_forces(const zp_scene *sc) {
-    for (int k = 0; k < sc->nforce; k++) {
-        if (sc->forces[k] < sc->force_min || sc->forces[k] > sc->force_max) {
+static void warn_forces(const zp_setup *st) {
+    const zp_schedule *sh = &st->sched;
+    for (int i = 0; i < st->sc.nforce && i < sh->np; i++) {
+        if (sh->p[i] < sh->lo[i] || sh->p[i] > sh->hi[i]) {
             fprintf(stderr,
-                    "%s:%d: [drive] forces: warning: item %d (%g N) is outside [min, max] = "
-                    "[%g, %g] N, the search's bounds\n",
-                    sc->path, sc->line_forces, k + 1, sc->forces[k], sc->force_min,
-                    sc->force_max);
+                    "%s:%d: [drive] forces: warning: item %d (%g) is outside [min, max] = "
+                    "[%g, %g], the search's bounds\n",
+                    st->sc.path, st->sc.line_forces, i + 1, sh->p[i], sh->lo[i], sh->hi[i]);
         }
     }
 }
@@ -124,22 +129,14 @@ int zp_cmd_check(int argc, char **argv) {
         fputs("zipopt check: a scene file is required; see zipopt check --help\n", stderr);
         return ZP_EXIT_USAGE;
     }
-    zp_scene sc;
-    zp_model *m = zp_cli_load(path, &sc);
-    if (!m) {
+    /* judged exactly as every command judges it, registry names included */
+    static zp_setup st; /* large: kept off the stack */
+    zp_overrides none = ZP_OVERRIDES_NONE;
+    if (zp_setup_load("check", path, &none, &st)) {
         return ZP_EXIT_USAGE;
     }
-    /* the solver's names are judged against the registries, as `simulate` does */
-    zp_diag d;
-    zp_diag_init(&d);
-    zp_sim_opts o;
-    if (zp_sim_opts_from_scene(&sc, &o, &d) != ZP_OK) {
-        zp_diag_print(&d, stderr);
-        zp_model_free(m);
-        return ZP_EXIT_USAGE;
-    }
-    print_scene(&sc, m);
-    warn_forces(&sc);
-    zp_model_free(m);
+    print_scene(&st);
+    warn_forces(&st);
+    zp_setup_free(&st);
     return ZP_EXIT_OK;
 }

@@ -83,8 +83,8 @@ int zp_scene_expr_subst(const char *in, int has_prev, const double *y0, char *ou
 }
 
 int zp_scene_expr_end(const char *expr, double x, double *y) {
-    char err[256];
-    zp_course *c = zp_course_create(1, &expr, err, sizeof err);
+    zp_course_err err;
+    zp_course *c = zp_course_create(1, &expr, &err);
     if (!c) {
         return -1;
     }

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "numtext.h"
 #include "scene_parse.h"
 
 const char *const zp_scene_sec_names[S_COUNT] = {"scene",  "course", "trolley",  "body",
@@ -103,17 +104,6 @@ static int is_near(const char *typed, const char *valid) {
     return edit_distance(typed, valid) <= 1 + (int)strlen(valid) / 4;
 }
 
-void zp_scene_trim(char *s) {
-    size_t a = 0, n = strlen(s);
-    while (isspace((unsigned char)s[a])) {
-        a++;
-    }
-    while (n > a && isspace((unsigned char)s[n - 1])) {
-        n--;
-    }
-    memmove(s, s + a, n - a);
-    s[n - a] = '\0';
-}
 void zp_scene_bad(parse_ctx *c, int line, const char *sec, const char *key, const char *fmt, ...) {
     if (c->nmsg == MSG_MAX) {
         c->nmore++;
@@ -251,7 +241,7 @@ static void header(parse_ctx *c, char *str, int num) {
     *close = '\0';
     char name[LINE_CAP];
     strcpy(name, str + 1);
-    zp_scene_trim(name);
+    zp_text_trim(name);
     int sec = find_section(name);
     if (sec < 0 || (c->schedule && sec != S_DRIVE)) {
         unknown_section(c, name);
@@ -288,7 +278,7 @@ static char *read_line(char *str, int num, void *stream) {
             break;
         }
     }
-    zp_scene_trim(str);
+    zp_text_trim(str);
     if (str[0] == '[') {
         header(c, str, num);
         return str;

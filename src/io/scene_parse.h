@@ -5,6 +5,7 @@
 
 #include <ini.h>
 
+#include "drive.h"
 #include "scene.h"
 
 enum {
@@ -115,14 +116,11 @@ void zp_scene_bad(parse_ctx *c, int line, const char *sec, const char *key, cons
     __attribute__((format(printf, 5, 6)));
 /* hands the held messages to c->d, ordered by line (stable); returns how many */
 int zp_scene_flush(parse_ctx *c);
-void zp_scene_trim(char *s);
 
 /* ---- scene_values.c: raw text -> numbers, each with the key's "expected ..." ---- */
 
 typedef enum { R_ANY, R_POS, R_NONNEG } zp_range;
 
-/* a finite decimal number taking the whole text: 0, else -1 */
-int zp_scene_number(const char *text, double *out);
 /* a message about key k on its own line: what; expected ... */
 void zp_scene_bad_key(parse_ctx *c, int k, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
@@ -141,6 +139,12 @@ int zp_scene_get_whole(parse_ctx *c, int k, unsigned long lo, unsigned long hi, 
 int zp_scene_get_text(parse_ctx *c, int k, char *out, size_t cap);
 
 /* ---- scene_sections.c, scene_extras.c: one reader per INI section ---- */
+
+/* [drive] forces through the drive module, for a course of nsec sections: 1 read into *s,
+   0 absent, -1 bad (reported) */
+int zp_scene_read_forces(parse_ctx *c, int nsec, zp_schedule *s);
+/* the schedule's kind and parameters into the scene */
+void zp_scene_set_forces(zp_scene *sc, const zp_schedule *s);
 
 void zp_scene_read_scene(parse_ctx *c, zp_scene *sc);
 void zp_scene_read_course(parse_ctx *c, zp_scene *sc);

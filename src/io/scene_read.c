@@ -173,20 +173,16 @@ zp_status zp_scene_overlay_schedule(const char *path, zp_scene *sc, zp_diag *d) 
     zp_scene_parse_text(c, text, len);
     free(text);
     /* the forces must fit the scene they are laid over */
-    double f[ZP_MAX_SECTIONS];
-    int n = zp_scene_get_list(c, K_FORCES, R_ANY, f, ZP_MAX_SECTIONS);
-    if (n == 0) {
+    zp_schedule sched;
+    if (zp_scene_read_forces(c, sc->nsec, &sched) == 0) {
         zp_scene_missing(c, K_FORCES, "the forces (N), one per section");
-    } else if (n > 0 && n != sc->nsec) {
-        zp_scene_bad_count(c, K_FORCES, n, "%d (one per section of the scene)", sc->nsec);
     }
     int nbad = zp_scene_flush(c);
     free(c);
     if (nbad) {
         return ZP_ERR_INPUT;
     }
-    memcpy(sc->forces, f, (size_t)n * sizeof *f);
-    sc->nforce = n;
+    zp_scene_set_forces(sc, &sched);
     /* sc->path names the scene, not this file: no line there to point at */
     sc->line_forces = 0;
     return ZP_OK;

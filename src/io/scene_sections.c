@@ -4,7 +4,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "model.h"
+#include "course.h"
+#include "numtext.h"
 #include "scene_parse.h"
 
 /* the name becomes a folder under out/, so it may not climb or nest */
@@ -38,10 +39,10 @@ static int read_section(parse_ctx *c, zp_scene *sc, int k, int prev_ok, double p
     }
     *colon = '\0';
     char *expr = colon + 1;
-    zp_scene_trim(text);
-    zp_scene_trim(expr);
+    zp_text_trim(text);
+    zp_text_trim(expr);
     int ok = 1;
-    if (zp_scene_number(text, &sc->x_end[k])) {
+    if (zp_text_number(text, &sc->x_end[k])) {
         zp_scene_bad(c, line, "course", "section",
                      "x_end `%s` is not a number; expected `x_end : f(x)`", text);
         ok = 0;
@@ -131,18 +132,36 @@ void zp_scene_read_body(parse_ctx *c, zp_scene *sc) {
     }
 }
 
+int zp_scene_read_forces(parse_ctx *c, int nsec, zp_schedule *s) {
+    if (!c->key_line[K_FORCES]) {
+        return 0;
+    }
+    char why[LINE_CAP + 64];
+    int rc = zp_schedule_parse(c->val[K_FORCES], nsec, s, why, sizeof why);
+    if (rc == -2) {
+        c->key_bad[K_FORCES] = 1;
+        zp_scene_bad(c, c->key_line[K_FORCES], "drive", zp_scene_keys[K_FORCES].name, "%s", why);
+    } else if (rc) {
+        zp_scene_bad_key(c, K_FORCES, "%s", why);
+    }
+    return rc ? -1 : 1;
+}
+
+void zp_scene_set_forces(zp_scene *sc, const zp_schedule *s) {
+    sc->drive_kind = (int)s->kind;
+    sc->nforce = s->np;
+    memcpy(sc->forces, s->p, sizeof *s->p * (size_t)s->np);
+}
+
+/* the schedule's text is the drive module's to read */
 void zp_scene_read_drive(parse_ctx *c, zp_scene *sc) {
     if (zp_scene_get_text(c, K_DIRECTION, sc->direction, sizeof sc->direction) >= 0 &&
-        zp_model_drive_find(sc->direction) < 0) {
+        zp_drive_dir_find(sc->direction) < 0) {
         zp_scene_bad_key(c, K_DIRECTION, "unknown direction `%s`", sc->direction);
     }
-    double tmp[ZP_MAX_SECTIONS];
-    int nforce = zp_scene_get_list(c, K_FORCES, R_ANY, tmp, ZP_MAX_SECTIONS);
-    if (nforce > 0 && nforce != c->nsect) {
-        zp_scene_bad_count(c, K_FORCES, nforce, "%d (one per section)", c->nsect);
-    } else if (nforce > 0) {
-        sc->nforce = nforce;
-        memcpy(sc->forces, tmp, (size_t)nforce * sizeof *tmp);
+    zp_schedule sched;
+    if (zp_scene_read_forces(c, c->nsect, &sched) > 0) {
+        zp_scene_set_forces(sc, &sched);
     }
     sc->line_forces = c->key_line[K_FORCES];
     zp_scene_get_number(c, K_MIN, R_ANY, &sc->force_min);

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "numtext.h"
 #include "scene_parse.h"
 #include "scene_read.h"
 
@@ -14,63 +15,8 @@ static const char *sec_of(int k) {
     return zp_scene_sec_names[zp_scene_keys[k].sec];
 }
 
-/* no hex, inf, nan or trailing junk */
-int zp_scene_number(const char *text, double *out) {
-    if (!*text || strspn(text, "0123456789+-.eE") != strlen(text)) {
-        return -1;
-    }
-    char *end;
-    double v = strtod(text, &end);
-    if (*end || !isfinite(v)) {
-        return -1;
-    }
-    *out = v;
-    return 0;
-}
-
-/* a comma-separated list: returns how many items it has (storing at most max), or -1 */
-static int parse_items(const char *text, double *out, int max, char *why, size_t whylen) {
-    int n = 0;
-    for (const char *item = text;; n++) {
-        size_t len = strcspn(item, ",");
-        char buf[64];
-        if (len >= sizeof buf) {
-            snprintf(why, whylen, "item %d is too long", n + 1);
-            return -1;
-        }
-        memcpy(buf, item, len);
-        buf[len] = '\0';
-        zp_scene_trim(buf);
-        double v;
-        if (!*buf) {
-            if (n == 0 && !item[len]) {
-                snprintf(why, whylen, "the list is empty");
-            } else {
-                snprintf(why, whylen, "item %d is empty", n + 1);
-            }
-            return -1;
-        }
-        if (zp_scene_number(buf, &v)) {
-            snprintf(why, whylen, "item %d `%s` is not a number", n + 1, buf);
-            return -1;
-        }
-        if (n < max) {
-            out[n] = v;
-        }
-        if (!item[len]) {
-            return n + 1;
-        }
-        item += len + 1;
-    }
-}
-
 int zp_scene_parse_list(const char *text, double *out, int max, char *why, size_t whylen) {
-    int n = parse_items(text, out, max, why, whylen);
-    if (n > max) {
-        snprintf(why, whylen, "%d values, at most %d", n, max);
-        return -1;
-    }
-    return n;
+    return zp_text_list(text, out, max, why, whylen);
 }
 
 void zp_scene_bad_key(parse_ctx *c, int k, const char *fmt, ...) {
@@ -109,7 +55,7 @@ int zp_scene_get_number(parse_ctx *c, int k, zp_range r, double *out) {
         return 0;
     }
     double v;
-    if (zp_scene_number(c->val[k], &v)) {
+    if (zp_text_number(c->val[k], &v)) {
         if (c->val[k][0]) {
             zp_scene_bad_key(c, k, "`%s` is not a number", c->val[k]);
         } else {
@@ -131,7 +77,7 @@ int zp_scene_get_list(parse_ctx *c, int k, zp_range r, double *out, int max) {
     }
     char what[LINE_CAP + 64];
     double v[ZP_MAX_SECTIONS];
-    int n = parse_items(c->val[k], v, ZP_MAX_SECTIONS, what, sizeof what);
+    int n = zp_text_items(c->val[k], v, ZP_MAX_SECTIONS, what, sizeof what);
     if (n < 0) {
         zp_scene_bad_key(c, k, "%s", what);
         return -1;
