@@ -588,6 +588,13 @@ static void test_expr_names(void) {
     BAD_HINT(5, "section = 60 : y0 + (x/10 - 3)^2 + 1", 5, "course", "section",
              "first section has none");
     BAD_HINT(5, "section = 60 : pie*x", 5, "course", "section", "`pie`");
+    BAD_HINT(5, "section = 60 : 0*pi*pi*pi*pi*pi*pi*pi*pi*pi*pi*pi*pi*pi + x/6", 5, "course",
+             "section", "too long");
+    /* y0 chains: section 3 starts where section 2, itself written with y0, ends (8) */
+    CHECK(build(with_lines(6, "section = 100 : y0 - (x - 60)/20\nsection = 120 : y0 + 0*x", 13,
+                           "forces = 1, 2, 3"),
+                &d, &sc, NULL, NULL) == ZP_OK);
+    CHECK(!strcmp(sc.expr[2], "(8) + 0*x"));
     BAD_HINT(5, "section = 60 : y0e", 5, "course", "section", "`y0e`");
     /* after a section in error, y0 adds no second message */
     zp_diag_init(&d);
