@@ -203,9 +203,11 @@ void zp_sweep_column(const zp_sweep_vary *v, char *out, size_t cap) {
 }
 
 void zp_sweep_format(double x, char *out, size_t cap) {
+    /* an exponent only where plain digits would be long: 100, not 1e+02 */
+    int plain = fabs(x) < 1e17 && (fabs(x) >= 1e-4 || x == 0);
     for (int prec = 1; prec <= 17; prec++) {
         snprintf(out, cap, "%.*g", prec, x);
-        if (strtod(out, NULL) == x) {
+        if (strtod(out, NULL) == x && (!plain || !strchr(out, 'e'))) {
             return;
         }
     }

@@ -24,7 +24,24 @@ typedef struct queue {
     pthread_mutex_t lock; /* next, and the calls to done */
 } queue;
 
+/* MPI is joined only under a launcher (mpirun, srun, hydra): a plain `zipopt sweep` neither
+   pays for MPI_Init nor needs a launcher's environment. Set once, before any item runs. */
+static int joined;
+
+static int launched(void) {
+    const char *vars[] = {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"};
+    for (int i = 0; i < 4; i++) {
+        if (getenv(vars[i])) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
 int zp_mpi_queue_start(char *err, size_t errlen) {
+    if (!launched()) {
+        return 0;
+    }
     /* only one thread of a rank calls MPI at a time: rank 0's dispatcher, between init and
        finalize by the main thread */
     int provided;
@@ -32,26 +49,36 @@ int zp_mpi_queue_start(char *err, size_t errlen) {
         snprintf(err, errlen, "MPI_Init_thread failed");
         return -1;
     }
+    joined = 1;
     if (provided < MPI_THREAD_SERIALIZED) {
         snprintf(err, errlen, "this MPI library does not allow MPI calls from a second thread "
                               "(MPI_THREAD_SERIALIZED)");
-        MPI_Finalize();
+        zp_mpi_queue_end();
         return -1;
     }
     return 0;
 }
 
-void zp_mpi_queue_end(void) { MPI_Finalize(); }
+void zp_mpi_queue_end(void) {
+    if (joined) {
+        MPI_Finalize();
+        joined = 0;
+    }
+}
 
 int zp_mpi_queue_rank(void) {
-    int r;
-    MPI_Comm_rank(MPI_COMM_WORLD, &r);
+    int r = 0;
+    if (joined) {
+        MPI_Comm_rank(MPI_COMM_WORLD, &r);
+    }
     return r;
 }
 
 int zp_mpi_queue_size(void) {
-    int n;
-    MPI_Comm_size(MPI_COMM_WORLD, &n);
+    int n = 1;
+    if (joined) {
+        MPI_Comm_size(MPI_COMM_WORLD, &n);
+    }
     return n;
 }
 

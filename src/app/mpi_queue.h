@@ -13,8 +13,8 @@ typedef void (*zp_mpi_queue_work)(void *user, int item, void *result);
 /* Takes item's result; runs on rank 0 only, one call at a time, in the order items finish. */
 typedef void (*zp_mpi_queue_done)(void *user, int item, const void *result);
 
-/* Joins the ranks mpirun started (a process started without mpirun is rank 0 of 1). 0, or -1
-   with why. */
+/* Joins the ranks an MPI launcher (mpirun, srun) started; a process started without one is
+   rank 0 of 1 and leaves MPI alone. 0, or -1 with why. */
 int zp_mpi_queue_start(char *err, size_t errlen);
 /* Leaves MPI; after the last zp_mpi_queue_run. */
 void zp_mpi_queue_end(void);

@@ -51,7 +51,7 @@ void zp_sweep_out_summary(const zp_sweep_out *o, char *out, size_t cap) {
         const char *x = va->kind == ZP_VARY_SCALE ? "x" : "";
         ADD("%s%s.%s %s%g to %s%g", v ? " by " : "", va->section, va->key, x, va->a, x, va->b);
     }
-    ADD(" (%d point%s): %s at %d", s->npoint, s->npoint == 1 ? "" : "s",
+    ADD(" (%d point%s): %s at %d of them", s->npoint, s->npoint == 1 ? "" : "s",
         s->kind == ZP_STUDY_SEARCH ? "a schedule keeps the limits"
                                    : "the scene's schedule finishes with the margin kept",
         t.found);
@@ -92,7 +92,7 @@ static double half_step(const zp_sweep_vary *v) {
 static void axis(FILE *f, const char *ax, const zp_sweep_vary *v) {
     double h = half_step(v);
     fprintf(f, "set %slabel '[%s] %s%s'\nset %srange [%.9g:%.9g]\n", ax, v->section, v->key,
-            v->kind == ZP_VARY_SCALE ? " (factor on the scene's values)" : "", ax, v->a - h,
+            v->kind == ZP_VARY_SCALE ? " (factor on the values in the scene)" : "", ax, v->a - h,
             v->b + h);
 }
 
@@ -112,7 +112,7 @@ static void script_line(FILE *f, const zp_sweep_out *o, const char *col, const t
             "with points pt 8 ps 1.6 lw 2 lc rgb 'black' title 'failed'\n",
             lo, hi, col,
             o->s->kind == ZP_STUDY_SEARCH ? "fastest schedule that keeps the limits"
-                                          : "the scene's schedule",
+                                          : "the [drive] forces",
             col, mark,
             o->s->kind == ZP_STUDY_SEARCH ? "no schedule keeps the limits"
                                           : "does not finish with the margin kept",
@@ -160,7 +160,7 @@ void zp_sweep_out_script(FILE *f, const zp_sweep_out *o) {
             name,
             o->s->kind == ZP_STUDY_SEARCH ? "finish time of the fastest schedule that keeps "
                                             "the limits"
-                                          : "finish time of the scene's schedule");
+                                          : "finish time of the [drive] forces");
     if (o->s->nvary == 1) {
         script_line(f, o, c1, &t);
     } else {
