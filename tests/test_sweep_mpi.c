@@ -16,25 +16,8 @@ static char out[1 << 16];
 
 static int run(const char *cmd) { return tu_sh(cmd, out, sizeof out); }
 
-static long slurp(const char *path, char *buf, size_t n) {
-    FILE *f = fopen(path, "r");
-    size_t k = f ? fread(buf, 1, n - 1, f) : 0;
-    buf[k] = '\0';
-    if (f) {
-        fclose(f);
-    }
-    return f ? (long)k : -1;
-}
-
-static int rows_in(const char *path) {
-    static char buf[1 << 16];
-    int n = 0;
-    slurp(path, buf, sizeof buf);
-    for (const char *c = buf; *c; c++) {
-        n += *c == '\n';
-    }
-    return n - 2; /* the study line and the header */
-}
+/* rows of a checkpoint: its lines less the study line and the header */
+static int rows_in(const char *path) { return tu_count_lines(path) - 2; }
 
 int main(void) {
     const char *mpirun = ZP_MPIEXEC;
@@ -66,9 +49,9 @@ int main(void) {
     const char *files[] = {"sweep.csv", "summary.json"};
     for (int i = 0; i < 2; i++) {
         snprintf(cmd, sizeof cmd, "%s/one/%s", dir, files[i]);
-        CHECK(slurp(cmd, one, sizeof one) > 0);
+        CHECK(tu_slurp(cmd, one, sizeof one) > 0);
         snprintf(cmd, sizeof cmd, "%s/two/%s", dir, files[i]);
-        CHECK(slurp(cmd, two, sizeof two) > 0);
+        CHECK(tu_slurp(cmd, two, sizeof two) > 0);
         CHECK(!strcmp(one, two));
     }
 
@@ -93,9 +76,9 @@ int main(void) {
              path, vary, dir);
     CHECK(run(cmd) == 0);
     snprintf(cmd, sizeof cmd, "%s/one/sweep.csv", dir);
-    slurp(cmd, one, sizeof one);
+    tu_slurp(cmd, one, sizeof one);
     snprintf(cmd, sizeof cmd, "%s/cut/sweep.csv", dir);
-    CHECK(slurp(cmd, two, sizeof two) > 0 && !strcmp(one, two));
+    CHECK(tu_slurp(cmd, two, sizeof two) > 0 && !strcmp(one, two));
     snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
     CHECK(system(cmd) == 0);
     return CHECK_DONE();
