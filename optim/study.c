@@ -16,7 +16,9 @@
 
 static const char *const kind_names[ZP_STUDY_KIND_COUNT] = {"search", "simulate"};
 
-const char *zp_study_kind_name(zp_study_kind k) { return kind_names[k]; }
+const char *zp_study_kind_name(zp_study_kind k) {
+    return kind_names[k];
+}
 
 int zp_study_kind_find(const char *name) {
     for (int k = 0; k < ZP_STUDY_KIND_COUNT; k++) {

@@ -9,17 +9,17 @@ typedef enum { ZP_STUDY_SEARCH, ZP_STUDY_SIMULATE, ZP_STUDY_KIND_COUNT } zp_stud
 
 /* What one point came to. Plain data (no pointers): copied as bytes between ranks. */
 typedef struct zp_study_row {
-    int failed;        /* 1: the search or simulation could not be done; message says why */
-    int found;         /* a schedule (search) or the scene's schedule (simulate) finishes with
-                          the margin kept */
+    int failed;         /* 1: the search or simulation could not be done; message says why */
+    int found;          /* a schedule (search) or the scene's schedule (simulate) finishes with
+                           the margin kept */
     zp_outcome outcome; /* of the answer's run at the scene's tolerance */
-    double time;       /* s: finish, death or stall of that run */
-    double margin;     /* deg: death_angle minus the largest |relative joint angle| */
-    char limit[32];    /* found: the limits active at the answer ("margin", "drive.max", joined
-                          by '+', or "none"); else the first one broken ("margin", "death",
-                          "t_max") */
-    int verified;      /* search: the answer agrees at a 100x tighter tolerance; simulate: 0 */
-    long evals;        /* simulations the point spent */
+    double time;        /* s: finish, death or stall of that run */
+    double margin;      /* deg: death_angle minus the largest |relative joint angle| */
+    char limit[32];     /* found: the limits active at the answer ("margin", "drive.max", joined
+                           by '+', or "none"); else the first one broken ("margin", "death",
+                           "t_max") */
+    int verified;       /* search: the answer agrees at a 100x tighter tolerance; simulate: 0 */
+    long evals;         /* simulations the point spent */
     int nsec;
     double force[ZP_MAX_SECTIONS]; /* N per section: the answer (or the closest candidate) */
     char message[200];             /* why it failed, for the row */

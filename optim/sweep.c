@@ -224,7 +224,8 @@ static int find_line(const char *t, const char *sec, const char *key, size_t *ls
         snprintf(line, sizeof line, "%.*s", (int)len, t + pos);
         /* comments as the reader strips them: `;` or `#` first or after a blank */
         for (size_t i = 0; line[i]; i++) {
-            if ((line[i] == ';' || line[i] == '#') && (i == 0 || isspace((unsigned char)line[i - 1]))) {
+            if ((line[i] == ';' || line[i] == '#') &&
+                (i == 0 || isspace((unsigned char)line[i - 1]))) {
                 line[i] = '\0';
                 break;
             }

@@ -7,7 +7,7 @@
 
 #include "study.h"
 
-#define ZP_SWEEP_MAX_VARY 4        /* --vary options in one study */
+#define ZP_SWEEP_MAX_VARY 4       /* --vary options in one study */
 #define ZP_SWEEP_MAX_POINTS 10000 /* points in one study */
 
 typedef enum {
@@ -19,8 +19,8 @@ typedef enum {
 typedef struct zp_sweep_vary {
     char section[16], key[32];
     zp_vary_kind kind;
-    double a, b; /* the range, a <= b (for a list key: factors) */
-    int n;       /* values, a and b included (one value: a) */
+    double a, b;    /* the range, a <= b (for a list key: factors) */
+    int n;          /* values, a and b included (one value: a) */
     char text[128]; /* as typed after --vary, for messages and the checkpoint */
 } zp_sweep_vary;
 

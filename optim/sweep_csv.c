@@ -190,8 +190,10 @@ zp_status zp_sweep_checkpoint_open(zp_sweep_checkpoint *c, const char *dir, cons
     }
     free(old);
     if (keep == -1) {
-        snprintf(err, errlen, "%s belongs to another study (its scene, --vary or --run differ); "
-                 "run without --resume to start afresh", c->path);
+        snprintf(err, errlen,
+                 "%s belongs to another study (its scene, --vary or --run differ); "
+                 "run without --resume to start afresh",
+                 c->path);
         free(head);
         return ZP_ERR_INPUT;
     }

@@ -17,7 +17,7 @@ void zp_sweep_csv_row(FILE *f, const zp_sweep *s, int p, const zp_study_row *r);
 int zp_sweep_csv_parse(const char *line, const zp_sweep *s, int nsec, int *p, zp_study_row *r);
 
 typedef struct zp_sweep_checkpoint {
-    FILE *f;         /* owned, open for appending */
+    FILE *f; /* owned, open for appending */
     char path[1100];
 } zp_sweep_checkpoint;
 

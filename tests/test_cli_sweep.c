@@ -15,7 +15,9 @@
 static char out[1 << 16];
 static char dir[] = "/tmp/zp_cli_sweepXXXXXX";
 
-static int run(const char *cmd) { return tu_sh(cmd, out, sizeof out); }
+static int run(const char *cmd) {
+    return tu_sh(cmd, out, sizeof out);
+}
 
 /* the scene, with the trolley mass and the first link's mass given */
 static const char *scene(const char *name, const char *trolley, const char *masses, int evals) {
@@ -109,8 +111,8 @@ static void same_as_simulate(void) {
 static void same_as_search(void) {
     char cmd[2048], csv[8192], json[65536], path[600];
     const char *base = scene("base", "30", "5, 2", 120);
-    snprintf(cmd, sizeof cmd, "%s sweep %s --vary trolley.mass=25:25:1 --out %s/srch", ZP_EXE,
-             base, dir);
+    snprintf(cmd, sizeof cmd, "%s sweep %s --vary trolley.mass=25:25:1 --out %s/srch", ZP_EXE, base,
+             dir);
     CHECK(run(cmd) == 0);
     snprintf(path, sizeof path, "%s/srch/sweep.csv", dir);
     tu_slurp(path, csv, sizeof csv);

@@ -19,7 +19,8 @@ static zp_sweep grid(const char *v1, const char *v2) {
     zp_sweep s = {0};
     char why[512];
     zp_sweep_vary v;
-    CHECK(zp_sweep_vary_parse(v1, &v, why, sizeof why) == 0 && zp_sweep_add(&s, &v, why, sizeof why) == 0);
+    CHECK(zp_sweep_vary_parse(v1, &v, why, sizeof why) == 0 &&
+          zp_sweep_add(&s, &v, why, sizeof why) == 0);
     if (v2) {
         CHECK(zp_sweep_vary_parse(v2, &v, why, sizeof why) == 0 &&
               zp_sweep_add(&s, &v, why, sizeof why) == 0);
@@ -92,7 +93,8 @@ int main(void) {
     CHECK(t == NULL && strstr(why, "nothing to scale"));
 
     /* numbers in the fewest digits that read back exactly */
-    const double xs[] = {100, 0.1, 1.0 / 3, 1e-300, -2.5e17, 123456789.123456789, 0, 9.045888853521665};
+    const double xs[] = {
+        100, 0.1, 1.0 / 3, 1e-300, -2.5e17, 123456789.123456789, 0, 9.045888853521665};
     for (int i = 0; i < (int)(sizeof xs / sizeof xs[0]); i++) {
         char buf[32];
         zp_sweep_format(xs[i], buf, sizeof buf);
@@ -104,9 +106,16 @@ int main(void) {
 
     /* a row written, read back and written again: the same line */
     s = grid("trolley.mass=10:20:3", NULL);
-    zp_study_row r = {.found = 1, .outcome = ZP_OUTCOME_FINISHED, .time = 1.0 / 3,
-                      .margin = 10.000000000000002, .verified = 1, .evals = 1234, .nsec = 2,
-                      .force = {0.1, 500}, .limit = "margin+drive.max"}, back;
+    zp_study_row r = {.found = 1,
+                      .outcome = ZP_OUTCOME_FINISHED,
+                      .time = 1.0 / 3,
+                      .margin = 10.000000000000002,
+                      .verified = 1,
+                      .evals = 1234,
+                      .nsec = 2,
+                      .force = {0.1, 500},
+                      .limit = "margin+drive.max"},
+                 back;
     char *l1 = NULL, *l2 = NULL;
     size_t n1, n2;
     for (int failed = 0; failed <= 1; failed++) {

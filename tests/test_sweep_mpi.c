@@ -14,10 +14,14 @@
 
 static char out[1 << 16];
 
-static int run(const char *cmd) { return tu_sh(cmd, out, sizeof out); }
+static int run(const char *cmd) {
+    return tu_sh(cmd, out, sizeof out);
+}
 
 /* rows of a checkpoint: its lines less the study line and the header */
-static int rows_in(const char *path) { return tu_count_lines(path) - 2; }
+static int rows_in(const char *path) {
+    return tu_count_lines(path) - 2;
+}
 
 int main(void) {
     const char *mpirun = ZP_MPIEXEC;
@@ -56,8 +60,8 @@ int main(void) {
     }
 
     /* Ctrl-C to mpirun after some rows, then --resume under mpirun */
-    snprintf(cmd, sizeof cmd, "exec %s %s %s sweep %s %s --out %s/cut >/dev/null 2>&1", mpirun,
-             mpi, ZP_EXE, path, vary, dir);
+    snprintf(cmd, sizeof cmd, "exec %s %s %s sweep %s %s --out %s/cut >/dev/null 2>&1", mpirun, mpi,
+             ZP_EXE, path, vary, dir);
     pid_t pid = fork();
     if (pid == 0) {
         execl("/bin/sh", "sh", "-c", cmd, (char *)NULL);

@@ -13,7 +13,8 @@
 #include "sweep_csv.h"
 #include "sweep_out.h"
 
-#define MAX_ARGS_VARY 16 /* --vary options kept for checking; more than ZP_SWEEP_MAX_VARY is an error */
+#define MAX_ARGS_VARY                                                                              \
+    16 /* --vary options kept for checking; more than ZP_SWEEP_MAX_VARY is an error */
 
 static void usage(FILE *f) {
     fputs("usage: zipopt sweep SCENE.ini --vary SECTION.KEY=A:B:N [--vary ..]\n"
@@ -106,9 +107,9 @@ typedef struct study {
     const char *base, *path; /* the scene text and its file name */
     char name[ZP_NAME_MAX];  /* the scene's name */
     int nsec;
-    zp_scene *sc;            /* owned: scratch for the point being computed */
-    zp_study_row *rows;      /* owned, npoint */
-    unsigned char *done;     /* owned, npoint */
+    zp_scene *sc;        /* owned: scratch for the point being computed */
+    zp_study_row *rows;  /* owned, npoint */
+    unsigned char *done; /* owned, npoint */
     int ndone, nresumed;
     zp_sweep_checkpoint cp;
     int cp_failed; /* a row could not be appended to the checkpoint */
@@ -158,8 +159,9 @@ static void done(void *user, int p, const void *result) {
     st->done[p] = 1;
     if (!st->cp_failed && zp_sweep_checkpoint_add(&st->cp, st->s, p, &st->rows[p])) {
         st->cp_failed = 1;
-        fprintf(stderr, "\nzipopt sweep: cannot append to %s; the study goes on, but a rerun "
-                        "would start afresh\n",
+        fprintf(stderr,
+                "\nzipopt sweep: cannot append to %s; the study goes on, but a rerun "
+                "would start afresh\n",
                 st->cp.path);
     }
     if (st->tty) {
@@ -184,6 +186,7 @@ static int check_points(study *st) {
             zp_sweep_describe(st->s, p, at, sizeof at);
             fprintf(stderr, "zipopt sweep: the scene at point %d (%s) is not valid:\n", p, at);
             zp_diag_print(&d, stderr);
+            fputs("zipopt sweep: nothing was written\n", stderr);
             return -1;
         }
     }
@@ -201,8 +204,8 @@ static int write_outputs(const char *dir, const zp_sweep_out *o, const char *sum
     }
     FILE *csv = zp_gnuplot_open(&g, "sweep.csv", 0, err, sizeof err);
     FILE *js = csv ? zp_gnuplot_open(&g, "summary.json", 0, err, sizeof err) : NULL;
-    FILE *gp = js && zp_sweep_out_has_figure(o) ? zp_gnuplot_open(&g, "sweep.gp", 1, err, sizeof err)
-                                                : js;
+    FILE *gp =
+        js && zp_sweep_out_has_figure(o) ? zp_gnuplot_open(&g, "sweep.gp", 1, err, sizeof err) : js;
     if (!gp) {
         zp_gnuplot_abort(&g);
         fprintf(stderr, "zipopt sweep: %s; nothing was written\n", err);

@@ -51,8 +51,9 @@ int zp_mpi_queue_start(char *err, size_t errlen) {
     }
     joined = 1;
     if (provided < MPI_THREAD_SERIALIZED) {
-        snprintf(err, errlen, "this MPI library does not allow MPI calls from a second thread "
-                              "(MPI_THREAD_SERIALIZED)");
+        snprintf(err, errlen,
+                 "this MPI library does not allow MPI calls from a second thread "
+                 "(MPI_THREAD_SERIALIZED)");
         zp_mpi_queue_end();
         return -1;
     }
@@ -164,7 +165,8 @@ zp_status zp_mpi_queue_run(const int *todo, int ntodo, size_t size, zp_mpi_queue
         q.next = q.ntodo;
         dispatch(&q);
         free(res);
-        snprintf(err, errlen, "%s", res ? "cannot start the MPI dispatcher thread" : "out of memory");
+        snprintf(err, errlen, "%s",
+                 res ? "cannot start the MPI dispatcher thread" : "out of memory");
         return res ? ZP_ERR_IO : ZP_ERR_NOMEM;
     }
     for (int item; (item = take(&q)) >= 0;) {

@@ -12,9 +12,13 @@ int zp_mpi_queue_start(char *err, size_t errlen) {
 
 void zp_mpi_queue_end(void) {}
 
-int zp_mpi_queue_rank(void) { return 0; }
+int zp_mpi_queue_rank(void) {
+    return 0;
+}
 
-int zp_mpi_queue_size(void) { return 1; }
+int zp_mpi_queue_size(void) {
+    return 1;
+}
 
 zp_status zp_mpi_queue_run(const int *todo, int ntodo, size_t size, zp_mpi_queue_work work,
                            zp_mpi_queue_done done, void *user, char *err, size_t errlen) {

@@ -58,7 +58,7 @@ void zp_sweep_out_summary(const zp_sweep_out *o, char *out, size_t cap) {
     if (t.found) {
         zp_sweep_describe(s, t.fastest, at, sizeof at);
         ADD("; fastest %.4f s at %s", t.tmin, at);
-        if (t.found > 1) {
+        if (t.tmax > t.tmin) {
             zp_sweep_describe(s, t.slowest, at, sizeof at);
             ADD(", slowest %.4f s at %s", t.tmax, at);
         }
@@ -79,7 +79,9 @@ void zp_sweep_out_summary(const zp_sweep_out *o, char *out, size_t cap) {
     ADD(".");
 }
 
-int zp_sweep_out_has_figure(const zp_sweep_out *o) { return o->s->nvary <= 2; }
+int zp_sweep_out_has_figure(const zp_sweep_out *o) {
+    return o->s->nvary <= 2;
+}
 
 /* half a grid step of vary v (a tenth of the value, or 0.5, for a single value) */
 static double half_step(const zp_sweep_vary *v) {
@@ -197,8 +199,8 @@ void zp_sweep_out_json(FILE *f, const zp_sweep_out *o, const char *summary) {
             zp_study_kind_name(o->s->kind), o->s->npoint);
     for (int v = 0; v < o->s->nvary; v++) {
         const zp_sweep_vary *va = &o->s->vary[v];
-        fprintf(f, "%s{\"key\": \"%s.%s\", \"factor\": %s, \"from\": ", v ? ", " : "",
-                va->section, va->key, va->kind == ZP_VARY_SCALE ? "true" : "false");
+        fprintf(f, "%s{\"key\": \"%s.%s\", \"factor\": %s, \"from\": ", v ? ", " : "", va->section,
+                va->key, va->kind == ZP_VARY_SCALE ? "true" : "false");
         zp_out_json_number(f, va->a);
         fputs(", \"to\": ", f);
         zp_out_json_number(f, va->b);
