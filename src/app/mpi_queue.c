@@ -10,9 +10,9 @@
 #include <time.h>
 
 enum { TAG_ASK = 1, TAG_ITEM = 2 };
-/* the dispatcher's nap between probes: a rank waits at most this for its next item, and the
-   dispatcher never spins a core that rank 0's threads compute on */
-#define NAP_NS 200000
+/* the dispatcher's nap between probes (1 ms): a rank waits at most this for its next item,
+   and the dispatcher never spins a core that rank 0's threads compute on */
+#define NAP_NS 1000000
 
 typedef struct queue {
     const int *todo;
