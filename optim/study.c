@@ -35,7 +35,8 @@ static void fail(zp_study_row *row, const char *why) {
 }
 
 /* outcome, time and margin of the answer's run r; the limit that decides the row */
-static void fill(const zp_scene *sc, const zp_model *m, const zp_result *r, zp_study_row *row) {
+static void fill(const zp_scene *sc, const zp_model *m, const zp_schedule *sh, const zp_result *r,
+                 zp_study_row *row) {
     double angle = 0;
     for (int i = 0; i < m->nlink; i++) {
         angle = fmax(angle, r->max_rel_angle[i]);
@@ -50,11 +51,11 @@ static void fill(const zp_scene *sc, const zp_model *m, const zp_result *r, zp_s
                                                     : "margin");
         return;
     }
-    double eps = ACTIVE_REL * fmax(sc->force_max - sc->force_min, 1);
     int at_max = 0, at_min = 0;
-    for (int k = 0; k < m->nsec; k++) {
-        at_max |= row->force[k] >= sc->force_max - eps;
-        at_min |= row->force[k] <= sc->force_min + eps;
+    for (int k = 0; k < row->np; k++) {
+        double eps = ACTIVE_REL * fmax(sh->hi[k] - sh->lo[k], 1);
+        at_max |= row->force[k] >= sh->hi[k] - eps;
+        at_min |= row->force[k] <= sh->lo[k] + eps;
     }
     snprintf(row->limit, sizeof row->limit, "%s%s%s%s%s",
              row->margin - sc->margin < ACTIVE_DEG ? "margin" : "",
@@ -72,6 +73,7 @@ static void run_search(const zp_scene *sc, const zp_model *m, const zp_objective
        [optimize] integrator and tolerance */
     zp_sim_opts fast = *so;
     fast.track_loads = 0;
+    fast.output_dt = 0;
     fast.method = zp_method_find(sc->search_method);
     fast.rtol = sc->search_rtol;
     fast.atol = sc->search_rtol / 100;
@@ -82,21 +84,21 @@ static void run_search(const zp_scene *sc, const zp_model *m, const zp_objective
         fail(row, "out of memory for the search");
         return;
     }
-    if (zp_search_run(ob, &fast, sc->force_min, sc->force_max, &o, res, err, sizeof err)) {
+    if (zp_search_run(ob, &fast, ob->shape->lo[0], ob->shape->hi[0], &o, res, err, sizeof err)) {
         fail(row, err);
         free(res);
         return;
     }
     row->found = res->found;
     row->evals = res->evals;
-    memcpy(row->force, res->force, sizeof *row->force * (size_t)m->nsec);
+    memcpy(row->force, res->force, sizeof *row->force * (size_t)row->np);
     zp_verify v;
     zp_sim *best = NULL;
     if (zp_verify_run(ob, so, res->force, sc->seed, 0, 0, &best, &v, err, sizeof err)) {
         fail(row, err);
     } else {
         row->verified = v.agree;
-        fill(sc, m, v.run, row);
+        fill(sc, m, ob->shape, v.run, row);
     }
     zp_verify_free(&v);
     zp_sim_free(best);
@@ -110,15 +112,15 @@ static void run_simulate(const zp_scene *sc, const zp_model *m, const zp_objecti
     if (!s || !r) {
         fail(row, "out of memory for the simulator");
     } else {
-        memcpy(row->force, sc->forces, sizeof *row->force * (size_t)m->nsec);
+        memcpy(row->force, ob->shape->p, sizeof *row->force * (size_t)row->np);
         zp_eval e;
-        zp_objective_eval(ob, s, sc->forces, &e, r);
+        zp_objective_eval(ob, s, ob->shape->p, &e, r);
         row->evals = 1;
         if (e.failed) {
             fail(row, r->message);
         } else {
             row->found = zp_objective_feasible(&e);
-            fill(sc, m, r, row);
+            fill(sc, m, ob->shape, r, row);
         }
     }
     zp_sim_free(s);
@@ -127,7 +129,8 @@ static void run_simulate(const zp_scene *sc, const zp_model *m, const zp_objecti
 
 void zp_study_run(const zp_scene *sc, zp_study_kind kind, zp_study_row *row) {
     memset(row, 0, sizeof *row);
-    row->nsec = sc->nsec;
+    zp_schedule sched = zp_schedule_of_scene(sc);
+    row->np = sched.np;
     zp_diag d;
     zp_diag_init(&d);
     zp_model *m = zp_model_build(sc, &d);
@@ -139,7 +142,7 @@ void zp_study_run(const zp_scene *sc, zp_study_kind kind, zp_study_row *row) {
     }
     so.output_dt = 0; /* outcomes only: output requests never change the integrator's steps */
     /* the limit exactly as the search command sets it, so a point equals `zipopt SCENE` */
-    zp_objective ob = {m, m->phi_max - sc->margin * M_PI / 180, so.t_max};
+    zp_objective ob = {m, m->phi_max - sc->margin * M_PI / 180, so.t_max, &sched};
     if (kind == ZP_STUDY_SEARCH) {
         run_search(sc, m, &ob, &so, row);
     } else {

@@ -3,6 +3,7 @@
 #ifndef ZP_STUDY_H
 #define ZP_STUDY_H
 
+#include "drive.h"
 #include "sim.h"
 
 typedef enum { ZP_STUDY_SEARCH, ZP_STUDY_SIMULATE, ZP_STUDY_KIND_COUNT } zp_study_kind;
@@ -20,8 +21,9 @@ typedef struct zp_study_row {
                            "t_max") */
     int verified;       /* search: the answer agrees at a 100x tighter tolerance; simulate: 0 */
     long evals;         /* simulations the point spent */
-    int nsec;
-    double force[ZP_MAX_SECTIONS]; /* N per section: the answer (or the closest candidate) */
+    int np;                            /* the parameters of the scene's kind of schedule */
+    double force[ZP_SCHED_MAX_PARAMS]; /* the answer's (or closest candidate's) parameters:
+                                          N per section for per-section forces */
     char message[200];             /* why it failed, for the row */
 } zp_study_row;
 
@@ -29,9 +31,10 @@ typedef struct zp_study_row {
 const char *zp_study_kind_name(zp_study_kind k);
 int zp_study_kind_find(const char *name);
 
-/* Runs the point: builds sc's model, then the search (the scene's [optimize] budget and seed,
-   OpenMP threads inside) with its answer re-run at the scene's tolerance and checked 100x
-   tighter, or one simulation of sc's [drive] forces. The row depends only on sc, never on the
+/* Runs the point: builds sc's model, then the search over the scene's schedule (its [drive]
+   kind and bounds; the [optimize] budget and seed; OpenMP threads inside) with its answer
+   re-run at the scene's tolerance and checked 100x tighter, or one simulation of sc's [drive]
+   forces. The row depends only on sc, never on the
    process or the thread count. A failure (bad model, integrator breakdown, no memory) is a row
    with failed = 1, not an error of the study. */
 void zp_study_run(const zp_scene *sc, zp_study_kind kind, zp_study_row *row);

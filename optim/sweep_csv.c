@@ -12,7 +12,7 @@
 
 #define NFIXED 8 /* result columns before the forces: status .. evals */
 
-void zp_sweep_csv_header(FILE *f, const zp_sweep *s, int nsec) {
+void zp_sweep_csv_header(FILE *f, const zp_sweep *s, int np) {
     fputs("point", f);
     for (int v = 0; v < s->nvary; v++) {
         char col[64];
@@ -20,7 +20,7 @@ void zp_sweep_csv_header(FILE *f, const zp_sweep *s, int nsec) {
         fprintf(f, ",%s", col);
     }
     fputs(",status,found,outcome,time_s,margin_deg,limit,verified,evals", f);
-    for (int k = 1; k <= nsec; k++) {
+    for (int k = 1; k <= np; k++) {
         fprintf(f, ",F%d_N", k);
     }
     fputs(",message\n", f);
@@ -39,7 +39,7 @@ void zp_sweep_csv_row(FILE *f, const zp_sweep *s, int p, const zp_study_row *r) 
     }
     if (r->failed) {
         fputs(",failed,,,,,,,", f);
-        for (int k = 0; k < r->nsec; k++) {
+        for (int k = 0; k < r->np; k++) {
             fputc(',', f);
         }
     } else {
@@ -47,7 +47,7 @@ void zp_sweep_csv_row(FILE *f, const zp_sweep *s, int p, const zp_study_row *r) 
         put_num(f, r->time);
         put_num(f, r->margin);
         fprintf(f, ",%s,%d,%ld", r->limit, r->verified, r->evals);
-        for (int k = 0; k < r->nsec; k++) {
+        for (int k = 0; k < r->np; k++) {
             put_num(f, r->force[k]);
         }
     }
@@ -66,7 +66,7 @@ static int num_field(const char *t, double *x) {
 }
 
 /* the result fields of a row that did not fail: status .. evals, then the forces */
-static int parse_result(char **fld, int nsec, zp_study_row *r) {
+static int parse_result(char **fld, int np, zp_study_row *r) {
     char *end;
     r->found = fld[1][0] == '1' && !fld[1][1];
     r->outcome = ZP_OUTCOME_COUNT;
@@ -80,14 +80,14 @@ static int parse_result(char **fld, int nsec, zp_study_row *r) {
     r->evals = strtol(fld[7], &end, 10);
     int bad = r->outcome == ZP_OUTCOME_COUNT || num_field(fld[3], &r->time) ||
               num_field(fld[4], &r->margin) || *end || !fld[7][0];
-    for (int k = 0; k < nsec && !bad; k++) {
+    for (int k = 0; k < np && !bad; k++) {
         bad = num_field(fld[NFIXED + k], &r->force[k]);
     }
     return bad ? -1 : 0;
 }
 
-int zp_sweep_csv_parse(const char *line, const zp_sweep *s, int nsec, int *p, zp_study_row *r) {
-    enum { MAXF = 1 + ZP_SWEEP_MAX_VARY + NFIXED + ZP_MAX_SECTIONS + 1 };
+int zp_sweep_csv_parse(const char *line, const zp_sweep *s, int np, int *p, zp_study_row *r) {
+    enum { MAXF = 1 + ZP_SWEEP_MAX_VARY + NFIXED + ZP_SCHED_MAX_PARAMS + 1 };
     char buf[8192], *fld[MAXF];
     int n = 0;
     snprintf(buf, sizeof buf, "%s", line);
@@ -100,10 +100,10 @@ int zp_sweep_csv_parse(const char *line, const zp_sweep *s, int nsec, int *p, zp
         *c = '\0';
     }
     memset(r, 0, sizeof *r);
-    r->nsec = nsec;
+    r->np = np;
     char *end;
     long pl = strtol(fld[0], &end, 10);
-    if (n != 1 + s->nvary + NFIXED + nsec + 1 || end == fld[0] || *end || pl < 0 ||
+    if (n != 1 + s->nvary + NFIXED + np + 1 || end == fld[0] || *end || pl < 0 ||
         pl >= s->npoint) {
         return -1;
     }
@@ -120,11 +120,11 @@ int zp_sweep_csv_parse(const char *line, const zp_sweep *s, int nsec, int *p, zp
         r->failed = 1;
         return 0;
     }
-    return strcmp(res[0], "ok") ? -1 : parse_result(res, nsec, r);
+    return strcmp(res[0], "ok") ? -1 : parse_result(res, np, r);
 }
 
 /* the checkpoint's first two lines: what study it belongs to, then the CSV header */
-static char *study_head(const zp_sweep *s, const char *base, int nsec) {
+static char *study_head(const zp_sweep *s, const char *base, int np) {
     uint64_t h = 0xcbf29ce484222325ULL; /* FNV-1a of the scene text */
     for (const unsigned char *c = (const unsigned char *)base; *c; c++) {
         h = (h ^ *c) * 0x100000001b3ULL;
@@ -135,20 +135,20 @@ static char *study_head(const zp_sweep *s, const char *base, int nsec) {
     if (!f) {
         return NULL;
     }
-    fprintf(f, "# zipopt sweep checkpoint: run=%s scene=%016llx nsec=%d vary=",
-            zp_study_kind_name(s->kind), (unsigned long long)h, nsec);
+    fprintf(f, "# zipopt sweep checkpoint: run=%s scene=%016llx np=%d vary=",
+            zp_study_kind_name(s->kind), (unsigned long long)h, np);
     for (int v = 0; v < s->nvary; v++) {
         fprintf(f, "%s%s", v ? " " : "", s->vary[v].text);
     }
     fputc('\n', f);
-    zp_sweep_csv_header(f, s, nsec);
+    zp_sweep_csv_header(f, s, np);
     fclose(f);
     return text;
 }
 
 /* the whole rows of an old checkpoint into rows/done; returns the length of the good part,
    or -1 when it belongs to another study */
-static long read_rows(const char *old, const char *head, const zp_sweep *s, int nsec,
+static long read_rows(const char *old, const char *head, const zp_sweep *s, int np,
                       zp_study_row *rows, unsigned char *done, int *ndone) {
     size_t hl = strlen(head);
     if (strncmp(old, head, hl)) {
@@ -165,7 +165,7 @@ static long read_rows(const char *old, const char *head, const zp_sweep *s, int 
             break; /* the last line, torn by a kill */
         }
         snprintf(line, sizeof line, "%.*s", (int)len, old + pos);
-        if (zp_sweep_csv_parse(line, s, nsec, &p, &r)) {
+        if (zp_sweep_csv_parse(line, s, np, &p, &r)) {
             break;
         }
         *ndone += !done[p];
@@ -177,16 +177,16 @@ static long read_rows(const char *old, const char *head, const zp_sweep *s, int 
 }
 
 zp_status zp_sweep_checkpoint_open(zp_sweep_checkpoint *c, const char *dir, const zp_sweep *s,
-                                   const char *base, int nsec, int resume, zp_study_row *rows,
+                                   const char *base, int np, int resume, zp_study_row *rows,
                                    unsigned char *done, int *ndone, char *err, size_t errlen) {
     c->f = NULL;
     *ndone = 0;
     snprintf(c->path, sizeof c->path, "%s/checkpoint.csv", dir);
-    char *head = study_head(s, base, nsec), *old = NULL;
+    char *head = study_head(s, base, np), *old = NULL;
     size_t len = 0;
     long keep = -2;
     if (head && resume && (old = zp_sweep_read_file(c->path, &len)) != NULL) {
-        keep = strlen(old) == len ? read_rows(old, head, s, nsec, rows, done, ndone) : -1;
+        keep = strlen(old) == len ? read_rows(old, head, s, np, rows, done, ndone) : -1;
     }
     free(old);
     if (keep == -1) {

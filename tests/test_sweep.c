@@ -112,7 +112,7 @@ int main(void) {
                       .margin = 10.000000000000002,
                       .verified = 1,
                       .evals = 1234,
-                      .nsec = 2,
+                      .np = 2,
                       .force = {0.1, 500},
                       .limit = "margin+drive.max"},
                  back;

@@ -10,6 +10,7 @@
 #include "cli.h"
 #include "gnuplot.h"
 #include "mpi_queue.h"
+#include "scene_read.h"
 #include "sweep_csv.h"
 #include "sweep_out.h"
 
@@ -106,7 +107,7 @@ typedef struct study {
     const zp_sweep *s;
     const char *base, *path; /* the scene text and its file name */
     char name[ZP_NAME_MAX];  /* the scene's name */
-    int nsec;
+    int np; /* parameters of the schedule */
     zp_scene *sc;        /* owned: scratch for the point being computed */
     zp_study_row *rows;  /* owned, npoint */
     unsigned char *done; /* owned, npoint */
@@ -144,7 +145,7 @@ static void work(void *user, int p, void *result) {
     if (point_scene(st, p, &d)) {
         memset(row, 0, sizeof *row);
         row->failed = 1;
-        row->nsec = st->nsec;
+        row->np = st->np;
         snprintf(row->message, sizeof row->message, "%.*s", (int)sizeof row->message - 1,
                  d.n ? d.text[0] : "bad scene");
         return;
@@ -211,7 +212,7 @@ static int write_outputs(const char *dir, const zp_sweep_out *o, const char *sum
         fprintf(stderr, "zipopt sweep: %s; nothing was written\n", err);
         return -1;
     }
-    zp_sweep_csv_header(csv, o->s, o->nsec);
+    zp_sweep_csv_header(csv, o->s, o->np);
     for (int p = 0; p < o->s->npoint; p++) {
         zp_sweep_csv_row(csv, o->s, p, &o->rows[p]);
     }
@@ -228,7 +229,7 @@ static int write_outputs(const char *dir, const zp_sweep_out *o, const char *sum
 
 /* rank 0, once every point is done: the files, then the summary on stdout */
 static int finish(study *st, const sweep_args *a, const char *dir, int ranks) {
-    zp_sweep_out o = {st->s, st->rows, st->name, st->nsec};
+    zp_sweep_out o = {st->s, st->rows, st->name, st->np};
     char summary[4096];
     zp_sweep_out_summary(&o, summary, sizeof summary);
     int no_gnuplot = 0;
@@ -276,7 +277,7 @@ static int prepare(const sweep_args *a, zp_sweep *s, study *st, char **base) {
         return ZP_EXIT_USAGE;
     }
     snprintf(st->name, sizeof st->name, "%s", st->sc->name);
-    st->nsec = st->sc->nsec;
+    st->np = zp_schedule_of_scene(st->sc).np;
     int kind = zp_study_kind_find(a->run);
     if (kind < 0) {
         fprintf(stderr, "zipopt sweep: --run '%s': expected search or simulate\n", a->run);
@@ -308,7 +309,7 @@ static int open_study(study *st, const sweep_args *a, const char *dir, int **tod
         return ZP_EXIT_FAIL;
     }
     char err[1300];
-    zp_status rc = zp_sweep_checkpoint_open(&st->cp, dir, st->s, st->base, st->nsec, a->resume,
+    zp_status rc = zp_sweep_checkpoint_open(&st->cp, dir, st->s, st->base, st->np, a->resume,
                                             st->rows, st->done, &st->ndone, err, sizeof err);
     if (rc) {
         fprintf(stderr, "zipopt sweep: %s; nothing was written\n", err);

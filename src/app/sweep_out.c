@@ -184,7 +184,7 @@ static void point_json(FILE *f, const zp_sweep_out *o, int p) {
         zp_out_json_number(f, zp_sweep_value(o->s, v, p));
     }
     fputs("], \"forces\": [", f);
-    for (int k = 0; k < o->nsec; k++) {
+    for (int k = 0; k < o->np; k++) {
         fputs(k ? ", " : "", f);
         zp_out_json_number(f, o->rows[p].force[k]);
     }

@@ -12,7 +12,7 @@ typedef struct zp_sweep_out {
     const zp_sweep *s;        /* borrowed */
     const zp_study_row *rows; /* borrowed */
     const char *scene;        /* the scene's name */
-    int nsec;
+    int np; /* parameters of the schedule */
 } zp_sweep_out;
 
 /* One or two sentences: how many points keep the limits, the fastest and slowest, where none
