@@ -46,57 +46,56 @@ typedef struct sweep_args {
     const char *vary[MAX_ARGS_VARY];
 } sweep_args;
 
-/* the value of option name at argv[*i], as "--name value" or "--name=value"; NULL if not it */
-static const char *opt_value(int argc, char **argv, int *i, const char *name) {
-    size_t n = strlen(name);
-    if (strncmp(argv[*i], name, n)) {
-        return NULL;
-    }
-    if (argv[*i][n] == '=') {
-        return argv[*i] + n + 1;
-    }
-    return !argv[*i][n] && *i + 1 < argc ? argv[++*i] : NULL;
-}
+enum { O_VARY = ZP_OPT_FIRST, O_RUN, O_OUT, O_RESUME, O_JSON };
+static const struct option options[] = {
+    {"help", no_argument, NULL, 'h'},
+    {"vary", required_argument, NULL, O_VARY},
+    {"run", required_argument, NULL, O_RUN},
+    {"out", required_argument, NULL, O_OUT},
+    {"resume", no_argument, NULL, O_RESUME},
+    {"json", no_argument, NULL, O_JSON},
+    {NULL, 0, NULL, 0},
+};
 
 /* 0, 1 (--help shown) or -1 (reported) */
 static int parse_args(int argc, char **argv, sweep_args *a) {
     memset(a, 0, sizeof *a);
     a->run = "search";
-    int opts = 1;
-    for (int i = 1; i < argc; i++) {
-        const char *o = argv[i], *v;
-        if (opts && (!strcmp(o, "--help") || !strcmp(o, "-h"))) {
+    zp_cli_opts_begin();
+    for (int c; (c = zp_cli_opts_next("sweep", argc, argv, options)) != -1;) {
+        switch (c) {
+        case 'h':
             usage(stdout);
             return 1;
-        } else if (opts && !strcmp(o, "--")) {
-            opts = 0;
-        } else if (opts && !strcmp(o, "--resume")) {
-            a->resume = 1;
-        } else if (opts && !strcmp(o, "--json")) {
-            a->json = 1;
-        } else if (opts && (v = opt_value(argc, argv, &i, "--vary")) != NULL) {
+        case O_VARY:
             if (a->nvary < MAX_ARGS_VARY) {
-                a->vary[a->nvary] = v;
+                a->vary[a->nvary] = optarg;
             }
             a->nvary++;
-        } else if (opts && (v = opt_value(argc, argv, &i, "--run")) != NULL) {
-            a->run = v;
-        } else if (opts && (v = opt_value(argc, argv, &i, "--out")) != NULL) {
-            a->out = v;
-        } else if (opts) {
-            if (zp_cli_scene_arg("sweep", o, &a->scene)) {
-                return -1;
-            }
-        } else if (a->scene) {
-            fprintf(stderr, "zipopt sweep: unexpected argument '%s' (one scene file only)\n", o);
+            break;
+        case O_RUN:
+            a->run = optarg;
+            break;
+        case O_OUT:
+            a->out = optarg;
+            break;
+        case O_RESUME:
+            a->resume = 1;
+            break;
+        case O_JSON:
+            a->json = 1;
+            break;
+        default:
             return -1;
-        } else {
-            a->scene = o;
         }
+    }
+    if (zp_cli_scene_operand("sweep", argc, argv, &a->scene) ||
+        (a->out && zp_cli_path_ok("sweep", "--out", a->out))) {
+        return -1;
     }
     const char *miss = !a->scene ? "a scene file" : !a->nvary ? "at least one --vary" : NULL;
     if (miss) {
-        fprintf(stderr, "zipopt sweep: %s is required; see zipopt sweep --help\n", miss);
+        zp_cli_error("sweep", "%s is required; see zipopt sweep --help", miss);
         return -1;
     }
     return 0;
