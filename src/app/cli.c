@@ -45,12 +45,24 @@ int zp_cli_apply_forces(const char *cmd, zp_scene *sc, const char *schedule,
     return 0;
 }
 
-void zp_cli_out_dir(const char *out, const zp_scene *sc, char *dir, size_t cap) {
-    if (out) {
-        snprintf(dir, cap, "%s", out);
-    } else {
-        snprintf(dir, cap, "out/%s", sc->name);
+int zp_cli_out_begin(zp_tx *t, const char *cmd, const char *folder, const char *out,
+                     const zp_scene *sc) {
+    char sub[2 * ZP_NAME_MAX], err[1400];
+    snprintf(sub, sizeof sub, "%s/%s", sc->name, folder);
+    if (zp_tx_begin(t, out ? out : "out", out ? NULL : sub, err, sizeof err)) {
+        fprintf(stderr, "zipopt%s%s: %s; nothing was written\n", *cmd ? " " : "", cmd, err);
+        return -1;
     }
+    return 0;
+}
+
+int zp_cli_out_commit(zp_tx *t, const char *cmd) {
+    char err[1400];
+    if (zp_tx_commit(t, err, sizeof err)) {
+        fprintf(stderr, "zipopt%s%s: %s; nothing was written\n", *cmd ? " " : "", cmd, err);
+        return -1;
+    }
+    return 0;
 }
 
 zp_model *zp_cli_load(const char *path, zp_scene *sc) {
@@ -93,7 +105,7 @@ void zp_cli_usage(FILE *f) {
           "         [--no-plot]\n"
           "      Search for the fastest survivable schedule of drive forces (one per course\n"
           "      section), verify it 100x tighter and write report.md, schedule.ini,\n"
-          "      summary.json, the best run's trajectory and figures to out/<scene name>/\n"
+          "      summary.json, the best run's trajectory and figures to out/<scene name>/search/\n"
           "      (or DIR). With no file: the built-in seed scene. See zipopt SCENE --help.\n"
           "  zipopt simulate SCENE.ini [--force F1,F2,..] [--schedule FILE] [--json]\n"
           "                  [--sample-times T1,T2,..] [--out DIR]\n"
@@ -108,7 +120,7 @@ void zp_cli_usage(FILE *f) {
           "      body, drive, solver and search settings. Writes nothing.\n"
           "  zipopt bench trade [SCENE.ini] [--repeats N] [--out DIR]\n"
           "      Work-precision study of every method over rtol 1e-3..1e-12; writes\n"
-          "      out/bench/trade.csv, trade.gp and trade.png. See zipopt bench --help.\n"
+          "      out/<scene name>/bench/trade.csv, .gp and .png. See zipopt bench --help.\n"
           "  zipopt landscape SCENE.ini [--force-range A:B:N] [--slice I,J [--range ..]]\n"
           "                  [--force F1,..|--schedule FILE] [--out DIR]\n"
           "      The survival landscape: finish time or death over a constant push, and over\n"

@@ -4,6 +4,7 @@
 #define ZP_CLI_H
 
 #include "model.h"
+#include "out_file.h"
 #include "scene_read.h"
 
 enum { ZP_EXIT_OK = 0, ZP_EXIT_FAIL = 1, ZP_EXIT_USAGE = 2 };
@@ -19,8 +20,14 @@ int zp_cli_scene_arg(const char *cmd, const char *arg, const char **scene);
    reporting problems for `zipopt <cmd>` (with "nothing was written"); 0 or -1. */
 int zp_cli_apply_forces(const char *cmd, zp_scene *sc, const char *schedule,
                         const char *force_text);
-/* The output folder: --out DIR if given, else out/<scene name> (CLI.md "Files"). */
-void zp_cli_out_dir(const char *out, const zp_scene *sc, char *dir, size_t cap);
+/* Begins the command's one transaction (out_file.h) in --out DIR itself when out is given,
+   else in out/<scene name>/<folder> (CLI.md "Files"); says why on stderr for `zipopt <cmd>`
+   and returns -1 on failure. */
+int zp_cli_out_begin(zp_tx *t, const char *cmd, const char *folder, const char *out,
+                     const zp_scene *sc);
+/* Commits t (then t->dir and t->written say what was written), or says why and "nothing was
+   written" on stderr for `zipopt <cmd>`. 0 or -1. */
+int zp_cli_out_commit(zp_tx *t, const char *cmd);
 /* Loads path (NULL: the built-in seed) and builds the model; prints every diagnostic to
    stderr and returns NULL on bad input. */
 zp_model *zp_cli_load(const char *path, zp_scene *sc);

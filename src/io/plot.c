@@ -6,6 +6,8 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <fcntl.h>
+#include <sys/stat.h>
 
 #include "gnuplot.h"
 #include "scene_read.h"
@@ -583,23 +585,28 @@ static void write_anim(FILE *gp, FILE *dat, FILE *lab, const zp_model *m, const 
             course.x0 - 1, course.x1 + 1, course.y0 - 1, course.y1 + 1);
 }
 
-zp_status zp_plot_run(const char *dir, const zp_model *m, const zp_row *rows, int n,
-                      const zp_result *r, const zp_plot_opts *o, zp_plot_info *info, char *err,
-                      size_t errlen) {
+/* opens name in the transaction and, for a script, lists it to be drawn */
+static FILE *open_file(zp_tx *t, const char *name, const char **scripts, int *nscript, char *err,
+                       size_t errlen) {
+    if (scripts) {
+        scripts[(*nscript)++] = name;
+    }
+    return zp_tx_open(t, name, err, errlen);
+}
+
+zp_status zp_plot_run(zp_tx *t, const zp_model *m, const zp_row *rows, int n, const zp_result *r,
+                      const zp_plot_opts *o, zp_plot_info *info, char *err, size_t errlen) {
     memset(info, 0, sizeof *info);
     if (n < 1) {
         snprintf(err, errlen, "the run has no trajectory rows to plot (output_dt <= 0?)");
         return ZP_ERR_IO;
     }
-    zp_gnuplot g;
-    if (zp_gnuplot_begin(&g, dir, err, errlen)) {
-        return ZP_ERR_IO;
-    }
+    const char *scripts[8];
+    int ns = 0;
     /* data first, then each figure's script */
-    FILE *course = zp_gnuplot_open(&g, "plot_course.dat", 0, err, errlen);
-    FILE *run = course ? zp_gnuplot_open(&g, "plot_run.dat", 0, err, errlen) : NULL;
+    FILE *course = zp_tx_open(t, "plot_course.dat", err, errlen);
+    FILE *run = course ? zp_tx_open(t, "plot_run.dat", err, errlen) : NULL;
     if (!run) {
-        zp_gnuplot_abort(&g);
         return ZP_ERR_IO;
     }
     box cb = write_course(course, m);
@@ -611,9 +618,8 @@ zp_status zp_plot_run(const char *dir, const zp_model *m, const zp_row *rows, in
     const char *names[] = {"course.gp", "energy.gp", "angles.gp", "loads.gp"};
     FILE *gp[4];
     for (int k = 0; k < 4; k++) {
-        gp[k] = zp_gnuplot_open(&g, names[k], 1, err, errlen);
+        gp[k] = open_file(t, names[k], scripts, &ns, err, errlen);
         if (!gp[k]) {
-            zp_gnuplot_abort(&g);
             return ZP_ERR_IO;
         }
     }
@@ -622,34 +628,28 @@ zp_status zp_plot_run(const char *dir, const zp_model *m, const zp_row *rows, in
     script_angles(gp[2], m, r, o, last);
     script_loads(gp[3], m, r);
     if (o->nframe) {
-        FILE *fg = zp_gnuplot_open(&g, "frames.gp", 1, err, errlen);
-        FILE *fd = fg ? zp_gnuplot_open(&g, "plot_frames.dat", 0, err, errlen) : NULL;
+        FILE *fg = open_file(t, "frames.gp", scripts, &ns, err, errlen);
+        FILE *fd = fg ? zp_tx_open(t, "plot_frames.dat", err, errlen) : NULL;
         if (!fd) {
-            zp_gnuplot_abort(&g);
             return ZP_ERR_IO;
         }
         write_frames(fg, fd, m, rows, n, o, info);
     }
     if (o->animate) {
-        FILE *ag = zp_gnuplot_open(&g, "run.gp", 1, err, errlen);
-        FILE *ad = ag ? zp_gnuplot_open(&g, "plot_anim.dat", 0, err, errlen) : NULL;
-        FILE *al = ad ? zp_gnuplot_open(&g, "plot_anim_label.dat", 0, err, errlen) : NULL;
+        FILE *ag = open_file(t, "run.gp", scripts, &ns, err, errlen);
+        FILE *ad = ag ? zp_tx_open(t, "plot_anim.dat", err, errlen) : NULL;
+        FILE *al = ad ? zp_tx_open(t, "plot_anim_label.dat", err, errlen) : NULL;
         if (!al) {
-            zp_gnuplot_abort(&g);
             return ZP_ERR_IO;
         }
         info->mp4 = zp_gnuplot_have("ffmpeg");
         write_anim(ag, ad, al, m, rows, n, r, o, cb, info->mp4, info);
     }
-    zp_status st = zp_gnuplot_finish(&g, &info->no_gnuplot, err, errlen);
+    zp_status st = zp_gnuplot_run(t, scripts, ns, &info->no_gnuplot, err, errlen);
     if (info->mp4) { /* ffmpeg's own failure does not stop the other figures */
-        char mp4[1100];
-        snprintf(mp4, sizeof mp4, "%s/run.mp4", dir);
-        FILE *f = fopen(mp4, "rb");
-        info->mp4 = f != NULL;
-        if (f) {
-            fclose(f);
-        }
+        struct stat sb;
+        info->mp4 = !info->no_gnuplot &&
+                    fstatat(zp_tx_workdir(t), "run.mp4", &sb, AT_SYMLINK_NOFOLLOW) == 0;
     }
     return st;
 }
