@@ -129,20 +129,41 @@ static void write_point(FILE *f, const zp_landscape_point *p) {
 
 static const char *result_header = "outcome,stall_reason,time,x,died_link,max_rel_angle_deg";
 
-/* the survival windows of the constant push, on stdout */
+static int finished(const zp_landscape_point *p) {
+    return !p->failed && p->outcome == ZP_OUTCOME_FINISHED;
+}
+
+/* one window, points i..j: listed as the points it is, since pushes between two sampled
+   points were never run */
+static void print_window(const range *r, int i, int j, int first) {
+    printf("%s %g", first ? "" : ";", at(r, i));
+    if (j == i + 1) {
+        printf(", %g", at(r, j));
+    } else if (j > i + 1) {
+        printf(", %g, .., %g", at(r, i + 1), at(r, j));
+    }
+    printf(" N");
+    if (j > i + 1) {
+        printf(" (%d points)", j - i + 1);
+    }
+}
+
+/* the survival windows of the constant push on stdout: runs of consecutive sampled pushes
+   that finish */
 static void print_windows(const range *r, const zp_landscape_point *p) {
-    int best = -1, nwin = 0;
-    printf("constant push from %g to %g N (%d runs): finishes for", r->a, r->b, r->n);
+    int best = -1, nwin = 0, start = 0;
+    printf("constant push from %g to %g N (%d runs, every %g N): finishes at", r->a, r->b, r->n,
+           (r->b - r->a) / (r->n - 1));
     for (int k = 0; k < r->n; k++) {
-        int fin = !p[k].failed && p[k].outcome == ZP_OUTCOME_FINISHED;
-        if (fin && (best < 0 || p[k].time < p[best].time)) {
+        if (!finished(&p[k])) {
+            continue;
+        }
+        if (best < 0 || p[k].time < p[best].time) {
             best = k;
         }
-        if (fin && (k == 0 || p[k - 1].failed || p[k - 1].outcome != ZP_OUTCOME_FINISHED)) {
-            printf("%s %g", nwin++ ? "," : "", at(r, k));
-        }
-        if (fin && (k == r->n - 1 || p[k + 1].failed || p[k + 1].outcome != ZP_OUTCOME_FINISHED)) {
-            printf("..%g N", at(r, k));
+        start = k == 0 || !finished(&p[k - 1]) ? k : start;
+        if (k == r->n - 1 || !finished(&p[k + 1])) {
+            print_window(r, start, k, !nwin++);
         }
     }
     if (best < 0) {

@@ -557,22 +557,42 @@ static int get_text(parse_ctx *c, int k, char *out, size_t cap) {
     return 1;
 }
 
+/* a name that is one folder: letters, digits, `.`, `_`, `-`, no leading dot, not empty */
+static int plain_name(const char *name) {
+    return name[0] && name[0] != '.' &&
+           strspn(name, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789._-") ==
+               strlen(name);
+}
+
+/* text for a message, control bytes shown as `?` (static buffer: one use per message) */
+static const char *shown(const char *text) {
+    static char buf[256];
+    size_t k = 0;
+    for (; text[k] && k + 1 < sizeof buf; k++) {
+        buf[k] = (unsigned char)text[k] < 0x20 || text[k] == 0x7f ? '?' : text[k];
+    }
+    buf[k] = '\0';
+    return buf;
+}
+
 static void convert_scene(parse_ctx *c, zp_scene *sc) {
     double v;
     unsigned long u;
     char what[LINE_CAP + 64];
 
-    /* [scene]: the name becomes a folder under out/, so it may not climb or nest */
+    /* [scene]: the name becomes a folder under out/, so it may not climb or nest; the
+       default, the file's stem, obeys the same rule */
     char name[ZP_NAME_MAX];
-    if (get_text(c, K_NAME, name, sizeof name) > 0) {
-        if (name[0] == '.' ||
-            strspn(name, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789._-") !=
-                strlen(name)) {
-            snprintf(what, sizeof what, "`%s` is not a plain folder name", name);
-            bad_key(c, K_NAME, what);
-        } else {
-            strcpy(sc->name, name);
-        }
+    int given = get_text(c, K_NAME, name, sizeof name);
+    if (given > 0 && !plain_name(name)) {
+        snprintf(what, sizeof what, "`%.100s` is not a plain folder name", shown(name));
+        bad_key(c, K_NAME, what);
+    } else if (given > 0) {
+        strcpy(sc->name, name);
+    } else if (!given && !plain_name(sc->name)) {
+        bad(c, 0, "scene", "name",
+            "missing, and the file's name `%s` gives no plain folder name; expected %s",
+            shown(c->file), keys[K_NAME].expect);
     }
     get_number(c, K_GRAVITY, R_NONNEG, &sc->gravity);
 
@@ -720,7 +740,9 @@ static void set_defaults(zp_scene *sc, const char *path) {
     snprintf(sc->path, sizeof sc->path, "%s", path);
     /* the name is the file's stem: no folders, no extension */
     const char *base = strrchr(path, '/') ? strrchr(path, '/') + 1 : path;
-    snprintf(sc->name, sizeof sc->name, "%s", base);
+    if (snprintf(sc->name, sizeof sc->name, "%s", base) >= (int)sizeof sc->name) {
+        sc->name[0] = '\0'; /* too long: no name, rather than a shortened one */
+    }
     char *dot = strrchr(sc->name, '.');
     if (dot && dot != sc->name) {
         *dot = '\0';
