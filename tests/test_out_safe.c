@@ -148,8 +148,8 @@ static void test_links(void) {
              "ln -s '%s/precious.txt' d2/summary.json",
              tmp, tmp) == 0);
     /* links at every name the run could predict */
-    char *argv[] = {ZP_EXE, "simulate", SEED, "--force", "20,20,20", "--plot", "--out",
-                    (char *)at("d1"), NULL};
+    char *argv[] = {ZP_EXE,  "simulate",       SEED, "--force", "20,20,20", "--plot",
+                    "--out", (char *)at("d1"), NULL};
     CHECK(wait_exit(spawn(argv, plant_pid_links, (void *)at("d1"))) == 0);
     CHECK(!strcmp(slurp(at("precious/keep.txt"), 0), "PRECIOUS\n")); /* the tree not emptied */
     CHECK(!strcmp(slurp(at("precious.txt"), 0), "PRECIOUS\n"));      /* the target not written */
@@ -236,9 +236,8 @@ static void test_concurrent(void) {
     double t[2];
     for (int k = 0; k < 2; k++) {
         CHECK(sh("'%s' simulate tiny.ini --force %s --out ref%d", ZP_EXE, force[k], k) == 0);
-        snprintf(traj[k], sizeof traj[k], "%s", slurp(at(k ? "ref1/trajectory.csv"
-                                                            : "ref0/trajectory.csv"),
-                                                         0));
+        snprintf(traj[k], sizeof traj[k], "%s",
+                 slurp(at(k ? "ref1/trajectory.csv" : "ref0/trajectory.csv"), 0));
         t[k] = json_time(slurp(at(k ? "ref1/summary.json" : "ref0/summary.json"), 0));
     }
     CHECK(t[0] != t[1] && strcmp(traj[0], traj[1]));
@@ -246,8 +245,8 @@ static void test_concurrent(void) {
     for (int i = 0; i < 200; i++) {
         pid_t pid[2];
         for (int k = 0; k < 2; k++) {
-            char *argv[] = {ZP_EXE, "simulate", (char *)at("tiny.ini"), "--force",
-                            (char *)force[k], "--out", (char *)at("conc"), NULL};
+            char *argv[] = {ZP_EXE,           "simulate", (char *)at("tiny.ini"), "--force",
+                            (char *)force[k], "--out",    (char *)at("conc"),     NULL};
             pid[k] = spawn(argv, NULL, NULL);
         }
         int ok = wait_exit(pid[0]) == 0;
@@ -315,9 +314,10 @@ static void test_signals(void) {
 
 /* each command its own default folder; a rerun removes nothing it did not write */
 static void test_folders(void) {
-    CHECK(sh("mkdir -p f && cd f && '%s' ../tiny.ini --max-evals 40 >/dev/null && "
-             "'%s' simulate ../tiny.ini --plot >/dev/null && echo mine > out/tiny/simulate/notes.txt",
-             ZP_EXE, ZP_EXE) == 0);
+    CHECK(
+        sh("mkdir -p f && cd f && '%s' ../tiny.ini --max-evals 40 >/dev/null && "
+           "'%s' simulate ../tiny.ini --plot >/dev/null && echo mine > out/tiny/simulate/notes.txt",
+           ZP_EXE, ZP_EXE) == 0);
     CHECK(is_regular(at("f/out/tiny/search/report.md")));
     CHECK(is_regular(at("f/out/tiny/search/course.png"))); /* the figures the report links */
     CHECK(is_regular(at("f/out/tiny/simulate/course.png")));

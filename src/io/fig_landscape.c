@@ -113,4 +113,3 @@ void zp_fig_landscape_2d(FILE *f, const char *scene, int nsec, int si, int sj,
             0.51 * dy, si + 1, sj + 1, 0.51 * dx, 0.51 * dy, right ? "right" : "left",
             right ? -1.5 : 1.5, upper ? -1.2 : 1.2);
 }
-

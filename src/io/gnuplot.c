@@ -45,7 +45,8 @@ static pid_t start(zp_tx *t, const char *script) {
         zp_tx_block_signals(0);
         setpgid(0, 0);
         int fd = fchdir(zp_tx_workdir(t)) ? -1
-                 : openat(zp_tx_workdir(t), log, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW, 0666);
+                                          : openat(zp_tx_workdir(t), log,
+                                                   O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW, 0666);
         int in = open("/dev/null", O_RDONLY);
         if (fd < 0 || in < 0) {
             _exit(126);

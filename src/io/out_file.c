@@ -30,7 +30,9 @@ struct dirent64_raw {
     char name[];
 };
 
-static int dots(const char *n) { return n[0] == '.' && (!n[1] || (n[1] == '.' && !n[2])); }
+static int dots(const char *n) {
+    return n[0] == '.' && (!n[1] || (n[1] == '.' && !n[2]));
+}
 
 /* unlinks every entry of the folder fd (async-signal-safe; never follows a link) */
 static void empty_dir(int fd) {
@@ -179,7 +181,9 @@ static int walk(zp_tx *t, int cur, const char *path, int follow, char *err, size
     return cur;
 }
 
-void zp_tx_soft_interrupt(zp_tx *t, volatile sig_atomic_t *stop) { t->soft_stop = stop; }
+void zp_tx_soft_interrupt(zp_tx *t, volatile sig_atomic_t *stop) {
+    t->soft_stop = stop;
+}
 
 /* the private folder: a fresh unpredictable name, made by this process alone */
 static int make_private(zp_tx *t, char *err, size_t errlen) {
@@ -191,7 +195,8 @@ static int make_private(zp_tx *t, char *err, size_t errlen) {
         snprintf(t->tmp_name, sizeof t->tmp_name, ".zipopt-%02x%02x%02x%02x%02x%02x%02x%02x", r[0],
                  r[1], r[2], r[3], r[4], r[5], r[6], r[7]);
         if (mkdirat(t->dirfd, t->tmp_name, 0700) == 0) {
-            t->tmpfd = openat(t->dirfd, t->tmp_name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+            t->tmpfd =
+                openat(t->dirfd, t->tmp_name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
             if (t->tmpfd < 0) {
                 unlinkat(t->dirfd, t->tmp_name, AT_REMOVEDIR);
                 break;
@@ -283,7 +288,9 @@ int zp_tx_flush(zp_tx *t, char *err, size_t errlen) {
     return bad ? -1 : 0;
 }
 
-int zp_tx_workdir(const zp_tx *t) { return t->tmpfd; }
+int zp_tx_workdir(const zp_tx *t) {
+    return t->tmpfd;
+}
 
 int zp_tx_add_child(zp_tx *t, pid_t pid) {
     for (int i = 0; i < ZP_TX_MAX_CHILD; i++) {
@@ -303,8 +310,8 @@ void zp_tx_drop_child(zp_tx *t, pid_t pid) {
     }
 }
 
-int zp_tx_checkpoint(zp_tx *t, const char *name, void (*write)(FILE *f, void *user),
-                     void *user, char *err, size_t errlen) {
+int zp_tx_checkpoint(zp_tx *t, const char *name, void (*write)(FILE *f, void *user), void *user,
+                     char *err, size_t errlen) {
     char aside[80];
     snprintf(aside, sizeof aside, ".ck.%s", name);
     int fd = openat(t->tmpfd, aside, O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0666);
@@ -335,7 +342,9 @@ int zp_tx_checkpoint(zp_tx *t, const char *name, void (*write)(FILE *f, void *us
     return bad ? -1 : 0;
 }
 
-static int by_name(const void *a, const void *b) { return strcmp(a, b); }
+static int by_name(const void *a, const void *b) {
+    return strcmp(a, b);
+}
 
 /* the visible regular files of the private folder, sorted (caller frees); -1 on failure */
 static int list_files(const zp_tx *t, char (**names)[256]) {
@@ -381,7 +390,7 @@ static void undo_moves(zp_tx *t, char (*names)[256], const char *backed, int upt
     for (int j = upto; j >= 0; j--) {
         char old[300];
         snprintf(old, sizeof old, ".old.%s", names[j]);
-        int ok = backed[j] ? renameat(t->tmpfd, old, t->dirfd, names[j]) == 0
+        int ok = backed[j]        ? renameat(t->tmpfd, old, t->dirfd, names[j]) == 0
                  : j < moved_upto ? unlinkat(t->dirfd, names[j], 0) == 0
                                   : 1;
         if (!ok) {
@@ -431,7 +440,7 @@ zp_status zp_tx_commit(zp_tx *t, char *err, size_t errlen) {
         zp_tx_abort(t);
         return ZP_ERR_IO;
     }
-    char (*names)[256] = NULL;
+    char(*names)[256] = NULL;
     int n = list_files(t, &names);
     if (n < 0) {
         snprintf(err, errlen, "cannot read the private folder in %s", t->dir);

@@ -25,7 +25,7 @@ typedef struct zp_tx {
     FILE *f[ZP_TX_MAX_OPEN];
     char fname[ZP_TX_MAX_OPEN][256];
     volatile pid_t child[ZP_TX_MAX_CHILD]; /* 0: free slot */
-    volatile sig_atomic_t *soft_stop; /* set by the first SIGINT instead of ending the run */
+    volatile sig_atomic_t *soft_stop;      /* set by the first SIGINT instead of ending the run */
     char ck_name[64]; /* the checkpoint this run put in place, if ck_ino != 0 */
     dev_t ck_dev;
     ino_t ck_ino;
@@ -56,8 +56,8 @@ void zp_tx_block_signals(int block);
 /* Writes a file straight into the output folder (made aside, renamed under the lock), for a
    checkpoint kept while the run goes on; removed by the commit or the abort when it is still
    the one this run wrote. 0, or -1 with why. */
-int zp_tx_checkpoint(zp_tx *t, const char *name, void (*write)(FILE *f, void *user),
-                     void *user, char *err, size_t errlen);
+int zp_tx_checkpoint(zp_tx *t, const char *name, void (*write)(FILE *f, void *user), void *user,
+                     char *err, size_t errlen);
 /* Moves every visible regular file of the private folder into the output folder, as a set:
    when one move fails the earlier ones are undone. Then removes the private folder and
    disarms the handler. ZP_OK with t->written set, or ZP_ERR_IO with why; either way the
