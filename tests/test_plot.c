@@ -454,6 +454,10 @@ static void test_landscape(void) {
              "--range 5:30:6 --out '%s'",
              scene, dir);
     CHECK(run("ZIPOPT_TEST=1", args) == 0);
+    /* the windows: runs of consecutive finishing points, a lone point as a point */
+    char *said = slurp(tmp, "stdout");
+    CHECK(said && strstr(said, "finishes at 10 N; 20, 25 N\n") != NULL);
+    free(said);
     check_png(dir, "landscape.png", 0, 0);
     check_png(dir, "landscape_slice.png", 0, 0);
     char *csv = slurp(dir, "landscape.csv");
