@@ -137,8 +137,8 @@ static void usage(FILE *f) {
           "kink impulses, largest joint angles and final x/speed against a reference at rtol\n"
           "1e-13 by two methods that agree; cost as the median wall time of up to N runs\n"
           "(default 5) and rhs evaluations. Writes trade.csv, trade.gp and trade.png in DIR\n"
-          "(default out/<scene name>/bench/) and prints the fastest method and tolerance reaching a finish\n"
-          "or death time error of 1e-3, 1e-6 and 1e-9 s.\n",
+          "(default out/<scene name>/bench/) and prints the fastest method and tolerance\n"
+          "reaching a finish or death time error of 1e-3, 1e-6 and 1e-9 s.\n",
           f);
 }
 
