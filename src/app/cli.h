@@ -1,11 +1,12 @@
-/* Command-line helpers shared by the commands: scene loading with the usual messages,
-   number lists, usage text. Commands return the process exit status (0, 1, 2). */
+/* Command-line helpers shared by the commands: the scene argument, number lists, usage text
+   (loading is setup.h). Commands return the process exit status (0, 1, 2). */
 #ifndef ZP_CLI_H
 #define ZP_CLI_H
 
-#include "model.h"
+#include <stdio.h>
+
 #include "out_file.h"
-#include "scene_read.h"
+#include "scene.h"
 
 enum { ZP_EXIT_OK = 0, ZP_EXIT_FAIL = 1, ZP_EXIT_USAGE = 2 };
 
@@ -16,10 +17,6 @@ int zp_cli_parse_list(const char *text, double *out, int max, char *why, size_t 
    looks like an option or a scene was given already, which it reports for `zipopt <cmd>`
    (cmd may be "") and returns -1. */
 int zp_cli_scene_arg(const char *cmd, const char *arg, const char **scene);
-/* Lays a schedule file (may be NULL), then a --force list (may be NULL), over sc's forces,
-   reporting problems for `zipopt <cmd>` (with "nothing was written"); 0 or -1. */
-int zp_cli_apply_forces(const char *cmd, zp_scene *sc, const char *schedule,
-                        const char *force_text);
 /* Begins the command's one transaction (out_file.h) in --out DIR itself when out is given,
    else in out/<scene name>/<folder> (CLI.md "Files"); says why on stderr for `zipopt <cmd>`
    and returns -1 on failure. */
@@ -28,9 +25,6 @@ int zp_cli_out_begin(zp_tx *t, const char *cmd, const char *folder, const char *
 /* Commits t (then t->dir and t->written say what was written), or says why and "nothing was
    written" on stderr for `zipopt <cmd>`. 0 or -1. */
 int zp_cli_out_commit(zp_tx *t, const char *cmd);
-/* Loads path (NULL: the built-in seed) and builds the model; prints every diagnostic to
-   stderr and returns NULL on bad input. */
-zp_model *zp_cli_load(const char *path, zp_scene *sc);
 /* The registries' names and docs, for --help. */
 void zp_cli_print_registries(FILE *f);
 void zp_cli_usage(FILE *f);

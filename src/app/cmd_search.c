@@ -12,6 +12,7 @@
 #include "plot.h"
 #include "report.h"
 #include "search.h"
+#include "setup.h"
 #include "verify.h"
 
 #define STUDY_FORCE 100 /* N per section: the original study's push */
@@ -100,6 +101,7 @@ static int parse_args(int argc, char **argv, search_args *a) {
 
 typedef struct progress_ctx {
     const zp_scene *sc;
+    const zp_schedule *shape; /* the kind and bounds the search's parameters fill */
     zp_tx *tx;
     const zp_search_progress *p; /* the improvement being checkpointed */
     int tty;      /* stderr is a terminal: show the progress line */
@@ -111,7 +113,8 @@ static void write_checkpoint(FILE *f, void *user) {
     char note[160];
     snprintf(note, sizeof note, "search checkpoint: best so far, finish %.6f s after %ld "
              "simulations", c->p->time, c->p->evals);
-    zp_report_write_schedule(f, c->sc, c->p->force, note);
+    zp_schedule best = zp_schedule_with(c->shape, c->p->force);
+    zp_report_write_schedule(f, c->sc, &best, note);
 }
 
 /* the progress line, and the checkpoint of every improvement so a killed run loses nothing */
@@ -147,7 +150,8 @@ static int write_outputs(zp_tx *t, const zp_report *r, zp_sim *best_sim) {
     snprintf(note, sizeof note, "best schedule of the search%s: %s, %.6f s; rerun with zipopt "
              "simulate SCENE.ini --schedule this-file", r->res->interrupted ? " (interrupted)" : "",
              zp_sim_outcome_name(r->v->run->outcome), r->v->run->time);
-    zp_report_write_schedule(ini, r->sc, r->res->force, note);
+    zp_schedule best = zp_schedule_with(r->shape, r->res->force);
+    zp_report_write_schedule(ini, r->sc, &best, note);
     zp_report_write_json(js, r);
     int nrows;
     const zp_row *rows = zp_sim_rows(best_sim, &nrows);
@@ -157,17 +161,16 @@ static int write_outputs(zp_tx *t, const zp_report *r, zp_sim *best_sim) {
 
 /* the best run's figures into the transaction: 1 drawn, 0 data and scripts only (no
    gnuplot), -1 failed (said on stderr) */
-static int figures(zp_tx *t, const zp_model *m, const zp_scene *sc, const zp_search_result *res,
-                   const zp_verify *v, zp_sim *best_sim) {
+static int figures(zp_tx *t, const zp_model *m, const zp_scene *sc, const zp_schedule *shape,
+                   const zp_search_result *res, const zp_verify *v, const zp_sim *best_sim) {
     zp_plot_opts po;
     zp_plot_opts_default(&po);
     po.margin = sc->margin * M_PI / 180;
-    po.force = res->force;
+    zp_schedule best = zp_schedule_with(shape, res->force);
+    po.sched = &best;
     zp_plot_info info;
-    int nrows;
-    const zp_row *rows = zp_sim_rows(best_sim, &nrows);
     char err[1400];
-    if (zp_plot_run(t, m, rows, nrows, v->run, &po, &info, err, sizeof err)) {
+    if (zp_plot_run(t, m, best_sim, v->run, &po, &info, err, sizeof err)) {
         fprintf(stderr, "zipopt: figures: %s; nothing was written\n", err);
         return -1;
     }
@@ -207,45 +210,28 @@ int zp_cmd_search(int argc, char **argv) {
     if (pa) {
         return pa > 0 ? ZP_EXIT_OK : ZP_EXIT_USAGE;
     }
-    zp_scene sc;
-    zp_model *m = zp_cli_load(a.scene, &sc);
-    if (!m) {
+    static zp_setup st; /* large: kept off the stack */
+    zp_overrides ov = {NULL, NULL, a.seed, a.max_evals};
+    if (zp_setup_load("", a.scene, &ov, &st)) {
         return ZP_EXIT_USAGE;
     }
-    sc.seed = a.seed >= 0 ? (unsigned long)a.seed : sc.seed;
-    sc.max_evals = a.max_evals > 0 ? a.max_evals : sc.max_evals;
-    zp_diag d;
-    zp_diag_init(&d);
-    zp_sim_opts so;
-    if (zp_sim_opts_from_scene(&sc, &so, &d)) {
-        zp_diag_print(&d, stderr);
-        zp_model_free(m);
-        return ZP_EXIT_USAGE;
-    }
+    const zp_model *m = st.m;
+    const zp_scene *sc = &st.sc;
     zp_tx tx;
-    if (zp_cli_out_begin(&tx, "", "search", a.out, &sc)) {
-        zp_model_free(m);
+    if (zp_cli_out_begin(&tx, "", "search", a.out, sc)) {
+        zp_setup_free(&st);
         return ZP_EXIT_FAIL;
     }
     zp_tx_soft_interrupt(&tx, &interrupted);
 
-    /* the search runs without trajectories or load peaks: faster, and only the best run
-       needs them */
-    zp_sim_opts fast = so;
-    fast.output_dt = 0;
-    fast.track_loads = 0;
-    /* ranking schedules needs ~1e-6 s, not the scene's accuracy: [optimize] method, rtol */
-    fast.method = zp_method_find(sc.search_method);
-    fast.rtol = sc.search_rtol;
-    fast.atol = sc.search_rtol / 100;
-    zp_objective ob = {m, m->phi_max - sc.margin * M_PI / 180, so.t_max};
-    progress_ctx pc = {.sc = &sc, .tx = &tx, .tty = isatty(STDERR_FILENO)};
+    zp_objective ob = {m, st.limit, st.sim.t_max, &st.sched};
+    progress_ctx pc = {.sc = sc, .shape = &st.sched, .tx = &tx, .tty = isatty(STDERR_FILENO)};
     zp_search_opts o = {.algo = a.algo ? zp_search_algo_find(a.algo) : 0,
-                        .max_evals = sc.max_evals, .seed = sc.seed, .stop = &interrupted,
+                        .max_evals = st.max_evals, .seed = st.seed, .stop = &interrupted,
                         .progress = on_progress, .user = &pc};
     static zp_search_result res;
     char err[512] = "";
-    zp_status st = zp_search_run(&ob, &fast, sc.force_min, sc.force_max, &o, &res, err,
+    zp_status rc = zp_search_run(&ob, &st.search, st.sched.lo[0], st.sched.hi[0], &o, &res, err,
                                  sizeof err);
     if (pc.shown) {
         fputc('\n', stderr);
@@ -253,34 +239,35 @@ int zp_cmd_search(int argc, char **argv) {
     int status = ZP_EXIT_FAIL;
     zp_sim *best_sim = NULL, *study_sim = NULL;
     zp_verify v = {0};
-    if (st) {
+    if (rc) {
         fprintf(stderr, "zipopt: %s; nothing was written\n", err);
         goto done;
     }
     /* verification (always) and robustness (not after Ctrl-C: the user wants out) */
-    st = zp_verify_run(&ob, &so, res.force, sc.seed, res.interrupted ? 0 : NROBUST, 0,
+    rc = zp_verify_run(&ob, &st.sim, res.force, st.seed, res.interrupted ? 0 : NROBUST, 0,
                        &best_sim, &v, err, sizeof err);
-    if (st) {
+    if (rc) {
         fprintf(stderr, "zipopt: %s; nothing was written\n", err);
         goto done;
     }
-    static zp_result study;
+    zp_result study;
     double study_f[ZP_MAX_SECTIONS];
     for (int k = 0; k < m->nsec; k++) {
         study_f[k] = STUDY_FORCE;
     }
-    study_sim = zp_sim_create(m, &fast);
-    zp_input in = {.force = study_f};
+    study_sim = zp_sim_create(m, &st.search);
+    zp_schedule study_sched = zp_schedule_sections(m->nsec, study_f, 0, 0);
+    zp_input in = {.sched = &study_sched};
     if (!study_sim || zp_sim_run(m, study_sim, &in, &study)) {
         fprintf(stderr, "zipopt: the study's %d N run failed: %s; nothing was written\n",
                 STUDY_FORCE, study_sim ? study.message : "out of memory");
         goto done;
     }
     /* the figures first, so that the report links only those drawn */
-    int drawn = a.no_plot ? 0 : figures(&tx, m, &sc, &res, &v, best_sim);
-    zp_report r = {&sc, m, &res, &v, &study, STUDY_FORCE,
-                   zp_search_algo_get(o.algo)->name, zp_method_get(so.method)->name, a.scene,
-                   tx.dir, drawn > 0};
+    int drawn = a.no_plot ? 0 : figures(&tx, m, sc, &st.sched, &res, &v, best_sim);
+    zp_report r = {sc, m, &res, &v, best_sim, &study, STUDY_FORCE,
+                   zp_search_algo_get(o.algo)->name, zp_method_get(st.sim.method)->name, a.scene,
+                   tx.dir, drawn > 0, &st.search, &st.sim, &st.sched, st.seed, st.max_evals};
     if (drawn < 0 || write_outputs(&tx, &r, best_sim) || zp_cli_out_commit(&tx, "")) {
         goto done;
     }
@@ -300,6 +287,6 @@ done:
     zp_verify_free(&v);
     zp_sim_free(best_sim);
     zp_sim_free(study_sim);
-    zp_model_free(m);
+    zp_setup_free(&st);
     return status;
 }

@@ -10,6 +10,7 @@
 #include "out_file.h"
 #include "out_json.h"
 #include "plot.h"
+#include "setup.h"
 #include "sim.h"
 
 #define MAX_SAMPLES 10000
@@ -132,7 +133,7 @@ static void print_estimate(const zp_result *r, const zp_estimate *e) {
 
 /* trajectory.csv and summary.json into the command's transaction */
 static int write_files(zp_tx *t, const zp_model *m, zp_sim *s, const zp_result *r,
-                       const zp_row *smp, int nsmp, const zp_run_meta *meta) {
+                       const zp_run_meta *meta) {
     char err[1400] = "";
     FILE *csv = zp_tx_open(t, "trajectory.csv", err, sizeof err);
     FILE *js = csv ? zp_tx_open(t, "summary.json", err, sizeof err) : NULL;
@@ -143,7 +144,7 @@ static int write_files(zp_tx *t, const zp_model *m, zp_sim *s, const zp_result *
     int nrows;
     const zp_row *rows = zp_sim_rows(s, &nrows);
     zp_out_csv_trajectory(csv, m, rows, nrows);
-    zp_out_json_result(js, m, r, smp, nsmp, meta);
+    zp_out_json_result(js, m, r, s, meta);
     return 0;
 }
 
@@ -165,16 +166,18 @@ static void print_samples(const zp_model *m, const zp_row *smp, int nsmp, const 
 }
 
 /* the --plot options, checked before the run; 0, or -1 with the message printed */
-static int plot_opts(const sim_args *a, const zp_model *m, const zp_scene *sc, zp_plot_opts *po) {
+static int plot_opts(const sim_args *a, const zp_setup *st, zp_plot_opts *po) {
+    const zp_model *m = st->m;
+    const zp_scene *sc = &st->sc;
     zp_plot_opts_default(po);
     po->margin = sc->margin * M_PI / 180;
-    po->force = sc->forces;
+    po->sched = &st->sched;
     po->animate = a->animate;
     char why[256] = "", expect[128] = "";
     const char *opt = NULL;
-    if (a->plot && !(sc->output_dt > 0)) {
+    if (a->plot && !(st->sim.output_dt > 0)) {
         opt = "--plot";
-        snprintf(why, sizeof why, "[solver] output_dt = %g gives no trajectory", sc->output_dt);
+        snprintf(why, sizeof why, "[solver] output_dt = %g gives no trajectory", st->sim.output_dt);
         snprintf(expect, sizeof expect, "output_dt > 0 in the scene");
     } else if (a->frames_text && zp_plot_parse_frames(m, a->frames_text, po, why, sizeof why)) {
         opt = "--frames-at";
@@ -203,10 +206,8 @@ static int plot_opts(const sim_args *a, const zp_model *m, const zp_scene *sc, z
 /* the figures of the run into the transaction; 0, or -1 with why on stderr */
 static int draw(zp_tx *t, const zp_model *m, zp_sim *s, const zp_result *r,
                 const zp_plot_opts *po, zp_plot_info *info) {
-    int nrows;
-    const zp_row *rows = zp_sim_rows(s, &nrows);
     char err[1400];
-    if (zp_plot_run(t, m, rows, nrows, r, po, info, err, sizeof err)) {
+    if (zp_plot_run(t, m, s, r, po, info, err, sizeof err)) {
         fprintf(stderr, "zipopt simulate: figures: %s; nothing was written\n", err);
         return -1;
     }
@@ -244,19 +245,16 @@ int zp_cmd_simulate(int argc, char **argv) {
     if (parse_args(argc, argv, &a)) {
         return ZP_EXIT_USAGE;
     }
-    zp_scene sc;
-    zp_model *m = zp_cli_load(a.scene, &sc);
-    if (!m) {
+    static zp_setup st; /* large: kept off the stack */
+    zp_overrides ov = {a.schedule, a.force_text, -1, 0};
+    if (zp_setup_load("simulate", a.scene, &ov, &st)) {
         return ZP_EXIT_USAGE;
     }
+    const zp_model *m = st.m;
+    const zp_sim_opts o = st.sim;
     int status = ZP_EXIT_USAGE;
     zp_sim *s = NULL;
     double *samples = NULL;
-    zp_diag d;
-    zp_diag_init(&d);
-    if (zp_cli_apply_forces("simulate", &sc, a.schedule, a.force_text)) {
-        goto done;
-    }
     char why[256];
     int nsample = 0;
     if (a.sample_text) {
@@ -276,13 +274,8 @@ int zp_cmd_simulate(int argc, char **argv) {
         }
         qsort(samples, nsample, sizeof *samples, cmp_double);
     }
-    zp_sim_opts o;
-    if (zp_sim_opts_from_scene(&sc, &o, &d)) {
-        zp_diag_print(&d, stderr);
-        goto done;
-    }
     zp_plot_opts po;
-    if (plot_opts(&a, m, &sc, &po)) {
+    if (plot_opts(&a, &st, &po)) {
         goto done;
     }
     status = ZP_EXIT_FAIL;
@@ -291,8 +284,8 @@ int zp_cmd_simulate(int argc, char **argv) {
         fputs("zipopt simulate: cannot create the simulator (out of memory)\n", stderr);
         goto done;
     }
-    static zp_result r; /* large: kept off the stack */
-    zp_input in = {.force = sc.forces, .sample_t = samples, .nsample = nsample};
+    zp_result r;
+    zp_input in = {.sched = &st.sched, .sample_t = samples, .nsample = nsample};
     if (zp_sim_run(m, s, &in, &r)) {
         fprintf(stderr, "zipopt simulate: %s; nothing was written\n", r.message);
         goto done;
@@ -301,21 +294,21 @@ int zp_cmd_simulate(int argc, char **argv) {
     const zp_row *smp = zp_sim_samples(s, &nsmp);
     zp_estimate est;
     zp_estimate_run(m, &o, &in, &r, &est);
-    zp_run_meta meta = {sc.name, zp_method_get(o.method)->name,
-                        zp_formulation_get(o.formulation)->name, o.rtol, o.atol, sc.forces, &est,
+    zp_run_meta meta = {st.sc.name, zp_method_get(o.method)->name,
+                        zp_formulation_get(o.formulation)->name, o.rtol, o.atol, &st.sched, &est,
                         samples + nsmp, nsample - nsmp};
     zp_tx t;
     zp_plot_info info;
-    if (zp_cli_out_begin(&t, "simulate", "simulate", a.out, &sc)) {
+    if (zp_cli_out_begin(&t, "simulate", "simulate", a.out, &st.sc)) {
         goto done;
     }
-    if (write_files(&t, m, s, &r, smp, nsmp, &meta) || (a.plot && draw(&t, m, s, &r, &po, &info)) ||
+    if (write_files(&t, m, s, &r, &meta) || (a.plot && draw(&t, m, s, &r, &po, &info)) ||
         zp_cli_out_commit(&t, "simulate")) {
         zp_tx_abort(&t);
         goto done;
     }
     if (a.json) {
-        zp_out_json_result(stdout, m, &r, smp, nsmp, &meta);
+        zp_out_json_result(stdout, m, &r, s, &meta);
     } else {
         print_text(m, &r);
         print_samples(m, smp, nsmp, &meta, r.time);
@@ -326,6 +319,6 @@ int zp_cmd_simulate(int argc, char **argv) {
 done:
     free(samples);
     zp_sim_free(s);
-    zp_model_free(m);
+    zp_setup_free(&st);
     return status;
 }

@@ -3,10 +3,10 @@
    files are plot_data.c's, the frames and the animation plot_anim.c's. */
 #include "plot.h"
 
-#include <fcntl.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <fcntl.h>
 #include <sys/stat.h>
 
 #include "gnuplot.h"
@@ -18,7 +18,7 @@
 #define COURSE_W 1400 /* px, width of course.png */
 
 const char *const zp_plot_link_color[ZP_MAX_LINKS] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728",
-                                                      "#9467bd", "#8c564b", "#e377c2", "#17becf"};
+                                                     "#9467bd", "#8c564b", "#e377c2", "#17becf"};
 
 void zp_plot_opts_default(zp_plot_opts *o) {
     memset(o, 0, sizeof *o);
@@ -80,15 +80,17 @@ void zp_plot_outcome_text(const zp_result *r, char *buf, size_t len) {
 }
 
 void zp_plot_section_text(const zp_plot_opts *o, int sec, char *buf, size_t len) {
-    if (o->force) {
-        snprintf(buf, len, "section %d (%g N)", sec + 1, o->force[sec]);
+    if (o->sched) {
+        char drive[32];
+        zp_schedule_label(o->sched, sec, drive, sizeof drive);
+        snprintf(buf, len, "section %d (%s)", sec + 1, drive);
     } else {
         snprintf(buf, len, "section %d", sec + 1);
     }
 }
 
 void zp_plot_head_png(FILE *f, const zp_model *m, const char *name, const char *what, int w, int h,
-                      int several) {
+                     int several) {
     fprintf(f,
             "# %s%s: %s. Written by zipopt; run `gnuplot %s.gp` here to redraw.\n"
             "set terminal pngcairo size %d,%d enhanced font 'DejaVu Sans,11' linewidth 1.3\n"
@@ -118,20 +120,27 @@ static void section_bands(FILE *f, const zp_model *m, const zp_plot_opts *o) {
     }
 }
 
+/* the run's kink crossings (zp_sim_crossings) */
+typedef struct kinks {
+    const zp_crossing *c;
+    int n;
+} kinks;
+
 /* dotted vertical lines at every kink crossing, and the kink's x at its first crossing */
-static void kink_lines(FILE *f, const zp_result *r) {
-    for (int k = 0; k < r->ncross; k++) {
+static void kink_lines(FILE *f, const kinks *kk) {
+    const zp_crossing *c = kk->c;
+    for (int k = 0; k < kk->n; k++) {
         fprintf(f, "set arrow from %.9g, graph 0 to %.9g, graph 1 nohead dt 3 lc rgb '#999999'\n",
-                r->cross[k].t, r->cross[k].t);
+                c[k].t, c[k].t);
         int first = 1;
         for (int j = 0; j < k; j++) {
-            first &= r->cross[j].x != r->cross[k].x;
+            first &= c[j].x != c[k].x;
         }
         if (first) {
             fprintf(f,
                     "set label 'kink x = %g m' at %.9g, graph 0.98 rotate by 90 right "
                     "offset -0.6, 0 font ',9' tc rgb '#777777'\n",
-                    r->cross[k].x, r->cross[k].t);
+                    c[k].x, c[k].t);
         }
     }
 }
@@ -203,14 +212,13 @@ static void script_course(FILE *f, const zp_model *m, const zp_result *r, const 
             COURSE_W, h);
 }
 
-static void script_energy(FILE *f, const zp_model *m, const zp_result *r) {
-    zp_plot_head_png(f, m, "energy", "energy terms and cumulative work against time", FIG_W, 560,
-                     0);
+static void script_energy(FILE *f, const zp_model *m, const zp_result *r, const kinks *kk) {
+    zp_plot_head_png(f, m, "energy", "energy terms and cumulative work against time", FIG_W, 560, 0);
     fputs("set title 'Energy: kinetic + potential = E(0) + drive work − damper and kink losses'\n"
           "set xlabel 't (s)'\nset ylabel 'energy (J)'\n"
           "set key outside right top box lc rgb '#cccccc'\n",
           f);
-    kink_lines(f, r);
+    kink_lines(f, kk);
     death_line(f, r);
     fputs("plot 'plot_run.dat' using 't':'kinetic' with lines lw 2 lc rgb '#1f77b4' "
           "title 'kinetic', \\\n"
@@ -227,8 +235,8 @@ static void script_energy(FILE *f, const zp_model *m, const zp_result *r) {
           f);
 }
 
-static void script_angles(FILE *f, const zp_model *m, const zp_result *r, const zp_plot_opts *o,
-                          const zp_row *last) {
+static void script_angles(FILE *f, const zp_model *m, const zp_result *r, const kinks *kk,
+                          const zp_plot_opts *o, const zp_row *last) {
     double dmax = m->phi_max * ZP_PLOT_DEG, keep = (m->phi_max - o->margin) * ZP_PLOT_DEG;
     zp_plot_head_png(f, m, "angles", "relative joint angles against time", FIG_W, 560, 0);
     fprintf(f,
@@ -253,7 +261,7 @@ static void script_angles(FILE *f, const zp_model *m, const zp_result *r, const 
                 "offset 0, -0.8 tc rgb '#ff7f0e'\n",
                 keep, keep, -keep, -keep, keep, o->margin * ZP_PLOT_DEG, keep);
     }
-    kink_lines(f, r);
+    kink_lines(f, kk);
     fputs("plot ", f);
     for (int i = 1; i <= m->nlink; i++) {
         fprintf(f, "%s'plot_run.dat' using 't':'phi%d' with lines lt %d title 'joint %d'",
@@ -272,13 +280,13 @@ static void script_angles(FILE *f, const zp_model *m, const zp_result *r, const 
     fputc('\n', f);
 }
 
-static void script_loads(FILE *f, const zp_model *m, const zp_result *r) {
+static void script_loads(FILE *f, const zp_model *m, const zp_result *r, const kinks *kk) {
     zp_plot_head_png(f, m, "loads", "joint reactions and normal force against time", FIG_W, 720, 0);
     fputs("set multiplot layout 2, 1 title 'Loads'\n"
           "set lmargin 12\nset rmargin 4\n"
           "set key inside left top opaque box lc rgb '#cccccc'\n",
           f);
-    kink_lines(f, r);
+    kink_lines(f, kk);
     death_line(f, r);
     fputs("set ylabel 'joint reaction (N)'\nset format x ''\n", f);
     fputs("plot ", f);
@@ -302,9 +310,13 @@ static FILE *open_file(zp_tx *t, const char *name, const char **scripts, int *ns
     return zp_tx_open(t, name, err, errlen);
 }
 
-zp_status zp_plot_run(zp_tx *t, const zp_model *m, const zp_row *rows, int n, const zp_result *r,
+zp_status zp_plot_run(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_result *r,
                       const zp_plot_opts *o, zp_plot_info *info, char *err, size_t errlen) {
     memset(info, 0, sizeof *info);
+    int n;
+    const zp_row *rows = zp_sim_rows(s, &n);
+    kinks kk;
+    kk.c = zp_sim_crossings(s, &kk.n);
     if (n < 1) {
         snprintf(err, errlen, "the run has no trajectory rows to plot (output_dt <= 0?)");
         return ZP_ERR_IO;
@@ -332,9 +344,9 @@ zp_status zp_plot_run(zp_tx *t, const zp_model *m, const zp_row *rows, int n, co
         }
     }
     script_course(gp[0], m, r, o, both, last);
-    script_energy(gp[1], m, r);
-    script_angles(gp[2], m, r, o, last);
-    script_loads(gp[3], m, r);
+    script_energy(gp[1], m, r, &kk);
+    script_angles(gp[2], m, r, &kk, o, last);
+    script_loads(gp[3], m, r, &kk);
     if (o->nframe) {
         FILE *fg = open_file(t, "frames.gp", scripts, &ns, err, errlen);
         FILE *fd = fg ? zp_tx_open(t, "plot_frames.dat", err, errlen) : NULL;

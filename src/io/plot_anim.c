@@ -35,13 +35,13 @@ static void frame_name(const zp_plot_opts *o, int i, char *buf, size_t len) {
 }
 
 int zp_plot_frames(FILE *gp, FILE *dat, const zp_model *m, const zp_row *rows, int n,
-                   const zp_plot_opts *o, zp_plot_info *info) {
+                        const zp_plot_opts *o, zp_plot_info *info) {
     double reach = 0;
     for (int i = 0; i < m->nlink; i++) {
         reach += m->len[i];
     }
-    zp_plot_head_png(gp, m, "frames", "still frames of the body on the course (frame_*.png)",
-                     FRAME_PX, FRAME_PX, 1);
+    zp_plot_head_png(gp, m, "frames", "still frames of the body on the course (frame_*.png)", FRAME_PX,
+             FRAME_PX, 1);
     fputs("set size ratio -1\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nunset key\n", gp);
     int drawn = 0;
     for (int i = 0; i < o->nframe; i++) {
@@ -75,8 +75,8 @@ int zp_plot_frames(FILE *gp, FILE *dat, const zp_model *m, const zp_row *rows, i
 }
 
 void zp_plot_anim(FILE *gp, FILE *dat, FILE *lab, const zp_model *m, const zp_row *rows, int n,
-                  const zp_result *r, const zp_plot_opts *o, zp_plot_box course, int mp4,
-                  zp_plot_info *info) {
+                       const zp_result *r, const zp_plot_opts *o, zp_plot_box course, int mp4,
+                       zp_plot_info *info) {
     double t0 = rows[0].t, t1 = rows[n - 1].t, dt = o->speedup / o->fps;
     int nf = (int)floor((t1 - t0) / dt) + 1;
     nf += t0 + (nf - 1) * dt < t1; /* the last pose too */

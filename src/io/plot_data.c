@@ -10,6 +10,7 @@
 #define COURSE_STEP 0.2 /* m between course samples */
 /* ---- the state at a chosen moment ---- */
 
+
 /* the pose a fraction u of the way from row a to row b (positions interpolated linearly) */
 static zp_plot_pose pose_between(const zp_model *m, const zp_row *a, const zp_row *b, double u) {
     zp_plot_pose ps;
@@ -32,7 +33,7 @@ static zp_plot_pose pose_between(const zp_model *m, const zp_row *a, const zp_ro
 }
 
 int zp_plot_pose_at(const zp_model *m, const zp_row *rows, int n, zp_plot_at kind, double at,
-                    zp_plot_pose *ps) {
+                   zp_plot_pose *ps) {
     for (int k = 0; k < n; k++) {
         double v = kind == ZP_PLOT_AT_X ? rows[k].c.q[0] : rows[k].t;
         if (v >= at) {
@@ -44,6 +45,8 @@ int zp_plot_pose_at(const zp_model *m, const zp_row *rows, int n, zp_plot_at kin
     }
     return -1;
 }
+
+
 
 void zp_plot_grow(zp_plot_box *b, double x, double y) {
     b->x0 = fmin(b->x0, x);
@@ -87,28 +90,25 @@ zp_plot_box zp_plot_write_run(FILE *f, const zp_model *m, const zp_row *rows, in
     double e0 = 0;
     for (int k = 0; k < n; k++) {
         const zp_row *r = &rows[k];
-        double com[ZP_MAX_LINKS + 1][2], phi[ZP_MAX_LINKS], w[ZP_MAX_LINKS];
-        zp_state_com(m, &r->c, com);
-        zp_state_relative(m, &r->c, phi, w);
-        zp_energy e = zp_state_energy(m, &r->c);
-        double total = e.kinetic + e.potential;
+        zp_row_view v;
+        zp_row_derive(m, r, &v);
+        double total = v.e.kinetic + v.e.potential;
         if (k == 0) {
             e0 = total - r->w_drive + r->w_damp + r->e_impulse;
         }
-        fprintf(f, "%.9g %d %.9g %.9g %.9g", r->t, r->sec + 1, r->c.q[0], r->c.q[1],
-                hypot(r->c.v[0], r->c.v[1]));
+        fprintf(f, "%.9g %d %.9g %.9g %.9g", r->t, r->sec + 1, r->c.q[0], r->c.q[1], v.speed);
         for (int i = 0; i <= m->nlink; i++) {
-            fprintf(f, " %.9g %.9g", com[i][0], com[i][1]);
-            zp_plot_grow(&b, com[i][0], com[i][1]);
+            fprintf(f, " %.9g %.9g", v.com[i][0], v.com[i][1]);
+            zp_plot_grow(&b, v.com[i][0], v.com[i][1]);
         }
         for (int i = 0; i < m->nlink; i++) {
-            fprintf(f, " %.9g", phi[i] * ZP_PLOT_DEG);
+            fprintf(f, " %.9g", v.phi[i] * ZP_PLOT_DEG);
         }
-        fprintf(f, " %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g", e.kinetic, e.potential, total,
+        fprintf(f, " %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g", v.e.kinetic, v.e.potential, total,
                 r->w_drive, r->w_damp, r->e_impulse, e0 + r->w_drive - r->w_damp - r->e_impulse,
                 r->loads.normal);
         for (int i = 0; i < m->nlink; i++) {
-            fprintf(f, " %.9g", hypot(r->loads.joint[i][0], r->loads.joint[i][1]));
+            fprintf(f, " %.9g", v.joint[i]);
         }
         fputc('\n', f);
     }
