@@ -41,7 +41,12 @@ static void search(const zp_objective *ob, const zp_sim_opts *o, const zp_scene 
     zp_search_opts so = {.algo = 0, .max_evals = sc->max_evals, .seed = sc->seed,
                          .nthreads = nthreads};
     char err[256];
-    CHECK(zp_search_run(ob, o, sc->force_min, sc->force_max, &so, r, err, sizeof err) == ZP_OK);
+    double lo[ZP_MAX_SECTIONS], hi[ZP_MAX_SECTIONS];
+    for (int k = 0; k < sc->nsec; k++) {
+        lo[k] = sc->force_min;
+        hi[k] = sc->force_max;
+    }
+    CHECK(zp_search_run(ob, o, lo, hi, &so, r, err, sizeof err) == ZP_OK);
 }
 
 int main(void) {

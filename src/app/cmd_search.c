@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "cli.h"
@@ -28,7 +29,7 @@ static void on_sigint(int sig) {
 
 static void usage(FILE *f) {
     fputs("usage: zipopt [SCENE.ini] [--out DIR] [--algorithm NAME] [--seed N] [--max-evals N]\n"
-          "              [--no-plot]\n"
+          "              [--max-time S] [--no-plot]\n"
           "Searches for the fastest schedule of drive forces, one per course section within\n"
           "[drive] min, max, that brings the spy to the end alive with every relative joint\n"
           "angle at least [optimize] margin below death_angle. With no file: the built-in seed\n"
@@ -41,7 +42,10 @@ static void usage(FILE *f) {
           "  --out DIR         output folder\n"
           "  --algorithm NAME  the search strategy (below; default scan-cobyla)\n"
           "  --seed N          overrides [optimize] seed\n"
-          "  --max-evals N     overrides [optimize] max_evals (simulations)\n"
+          "  --max-evals N     overrides [optimize] max_evals (simulations; default 5000 per 3\n"
+          "                    sections)\n"
+          "  --max-time S      stops the search after S seconds of wall time, keeping the best\n"
+          "                    so far (then the answer depends on the machine's speed)\n"
           "  --no-plot         skip the figures\n"
           "strategies:\n",
           f);
@@ -54,6 +58,7 @@ static void usage(FILE *f) {
 typedef struct search_args {
     const char *scene, *out, *algo;
     long seed, max_evals; /* -1: from the scene */
+    double max_time;      /* s, 0: no limit */
     int no_plot;
 } search_args;
 
@@ -90,6 +95,13 @@ static int parse_args(int argc, char **argv, search_args *a) {
                 fprintf(stderr, "zipopt: --max-evals: at least 1 simulation\n");
                 return -1;
             }
+        } else if (!strcmp(o, "--max-time") && has_value) {
+            char *end;
+            a->max_time = strtod(argv[++i], &end);
+            if (end == argv[i] || *end || !(a->max_time > 0) || !isfinite(a->max_time)) {
+                fprintf(stderr, "zipopt: --max-time '%s': expected seconds > 0\n", argv[i]);
+                return -1;
+            }
         } else if (zp_cli_scene_arg("", o, &a->scene)) {
             return -1;
         }
@@ -107,7 +119,18 @@ typedef struct progress_ctx {
     char checkpoint_dir[1024];
     int tty;      /* stderr is a terminal: show the progress line */
     int shown;    /* a progress line is on screen */
+    struct timespec t0; /* start of the current phase */
+    double last;  /* s into it at the last line shown */
 } progress_ctx;
+
+static void phase_start(progress_ctx *c, const char *what) {
+    clock_gettime(CLOCK_MONOTONIC, &c->t0);
+    c->last = 0;
+    if (c->tty) {
+        fprintf(stderr, "%s%s", c->shown ? "\n" : "", what);
+        c->shown = 1;
+    }
+}
 
 /* the progress line, and the checkpoint of every improvement so a killed run loses nothing */
 static void on_progress(void *user, const zp_search_progress *p, int improved) {
@@ -125,9 +148,26 @@ static void on_progress(void *user, const zp_search_progress *p, int improved) {
         }
     }
     if (c->tty) {
-        fprintf(stderr, "\rsearch: %ld simulations, %.0f/s, best %s%.4f s   ", p->evals,
-                p->evals / fmax(p->wall_s, 1e-9), p->found ? "" : "(none survives) ",
-                p->found ? p->time : 0.0);
+        /* the budget left at the rate so far: an upper bound, as a round may converge first */
+        double rate = p->evals / fmax(p->wall_s, 1e-9);
+        fprintf(stderr, "\rsearch round %d, %s: %ld of %ld simulations, %.0f/s, best %s%.4f s, "
+                "at most %.0f s left   ", p->round + 1, p->phase, p->evals, p->budget, rate,
+                p->found ? "" : "(none survives) ", p->found ? p->time : 0.0,
+                (p->budget - p->evals) / fmax(rate, 1e-9));
+        c->shown = 1;
+    }
+}
+
+/* the verification's progress line: its robustness runs done, and the time left at that pace */
+static void on_verify(void *user, int done, int total) {
+    progress_ctx *c = user;
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    double el = (t.tv_sec - c->t0.tv_sec) + 1e-9 * (t.tv_nsec - c->t0.tv_nsec);
+    if (c->tty && (done == total || el - c->last >= 0.25)) {
+        c->last = el;
+        fprintf(stderr, "\rrobustness: %d of %d runs and bisections, about %.0f s left   ", done,
+                total, el / done * (total - done));
         c->shown = 1;
     }
 }
@@ -165,6 +205,10 @@ static int write_outputs(const zp_report *r, zp_sim *best_sim) {
 static void print_summary(const zp_report *r) {
     const zp_search_result *s = r->res;
     const zp_result *run = r->v->run;
+    if (!s->found) {
+        printf("no schedule keeps the margin: none of %ld simulations survived with it; the "
+               "closest candidate is written, marked as such\n", s->evals);
+    }
     printf("%sbest schedule (N):", s->interrupted ? "interrupted; " : "");
     for (int k = 0; k < r->m->nsec; k++) {
         printf(" %.4f", s->force[k]);
@@ -179,9 +223,14 @@ static void print_summary(const zp_report *r) {
            r->v->agree ? ", verified" : ", NOT verified at the tighter tolerance");
     if (s->base_found) {
         printf("best constant push: %.3f N, %.4f s\n", s->base_force, s->base.time);
+    } else {
+        printf("best constant push: none found that keeps the margin\n");
     }
     printf("search: %s, %ld simulations in %.2f s on %d threads\n", r->algo, s->evals,
            s->wall_s, s->nthreads);
+    char conv[512];
+    zp_report_convergence(conv, sizeof conv, s);
+    printf("convergence: %s\n", conv);
     printf("wrote %s/report.md, schedule.ini, summary.json, trajectory.csv\n", r->out_dir);
 }
 
@@ -197,7 +246,11 @@ int zp_cmd_search(int argc, char **argv) {
         return ZP_EXIT_USAGE;
     }
     sc.seed = a.seed >= 0 ? (unsigned long)a.seed : sc.seed;
-    sc.max_evals = a.max_evals > 0 ? a.max_evals : sc.max_evals;
+    if (a.max_evals > 0) {
+        sc.max_evals = a.max_evals;
+    } else if (!sc.line_max_evals) {
+        sc.max_evals = zp_search_default_budget(m->nsec);
+    }
     zp_diag d;
     zp_diag_init(&d);
     zp_sim_opts so;
@@ -222,18 +275,19 @@ int zp_cmd_search(int argc, char **argv) {
     progress_ctx pc = {.sc = &sc, .tty = isatty(STDERR_FILENO)};
     snprintf(pc.checkpoint_dir, sizeof pc.checkpoint_dir, "%s", dir);
     zp_search_opts o = {.algo = a.algo ? zp_search_algo_find(a.algo) : 0,
-                        .max_evals = sc.max_evals, .seed = sc.seed, .stop = &interrupted,
-                        .progress = on_progress, .user = &pc};
+                        .max_evals = sc.max_evals, .max_time = a.max_time, .seed = sc.seed,
+                        .stop = &interrupted, .progress = on_progress, .user = &pc};
+    double lo[ZP_MAX_SECTIONS], hi[ZP_MAX_SECTIONS];
+    for (int k = 0; k < m->nsec; k++) {
+        lo[k] = sc.force_min;
+        hi[k] = sc.force_max;
+    }
     struct sigaction sa = {.sa_handler = on_sigint, .sa_flags = SA_RESETHAND}, old;
     sigemptyset(&sa.sa_mask);
     sigaction(SIGINT, &sa, &old);
     static zp_search_result res;
     char err[512] = "";
-    zp_status st = zp_search_run(&ob, &fast, sc.force_min, sc.force_max, &o, &res, err,
-                                 sizeof err);
-    if (pc.shown) {
-        fputc('\n', stderr);
-    }
+    zp_status st = zp_search_run(&ob, &fast, lo, hi, &o, &res, err, sizeof err);
     int status = ZP_EXIT_FAIL;
     zp_sim *best_sim = NULL, *study_sim = NULL;
     zp_verify v = {0};
@@ -242,8 +296,13 @@ int zp_cmd_search(int argc, char **argv) {
         goto done;
     }
     /* verification (always) and robustness (not after Ctrl-C: the user wants out) */
+    phase_start(&pc, "verification: the best schedule with [solver] and 100x tighter");
     st = zp_verify_run(&ob, &so, res.force, sc.seed, res.interrupted ? 0 : NROBUST, 0,
-                       &best_sim, &v, err, sizeof err);
+                       &best_sim, &v, on_verify, &pc, err, sizeof err);
+    if (pc.shown) {
+        fputc('\n', stderr);
+        pc.shown = 0;
+    }
     if (st) {
         fprintf(stderr, "zipopt: %s; nothing was written\n", err);
         goto done;
@@ -263,6 +322,8 @@ int zp_cmd_search(int argc, char **argv) {
     /* the figures first, so that the report links only those that exist */
     int figures = 0;
     if (!a.no_plot) {
+        phase_start(&pc, "figures: drawing the best run with gnuplot\n");
+        pc.shown = 0;
         zp_plot_opts po;
         zp_plot_opts_default(&po);
         po.margin = sc.margin * M_PI / 180;
@@ -293,6 +354,8 @@ int zp_cmd_search(int argc, char **argv) {
         if (res.interrupted) {
             fputs("zipopt: interrupted; wrote the best schedule found so far\n", stderr);
             status = ZP_EXIT_FAIL;
+        } else if (!res.found) {
+            status = ZP_EXIT_NONE;
         }
     }
 done:

@@ -76,6 +76,7 @@ typedef struct zp_scene {
 
     /* lines of keys that later stages judge (0 if absent), for their messages */
     int line_forces, line_method, line_formulation, line_search_method, line_kink_radius;
+    int line_max_evals; /* 0: max_evals not given, the search picks its default */
 } zp_scene;
 
 #endif

@@ -704,6 +704,7 @@ static void convert_scene(parse_ctx *c, zp_scene *sc) {
     }
     if (get_whole(c, K_MAX_EVALS, 1, LONG_MAX, &u) > 0) {
         sc->max_evals = (long)u;
+        sc->line_max_evals = c->key_line[K_MAX_EVALS];
     }
     if (get_whole(c, K_SEED, 0, ULONG_MAX, &u) > 0) {
         sc->seed = u;
