@@ -17,6 +17,8 @@ void zp_report_convergence(char *buf, size_t n, const zp_search_result *s) {
     int k = 0;
     if (!s->found) {
         k = snprintf(buf, n, "no survivable schedule was found in %d rounds", s->nrounds);
+    } else if (s->nstarts == 0) {
+        k = snprintf(buf, n, "the scan found this schedule; no local polish ran");
     } else {
         k = snprintf(buf, n, "%d of %d polishes reached this schedule (within %g %% of its "
                      "time), %d distinct survivable schedules polished", s->nreached,
