@@ -127,6 +127,26 @@ int main(void) {
     snprintf(cmd, sizeof cmd, "%s/d", dir);
     CHECK(!tu_exists(cmd));
 
+    /* no schedule can keep a 2 deg limit on a kinked course: exit 3, said on the first line,
+       the closest candidate still written and marked, the missing baseline said missing */
+    snprintf(path, sizeof path, "%s/none.ini", dir);
+    f = fopen(path, "w");
+    fputs("[scene]\nname = none\n[course]\nx_start = 0\nsection = 20 : -x/10 + 10\n"
+          "section = 40 : -x/5 + 12\n[trolley]\nmass = 30\n[body]\nlengths = 1\nmasses = 5\n"
+          "damping = 2\ndeath_angle = 12\n[drive]\nmin = 0\nmax = 300\n[optimize]\n"
+          "margin = 10\nmax_evals = 60\n", f);
+    fclose(f);
+    snprintf(cmd, sizeof cmd, "%s %s --out %s/e --no-plot 2>/dev/null", ZP_EXE, path, dir);
+    CHECK(run(cmd) == 3);
+    CHECK(!strncmp(out, "no schedule keeps the margin", 28));
+    CHECK(!strstr(out, "0.000 N") && !strstr(out, "inf"));
+    snprintf(cmd, sizeof cmd, "%s/e/report.md", dir);
+    slurp(cmd, report, sizeof report);
+    CHECK(strstr(report, "No survivable schedule was found") && !strstr(report, "inf %"));
+    snprintf(cmd, sizeof cmd, "%s/e/summary.json", dir);
+    slurp(cmd, json, sizeof json);
+    CHECK(strstr(json, "\"found\": false") && strstr(json, "\"baseline\": null"));
+
     snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
     CHECK(system(cmd) == 0);
     return CHECK_DONE();
