@@ -21,8 +21,8 @@ void zp_report_convergence(char *buf, size_t n, const zp_search_result *s) {
         k = snprintf(buf, n, "the scan found this schedule; no local polish ran");
     } else {
         k = snprintf(buf, n, "%d of %d polishes reached this schedule (within %g %% of its "
-                     "time), %d distinct survivable schedules polished", s->nreached,
-                     s->nstarts, 100 * ZP_SEARCH_REACH, s->nbasins);
+                     "time); they ended at %d distinct survivable schedule%s", s->nreached,
+                     s->nstarts, 100 * ZP_SEARCH_REACH, s->nbasins, s->nbasins == 1 ? "" : "s");
     }
     const char *tail;
     if (s->converged) {
