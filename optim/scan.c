@@ -15,18 +15,26 @@
 
 const double *zp_archive_f(const zp_search *S, int i) { return S->a.f + (size_t)i * S->n; }
 
+/* doubles the capacity of two parallel arrays of rows of sa and sb bytes; 0: out of memory,
+   both arrays still valid */
+static int grow(void **a, size_t sa, void **b, size_t sb, int *cap, int first) {
+    int nc = *cap ? 2 * *cap : first;
+    void *na = realloc(*a, sa * nc);
+    *a = na ? na : *a;
+    void *nb = na ? realloc(*b, sb * nc) : NULL;
+    *b = nb ? nb : *b;
+    *cap = nb ? nc : *cap;
+    return nb != NULL;
+}
+
 int zp_archive_add(zp_search *S, const double *f, const zp_eval *e) {
     zp_archive *a = &S->a;
-    if (a->n == a->cap) {
-        int cap = a->cap ? 2 * a->cap : 1024;
-        double *nf = realloc(a->f, sizeof *nf * cap * S->n);
-        a->f = nf ? nf : a->f;
-        zp_eval *ne = nf ? realloc(a->e, sizeof *ne * cap) : NULL;
-        a->e = ne ? ne : a->e;
-        if (!ne) {
-            return -1;
-        }
-        a->cap = cap;
+    void *pf = a->f, *pe = a->e;
+    int ok = a->n < a->cap || grow(&pf, sizeof *f * S->n, &pe, sizeof *e, &a->cap, 1024);
+    a->f = pf;
+    a->e = pe;
+    if (!ok) {
+        return -1;
     }
     memcpy(a->f + (size_t)a->n * S->n, f, sizeof *f * S->n);
     a->e[a->n] = *e;
@@ -161,16 +169,13 @@ static int seen_line(zp_search *S, const double *cur, int k) {
             return 1;
         }
     }
-    if (S->nlined == S->linecap) {
-        int cap = S->linecap ? 2 * S->linecap : 64;
-        double *nl = realloc(S->lined, sizeof *nl * cap * S->n);
-        S->lined = nl ? nl : S->lined;
-        int *nk = nl ? realloc(S->lined_k, sizeof *nk * cap) : NULL;
-        S->lined_k = nk ? nk : S->lined_k;
-        if (!nk) {
-            return 1;
-        }
-        S->linecap = cap;
+    void *pl = S->lined, *pk = S->lined_k;
+    int ok = S->nlined < S->linecap ||
+             grow(&pl, sizeof *cur * S->n, &pk, sizeof *S->lined_k, &S->linecap, 64);
+    S->lined = pl;
+    S->lined_k = pk;
+    if (!ok) {
+        return 1;
     }
     memcpy(S->lined + (size_t)S->nlined * S->n, cur, sizeof *cur * S->n);
     S->lined_k[S->nlined++] = k;
