@@ -70,8 +70,8 @@ int main(int argc, char **argv) {
     }
     double wall = omp_get_wtime() - t0;
     printf("brute force: %ld schedules in %.0f s on %d threads (%.0f/s), %ld finish with the "
-           "margin\nbest: %.6f s at", total, wall, zp_pool_threads(pool), total / wall, feasible,
-           best_t);
+           "margin\nbest: %.6f s at",
+           total, wall, zp_pool_threads(pool), total / wall, feasible, best_t);
     for (int k = 0; k < m->nsec; k++) {
         printf(" %.4f", best_f[k]);
     }

@@ -19,9 +19,9 @@ typedef struct run_ctx {
     zp_sim *sim;
     zp_result *r;
     nlopt_opt opt;
-    int alg;      /* nlopt_algorithm */
-    int diag;     /* one variable: the same share of the box for every parameter */
-    int penalty;  /* minimise the penalised score; else the time under the constraint */
+    int alg;        /* nlopt_algorithm */
+    int diag;       /* one variable: the same share of the box for every parameter */
+    int penalty;    /* minimise the penalised score; else the time under the constraint */
     int to_archive; /* keep every point for the polish (sequential runs only) */
     long budget, n;
     double key[ZP_MAX_SECTIONS]; /* NLopt's point of the cached evaluation */
@@ -196,7 +196,8 @@ static void polish_job(void *user, int i, zp_sim *s, zp_result *r) {
             while (k + 1 < b->S->n && b->S->hi[k] == b->S->lo[k]) {
                 k++;
             }
-            x0 = b->S->hi[k] > b->S->lo[k] ? (j->x0[k] - b->S->lo[k]) / (b->S->hi[k] - b->S->lo[k]) : 0;
+            x0 = b->S->hi[k] > b->S->lo[k] ? (j->x0[k] - b->S->lo[k]) / (b->S->hi[k] - b->S->lo[k])
+                                           : 0;
         }
         run_nlopt(c, b->alg, j->diag ? &x0 : j->x0, j->step);
     }

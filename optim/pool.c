@@ -7,8 +7,8 @@
 
 struct zp_pool {
     int nw;
-    zp_sim **sim;  /* owned, nw */
-    zp_result *r;  /* owned, nw: large, so kept off the stack */
+    zp_sim **sim; /* owned, nw */
+    zp_result *r; /* owned, nw: large, so kept off the stack */
 };
 
 void zp_pool_free(zp_pool *p) {
@@ -43,7 +43,9 @@ zp_pool *zp_pool_create(const zp_model *m, const zp_sim_opts *o, int nthreads) {
     return p;
 }
 
-int zp_pool_threads(const zp_pool *p) { return p->nw; }
+int zp_pool_threads(const zp_pool *p) {
+    return p->nw;
+}
 
 void zp_pool_map(zp_pool *p, int n, zp_pool_job job, void *user, zp_pool_done done,
                  void *done_user) {

@@ -6,8 +6,8 @@
 
 #define DEG (180.0 / M_PI)
 #define KMH 3.6
-#define BRAKE_KMH 10     /* zip-line practice: arriving faster than this needs a brake */
-#define ACTIVE_KMH 24    /* ... and active brakes stop riders up to about this */
+#define BRAKE_KMH 10  /* zip-line practice: arriving faster than this needs a brake */
+#define ACTIVE_KMH 24 /* ... and active brakes stop riders up to about this */
 
 static const char *rerun_scene(const zp_report *r) {
     return r->scene_arg ? r->scene_arg : "config/seed.ini";
@@ -20,9 +20,11 @@ void zp_report_convergence(char *buf, size_t n, const zp_search_result *s) {
     } else if (s->nstarts == 0) {
         k = snprintf(buf, n, "the scan found this schedule; no local polish ran");
     } else {
-        k = snprintf(buf, n, "%d of %d polishes reached this schedule (within %g %% of its "
-                     "time); they ended at %d distinct survivable schedule%s", s->nreached,
-                     s->nstarts, 100 * ZP_SEARCH_REACH, s->nbasins, s->nbasins == 1 ? "" : "s");
+        k = snprintf(buf, n,
+                     "%d of %d polishes reached this schedule (within %g %% of its "
+                     "time); they ended at %d distinct survivable schedule%s",
+                     s->nreached, s->nstarts, 100 * ZP_SEARCH_REACH, s->nbasins,
+                     s->nbasins == 1 ? "" : "s");
     }
     const char *tail;
     if (s->converged) {
@@ -52,11 +54,13 @@ static void md_head(FILE *f, const zp_report *r) {
     fprintf(f, "# Best forcing: %s\n\n", r->sc->name);
     if (s->interrupted) {
         fputs("**Interrupted**: the search was stopped before its end; this is the best found "
-              "so far.\n\n", f);
+              "so far.\n\n",
+              f);
     }
     if (!s->found) {
         fputs("**No survivable schedule was found** within the budget: below is the schedule "
-              "that came closest.\n\n", f);
+              "that came closest.\n\n",
+              f);
     }
 }
 
@@ -76,23 +80,27 @@ static void md_result(FILE *f, const zp_report *r) {
     fputs("## Result\n\n", f);
     double err = fabs(run->time - v->tight->time);
     if (run->outcome == ZP_OUTCOME_FINISHED) {
-        fprintf(f, "Finish time: **%.4f s** (error estimate %.1e s: the same run at a 100x "
-                   "tighter tolerance finishes at %.6f s).\n",
+        fprintf(f,
+                "Finish time: **%.4f s** (error estimate %.1e s: the same run at a 100x "
+                "tighter tolerance finishes at %.6f s).\n",
                 run->time, err, v->tight->time);
     } else {
-        fprintf(f, "Outcome: **%s** at t = %.4f s, x = %.2f m.\n", zp_sim_outcome_name(run->outcome),
-                run->time, run->x);
+        fprintf(f, "Outcome: **%s** at t = %.4f s, x = %.2f m.\n",
+                zp_sim_outcome_name(run->outcome), run->time, run->x);
     }
-    fprintf(f, "Verification at rtol %.0e, atol %.0e: %s.\n\n", r->sc->rtol / 100, r->sc->atol / 100,
+    fprintf(f, "Verification at rtol %.0e, atol %.0e: %s.\n\n", r->sc->rtol / 100,
+            r->sc->atol / 100,
             v->agree ? "same outcome, finish times agree within 1e-4 s, margin kept"
                      : "**does not agree** (outcome, finish time or margin differ)");
 }
 
 static void md_margins(FILE *f, const zp_report *r) {
     const zp_scene *sc = r->sc;
-    fprintf(f, "## Margin per joint\n\nDeath at %g deg; the search keeps %g deg below it "
-               "(limit %g deg).\n\n| joint | largest relative angle (deg) | margin (deg) |\n"
-               "|---|---|---|\n", sc->death_angle, sc->margin, sc->death_angle - sc->margin);
+    fprintf(f,
+            "## Margin per joint\n\nDeath at %g deg; the search keeps %g deg below it "
+            "(limit %g deg).\n\n| joint | largest relative angle (deg) | margin (deg) |\n"
+            "|---|---|---|\n",
+            sc->death_angle, sc->margin, sc->death_angle - sc->margin);
     for (int i = 0; i < r->m->nlink; i++) {
         double a = r->v->run->max_rel_angle[i] * DEG;
         fprintf(f, "| %d | %.3f | %.3f |\n", i + 1, a, sc->death_angle - a);
@@ -111,7 +119,8 @@ static void md_gains(FILE *f, const zp_report *r) {
         md_gain(f, what, run->time, s->base.time);
     } else if (fin) {
         fputs("- over the best constant push: missing (no constant push the search ran kept the "
-              "margin)\n", f);
+              "margin)\n",
+              f);
     }
     if (fin && study->outcome == ZP_OUTCOME_FINISHED) {
         char what[128];
@@ -133,12 +142,15 @@ static void md_speeds(FILE *f, const zp_result *run) {
             run->v * KMH, run->max_speed, run->max_speed * KMH);
     double arr = run->v * KMH;
     if (arr > ACTIVE_KMH) {
-        fprintf(f, "Arrival above %d km/h: faster than active zip-line brakes stop (about %d "
-                   "km/h); this schedule needs a longer run-out or a braking section.\n\n",
+        fprintf(f,
+                "Arrival above %d km/h: faster than active zip-line brakes stop (about %d "
+                "km/h); this schedule needs a longer run-out or a braking section.\n\n",
                 ACTIVE_KMH, ACTIVE_KMH);
     } else if (arr > BRAKE_KMH) {
-        fprintf(f, "Arrival above %d km/h: zip-line practice calls for a brake (active brakes "
-                   "stop up to about %d km/h).\n\n", BRAKE_KMH, ACTIVE_KMH);
+        fprintf(f,
+                "Arrival above %d km/h: zip-line practice calls for a brake (active brakes "
+                "stop up to about %d km/h).\n\n",
+                BRAKE_KMH, ACTIVE_KMH);
     } else {
         fprintf(f, "Arrival at or below %d km/h: no brake needed by zip-line practice.\n\n",
                 BRAKE_KMH);
@@ -152,12 +164,13 @@ static void md_kinks(FILE *f, const zp_result *run) {
         return;
     }
     fputs("| t (s) | x (m) | sections | impulse (N s) | energy lost (J) |\n"
-          "|---|---|---|---|---|\n", f);
+          "|---|---|---|---|---|\n",
+          f);
     int n = run->ncross < ZP_MAX_CROSSINGS ? run->ncross : ZP_MAX_CROSSINGS;
     for (int i = 0; i < n; i++) {
         const zp_crossing *c = &run->cross[i];
-        fprintf(f, "| %.4f | %g | %d -> %d | %.3f | %.2f |\n", c->t, c->x, c->from + 1,
-                c->to + 1, c->impulse, c->energy_lost);
+        fprintf(f, "| %.4f | %g | %d -> %d | %.3f | %.2f |\n", c->t, c->x, c->from + 1, c->to + 1,
+                c->impulse, c->energy_lost);
     }
 }
 
@@ -165,15 +178,18 @@ static void md_kinks(FILE *f, const zp_result *run) {
 static void md_loads(FILE *f, const zp_report *r) {
     const zp_load_peaks *pk = &r->v->run->peaks;
     fputs("\n## Loads\n\n| joint | peak reaction (N) | link | peak felt acceleration (g) |\n"
-          "|---|---|---|---|\n", f);
+          "|---|---|---|---|\n",
+          f);
     for (int i = 0; i < r->m->nlink; i++) {
         fprintf(f, "| %d | %.1f | %d | %.2f |\n", i + 1, pk->joint[i], i + 1, pk->acc_g[i]);
     }
-    fprintf(f, "\nNormal force of the course on the trolley: %.1f N to %.1f N%s. Felt "
-               "acceleration is |a - g| at a link's centre of mass (1 g hanging at rest).\n",
+    fprintf(f,
+            "\nNormal force of the course on the trolley: %.1f N to %.1f N%s. Felt "
+            "acceleration is |a - g| at a link's centre of mass (1 g hanging at rest).\n",
             pk->normal_min, pk->normal_max,
             pk->normal_min < 0 ? " (negative: the trolley pulls on the course, which must "
-                                 "hold it from above too)" : "");
+                                 "hold it from above too)"
+                               : "");
 }
 
 static void md_search(FILE *f, const zp_report *r) {
@@ -182,13 +198,15 @@ static void md_search(FILE *f, const zp_report *r) {
     fputs("\n## Search\n\n", f);
     fprintf(f, "- algorithm: %s, seed %lu, budget %ld simulations\n", r->algo, sc->seed,
             sc->max_evals);
-    fprintf(f, "- simulations: %ld (%ld survived with the margin, %ld gave the integrator up) "
-               "in %d rounds of scan and polish, %d local polishes\n", s->evals, s->nfeasible,
-            s->nfailed, s->nrounds, s->nstarts);
-    fprintf(f, "- wall time: %.2f s on %d threads (%.0f simulations/s)\n", s->wall_s,
-            s->nthreads, s->evals / fmax(s->wall_s, 1e-9));
-    fprintf(f, "- integrators: the search's runs %s at rtol %g, atol %g ([optimize]); the best\n"
-               "  schedule rerun with %s at rtol %g, atol %g ([solver]) and verified 100x tighter\n",
+    fprintf(f,
+            "- simulations: %ld (%ld survived with the margin, %ld gave the integrator up) "
+            "in %d rounds of scan and polish, %d local polishes\n",
+            s->evals, s->nfeasible, s->nfailed, s->nrounds, s->nstarts);
+    fprintf(f, "- wall time: %.2f s on %d threads (%.0f simulations/s)\n", s->wall_s, s->nthreads,
+            s->evals / fmax(s->wall_s, 1e-9));
+    fprintf(f,
+            "- integrators: the search's runs %s at rtol %g, atol %g ([optimize]); the best\n"
+            "  schedule rerun with %s at rtol %g, atol %g ([solver]) and verified 100x tighter\n",
             sc->search_method, sc->search_rtol, sc->search_rtol / 100, r->method, sc->rtol,
             sc->atol);
     if (s->nhist > 0) {
@@ -201,8 +219,9 @@ static void md_search(FILE *f, const zp_report *r) {
     }
     char sentence[512];
     zp_report_convergence(sentence, sizeof sentence, s);
-    fprintf(f, "\n### Convergence\n\n%c%s.\n", sentence[0] >= 'a' && sentence[0] <= 'z'
-            ? sentence[0] - 'a' + 'A' : sentence[0], sentence + 1);
+    fprintf(f, "\n### Convergence\n\n%c%s.\n",
+            sentence[0] >= 'a' && sentence[0] <= 'z' ? sentence[0] - 'a' + 'A' : sentence[0],
+            sentence + 1);
 }
 
 static void md_robustness(FILE *f, const zp_verify *v) {
@@ -212,7 +231,8 @@ static void md_robustness(FILE *f, const zp_verify *v) {
         return;
     }
     fputs("Every force scaled by 1 + p u, u uniform in [-1, 1] (seeded):\n\n"
-          "| p | runs | finished alive | margin kept |\n|---|---|---|---|\n", f);
+          "| p | runs | finished alive | margin kept |\n|---|---|---|---|\n",
+          f);
     for (int i = 0; i < ZP_VERIFY_LEVELS; i++) {
         const zp_robust *rb = &v->rob[i];
         fprintf(f, "| %g %% | %d | %.1f %% | %.1f %% |\n", 100 * rb->level, rb->n,
@@ -222,11 +242,15 @@ static void md_robustness(FILE *f, const zp_verify *v) {
         fprintf(f, "\nNo change of up to %g %% killed the spy.\n",
                 100 * v->rob[ZP_VERIFY_LEVELS - 1].level);
     } else if (v->kill_section) {
-        fprintf(f, "\nSmallest change found that kills: %.3f %% of the force in section "
-                   "%d alone.\n", 100 * v->kill, v->kill_section);
+        fprintf(f,
+                "\nSmallest change found that kills: %.3f %% of the force in section "
+                "%d alone.\n",
+                100 * v->kill, v->kill_section);
     } else {
-        fprintf(f, "\nSmallest change found that kills: %.3f %% (largest part of a random "
-                   "change of all forces).\n", 100 * v->kill);
+        fprintf(f,
+                "\nSmallest change found that kills: %.3f %% (largest part of a random "
+                "change of all forces).\n",
+                100 * v->kill);
     }
 }
 
@@ -239,8 +263,9 @@ static void md_figures_rerun(FILE *f, const zp_report *r) {
               "![joint angles](angles.png)\n\n![loads](loads.png)\n",
               f);
     }
-    fprintf(f, "\n## Rerun\n\n```\nzipopt %s --out %s          # this search\n"
-               "zipopt simulate %s --schedule %s/schedule.ini   # this schedule\n```\n",
+    fprintf(f,
+            "\n## Rerun\n\n```\nzipopt %s --out %s          # this search\n"
+            "zipopt simulate %s --schedule %s/schedule.ini   # this schedule\n```\n",
             rerun_scene(r), r->out_dir, rerun_scene(r), r->out_dir);
 }
 

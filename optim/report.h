@@ -9,17 +9,17 @@
 #include "verify.h"
 
 typedef struct zp_report {
-    const zp_scene *sc;            /* borrowed */
-    const zp_model *m;             /* borrowed */
-    const zp_search_result *res;   /* borrowed */
-    const zp_verify *v;            /* borrowed: v->run is the best run at the scene's tolerance */
-    const zp_result *study;        /* borrowed: the study's constant push, study_force */
-    double study_force;            /* N */
-    const char *algo;              /* strategy name */
-    const char *method;            /* integrator name */
-    const char *scene_arg;         /* the scene file as given, NULL: the built-in seed */
+    const zp_scene *sc;          /* borrowed */
+    const zp_model *m;           /* borrowed */
+    const zp_search_result *res; /* borrowed */
+    const zp_verify *v;          /* borrowed: v->run is the best run at the scene's tolerance */
+    const zp_result *study;      /* borrowed: the study's constant push, study_force */
+    double study_force;          /* N */
+    const char *algo;            /* strategy name */
+    const char *method;          /* integrator name */
+    const char *scene_arg;       /* the scene file as given, NULL: the built-in seed */
     const char *out_dir;
-    int figures;                   /* 1: course, energy, angles, loads .png beside the report */
+    int figures; /* 1: course, energy, angles, loads .png beside the report */
 } zp_report;
 
 /* A schedule file: only [drive] forces (CONFIG.md), with comments saying what it is. */

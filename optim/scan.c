@@ -7,13 +7,15 @@
 
 #include "search_int.h"
 
-#define LINE_PTS 49   /* points of a line over a whole range */
+#define LINE_PTS 49     /* points of a line over a whole range */
 #define STEP_SHARE 0.25 /* first polish step, share of the survivable width along a line */
-#define ZOOM 2        /* local minima of a line refined */
-#define ZOOM_PTS 12   /* points of each refinement */
-#define LINE_PASSES 2 /* passes of lines through the best, while they improve */
+#define ZOOM 2          /* local minima of a line refined */
+#define ZOOM_PTS 12     /* points of each refinement */
+#define LINE_PASSES 2   /* passes of lines through the best, while they improve */
 
-const double *zp_archive_f(const zp_search *S, int i) { return S->a.f + (size_t)i * S->n; }
+const double *zp_archive_f(const zp_search *S, int i) {
+    return S->a.f + (size_t)i * S->n;
+}
 
 /* doubles the capacity of two parallel arrays of rows of sa and sb bytes; 0: out of memory,
    both arrays still valid */
@@ -106,7 +108,8 @@ static int arch_ahead(const zp_search *S, int i, int j) {
 static int local_minima(const zp_search *S, int n0, int n, int *best) {
     int nb = 0;
     for (int i = n0; i < n0 + n; i++) {
-        int lmin = (i == n0 || arch_ahead(S, i, i - 1)) && (i == n0 + n - 1 || arch_ahead(S, i, i + 1));
+        int lmin =
+            (i == n0 || arch_ahead(S, i, i - 1)) && (i == n0 + n - 1 || arch_ahead(S, i, i + 1));
         if (!lmin) {
             continue;
         }

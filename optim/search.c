@@ -33,8 +33,8 @@ static const zp_search_algo algos[] = {
     {"scan-sbplx", "the same scan, then Sbplx on the penalised time", -1, NLOPT_LN_SBPLX},
     {"direct-cobyla", "DIRECT-L on the penalised time, then COBYLA", NLOPT_GN_DIRECT_L,
      NLOPT_LN_COBYLA},
-    {"crs2-cobyla", "CRS2 with local mutation on the penalised time, then COBYLA",
-     NLOPT_GN_CRS2_LM, NLOPT_LN_COBYLA},
+    {"crs2-cobyla", "CRS2 with local mutation on the penalised time, then COBYLA", NLOPT_GN_CRS2_LM,
+     NLOPT_LN_COBYLA},
     {"isres-cobyla", "ISRES with the survival constraint, then COBYLA", NLOPT_GN_ISRES,
      NLOPT_LN_COBYLA},
     {"mlsl-cobyla", "MLSL (low-discrepancy starts, BOBYQA) on the penalised time, then COBYLA",
@@ -42,8 +42,12 @@ static const zp_search_algo algos[] = {
 };
 #define NALGO ((int)(sizeof algos / sizeof algos[0]))
 
-int zp_search_algo_count(void) { return NALGO; }
-const zp_search_algo *zp_search_algo_get(int i) { return i >= 0 && i < NALGO ? &algos[i] : NULL; }
+int zp_search_algo_count(void) {
+    return NALGO;
+}
+const zp_search_algo *zp_search_algo_get(int i) {
+    return i >= 0 && i < NALGO ? &algos[i] : NULL;
+}
 int zp_search_algo_find(const char *name) {
     for (int i = 0; i < NALGO; i++) {
         if (!strcmp(algos[i].name, name)) {
@@ -53,7 +57,9 @@ int zp_search_algo_find(const char *name) {
     return -1;
 }
 
-long zp_search_default_budget(int n) { return ZP_SEARCH_PER_PARAM * (long)(n > 0 ? n : 1); }
+long zp_search_default_budget(int n) {
+    return ZP_SEARCH_PER_PARAM * (long)(n > 0 ? n : 1);
+}
 
 double zp_search_since(const zp_search *S) {
     struct timespec t;
@@ -70,8 +76,7 @@ int zp_search_halted(const zp_search *S) {
     return S->exhausted || S->spent >= S->o->max_evals || zp_search_stopped(S);
 }
 
-int zp_search_ahead(const zp_eval *a, const double *fa, const zp_eval *b, const double *fb,
-                    int n) {
+int zp_search_ahead(const zp_eval *a, const double *fa, const zp_eval *b, const double *fb, int n) {
     if (zp_objective_better(a, b)) {
         return 1;
     }
@@ -93,8 +98,8 @@ void zp_search_report(zp_search *S, int improved) {
         return;
     }
     S->last_report = now;
-    zp_search_progress p = {S->phase, S->round, res->evals, S->o->max_evals, now, res->found,
-                            res->best.time, res->force};
+    zp_search_progress p = {S->phase, S->round,   res->evals,     S->o->max_evals,
+                            now,      res->found, res->best.time, res->force};
     S->o->progress(S->o->user, &p, improved);
 }
 
@@ -218,7 +223,8 @@ static zp_status scan_round(zp_search *S, int r, char *err, size_t errlen) {
             return st;
         }
     } else {
-        zp_scan_lds(S, r == 0 ? LDS_FIRST : (LDS_FIRST << (r - 1) < LDS_MAX ? LDS_FIRST << (r - 1) : LDS_MAX));
+        zp_scan_lds(S, r == 0 ? LDS_FIRST
+                              : (LDS_FIRST << (r - 1) < LDS_MAX ? LDS_FIRST << (r - 1) : LDS_MAX));
     }
     /* lines through the best and, first, through the hardest push: times fall as the pushes
        grow, so the fastest schedules lie towards that corner */
@@ -291,7 +297,9 @@ static void evidence(zp_search *S) {
     }
 }
 
-static double best_time(const zp_search_result *res) { return res->found ? res->best.time : INFINITY; }
+static double best_time(const zp_search_result *res) {
+    return res->found ? res->best.time : INFINITY;
+}
 
 static zp_status rounds(zp_search *S, char *err, size_t errlen) {
     zp_search_result *res = S->res;
@@ -321,7 +329,8 @@ static zp_status rounds(zp_search *S, char *err, size_t errlen) {
 
 static zp_status start(zp_search *S, const zp_sim_opts *so, char *err, size_t errlen) {
     S->pool = zp_pool_create(S->ob->m, so, S->o->nthreads);
-    S->q = S->n <= 40 ? gsl_qrng_alloc(gsl_qrng_sobol, S->n) : gsl_qrng_alloc(gsl_qrng_halton, S->n);
+    S->q =
+        S->n <= 40 ? gsl_qrng_alloc(gsl_qrng_sobol, S->n) : gsl_qrng_alloc(gsl_qrng_halton, S->n);
     gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
     if (!S->pool || !S->q || !g) {
         gsl_rng_free(g);
@@ -338,12 +347,20 @@ static zp_status start(zp_search *S, const zp_sim_opts *so, char *err, size_t er
 }
 
 zp_status zp_search_run(const zp_objective *ob, const zp_sim_opts *so, const double *lo,
-                        const double *hi, const zp_search_opts *o, zp_search_result *res,
-                        char *err, size_t errlen) {
+                        const double *hi, const zp_search_opts *o, zp_search_result *res, char *err,
+                        size_t errlen) {
     memset(res, 0, sizeof *res);
     /* the parameters: today one force per section */
-    zp_search S = {.ob = ob, .o = o, .n = ob->m->nsec, .lo = lo, .hi = hi, .res = res,
-                   .running = INFINITY, .bdiag = -1, .diag_from = -1, .phase = "scan"};
+    zp_search S = {.ob = ob,
+                   .o = o,
+                   .n = ob->m->nsec,
+                   .lo = lo,
+                   .hi = hi,
+                   .res = res,
+                   .running = INFINITY,
+                   .bdiag = -1,
+                   .diag_from = -1,
+                   .phase = "scan"};
     clock_gettime(CLOCK_MONOTONIC, &S.t0);
     zp_status st = start(&S, so, err, errlen);
     if (st == ZP_OK) {
@@ -354,8 +371,8 @@ zp_status zp_search_run(const zp_objective *ob, const zp_sim_opts *so, const dou
     res->interrupted = o->stop && *o->stop;
     res->timed_out = !res->interrupted && !res->converged && o->max_time > 0 &&
                      zp_search_since(&S) > o->max_time;
-    res->budget_out = !res->converged && !res->interrupted && !res->timed_out &&
-                      zp_search_halted(&S);
+    res->budget_out =
+        !res->converged && !res->interrupted && !res->timed_out && zp_search_halted(&S);
     res->wall_s = zp_search_since(&S);
     zp_pool_free(S.pool);
     if (S.q) {

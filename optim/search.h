@@ -26,13 +26,13 @@ int zp_search_algo_find(const char *name); /* -1 if unknown */
 
 /* Best so far, as the progress display and the checkpoint see it. */
 typedef struct zp_search_progress {
-    const char *phase; /* "scan" or "polish" */
-    int round;         /* 0-based round of scan and polish */
-    long evals;        /* simulations so far */
-    long budget;       /* simulations the search may spend */
-    double wall_s;     /* s since the search began */
-    int found;         /* a survivable schedule is known */
-    double time;       /* s, its finish time */
+    const char *phase;   /* "scan" or "polish" */
+    int round;           /* 0-based round of scan and polish */
+    long evals;          /* simulations so far */
+    long budget;         /* simulations the search may spend */
+    double wall_s;       /* s since the search began */
+    int found;           /* a survivable schedule is known */
+    double time;         /* s, its finish time */
     const double *force; /* borrowed, N per section: the best so far */
 } zp_search_progress;
 
@@ -54,17 +54,17 @@ typedef struct zp_search_hist {
 } zp_search_hist;
 
 typedef struct zp_search_result {
-    int found;                       /* a survivable schedule was found */
-    double force[ZP_MAX_SECTIONS];   /* N, the best schedule (or the best-scoring one) */
+    int found;                     /* a survivable schedule was found */
+    double force[ZP_MAX_SECTIONS]; /* N, the best schedule (or the best-scoring one) */
     zp_eval best;
-    int base_found;                  /* a survivable constant push was found */
-    double base_force;               /* N, the best constant push */
+    int base_found;    /* a survivable constant push was found */
+    double base_force; /* N, the best constant push */
     zp_eval base;
-    long evals;                      /* simulations spent */
-    long nfeasible, nfailed;         /* runs that survived, runs the integrator gave up on */
-    int nthreads, nstarts;           /* workspaces used, local polishes run */
+    long evals;              /* simulations spent */
+    long nfeasible, nfailed; /* runs that survived, runs the integrator gave up on */
+    int nthreads, nstarts;   /* workspaces used, local polishes run */
     double wall_s;
-    int interrupted;                 /* stopped by opts.stop before the end */
+    int interrupted; /* stopped by opts.stop before the end */
     /* convergence evidence */
     int nrounds;      /* rounds of scan and polish completed */
     int nbasins;      /* distinct survivable schedules the polishes ended at */
@@ -86,7 +86,7 @@ long zp_search_default_budget(int n);
    best is never worse; the answer does not depend on the number of threads. ZP_OK, or
    ZP_ERR_NOMEM / ZP_ERR_INPUT (an NLopt setup failure) with why in err. */
 zp_status zp_search_run(const zp_objective *ob, const zp_sim_opts *so, const double *lo,
-                        const double *hi, const zp_search_opts *o, zp_search_result *res,
-                        char *err, size_t errlen);
+                        const double *hi, const zp_search_opts *o, zp_search_result *res, char *err,
+                        size_t errlen);
 
 #endif

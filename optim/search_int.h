@@ -29,28 +29,28 @@ typedef struct zp_polish_rec {
 typedef struct zp_search {
     const zp_objective *ob;
     const zp_search_opts *o;
-    int n;                  /* parameters */
-    const double *lo, *hi;  /* borrowed, n */
-    zp_pool *pool;          /* owned */
+    int n;                 /* parameters */
+    const double *lo, *hi; /* borrowed, n */
+    zp_pool *pool;         /* owned */
     zp_search_result *res;
     zp_archive a;
-    long spent;             /* simulations in the serial order: what the budget counts */
-    int exhausted;          /* some unit of work was cut short by the budget */
-    double running;         /* s, the best time in the serial history */
-    double step[ZP_MAX_SECTIONS]; /* first polish step per parameter: the survivable width */
-    gsl_qrng *q;            /* owned: the low-discrepancy sequence, extended in order */
+    long spent;                    /* simulations in the serial order: what the budget counts */
+    int exhausted;                 /* some unit of work was cut short by the budget */
+    double running;                /* s, the best time in the serial history */
+    double step[ZP_MAX_SECTIONS];  /* first polish step per parameter: the survivable width */
+    gsl_qrng *q;                   /* owned: the low-discrepancy sequence, extended in order */
     double shift[ZP_MAX_SECTIONS]; /* its seeded shift, share of the box */
-    zp_polish_rec *pol;     /* owned, the polishes run, in order */
+    zp_polish_rec *pol;            /* owned, the polishes run, in order */
     int npol, polcap;
-    double *lined;          /* owned: origins of the lines scanned, nlined x n */
-    int *lined_k;           /* owned: their parameter */
+    double *lined; /* owned: origins of the lines scanned, nlined x n */
+    int *lined_k;  /* owned: their parameter */
     int nlined, linecap;
-    int bdiag;              /* archive index of the best constant push, -1: none yet */
-    int diag_from;          /* ... the last one polished, -1: none */
+    int bdiag;     /* archive index of the best constant push, -1: none yet */
+    int diag_from; /* ... the last one polished, -1: none */
     int round;
     const char *phase;
     struct timespec t0;
-    double last_report;     /* s */
+    double last_report; /* s */
 } zp_search;
 
 double zp_search_since(const zp_search *S);
@@ -60,8 +60,7 @@ int zp_search_stopped(const zp_search *S);
 int zp_search_halted(const zp_search *S);
 /* a total order (feasible, score, then the parameters), so the best does not depend on which
    thread finished first */
-int zp_search_ahead(const zp_eval *a, const double *fa, const zp_eval *b, const double *fb,
-                    int n);
+int zp_search_ahead(const zp_eval *a, const double *fa, const zp_eval *b, const double *fb, int n);
 /* one simulation from any thread: the shared counts and the best so far */
 void zp_search_eval(zp_search *S, zp_sim *s, zp_result *r, const double *f, zp_eval *e);
 /* an improvement of the serial history, `at` simulations into the search */

@@ -18,9 +18,10 @@ static double largest_angle(const zp_model *m, const zp_result *r) {
 static void json_convergence(FILE *f, const zp_search_result *s) {
     char sentence[512];
     zp_report_convergence(sentence, sizeof sentence, s);
-    fprintf(f, "{\"rounds\": %d, \"polishes\": %d, \"basins\": %d, \"reached_best\": %d, "
-               "\"converged\": %s, \"budget_ran_out\": %s, \"time_ran_out\": %s, "
-               "\"search_time\": ",
+    fprintf(f,
+            "{\"rounds\": %d, \"polishes\": %d, \"basins\": %d, \"reached_best\": %d, "
+            "\"converged\": %s, \"budget_ran_out\": %s, \"time_ran_out\": %s, "
+            "\"search_time\": ",
             s->nrounds, s->nstarts, s->nbasins, s->nreached, s->converged ? "true" : "false",
             s->budget_out ? "true" : "false", s->timed_out ? "true" : "false");
     if (s->found) {
@@ -69,8 +70,8 @@ void zp_report_write_json(FILE *f, const zp_report *r) {
         zp_out_json_number(f, s->force[k]);
         fputs(k + 1 < m->nsec ? ", " : "]", f);
     }
-    fprintf(f, ",\n  \"found\": %s,\n  \"outcome\": \"%s\",\n  \"time\": ", s->found ? "true" : "false",
-            zp_sim_outcome_name(run->outcome));
+    fprintf(f, ",\n  \"found\": %s,\n  \"outcome\": \"%s\",\n  \"time\": ",
+            s->found ? "true" : "false", zp_sim_outcome_name(run->outcome));
     zp_out_json_number(f, run->time);
     fputs(",\n  \"time_error\": ", f);
     zp_out_json_number(f, fabs(run->time - r->v->tight->time));
@@ -115,4 +116,3 @@ void zp_report_write_json(FILE *f, const zp_report *r) {
     }
     fputs("]\n}\n", f);
 }
-

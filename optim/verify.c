@@ -13,7 +13,9 @@
 
 static const double levels[ZP_VERIFY_LEVELS] = {0.02, 0.05};
 
-static int died(const zp_eval *e) { return e->failed || e->outcome == ZP_OUTCOME_DIED; }
+static int died(const zp_eval *e) {
+    return e->failed || e->outcome == ZP_OUTCOME_DIED;
+}
 
 /* one force changed by the relative amount s: does the spy die? */
 static int kills(const zp_objective *ob, zp_sim *s, zp_result *r, const double *force, int k,
@@ -28,8 +30,7 @@ static int kills(const zp_objective *ob, zp_sim *s, zp_result *r, const double *
 
 /* the smallest change of force k, either way, that kills (bisection), or 0 when none within
    the largest level */
-static double kill_of(const zp_objective *ob, zp_sim *s, zp_result *r, const double *force,
-                      int k) {
+static double kill_of(const zp_objective *ob, zp_sim *s, zp_result *r, const double *force, int k) {
     double best = 0;
     for (int sign = -1; sign <= 1; sign += 2) {
         double top = levels[ZP_VERIFY_LEVELS - 1];
@@ -114,8 +115,12 @@ static zp_status robustness(const zp_objective *ob, const zp_sim_opts *so, const
     zp_sim_opts fast = *so;
     fast.output_dt = 0;
     fast.track_loads = 0;
-    robust_batch b = {ob, force, ntot, malloc(sizeof *b.pf * ntot * nsec),
-                      malloc(sizeof *b.pe * ntot), calloc(nsec, sizeof *b.kill)};
+    robust_batch b = {ob,
+                      force,
+                      ntot,
+                      malloc(sizeof *b.pf * ntot * nsec),
+                      malloc(sizeof *b.pe * ntot),
+                      calloc(nsec, sizeof *b.kill)};
     zp_pool *pool = zp_pool_create(ob->m, &fast, nthreads);
     gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
     zp_status ret = b.pf && b.pe && b.kill && pool && g ? ZP_OK : ZP_ERR_NOMEM;
@@ -149,8 +154,7 @@ void zp_verify_free(zp_verify *v) {
 
 zp_status zp_verify_run(const zp_objective *ob, const zp_sim_opts *so, const double *force,
                         unsigned long seed, int nrobust, int nthreads, zp_sim **sim_out,
-                        zp_verify *v, zp_pool_done progress, void *user, char *err,
-                        size_t errlen) {
+                        zp_verify *v, zp_pool_done progress, void *user, char *err, size_t errlen) {
     const zp_model *m = ob->m;
     memset(v, 0, sizeof *v);
     *sim_out = NULL;
@@ -183,7 +187,7 @@ zp_status zp_verify_run(const zp_objective *ob, const zp_sim_opts *so, const dou
     }
     v->agree = v->run->outcome == v->tight->outcome &&
                fabs(v->run->time - v->tight->time) <= ZP_VERIFY_DT && angle <= ob->limit;
-    return nrobust > 0 ? robustness(ob, so, force, seed, nrobust, nthreads, v, progress, user,
-                                    err, errlen)
-                       : ZP_OK;
+    return nrobust > 0
+               ? robustness(ob, so, force, seed, nrobust, nthreads, v, progress, user, err, errlen)
+               : ZP_OK;
 }

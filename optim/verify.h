@@ -10,10 +10,10 @@
 #define ZP_VERIFY_LEVELS 2 /* perturbation levels: +/-2 % and +/-5 % */
 
 typedef struct zp_robust {
-    double level;  /* 1: every force scaled by 1 + level * u, u uniform in [-1, 1] */
-    int n;         /* runs */
-    int survived;  /* runs that finished alive */
-    int kept;      /* runs that finished with the margin kept */
+    double level; /* 1: every force scaled by 1 + level * u, u uniform in [-1, 1] */
+    int n;        /* runs */
+    int survived; /* runs that finished alive */
+    int kept;     /* runs that finished with the margin kept */
 } zp_robust;
 
 typedef struct zp_verify {
@@ -35,8 +35,7 @@ typedef struct zp_verify {
    ZP_ERR_NUMERIC / ZP_ERR_NOMEM with why in err. */
 zp_status zp_verify_run(const zp_objective *ob, const zp_sim_opts *so, const double *force,
                         unsigned long seed, int nrobust, int nthreads, zp_sim **sim_out,
-                        zp_verify *v, zp_pool_done progress, void *user, char *err,
-                        size_t errlen);
+                        zp_verify *v, zp_pool_done progress, void *user, char *err, size_t errlen);
 void zp_verify_free(zp_verify *v);
 
 #endif
