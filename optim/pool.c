@@ -55,7 +55,7 @@ void zp_pool_map(zp_pool *p, int n, zp_pool_job job, void *user, zp_pool_done do
         int t = omp_get_thread_num();
         job(user, i, p->sim[t], &p->r[t]);
         if (done) {
-#pragma omp critical(zp_pool_done)
+#pragma omp critical
             done(done_user, ++finished, n);
         }
     }

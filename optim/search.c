@@ -105,7 +105,7 @@ void zp_search_report(zp_search *S, int improved) {
 
 void zp_search_eval(zp_search *S, zp_sim *s, zp_result *r, const double *f, zp_eval *e) {
     zp_objective_eval(S->ob, s, f, e, r);
-#pragma omp critical(zp_search_best)
+#pragma omp critical
     {
         zp_search_result *res = S->res;
         res->evals++;
