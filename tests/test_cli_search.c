@@ -134,6 +134,19 @@ int main(void) {
     snprintf(cmd, sizeof cmd, "%s/d", dir);
     CHECK(!tu_exists(cmd));
 
+    /* --max-time bounds the search's wall time and says that it ran out (the seed's search
+       takes seconds) */
+    snprintf(cmd, sizeof cmd,
+             "%s %s/config/seed.ini --out %s/f --no-plot --max-evals 100000000 --max-time 0.2",
+             ZP_EXE, ZP_SOURCE_DIR, dir);
+    CHECK(run(cmd) == 0);
+    snprintf(cmd, sizeof cmd, "%s/f/summary.json", dir);
+    slurp(cmd, json, sizeof json);
+    CHECK(strstr(json, "\"time_ran_out\": true") != NULL);
+    CHECK(json_num(json, "wall_s") < 3);
+    snprintf(cmd, sizeof cmd, "%s %s --out %s/g --max-time 0 2>&1", ZP_EXE, path, dir);
+    CHECK(run(cmd) == 2);
+
     /* no schedule can keep a 2 deg limit on a kinked course: exit 3, said on the first line,
        the closest candidate still written and marked, the missing baseline said missing */
     snprintf(path, sizeof path, "%s/none.ini", dir);
