@@ -7,6 +7,7 @@
 #include "cli.h"
 #include "formulation.h"
 #include "method.h"
+#include "search.h"
 #include "sim.h"
 
 static void usage(FILE *f) {
@@ -78,8 +79,9 @@ static void print_scene(const zp_scene *sc, const zp_model *m) {
            sc->formulation, formulation_doc(sc->formulation));
     printf("        rtol %g, atol %g, t_max %g s, output_dt %g s\n", sc->rtol, sc->atol, sc->t_max,
            sc->output_dt);
-    printf("optimize: margin %g deg, max_evals %ld, seed %lu\n", sc->margin, sc->max_evals,
-           sc->seed);
+    printf("optimize: margin %g deg, max_evals %ld%s, seed %lu\n", sc->margin,
+           sc->line_max_evals ? sc->max_evals : zp_search_default_budget(sc->nsec),
+           sc->line_max_evals ? "" : " (default: 2000 per section)", sc->seed);
 }
 
 int zp_cmd_check(int argc, char **argv) {
