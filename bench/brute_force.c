@@ -10,8 +10,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "cli.h"
 #include "pool.h"
+#include "setup.h"
 
 #define BATCH 512 /* schedules drawn, then run in parallel */
 
@@ -23,35 +23,30 @@ int main(int argc, char **argv) {
     gsl_set_error_handler_off();
     double seconds = atof(argv[2]);
     unsigned long seed = argc > 3 ? strtoul(argv[3], NULL, 10) : 1;
-    zp_scene sc;
-    zp_model *m = zp_cli_load(argv[1], &sc);
-    zp_diag d;
-    zp_diag_init(&d);
-    zp_sim_opts o;
-    if (!m || zp_sim_opts_from_scene(&sc, &o, &d)) {
+    static zp_setup st; /* large: kept off the stack */
+    zp_overrides none = ZP_OVERRIDES_NONE;
+    if (zp_setup_load("brute_force", argv[1], &none, &st)) {
         return 2;
     }
-    o.method = zp_method_find(sc.search_method);
-    o.rtol = sc.search_rtol;
-    o.atol = sc.search_rtol / 100;
-    o.output_dt = 0;
-    o.track_loads = 0;
-    zp_objective ob = {m, m->phi_max - sc.margin * M_PI / 180, o.t_max};
-    zp_pool *pool = zp_pool_create(m, &o, 0);
+    const zp_schedule *box = &st.sched; /* [drive] min, max */
+    int np = box->np;
+    zp_objective ob = {st.m, st.limit, st.search.t_max, box};
+    zp_pool *pool = zp_pool_create(st.m, &st.search, 0);
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    double *f = malloc(sizeof *f * BATCH * m->nsec);
+    double *f = malloc(sizeof *f * BATCH * np);
     zp_eval *e = malloc(sizeof *e * BATCH);
     if (!pool || !rng || !f || !e) {
         fputs("brute_force: out of memory\n", stderr);
         return 1;
     }
     gsl_rng_set(rng, seed);
-    double best_t = INFINITY, best_f[ZP_MAX_SECTIONS] = {0};
+    double best_t = INFINITY, best_f[ZP_SCHED_MAX_PARAMS] = {0};
     long total = 0, feasible = 0;
     double t0 = omp_get_wtime();
     while (omp_get_wtime() - t0 < seconds) {
-        for (int i = 0; i < BATCH * m->nsec; i++) {
-            f[i] = sc.force_min + (sc.force_max - sc.force_min) * gsl_rng_uniform(rng);
+        for (int i = 0; i < BATCH * np; i++) {
+            int k = i % np;
+            f[i] = box->lo[k] + (box->hi[k] - box->lo[k]) * gsl_rng_uniform(rng);
         }
         zp_pool_eval(pool, &ob, BATCH, f, e, NULL, NULL);
         for (int i = 0; i < BATCH; i++) {
@@ -62,8 +57,8 @@ int main(int argc, char **argv) {
             feasible++;
             if (e[i].time < best_t) {
                 best_t = e[i].time;
-                for (int k = 0; k < m->nsec; k++) {
-                    best_f[k] = f[(size_t)i * m->nsec + k];
+                for (int k = 0; k < np; k++) {
+                    best_f[k] = f[(size_t)i * np + k];
                 }
             }
         }
@@ -72,14 +67,14 @@ int main(int argc, char **argv) {
     printf("brute force: %ld schedules in %.0f s on %d threads (%.0f/s), %ld finish with the "
            "margin\nbest: %.6f s at",
            total, wall, zp_pool_threads(pool), total / wall, feasible, best_t);
-    for (int k = 0; k < m->nsec; k++) {
+    for (int k = 0; k < np; k++) {
         printf(" %.4f", best_f[k]);
     }
-    printf(" N\n");
+    printf("\n");
     zp_pool_free(pool);
     gsl_rng_free(rng);
     free(f);
     free(e);
-    zp_model_free(m);
+    zp_setup_free(&st);
     return 0;
 }

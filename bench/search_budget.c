@@ -6,8 +6,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "cli.h"
 #include "search.h"
+#include "setup.h"
 
 #define MONO_TOL 1e-9 /* relative: a larger budget is never worse beyond this */
 #define GOAL 0.005    /* relative: the default answer against 10x the budget */
@@ -15,23 +15,11 @@
 static zp_search_result res;
 
 /* the search as `zipopt SCENE.ini` runs it, at budget evals: its best time, INFINITY if none */
-static double search_at(const zp_model *m, const zp_scene *sc, const zp_sim_opts *so, long evals,
-                        long *spent, int *converged) {
-    zp_sim_opts fast = *so;
-    fast.output_dt = 0;
-    fast.track_loads = 0;
-    fast.method = zp_method_find(sc->search_method);
-    fast.rtol = sc->search_rtol;
-    fast.atol = sc->search_rtol / 100;
-    zp_objective ob = {m, m->phi_max - sc->margin * M_PI / 180, so->t_max};
-    double lo[ZP_MAX_SECTIONS], hi[ZP_MAX_SECTIONS];
-    for (int k = 0; k < m->nsec; k++) {
-        lo[k] = sc->force_min;
-        hi[k] = sc->force_max;
-    }
-    zp_search_opts o = {.max_evals = evals, .seed = sc->seed};
+static double search_at(const zp_setup *st, long evals, long *spent, int *converged) {
+    zp_objective ob = {st->m, st->limit, st->search.t_max, &st->sched};
+    zp_search_opts o = {.max_evals = evals, .seed = st->seed};
     char err[256];
-    if (zp_search_run(&ob, &fast, lo, hi, &o, &res, err, sizeof err)) {
+    if (zp_search_run(&ob, &st->search, st->sched.lo, st->sched.hi, &o, &res, err, sizeof err)) {
         fprintf(stderr, "search_budget: %s\n", err);
         exit(1);
     }
@@ -51,34 +39,31 @@ int main(int argc, char **argv) {
            "(sims) | T(default) | T(10x) (sims) | default vs 10x |\n"
            "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (int a = 2; a < argc; a++) {
-        zp_scene sc;
-        zp_model *m = zp_cli_load(argv[a], &sc);
-        zp_diag d;
-        zp_diag_init(&d);
-        zp_sim_opts so;
-        if (!m || zp_sim_opts_from_scene(&sc, &so, &d)) {
+        static zp_setup st; /* large: kept off the stack */
+        zp_overrides none = ZP_OVERRIDES_NONE;
+        if (zp_setup_load("search_budget", argv[a], &none, &st)) {
             return 2;
         }
         double t[4];
         long spent;
         int conv, mono = 1;
         for (int i = 0; i < 4; i++) {
-            t[i] = search_at(m, &sc, &so, B << i, &spent, &conv);
+            t[i] = search_at(&st, B << i, &spent, &conv);
             mono &= i == 0 || t[i] <= t[i - 1] * (1 + MONO_TOL);
         }
-        long def = sc.line_max_evals ? sc.max_evals : zp_search_default_budget(m->nsec);
-        long s_def, s_ten;
+        long def = st.max_evals, s_def, s_ten;
         int c_def, c_ten;
-        double td = search_at(m, &sc, &so, def, &s_def, &c_def);
-        double tt = search_at(m, &sc, &so, 10 * def, &s_ten, &c_ten);
+        double td = search_at(&st, def, &s_def, &c_def);
+        double tt = search_at(&st, 10 * def, &s_ten, &c_ten);
         double gap = (td - tt) / tt;
         printf("| %s | %d | %ld | %.9g | %.9g | %.9g | %.9g | %s | %ld (%ld%s) | %.9g | %.9g "
                "(%ld%s) | %+.3g %% |\n",
-               sc.name, m->nsec, B, t[0], t[1], t[2], t[3], mono ? "yes" : "**no**", def, s_def,
-               c_def ? ", converged" : "", td, tt, s_ten, c_ten ? ", converged" : "", 100 * gap);
+               st.sc.name, st.m->nsec, B, t[0], t[1], t[2], t[3], mono ? "yes" : "**no**", def,
+               s_def, c_def ? ", converged" : "", td, tt, s_ten, c_ten ? ", converged" : "",
+               100 * gap);
         fflush(stdout);
         bad |= !mono || !(gap <= GOAL);
-        zp_model_free(m);
+        zp_setup_free(&st);
     }
     return bad;
 }

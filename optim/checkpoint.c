@@ -2,10 +2,9 @@
    both a scene file with only [drive] forces (CONFIG.md). */
 #include "report.h"
 
-void zp_report_write_schedule(FILE *f, const zp_scene *sc, const double *force,
+void zp_report_write_schedule(FILE *f, const zp_scene *sc, const zp_schedule *sched,
                               const char *comment) {
-    fprintf(f, "; %s\n; scene: %s\n[drive]\nforces = ", comment, sc->name);
-    for (int k = 0; k < sc->nsec; k++) {
-        fprintf(f, "%.17g%s", force[k], k + 1 < sc->nsec ? ", " : "\n");
-    }
+    char text[ZP_SCHED_MAX_PARAMS * 26];
+    zp_schedule_format(sched, text, sizeof text);
+    fprintf(f, "; %s\n; scene: %s\n[drive]\nforces = %s\n", comment, sc->name, text);
 }

@@ -15,7 +15,8 @@ typedef struct sweep {
 static void sweep_job(void *user, int k, zp_sim *s, zp_result *r) {
     const sweep *w = user;
     const zp_model *m = w->m;
-    zp_input in = {.force = w->force + (size_t)k * m->nsec};
+    zp_schedule sched = zp_schedule_sections(m->nsec, w->force + (size_t)k * m->nsec, 0, 0);
+    zp_input in = {.sched = &sched};
     zp_landscape_point *p = &w->out[k];
     p->failed = zp_sim_run(m, s, &in, r) != ZP_OK;
     p->outcome = r->outcome;

@@ -10,10 +10,18 @@
    verified at a 100x tighter tolerance (angles move by ~1e-5 deg between the two) */
 #define SLACK 1e-3
 
-void zp_objective_eval(const zp_objective *ob, zp_sim *s, const double *force, zp_eval *e,
+zp_schedule zp_objective_schedule(const zp_objective *ob, const double *p) {
+    if (ob->shape) {
+        return zp_schedule_with(ob->shape, p);
+    }
+    return zp_schedule_sections(ob->m->nsec, p, -INFINITY, INFINITY);
+}
+
+void zp_objective_eval(const zp_objective *ob, zp_sim *s, const double *p, zp_eval *e,
                        zp_result *r) {
     const zp_model *m = ob->m;
-    zp_input in = {.force = force};
+    zp_schedule sched = zp_objective_schedule(ob, p);
+    zp_input in = {.sched = &sched};
     int failed = zp_sim_run(m, s, &in, r) != ZP_OK;
     double angle = 0;
     for (int i = 0; i < m->nlink; i++) {

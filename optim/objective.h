@@ -1,5 +1,5 @@
-/* The search's view of one simulation (issue 4 "Objective and constraint"): a schedule of
-   forces in; the finish time and a continuous survival constraint out, always finite. */
+/* The search's view of one simulation (issue 4 "Objective and constraint"): a schedule's
+   parameters in; the finish time and a continuous survival constraint out, always finite. */
 #ifndef ZP_OBJECTIVE_H
 #define ZP_OBJECTIVE_H
 
@@ -22,10 +22,18 @@ typedef struct zp_objective {
     const zp_model *m; /* borrowed */
     double limit;      /* rad, largest |relative joint angle| allowed: death angle - margin */
     double t_max;      /* s, the stall time of the runs */
+    const zp_schedule *shape; /* borrowed: the kind the parameters fill; NULL: per-section
+                                 constants (N) */
 } zp_objective;
 
-/* Runs force (N, per section) on the workspace s and scores it; r receives the run. */
-void zp_objective_eval(const zp_objective *ob, zp_sim *s, const double *force, zp_eval *e,
+/* How many parameters the search varies: ob->shape's, or one force per section. */
+static inline int zp_objective_nparams(const zp_objective *ob) {
+    return ob->shape ? ob->shape->np : ob->m->nsec;
+}
+/* The schedule the search's parameters p stand for (ob->shape with p). */
+zp_schedule zp_objective_schedule(const zp_objective *ob, const double *p);
+/* Runs the schedule of parameters p on the workspace s and scores it; r receives the run. */
+void zp_objective_eval(const zp_objective *ob, zp_sim *s, const double *p, zp_eval *e,
                        zp_result *r);
 /* 1 when e finished with the margin kept. */
 int zp_objective_feasible(const zp_eval *e);

@@ -24,10 +24,10 @@ typedef struct run_ctx {
     int penalty;    /* minimise the penalised score; else the time under the constraint */
     int to_archive; /* keep every point for the polish (sequential runs only) */
     long budget, n;
-    double key[ZP_MAX_SECTIONS]; /* NLopt's point of the cached evaluation */
+    double key[ZP_SCHED_MAX_PARAMS]; /* NLopt's point of the cached evaluation */
     int have;
     zp_eval e;
-    double bestf[ZP_MAX_SECTIONS];
+    double bestf[ZP_SCHED_MAX_PARAMS];
     zp_eval best;
     int nimp;
     long imp_at[MAX_IMP];
@@ -62,7 +62,7 @@ static const zp_eval *run_at(run_ctx *c, const double *x) {
         c->e.cons = 360;
         return &c->e;
     }
-    double f[ZP_MAX_SECTIONS];
+    double f[ZP_SCHED_MAX_PARAMS];
     to_params(S, c->diag, x, f);
     zp_search_eval(S, c->sim, c->r, f, &c->e);
     memcpy(c->key, x, sizeof *x * nx);
@@ -99,7 +99,7 @@ static double nl_cons(unsigned n, const double *x, double *grad, void *data) {
 /* bounds, objective, constraint, tolerances and steps of opt */
 static nlopt_result setup(run_ctx *c, nlopt_opt opt, int nx, const double *step) {
     zp_search *S = c->S;
-    double lb[ZP_MAX_SECTIONS], ub[ZP_MAX_SECTIONS];
+    double lb[ZP_SCHED_MAX_PARAMS], ub[ZP_SCHED_MAX_PARAMS];
     for (int k = 0; k < nx; k++) {
         lb[k] = c->diag ? 0 : S->lo[k];
         ub[k] = c->diag ? 1 : S->hi[k];
@@ -149,7 +149,7 @@ static void run_nlopt(run_ctx *c, int alg, const double *x0, const double *step)
         return;
     }
     c->opt = opt;
-    double x[ZP_MAX_SECTIONS], fbest;
+    double x[ZP_SCHED_MAX_PARAMS], fbest;
     memcpy(x, x0, sizeof *x * nx);
     nlopt_result st = setup(c, opt, nx, step);
     if (st > 0) {
@@ -253,7 +253,7 @@ zp_status zp_polish_global(zp_search *S, int alg, long budget, char *err, size_t
     long left = S->o->max_evals - S->spent;
     S->exhausted |= left <= budget;
     run_ctx c = {.S = S, .to_archive = 1, .budget = left < budget ? left : budget};
-    double mid[ZP_MAX_SECTIONS];
+    double mid[ZP_SCHED_MAX_PARAMS];
     for (int k = 0; k < S->n; k++) {
         mid[k] = 0.5 * (S->lo[k] + S->hi[k]);
     }

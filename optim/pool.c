@@ -69,7 +69,7 @@ typedef struct eval_batch {
 
 static void eval_job(void *user, int i, zp_sim *s, zp_result *r) {
     eval_batch *b = user;
-    zp_objective_eval(b->ob, s, b->f + (size_t)i * b->ob->m->nsec, &b->e[i], r);
+    zp_objective_eval(b->ob, s, b->f + (size_t)i * zp_objective_nparams(b->ob), &b->e[i], r);
 }
 
 void zp_pool_eval(zp_pool *p, const zp_objective *ob, int n, const double *f, zp_eval *e,

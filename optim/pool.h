@@ -23,7 +23,8 @@ int zp_pool_threads(const zp_pool *p);
 void zp_pool_map(zp_pool *p, int n, zp_pool_job job, void *user, zp_pool_done done,
                  void *done_user);
 
-/* Scores n schedules (f: n rows of m->nsec values) through ob into e[n], in parallel. */
+/* Scores n schedules (f: n rows of zp_objective_nparams(ob) values) through ob into e[n], in
+   parallel. */
 void zp_pool_eval(zp_pool *p, const zp_objective *ob, int n, const double *f, zp_eval *e,
                   zp_pool_done done, void *done_user);
 

@@ -70,8 +70,8 @@ static void md_schedule(FILE *f, const zp_report *r) {
     for (int k = 0; k < m->nsec; k++) {
         fprintf(f, "| %d | %g | %g | %.4f |\n", k + 1, m->xb[k], m->xb[k + 1], r->res->force[k]);
     }
-    fprintf(f, "\nDrive: %s; bounds [%g, %g] N.\n\n", zp_model_drive_name(m->drive),
-            r->sc->force_min, r->sc->force_max);
+    fprintf(f, "\nDrive: %s; bounds [%g, %g] N.\n\n", zp_drive_dir_name(m->drive),
+            r->shape->lo[0], r->shape->hi[0]);
 }
 
 static void md_result(FILE *f, const zp_report *r) {
@@ -81,17 +81,19 @@ static void md_result(FILE *f, const zp_report *r) {
     double err = fabs(run->time - v->tight->time);
     if (run->outcome == ZP_OUTCOME_FINISHED) {
         fprintf(f,
-                "Finish time: **%.4f s** (error estimate %.1e s: the same run at a 100x "
+                "Finish time: **%.4f s** (error estimate %.1e s: the same run at a %gx "
                 "tighter tolerance finishes at %.6f s).\n",
-                run->time, err, v->tight->time);
+                run->time, err, ZP_ESTIMATE_FACTOR, v->tight->time);
     } else {
         fprintf(f, "Outcome: **%s** at t = %.4f s, x = %.2f m.\n",
                 zp_sim_outcome_name(run->outcome), run->time, run->x);
     }
-    fprintf(f, "Verification at rtol %.0e, atol %.0e: %s.\n\n", r->sc->rtol / 100,
-            r->sc->atol / 100,
-            v->agree ? "same outcome, finish times agree within 1e-4 s, margin kept"
-                     : "**does not agree** (outcome, finish time or margin differ)");
+    fprintf(f, "Verification at rtol %.0e, atol %.0e: ", v->rtol, v->atol);
+    if (v->agree) {
+        fprintf(f, "same outcome, finish times agree within %g s, margin kept.\n\n", ZP_VERIFY_DT);
+    } else {
+        fputs("**does not agree** (outcome, finish time or margin differ).\n\n", f);
+    }
 }
 
 static void md_margins(FILE *f, const zp_report *r) {
@@ -157,18 +159,19 @@ static void md_speeds(FILE *f, const zp_result *run) {
     }
 }
 
-static void md_kinks(FILE *f, const zp_result *run) {
+static void md_kinks(FILE *f, const zp_report *r) {
     fputs("## Kink impulses\n\n", f);
-    if (run->ncross == 0) {
+    int n;
+    const zp_crossing *cross = zp_sim_crossings(r->best, &n);
+    if (n == 0) {
         fputs("No kinks crossed.\n", f);
         return;
     }
     fputs("| t (s) | x (m) | sections | impulse (N s) | energy lost (J) |\n"
           "|---|---|---|---|---|\n",
           f);
-    int n = run->ncross < ZP_MAX_CROSSINGS ? run->ncross : ZP_MAX_CROSSINGS;
     for (int i = 0; i < n; i++) {
-        const zp_crossing *c = &run->cross[i];
+        const zp_crossing *c = &cross[i];
         fprintf(f, "| %.4f | %g | %d -> %d | %.3f | %.2f |\n", c->t, c->x, c->from + 1, c->to + 1,
                 c->impulse, c->energy_lost);
     }
@@ -194,10 +197,9 @@ static void md_loads(FILE *f, const zp_report *r) {
 
 static void md_search(FILE *f, const zp_report *r) {
     const zp_search_result *s = r->res;
-    const zp_scene *sc = r->sc;
     fputs("\n## Search\n\n", f);
-    fprintf(f, "- algorithm: %s, seed %lu, budget %ld simulations\n", r->algo, sc->seed,
-            sc->max_evals);
+    fprintf(f, "- algorithm: %s, seed %lu, budget %ld simulations\n", r->algo, r->seed,
+            r->max_evals);
     fprintf(f,
             "- simulations: %ld (%ld survived with the margin, %ld gave the integrator up) "
             "in %d rounds of scan and polish, %d local polishes\n",
@@ -206,9 +208,9 @@ static void md_search(FILE *f, const zp_report *r) {
             s->evals / fmax(s->wall_s, 1e-9));
     fprintf(f,
             "- integrators: the search's runs %s at rtol %g, atol %g ([optimize]); the best\n"
-            "  schedule rerun with %s at rtol %g, atol %g ([solver]) and verified 100x tighter\n",
-            sc->search_method, sc->search_rtol, sc->search_rtol / 100, r->method, sc->rtol,
-            sc->atol);
+            "  schedule rerun with %s at rtol %g, atol %g ([solver]) and verified %gx tighter\n",
+            zp_method_get(r->search->method)->name, r->search->rtol, r->search->atol, r->method,
+            r->solver->rtol, r->solver->atol, ZP_ESTIMATE_FACTOR);
     if (s->nhist > 0) {
         fputs("- best finish time against simulations spent:", f);
         int step = s->nhist > 12 ? s->nhist / 12 : 1;
@@ -276,7 +278,7 @@ void zp_report_write_md(FILE *f, const zp_report *r) {
     md_margins(f, r);
     md_gains(f, r);
     md_speeds(f, r->v->run);
-    md_kinks(f, r->v->run);
+    md_kinks(f, r);
     md_loads(f, r);
     md_search(f, r);
     md_robustness(f, r->v);

@@ -87,7 +87,7 @@ int zp_scan_lds(zp_search *S, int count) {
     if (!pts) {
         return 0;
     }
-    double v[ZP_MAX_SECTIONS];
+    double v[ZP_SCHED_MAX_PARAMS];
     for (int i = 0; i < count; i++) {
         gsl_qrng_get(S->q, v);
         for (int k = 0; k < S->n; k++) {
@@ -211,7 +211,7 @@ int zp_scan_diag(zp_search *S) {
 /* Survivable bands can be narrower than any affordable grid in all parameters at once, but a
    line resolves one parameter finely. */
 void zp_scan_lines(zp_search *S, const double *origin, const zp_eval *origin_e) {
-    double cur[ZP_MAX_SECTIONS], *pts = malloc(sizeof *pts * LINE_PTS * S->n);
+    double cur[ZP_SCHED_MAX_PARAMS], *pts = malloc(sizeof *pts * LINE_PTS * S->n);
     if (!pts) {
         return;
     }

@@ -230,7 +230,7 @@ static zp_status scan_round(zp_search *S, int r, char *err, size_t errlen) {
        grow, so the fastest schedules lie towards that corner */
     if (!zp_search_halted(S) && S->res->evals > 0) {
         zp_eval be = S->res->best;
-        double bf[ZP_MAX_SECTIONS];
+        double bf[ZP_SCHED_MAX_PARAMS];
         memcpy(bf, S->res->force, sizeof *bf * S->n);
         zp_scan_lines(S, bf, &be);
     }

@@ -55,7 +55,7 @@ typedef struct zp_search_hist {
 
 typedef struct zp_search_result {
     int found;                     /* a survivable schedule was found */
-    double force[ZP_MAX_SECTIONS]; /* N, the best schedule (or the best-scoring one) */
+    double force[ZP_SCHED_MAX_PARAMS]; /* the best parameters (N per section) or closest */
     zp_eval best;
     int base_found;    /* a survivable constant push was found */
     double base_force; /* N, the best constant push */

@@ -20,8 +20,8 @@ typedef struct zp_archive {
 
 /* one local polish: where it started and the best it reached */
 typedef struct zp_polish_rec {
-    double start[ZP_MAX_SECTIONS];
-    double end[ZP_MAX_SECTIONS];
+    double start[ZP_SCHED_MAX_PARAMS];
+    double end[ZP_SCHED_MAX_PARAMS];
     zp_eval e;
     long n; /* simulations it spent */
 } zp_polish_rec;
@@ -37,9 +37,9 @@ typedef struct zp_search {
     long spent;                    /* simulations in the serial order: what the budget counts */
     int exhausted;                 /* some unit of work was cut short by the budget */
     double running;                /* s, the best time in the serial history */
-    double step[ZP_MAX_SECTIONS];  /* first polish step per parameter: the survivable width */
+    double step[ZP_SCHED_MAX_PARAMS];  /* first polish step per parameter: the survivable width */
     gsl_qrng *q;                   /* owned: the low-discrepancy sequence, extended in order */
-    double shift[ZP_MAX_SECTIONS]; /* its seeded shift, share of the box */
+    double shift[ZP_SCHED_MAX_PARAMS]; /* its seeded shift, share of the box */
     zp_polish_rec *pol;            /* owned, the polishes run, in order */
     int npol, polcap;
     double *lined; /* owned: origins of the lines scanned, nlined x n */

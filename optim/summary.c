@@ -89,7 +89,7 @@ void zp_report_write_json(FILE *f, const zp_report *r) {
     fprintf(f, ",\n  \"evaluations\": %ld,\n  \"wall_s\": ", s->evals);
     zp_out_json_number(f, s->wall_s);
     fprintf(f, ",\n  \"algorithm\": \"%s\",\n  \"seed\": %lu,\n  \"interrupted\": %s", r->algo,
-            r->sc->seed, s->interrupted ? "true" : "false");
+            r->seed, s->interrupted ? "true" : "false");
     fputs(",\n  \"baseline\": ", f);
     if (s->base_found) {
         fputs("{\"force\": ", f);

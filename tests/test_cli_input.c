@@ -182,6 +182,52 @@ static void test_configs(void) {
     CHECK_NEAR(inertia, 15.0 * 5 * 5 / 12, 1e-5 * 31.25);
 }
 
+/* one round names every problem: the reader's, the registries' ([solver] and [optimize]
+   method) and the command line's, in every command, before anything runs */
+static void test_all_at_once(void) {
+    char scene[1024], args[4096], fresh[1024];
+    snprintf(scene, sizeof scene, "%s/many.ini", tmp);
+    snprintf(fresh, sizeof fresh, "%s/out_many", tmp);
+    char text[2048];
+    snprintf(text, sizeof text,
+             "%s[solver]\nmethod = rk45\nformulation = hamilton\n[optimize]\nmethod = euler\n",
+             valid);
+    write_file(scene, text);
+    static const char *const commands[] = {"check '%s'", "simulate '%s' --out '%s'",
+                                           "'%s' --out '%s'", "landscape '%s' --out '%s'"};
+    static const char *const want[] = {":10: [solver] method: unknown method 'rk45'",
+                                       ":11: [solver] formulation: unknown formulation 'hamilton'",
+                                       ":13: [optimize] method: unknown method 'euler'"};
+    for (size_t k = 0; k < sizeof commands / sizeof *commands; k++) {
+        snprintf(args, sizeof args, commands[k], scene, fresh);
+        CHECK(run(args) == 2);
+        for (size_t i = 0; i < sizeof want / sizeof *want; i++) {
+            if (!strstr(err, want[i])) {
+                fprintf(stderr, "  zipopt %s: `%s` missing from:\n%s", args, want[i], err);
+                CHECK(0);
+            }
+        }
+        CHECK(strstr(err, "3 errors; nothing was written") != NULL);
+        CHECK(untouched(fresh));
+    }
+    /* a reader's problem and a registry name together */
+    snprintf(text, sizeof text,
+             "[course]\nx_start = 0\nsection = 10 : x/5\n[trolley]\n"
+             "mass = -10\n[body]\nlengths = 1\nmasses = 2\n"
+             "[solver]\nmethod = rk45\n");
+    write_file(scene, text);
+    snprintf(args, sizeof args, "simulate '%s' --out '%s'", scene, fresh);
+    CHECK(run(args) == 2);
+    CHECK(strstr(err, ":5: [trolley] mass:") && strstr(err, ":10: [solver] method:"));
+    /* and a bad --force with a bad registry name */
+    snprintf(text, sizeof text, "%s[solver]\nmethod = rk45\n", valid);
+    write_file(scene, text);
+    snprintf(args, sizeof args, "simulate '%s' --force 1,2 --out '%s'", scene, fresh);
+    CHECK(run(args) == 2);
+    CHECK(strstr(err, "--force: 2 values, expected 1") && strstr(err, "[solver] method:"));
+    CHECK(untouched(fresh));
+}
+
 int main(void) {
     snprintf(tmp, sizeof tmp, "%s/zp_cli_XXXXXX", getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp");
     if (!mkdtemp(tmp)) {
@@ -190,6 +236,7 @@ int main(void) {
     }
     test_bad_scenes();
     test_configs();
+    test_all_at_once();
     char cmd[1100];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp);
     CHECK(system(cmd) == 0);

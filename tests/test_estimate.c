@@ -18,7 +18,8 @@ static zp_outcome outcome_at(const zp_model *m, zp_sim_opts o, double force) {
     for (int k = 0; k < m->nsec; k++) {
         f[k] = force;
     }
-    zp_input in = {.force = f};
+    zp_schedule in_sched = tu_sched(m, f);
+    zp_input in = {.sched = &in_sched};
     return tu_run(m, &o, &in)->outcome;
 }
 
@@ -36,8 +37,9 @@ int main(void) {
     zp_scene sc;
     zp_model *m = tu_seed_model(&sc);
     CHECK(m != NULL);
-    double force[ZP_MAX_SECTIONS] = {10, 10, 10};
-    zp_input in = {.force = force};
+    zp_schedule in_sched = tu_sched(m, (double[3]){10, 10, 10});
+    double *force = in_sched.p; /* the schedule's forces, changed below */
+    zp_input in = {.sched = &in_sched};
 
     /* the estimate against the true error, for two tolerances */
     zp_sim_opts o = tu_opts(&sc, 1e-13);

@@ -8,6 +8,7 @@
 #include "formulation.h"
 #include "method.h"
 #include "search.h"
+#include "setup.h"
 #include "sim.h"
 
 static void usage(FILE *f) {
@@ -58,7 +59,9 @@ static void print_course(const zp_model *m) {
     }
 }
 
-static void print_scene(const zp_scene *sc, const zp_model *m) {
+static void print_scene(const zp_setup *st) {
+    const zp_scene *sc = &st->sc;
+    const zp_model *m = st->m;
     printf("scene: %s (%s)\n", sc->name, sc->path);
     printf("gravity: %g m/s^2\n", m->g);
     print_course(m);
@@ -69,9 +72,11 @@ static void print_scene(const zp_scene *sc, const zp_model *m) {
         printf("  link %d: length %g m, mass %g kg, inertia %.6g kg m^2, damping %g N m s/rad\n",
                i + 1, m->len[i], m->mass[i], m->inertia[i], m->damp[i]);
     }
-    printf("drive: %s; forces (N):", zp_model_drive_name(m->drive));
-    for (int k = 0; k < sc->nsec; k++) {
-        printf("%s %g", k ? "," : "", sc->forces[k]);
+    printf("drive: %s; forces:", zp_drive_dir_name(m->drive));
+    for (int k = 0; k < m->nsec; k++) {
+        char label[64];
+        zp_schedule_label(&st->sched, k, label, sizeof label);
+        printf("%s %s", k ? "," : "", label);
     }
     printf("%s; search bounds [%g, %g] N\n", sc->nforce ? "" : " (none given)", sc->force_min,
            sc->force_max);
@@ -104,21 +109,13 @@ int zp_cmd_check(int argc, char **argv) {
         fputs("zipopt check: a scene file is required; see zipopt check --help\n", stderr);
         return ZP_EXIT_USAGE;
     }
-    zp_scene sc;
-    zp_model *m = zp_cli_load(path, &sc);
-    if (!m) {
+    /* judged exactly as every command judges it, registry names included */
+    static zp_setup st; /* large: kept off the stack */
+    zp_overrides none = ZP_OVERRIDES_NONE;
+    if (zp_setup_load("check", path, &none, &st)) {
         return ZP_EXIT_USAGE;
     }
-    /* the solver's names are judged against the registries, as `simulate` does */
-    zp_diag d;
-    zp_diag_init(&d);
-    zp_sim_opts o;
-    if (zp_sim_opts_from_scene(&sc, &o, &d) != ZP_OK) {
-        zp_diag_print(&d, stderr);
-        zp_model_free(m);
-        return ZP_EXIT_USAGE;
-    }
-    print_scene(&sc, m);
-    zp_model_free(m);
+    print_scene(&st);
+    zp_setup_free(&st);
     return ZP_EXIT_OK;
 }

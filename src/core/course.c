@@ -188,17 +188,20 @@ int zp_course_check(const char *expr, char *err, size_t errlen) {
     return 0;
 }
 
-zp_course *zp_course_create(int nsec, const char *const *expr, char *err, size_t errlen) {
+zp_course *zp_course_create(int nsec, const char *const *expr, zp_course_err *e) {
     assert(nsec >= 0);
+    *e = (zp_course_err){0, ""};
     zp_course *c = calloc(1, sizeof *c + (size_t)nsec * sizeof c->sec[0]);
     if (!c) {
-        snprintf(err, errlen, "out of memory");
+        snprintf(e->what, sizeof e->what, "out of memory");
         return NULL;
     }
     for (int k = 0; k < nsec; k++) {
         char why[256];
         if (compile(expr[k], &c->sec[k], why, sizeof why)) {
-            snprintf(err, errlen, "section %d: f(x) = `%s`: %s", k + 1, expr[k], why);
+            e->section = k + 1;
+            snprintf(e->what, sizeof e->what, "section %d: f(x) = `%.200s`: %s", k + 1, expr[k],
+                     why);
             zp_course_free(c);
             return NULL;
         }

@@ -6,14 +6,19 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-void zp_estimate_run(const zp_model *m, const zp_sim_opts *o, const zp_input *in,
-                     const zp_result *r, zp_estimate *e) {
+zp_sim_opts zp_estimate_tighter(const zp_sim_opts *o) {
     zp_sim_opts ot = *o;
     ot.rtol = fmax(o->rtol / ZP_ESTIMATE_FACTOR, ZP_ESTIMATE_RTOL_MIN);
     ot.atol = o->atol * ot.rtol / o->rtol;
     ot.output_dt = 0;
     ot.track_loads = 0;
-    zp_input it = {.force = in->force, .start = in->start};
+    return ot;
+}
+
+void zp_estimate_run(const zp_model *m, const zp_sim_opts *o, const zp_input *in,
+                     const zp_result *r, zp_estimate *e) {
+    zp_sim_opts ot = zp_estimate_tighter(o);
+    zp_input it = {.sched = in->sched, .start = in->start};
     *e = (zp_estimate){.rtol = ot.rtol, .atol = ot.atol, .time_error = NAN};
     /* heap, not static: a library function keeps no state between calls (or threads) */
     zp_result *tight = malloc(sizeof *tight);

@@ -7,19 +7,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char *const drive_names[ZP_DRIVE_COUNT] = {"horizontal", "tangent"};
-
-const char *zp_model_drive_name(zp_drive_dir d) { return drive_names[d]; }
-
-int zp_model_drive_find(const char *name) {
-    for (int i = 0; i < ZP_DRIVE_COUNT; i++) {
-        if (!strcmp(name, drive_names[i])) {
-            return i;
-        }
-    }
-    return -1;
-}
-
 /* the chain's constant coefficients: M_x,thj = B_j (cos thj + f' sin thj),
    M_thj,thk = C_jk cos(thj - thk) (derivation in form_lagrange.c) */
 static void derive_chain(zp_model *m) {
@@ -87,12 +74,12 @@ static int check_course(zp_model *m, const zp_scene *sc, zp_diag *d) {
     return ok;
 }
 
-zp_course *zp_model_course(const zp_model *m, char *err, size_t errlen) {
+zp_course *zp_model_course(const zp_model *m, zp_course_err *e) {
     const char *exprs[ZP_MAX_SECTIONS];
     for (int k = 0; k < m->nsec; k++) {
         exprs[k] = m->expr[k];
     }
-    return zp_course_create(m->nsec, exprs, err, errlen);
+    return zp_course_create(m->nsec, exprs, e);
 }
 
 zp_model *zp_model_build(const zp_scene *sc, zp_diag *d) {
@@ -108,14 +95,13 @@ zp_model *zp_model_build(const zp_scene *sc, zp_diag *d) {
         m->xb[k + 1] = sc->x_end[k];
         memcpy(m->expr[k], sc->expr[k], ZP_EXPR_MAX);
     }
-    char err[256] = "";
-    m->course = zp_model_course(m, err, sizeof err);
+    zp_course_err ce;
+    m->course = zp_model_course(m, &ce);
     if (!m->course) {
-        /* the message names the 1-based section; its line is that section's key */
-        int k = 0;
-        sscanf(err, "section %d", &k);
+        /* the line of the failing section's key */
+        int k = ce.section;
         int line = (k >= 1 && k <= sc->nsec) ? sc->sec_line[k - 1] : 0;
-        zp_diag_add(d, sc->path, line, "course", "section", "%s", err);
+        zp_diag_add(d, sc->path, line, "course", "section", "%s", ce.what);
         free(m);
         return NULL;
     }
@@ -130,7 +116,7 @@ zp_model *zp_model_build(const zp_scene *sc, zp_diag *d) {
         m->damp[i] = sc->ndamping == 1 ? sc->damping[0] : sc->damping[i];
     }
     m->phi_max = sc->death_angle * M_PI / 180.0;
-    int dir = zp_model_drive_find(sc->direction);
+    int dir = zp_drive_dir_find(sc->direction);
     m->drive = dir < 0 ? ZP_DRIVE_HORIZONTAL : (zp_drive_dir)dir;
     derive_chain(m);
 

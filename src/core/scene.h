@@ -11,6 +11,7 @@
 #define ZP_MAX_SECTIONS 64
 #define ZP_EXPR_MAX 256
 #define ZP_NAME_MAX 128
+#define ZP_MAX_DRIVE_PARAMS (4 * ZP_MAX_SECTIONS) /* parameters of a drive schedule */
 
 typedef struct zp_scene {
     char path[1024];           /* the file this came from, for messages */
@@ -33,8 +34,9 @@ typedef struct zp_scene {
     double death_angle;           /* deg */
 
     char direction[16];                /* horizontal | tangent */
-    int nforce;                        /* 0 when absent: all forces 0 */
-    double forces[ZP_MAX_SECTIONS];    /* N, per section */
+    int drive_kind;                    /* zp_sched_kind (drive.h) of the forces */
+    int nforce;                        /* parameters; 0 when absent: all forces 0 */
+    double forces[ZP_MAX_DRIVE_PARAMS]; /* the schedule's parameters (N per section) */
     double force_min, force_max;       /* N, search bounds */
 
     char method[32];      /* integrator name (method registry) */

@@ -13,7 +13,7 @@ typedef struct zp_run_meta {
     const char *method;      /* integrator name */
     const char *formulation; /* formulation name */
     double rtol, atol;
-    const double *force; /* N, per section */
+    const zp_schedule *sched; /* borrowed: the drive schedule that ran */
     const zp_estimate *estimate; /* borrowed; NULL: no error estimate was made */
 } zp_run_meta;
 
@@ -21,8 +21,8 @@ typedef struct zp_run_meta {
 void zp_out_json_number(FILE *f, double v);
 /* A string with JSON escapes. */
 void zp_out_json_string(FILE *f, const char *s);
-/* The whole object, with samples (may be 0). */
-void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp_row *samples,
-                        int nsamples, const zp_run_meta *meta);
+/* The whole object of r, the last run of workspace s (its samples and kink crossings). */
+void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp_sim *s,
+                        const zp_run_meta *meta);
 
 #endif

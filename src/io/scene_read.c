@@ -13,7 +13,8 @@
 #include <string.h>
 
 #include "course.h"
-#include "model.h"
+#include "drive.h"
+#include "numtext.h"
 
 enum { S_SCENE, S_COURSE, S_TROLLEY, S_BODY, S_DRIVE, S_SOLVER, S_OPTIMIZE, S_COUNT };
 static const char *const sec_names[S_COUNT] = {"scene", "course", "trolley", "body",
@@ -155,75 +156,8 @@ static int is_near(const char *typed, const char *valid) {
     return edit_distance(typed, valid) <= 1 + (int)strlen(valid) / 4;
 }
 
-static void trim(char *s) {
-    size_t a = 0, n = strlen(s);
-    while (isspace((unsigned char)s[a])) {
-        a++;
-    }
-    while (n > a && isspace((unsigned char)s[n - 1])) {
-        n--;
-    }
-    memmove(s, s + a, n - a);
-    s[n - a] = '\0';
-}
-
-/* a finite decimal number taking the whole text: no hex, inf, nan or trailing junk */
-static int parse_number(const char *text, double *out) {
-    if (!*text || strspn(text, "0123456789+-.eE") != strlen(text)) {
-        return -1;
-    }
-    char *end;
-    double v = strtod(text, &end);
-    if (*end || !isfinite(v)) {
-        return -1;
-    }
-    *out = v;
-    return 0;
-}
-
-/* a comma-separated list: returns how many items it has (storing at most max), or -1 */
-static int parse_items(const char *text, double *out, int max, char *why, size_t whylen) {
-    int n = 0;
-    for (const char *item = text;; n++) {
-        size_t len = strcspn(item, ",");
-        char buf[64];
-        if (len >= sizeof buf) {
-            snprintf(why, whylen, "item %d is too long", n + 1);
-            return -1;
-        }
-        memcpy(buf, item, len);
-        buf[len] = '\0';
-        trim(buf);
-        double v;
-        if (!*buf) {
-            if (n == 0 && !item[len]) {
-                snprintf(why, whylen, "the list is empty");
-            } else {
-                snprintf(why, whylen, "item %d is empty", n + 1);
-            }
-            return -1;
-        }
-        if (parse_number(buf, &v)) {
-            snprintf(why, whylen, "item %d `%s` is not a number", n + 1, buf);
-            return -1;
-        }
-        if (n < max) {
-            out[n] = v;
-        }
-        if (!item[len]) {
-            return n + 1;
-        }
-        item += len + 1;
-    }
-}
-
 int zp_scene_parse_list(const char *text, double *out, int max, char *why, size_t whylen) {
-    int n = parse_items(text, out, max, why, whylen);
-    if (n > max) {
-        snprintf(why, whylen, "%d values, at most %d", n, max);
-        return -1;
-    }
-    return n;
+    return zp_text_list(text, out, max, why, whylen);
 }
 
 static void bad(parse_ctx *c, int line, const char *sec, const char *key, const char *fmt, ...)
@@ -370,7 +304,7 @@ static char *read_line(char *str, int num, void *stream) {
             break;
         }
     }
-    trim(str);
+    zp_text_trim(str);
     if (!*str) {
         return str;
     }
@@ -389,7 +323,7 @@ static char *read_line(char *str, int num, void *stream) {
         *close = '\0';
         char name[LINE_CAP];
         strcpy(name, str + 1);
-        trim(name);
+        zp_text_trim(name);
         int sec = find_section(name);
         if (sec < 0 || (c->schedule && sec != S_DRIVE)) {
             unknown_section(c, name);
@@ -480,7 +414,7 @@ static int get_number(parse_ctx *c, int k, range r, double *out) {
     }
     double v;
     char what[LINE_CAP + 64];
-    if (parse_number(c->val[k], &v)) {
+    if (zp_text_number(c->val[k], &v)) {
         snprintf(what, sizeof what, c->val[k][0] ? "`%s` is not a number" : "no value%s",
                  c->val[k]);
         bad_key(c, k, what);
@@ -502,7 +436,7 @@ static int get_list(parse_ctx *c, int k, range r, double *out, int max) {
     }
     char what[LINE_CAP + 64];
     double v[ZP_MAX_SECTIONS];
-    int n = parse_items(c->val[k], v, ZP_MAX_SECTIONS, what, sizeof what);
+    int n = zp_text_items(c->val[k], v, ZP_MAX_SECTIONS, what, sizeof what);
     if (n < 0) {
         bad_key(c, k, what);
         return -1;
@@ -557,6 +491,29 @@ static int get_text(parse_ctx *c, int k, char *out, size_t cap) {
     return 1;
 }
 
+/* [drive] forces through the drive module, for a course of nsec sections: 1 read into *s,
+   0 absent, -1 bad */
+static int read_forces(parse_ctx *c, int nsec, zp_schedule *s) {
+    if (!c->key_line[K_FORCES]) {
+        return 0;
+    }
+    char why[LINE_CAP + 64];
+    int rc = zp_schedule_parse(c->val[K_FORCES], nsec, s, why, sizeof why);
+    if (rc == -2) {
+        bad(c, c->key_line[K_FORCES], "drive", keys[K_FORCES].name, "%s", why);
+    } else if (rc) {
+        bad_key(c, K_FORCES, why);
+    }
+    return rc ? -1 : 1;
+}
+
+/* the schedule's kind and parameters into the scene */
+static void set_forces(zp_scene *sc, const zp_schedule *s) {
+    sc->drive_kind = (int)s->kind;
+    sc->nforce = s->np;
+    memcpy(sc->forces, s->p, sizeof *s->p * (size_t)s->np);
+}
+
 static void convert_scene(parse_ctx *c, zp_scene *sc) {
     double v;
     unsigned long u;
@@ -599,10 +556,10 @@ static void convert_scene(parse_ctx *c, zp_scene *sc) {
         }
         *colon = '\0';
         char *expr = colon + 1;
-        trim(text);
-        trim(expr);
+        zp_text_trim(text);
+        zp_text_trim(expr);
         int ok = 1;
-        if (parse_number(text, &sc->x_end[i])) {
+        if (zp_text_number(text, &sc->x_end[i])) {
             bad(c, line, "course", "section", "x_end `%s` is not a number; expected `x_end : f(x)`",
                 text);
             ok = 0;
@@ -661,18 +618,15 @@ static void convert_scene(parse_ctx *c, zp_scene *sc) {
         sc->death_angle = v;
     }
 
-    /* [drive] */
+    /* [drive]: the schedule's text is the drive module's to read */
     if (get_text(c, K_DIRECTION, sc->direction, sizeof sc->direction) >= 0 &&
-        zp_model_drive_find(sc->direction) < 0) {
+        zp_drive_dir_find(sc->direction) < 0) {
         snprintf(what, sizeof what, "unknown direction `%s`", sc->direction);
         bad_key(c, K_DIRECTION, what);
     }
-    int nforce = get_list(c, K_FORCES, R_ANY, tmp, ZP_MAX_SECTIONS);
-    if (nforce > 0 && nforce != c->nsect) {
-        bad_count(c, K_FORCES, nforce, "%d (one per section)", c->nsect);
-    } else if (nforce > 0) {
-        sc->nforce = nforce;
-        memcpy(sc->forces, tmp, (size_t)nforce * sizeof *tmp);
+    zp_schedule sched;
+    if (read_forces(c, c->nsect, &sched) > 0) {
+        set_forces(sc, &sched);
     }
     sc->line_forces = c->key_line[K_FORCES];
     int have_min = get_number(c, K_MIN, R_ANY, &sc->force_min);
@@ -859,20 +813,16 @@ zp_status zp_scene_overlay_schedule(const char *path, zp_scene *sc, zp_diag *d) 
     parse_text(c, text);
     free(text);
     /* the forces must fit the scene they are laid over */
-    double f[ZP_MAX_SECTIONS];
-    int n = get_list(c, K_FORCES, R_ANY, f, ZP_MAX_SECTIONS);
-    if (n == 0) {
+    zp_schedule sched;
+    if (read_forces(c, sc->nsec, &sched) == 0) {
         missing(c, K_FORCES, "the forces (N), one per section");
-    } else if (n > 0 && n != sc->nsec) {
-        bad_count(c, K_FORCES, n, "%d (one per section of the scene)", sc->nsec);
     }
     int nbad = flush_messages(c);
     free(c);
     if (nbad) {
         return ZP_ERR_INPUT;
     }
-    memcpy(sc->forces, f, (size_t)n * sizeof *f);
-    sc->nforce = n;
+    set_forces(sc, &sched);
     /* sc->path names the scene, not this file: no line there to point at */
     sc->line_forces = 0;
     return ZP_OK;
