@@ -58,7 +58,7 @@ int zp_search_algo_find(const char *name) {
 }
 
 long zp_search_default_budget(int n) {
-    return ZP_SEARCH_PER_PARAM * (long)(n > 0 ? n : 1);
+    return ZP_SCENE_EVALS_PER_SECTION * (long)(n > 0 ? n : 1);
 }
 
 double zp_search_since(const zp_search *S) {

@@ -10,7 +10,6 @@
 #define ZP_SEARCH_HIST 256   /* improvements kept in the history */
 #define ZP_SEARCH_REACH 1e-4 /* a polish ending this close (relative time) reached the best */
 #define ZP_SEARCH_CONV 1e-6  /* a round improving the best less than this (relative) converged */
-#define ZP_SEARCH_PER_PARAM 2000 /* the default budget: simulations per parameter */
 
 /* The strategies the search offers: a global phase, then a local polish. */
 typedef struct zp_search_algo {
@@ -77,7 +76,7 @@ typedef struct zp_search_result {
     zp_search_hist hist[ZP_SEARCH_HIST];
 } zp_search_result;
 
-/* The default budget for n parameters: ZP_SEARCH_PER_PARAM simulations each. */
+/* The default budget for n parameters: ZP_SCENE_EVALS_PER_SECTION simulations each. */
 long zp_search_default_budget(int n);
 
 /* Searches the box [lo[k], hi[k]] (one per section, N) for the fastest schedule that keeps

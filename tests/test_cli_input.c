@@ -182,6 +182,40 @@ static void test_configs(void) {
     CHECK_NEAR(inertia, 15.0 * 5 * 5 / 12, 1e-5 * 31.25);
 }
 
+/* `check` shows slopes as numbers (x/5: f' = 0.2, f'' = 0), every key it added with the value
+   taken (CONFIG.md's defaults), and warns on stderr about a force the search could not pick */
+static void test_check_shows(void) {
+    char text[1024], path[1024], args[2048];
+    snprintf(text, sizeof text, "%s[drive]\nforces = 600\n[solver]\natol = 1e-9\n", valid);
+    snprintf(path, sizeof path, "%s/shows.ini", tmp);
+    write_file(path, text);
+    snprintf(args, sizeof args, "check '%s'", path);
+    CHECK(run(args) == 0);
+    CHECK(strstr(out, "at x = 10: f = 2 m, f' = 0.2, f'' = 0 1/m") != NULL);
+    CHECK(strstr(out, "[solver] rtol = 1e-08\n") && strstr(out, "[body] death_angle = 180\n") &&
+          strstr(out, "[drive] max = 500\n") && strstr(out, "[optimize] margin = 10\n") &&
+          strstr(out, "[limits]: none given"));
+    CHECK(!strstr(out, "[solver] atol") && !strstr(out, "[drive] forces =")); /* given */
+    CHECK(strstr(err, "shows.ini:10: [drive] forces: warning: item 1 (600) is outside") != NULL);
+    if (!strstr(err, "warning")) {
+        fprintf(stderr, "  stdout:\n%s  stderr:\n%s", out, err);
+    }
+    /* the boundary height printed (sqrt(10): many digits), typed back as the next section, is
+       within the continuity tolerance */
+    const char *rest = strstr(valid, "[trolley]");
+    snprintf(text, sizeof text,
+             "[course]\nx_start = 1\nsection = 10 : sqrt(x)\nsection = 20 : sqrt(10) + 0*x\n%s", rest);
+    write_file(path, text);
+    run(args);
+    const char *y = strstr(out, "x = 10 m, y = ");
+    char typed[64] = "";
+    CHECK(y && sscanf(y + strlen("x = 10 m, y = "), "%63[0-9.]", typed) == 1);
+    snprintf(text, sizeof text,
+             "[course]\nx_start = 1\nsection = 10 : sqrt(x)\nsection = 20 : %s\n%s", typed, rest);
+    write_file(path, text);
+    CHECK(run(args) == 0 && strlen(typed) > 8);
+}
+
 /* one round names every problem: the reader's, the registries' ([solver] and [optimize]
    method) and the command line's, in every command, before anything runs */
 static void test_all_at_once(void) {
@@ -236,6 +270,7 @@ int main(void) {
     }
     test_bad_scenes();
     test_configs();
+    test_check_shows();
     test_all_at_once();
     char cmd[1100];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp);

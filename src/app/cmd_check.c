@@ -7,6 +7,7 @@
 #include "cli.h"
 #include "formulation.h"
 #include "method.h"
+#include "scene_read.h"
 #include "search.h"
 #include "setup.h"
 #include "sim.h"
@@ -15,10 +16,11 @@ static void usage(FILE *f) {
     fputs("usage: zipopt check SCENE.ini\n"
           "Validates a scene file against every rule of CONFIG.md (all problems are listed on\n"
           "stderr as FILE:LINE: [section] key: what; expected, with exit status 2) and prints\n"
-          "the scene: each course section with f(x), f'(x) and f''(x); each boundary between\n"
-          "sections with its height, slope jump and whether it is a kink; the trolley and the\n"
-          "body's links (length, mass, inertia, damping); the drive, solver and search\n"
-          "settings. Writes no files.\n",
+          "the scene: each course section with f(x) and f, f', f'' at its ends; each boundary\n"
+          "between sections with its height, slope jump and whether it is a kink; the trolley\n"
+          "and the body's links (length, mass, inertia, damping); the drive, solver and search\n"
+          "settings; every key zipopt added with its value. Warns on stderr when a force lies\n"
+          "outside [min, max]. Writes no files.\n",
           f);
 }
 
@@ -38,8 +40,12 @@ static void print_course(const zp_model *m) {
     for (int k = 0; k < m->nsec; k++) {
         printf("  section %d: x in [%g, %g] m\n", k + 1, m->xb[k], m->xb[k + 1]);
         printf("    f(x)   = %s\n", m->expr[k]);
-        printf("    f'(x)  = %s\n", zp_course_deriv_text(m->course, k, 1));
-        printf("    f''(x) = %s\n", zp_course_deriv_text(m->course, k, 2));
+        /* libmatheval's derivative text is unsimplified: its values at the ends say more */
+        for (int end = 0; end < 2; end++) {
+            zp_track t = zp_course_eval(m->course, k, m->xb[k + end]);
+            printf("    at x = %g: f = %.10g m, f' = %.10g, f'' = %.10g 1/m\n", m->xb[k + end],
+                   t.f, t.fp, t.fpp);
+        }
     }
     if (m->nsec == 1) {
         return;
@@ -53,7 +59,8 @@ static void print_course(const zp_model *m) {
         for (int i = 0; i < m->nkink; i++) {
             kink |= m->kink[i].left == k - 1;
         }
-        printf("  x = %g m, y = %.6g m: slope %.6g -> %.6g (jump %+.6g, %.3g deg): %s\n", x, l.f,
+        /* 10 digits: typed back, the height is within the continuity tolerance 1e-9 (1 + |y|) */
+        printf("  x = %g m, y = %.10g m: slope %.6g -> %.6g (jump %+.6g, %.3g deg): %s\n", x, l.f,
                l.fp, r.fp, r.fp - l.fp, (atan(r.fp) - atan(l.fp)) * 180 / M_PI,
                kink ? "kink" : "smooth");
     }
@@ -86,7 +93,22 @@ static void print_scene(const zp_setup *st) {
            sc->output_dt);
     printf("optimize: margin %g deg, max_evals %ld%s, seed %lu\n", sc->margin,
            sc->line_max_evals ? sc->max_evals : zp_search_default_budget(sc->nsec),
-           sc->line_max_evals ? "" : " (default: 2000 per section)", sc->seed);
+           sc->line_max_evals ? "" : " (the search's default)", sc->seed);
+    printf("added by zipopt (keys the file does not give, with the values taken):\n");
+    zp_scene_print_added(sc, stdout, "  ");
+}
+
+/* forces the search could never pick: legal for `simulate`, but worth a word */
+static void warn_forces(const zp_setup *st) {
+    const zp_schedule *sh = &st->sched;
+    for (int i = 0; i < st->sc.nforce && i < sh->np; i++) {
+        if (sh->p[i] < sh->lo[i] || sh->p[i] > sh->hi[i]) {
+            fprintf(stderr,
+                    "%s:%d: [drive] forces: warning: item %d (%g) is outside [min, max] = "
+                    "[%g, %g], the search's bounds\n",
+                    st->sc.path, st->sc.line_forces, i + 1, sh->p[i], sh->lo[i], sh->hi[i]);
+        }
+    }
 }
 
 int zp_cmd_check(int argc, char **argv) {
@@ -116,6 +138,7 @@ int zp_cmd_check(int argc, char **argv) {
         return ZP_EXIT_USAGE;
     }
     print_scene(&st);
+    warn_forces(&st);
     zp_setup_free(&st);
     return ZP_EXIT_OK;
 }

@@ -129,6 +129,11 @@ static void print_estimate(const zp_result *r, const zp_estimate *e) {
         printf("time error estimate: %.2g s (difference from a run at rtol %.0e)\n",
                e->time_error, e->rtol);
     }
+    if (e->ok && e->energy_large) {
+        printf("SUSPECT: the energy audit residual %.3g J is large against the energies of the "
+               "run: the tolerances are too loose for this answer\n",
+               e->energy_residual);
+    }
 }
 
 /* trajectory.csv and summary.json, both or neither */
