@@ -11,7 +11,7 @@
 #define ZP_MAX_SECTIONS 64
 #define ZP_EXPR_MAX 256
 #define ZP_NAME_MAX 128
-#define ZP_SCENE_EVALS_PER_SECTION 2000 /* the search's default budget, per section */
+#define ZP_SCENE_EVALS_PER_SECTION 5000 /* the search's default budget, per section */
 #define ZP_MAX_DRIVE_PARAMS (4 * ZP_MAX_SECTIONS) /* parameters of a drive schedule */
 
 /* Bounds the reader holds [solver] to (CONFIG.md), each also as text for its messages.
