@@ -1,10 +1,11 @@
 /* `zipopt [SCENE.ini] [--out DIR]`: the search for the fastest survivable schedule, its
    verification and the best-forcing report (CLI.md; issue 4). */
+#include <limits.h>
 #include <math.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "cli.h"
@@ -19,30 +20,30 @@
 #define STUDY_FORCE 100 /* N per section: the original study's push */
 #define NROBUST 200     /* robustness runs per perturbation level */
 
+/* set by the first Ctrl-C (the transaction's handler): the search stops cleanly; a second
+   one ends the run leaving nothing */
 static volatile sig_atomic_t interrupted;
-
-/* the first Ctrl-C stops the search cleanly; SA_RESETHAND lets a second one kill */
-static void on_sigint(int sig) {
-    (void)sig;
-    interrupted = 1;
-}
 
 static void usage(FILE *f) {
     fputs("usage: zipopt [SCENE.ini] [--out DIR] [--algorithm NAME] [--seed N] [--max-evals N]\n"
-          "              [--no-plot]\n"
+          "              [--max-time S] [--no-plot]\n"
           "Searches for the fastest schedule of drive forces, one per course section within\n"
           "[drive] min, max, that brings the spy to the end alive with every relative joint\n"
           "angle at least [optimize] margin below death_angle. With no file: the built-in seed\n"
           "scene. Verifies the best schedule at a 100x tighter tolerance, measures its\n"
           "robustness to +/-2 % and +/-5 % changes of the forces, and writes report.md,\n"
           "schedule.ini, summary.json, trajectory.csv and the best run's figures (course,\n"
-          "energy, angles, loads: PNG with their gnuplot scripts) to out/<scene name>/ (or DIR).\n"
+          "energy, angles, loads: PNG with their gnuplot scripts) to out/<scene name>/search/\n"
+          "(or DIR itself), all or nothing.\n"
           "While it runs, the best so far is kept in DIR/checkpoint.ini; Ctrl-C stops the\n"
           "search and writes the best so far, marked interrupted.\n"
           "  --out DIR         output folder\n"
           "  --algorithm NAME  the search strategy (below; default scan-cobyla)\n"
           "  --seed N          overrides [optimize] seed\n"
-          "  --max-evals N     overrides [optimize] max_evals (simulations)\n"
+          "  --max-evals N     overrides [optimize] max_evals (simulations; default 5000 per\n"
+          "                    section)\n"
+          "  --max-time S      stops the search after S seconds of wall time, keeping the best\n"
+          "                    so far (then the answer depends on the machine's speed)\n"
           "  --no-plot         skip the figures\n"
           "strategies:\n",
           f);
@@ -54,50 +55,87 @@ static void usage(FILE *f) {
 
 typedef struct search_args {
     const char *scene, *out, *algo;
-    long seed, max_evals; /* -1: from the scene */
+    int has_seed;
+    unsigned long seed, max_evals; /* max_evals 0: from the scene */
+    double max_time;               /* s, 0: no limit */
     int no_plot;
 } search_args;
 
-static int parse_long(const char *opt, const char *text, long *v) {
+enum { O_OUT = ZP_OPT_FIRST, O_NO_PLOT, O_ALGORITHM, O_SEED, O_MAX_EVALS, O_MAX_TIME };
+static const struct option options[] = {
+    {"help", no_argument, NULL, 'h'},
+    {"out", required_argument, NULL, O_OUT},
+    {"no-plot", no_argument, NULL, O_NO_PLOT},
+    {"algorithm", required_argument, NULL, O_ALGORITHM},
+    {"seed", required_argument, NULL, O_SEED},
+    {"max-evals", required_argument, NULL, O_MAX_EVALS},
+    {"max-time", required_argument, NULL, O_MAX_TIME},
+    {NULL, 0, NULL, 0},
+};
+
+/* seconds > 0 for opt; -1 (reported) otherwise */
+static int parse_seconds(const char *opt, const char *text, double *v) {
     char *end;
-    *v = strtol(text, &end, 10);
-    if (end == text || *end || *v < 0) {
-        fprintf(stderr, "zipopt: %s '%s': expected a whole number >= 0\n", opt, text);
+    *v = strtod(text, &end);
+    if (end == text || *end || !(*v > 0) || !isfinite(*v)) {
+        fprintf(stderr, "zipopt: %s '%s': expected seconds > 0\n", opt, text);
         return -1;
     }
     return 0;
 }
 
+/* 1: --help was shown; -1: a mistake (reported) */
 static int parse_args(int argc, char **argv, search_args *a) {
-    *a = (search_args){.seed = -1, .max_evals = -1};
-    for (int i = 1; i < argc; i++) {
-        const char *o = argv[i];
-        int has_value = i + 1 < argc;
-        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
+    *a = (search_args){0};
+    zp_cli_opts_begin();
+    for (int c; (c = zp_cli_opts_next("", argc, argv, options)) != -1;) {
+        switch (c) {
+        case 'h':
             usage(stdout);
             return 1;
-        } else if (!strcmp(o, "--out") && has_value) {
-            a->out = argv[++i];
-        } else if (!strcmp(o, "--no-plot")) {
+        case O_OUT:
+            a->out = optarg;
+            break;
+        case O_NO_PLOT:
             a->no_plot = 1;
-        } else if (!strcmp(o, "--algorithm") && has_value) {
-            a->algo = argv[++i];
-        } else if (!strcmp(o, "--seed") && has_value) {
-            if (parse_long(o, argv[++i], &a->seed)) {
+            break;
+        case O_ALGORITHM:
+            a->algo = optarg;
+            break;
+        case O_SEED:
+            a->has_seed = 1;
+            if (zp_cli_whole("", "--seed", optarg, 0, ULONG_MAX, &a->seed)) {
                 return -1;
             }
-        } else if (!strcmp(o, "--max-evals") && has_value) {
-            if (parse_long(o, argv[++i], &a->max_evals) || a->max_evals < 1) {
-                fprintf(stderr, "zipopt: --max-evals: at least 1 simulation\n");
+            break;
+        case O_MAX_EVALS:
+            if (zp_cli_whole("", "--max-evals", optarg, 1, LONG_MAX, &a->max_evals)) {
                 return -1;
             }
-        } else if (zp_cli_scene_arg("", o, &a->scene)) {
+            break;
+        case O_MAX_TIME:
+            if (parse_seconds("--max-time", optarg, &a->max_time)) {
+                return -1;
+            }
+            break;
+        default:
             return -1;
         }
     }
+    if (zp_cli_scene_operand("", argc, argv, &a->scene) ||
+        (a->out && zp_cli_path_ok("", "--out", a->out))) {
+        return -1;
+    }
     if (a->algo && zp_search_algo_find(a->algo) < 0) {
-        fprintf(stderr, "zipopt: --algorithm '%s' is unknown; see zipopt --help for the list\n",
-                a->algo);
+        const char *names[64];
+        int n = 0;
+        for (; n < zp_search_algo_count() && n < 64; n++) {
+            names[n] = zp_search_algo_get(n)->name;
+        }
+        int near = zp_diag_nearest(a->algo, names, n);
+        zp_cli_error("", "--algorithm '%s' is unknown%s%s%s (the list: zipopt SCENE --help)",
+                     a->algo, near >= 0 ? "; did you mean '" : "", near >= 0 ? names[near] : "",
+                     near >= 0 ? "'?" : "");
         return -1;
     }
     return 0;
@@ -106,48 +144,77 @@ static int parse_args(int argc, char **argv, search_args *a) {
 typedef struct progress_ctx {
     const zp_scene *sc;
     const zp_schedule *shape; /* the kind and bounds the search's parameters fill */
-    char checkpoint_dir[1024];
+    zp_tx *tx;
+    const zp_search_progress *p; /* the improvement being checkpointed */
     int tty;      /* stderr is a terminal: show the progress line */
     int shown;    /* a progress line is on screen */
+    struct timespec t0; /* start of the current phase */
+    double last;  /* s into it at the last line shown */
 } progress_ctx;
+
+static void phase_start(progress_ctx *c, const char *what) {
+    clock_gettime(CLOCK_MONOTONIC, &c->t0);
+    c->last = 0;
+    if (c->tty) {
+        fprintf(stderr, "%s%s", c->shown ? "\n" : "", what);
+        c->shown = 1;
+    }
+}
+
+static void write_checkpoint(FILE *f, void *user) {
+    const progress_ctx *c = user;
+    char note[160];
+    snprintf(note, sizeof note, "search checkpoint: best so far, finish %.6f s after %ld "
+             "simulations", c->p->time, c->p->evals);
+    zp_schedule best = zp_schedule_with(c->shape, c->p->force);
+    zp_report_write_schedule(f, c->sc, &best, note);
+}
 
 /* the progress line, and the checkpoint of every improvement so a killed run loses nothing */
 static void on_progress(void *user, const zp_search_progress *p, int improved) {
     progress_ctx *c = user;
     if (improved) {
-        zp_out_set set;
-        zp_out_set_init(&set);
-        char err[1200], note[160];
-        FILE *f = zp_out_set_open(&set, c->checkpoint_dir, "checkpoint.ini", err, sizeof err);
-        if (f) {
-            snprintf(note, sizeof note, "search checkpoint: best so far, finish %.6f s after %ld "
-                     "simulations", p->time, p->evals);
-            zp_schedule best = zp_schedule_with(c->shape, p->force);
-            zp_report_write_schedule(f, c->sc, &best, note);
-            zp_out_set_commit(&set, err, sizeof err);
+        char err[1400];
+        c->p = p;
+        if (zp_tx_checkpoint(c->tx, "checkpoint.ini", write_checkpoint, c, err, sizeof err)) {
+            fprintf(stderr, "%szipopt: %s\n", c->shown ? "\n" : "", err);
         }
     }
     if (c->tty) {
-        fprintf(stderr, "\rsearch: %ld simulations, %.0f/s, best %s%.4f s   ", p->evals,
-                p->evals / fmax(p->wall_s, 1e-9), p->found ? "" : "(none survives) ",
-                p->found ? p->time : 0.0);
+        /* the budget left at the rate so far: an upper bound, as a round may converge first */
+        double rate = p->evals / fmax(p->wall_s, 1e-9);
+        fprintf(stderr, "\rsearch round %d, %s: %ld of %ld simulations, %.0f/s, best %s%.4f s, "
+                "at most %.0f s left   ", p->round + 1, p->phase, p->evals, p->budget, rate,
+                p->found ? "" : "(none survives) ", p->found ? p->time : 0.0,
+                (p->budget - p->evals) / fmax(rate, 1e-9));
         c->shown = 1;
     }
 }
 
-/* report.md, schedule.ini, summary.json and trajectory.csv: all or none */
-static int write_outputs(const zp_report *r, zp_sim *best_sim) {
-    zp_out_set set;
-    zp_out_set_init(&set);
-    char err[1200] = "", note[200];
-    FILE *md = zp_out_set_open(&set, r->out_dir, "report.md", err, sizeof err);
-    FILE *ini = md ? zp_out_set_open(&set, r->out_dir, "schedule.ini", err, sizeof err) : NULL;
-    FILE *js = ini ? zp_out_set_open(&set, r->out_dir, "summary.json", err, sizeof err) : NULL;
-    FILE *csv = js ? zp_out_set_open(&set, r->out_dir, "trajectory.csv", err, sizeof err) : NULL;
+/* the verification's progress line: its robustness runs done, and the time left at that pace */
+static void on_verify(void *user, int done, int total) {
+    progress_ctx *c = user;
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    double el = (t.tv_sec - c->t0.tv_sec) + 1e-9 * (t.tv_nsec - c->t0.tv_nsec);
+    if (c->tty && (done == total || el - c->last >= 0.25)) {
+        c->last = el;
+        fprintf(stderr, "\rrobustness: %d of %d runs and bisections, about %.0f s left   ", done,
+                total, el / done * (total - done));
+        c->shown = 1;
+    }
+}
+
+/* report.md, schedule.ini, summary.json and trajectory.csv into the transaction */
+static int write_outputs(zp_tx *t, const zp_report *r, zp_sim *best_sim) {
+    char err[1400] = "", note[200];
+    FILE *md = zp_tx_open(t, "report.md", err, sizeof err);
+    FILE *ini = md ? zp_tx_open(t, "schedule.ini", err, sizeof err) : NULL;
+    FILE *js = ini ? zp_tx_open(t, "summary.json", err, sizeof err) : NULL;
+    FILE *csv = js ? zp_tx_open(t, "trajectory.csv", err, sizeof err) : NULL;
     if (!csv) {
-        zp_out_set_abort(&set);
         fprintf(stderr, "zipopt: %s; nothing was written\n", err);
-        return ZP_EXIT_FAIL;
+        return -1;
     }
     zp_report_write_md(md, r);
     snprintf(note, sizeof note, "best schedule of the search%s: %s, %.6f s; rerun with zipopt "
@@ -159,16 +226,39 @@ static int write_outputs(const zp_report *r, zp_sim *best_sim) {
     int nrows;
     const zp_row *rows = zp_sim_rows(best_sim, &nrows);
     zp_out_csv_trajectory(csv, r->m, rows, nrows);
-    if (zp_out_set_commit(&set, err, sizeof err)) {
-        fprintf(stderr, "zipopt: %s; nothing was written\n", err);
-        return ZP_EXIT_FAIL;
+    return 0;
+}
+
+/* the best run's figures into the transaction: 1 drawn, 0 data and scripts only (no
+   gnuplot), -1 failed (said on stderr) */
+static int figures(zp_tx *t, const zp_model *m, const zp_scene *sc, const zp_schedule *shape,
+                   const zp_search_result *res, const zp_verify *v, const zp_sim *best_sim) {
+    zp_plot_opts po;
+    zp_plot_opts_default(&po);
+    po.margin = sc->margin * M_PI / 180;
+    zp_schedule best = zp_schedule_with(shape, res->force);
+    po.sched = &best;
+    zp_plot_info info;
+    char err[1400];
+    if (zp_plot_run(t, m, best_sim, v->run, &po, &info, err, sizeof err)) {
+        fprintf(stderr, "zipopt: figures: %s; nothing was written\n", err);
+        return -1;
     }
-    return ZP_EXIT_OK;
+    if (info.no_gnuplot) {
+        fputs("zipopt: gnuplot is not installed (apt-get install gnuplot-nox): writing the "
+              "figures' data and scripts, not the images\n",
+              stderr);
+    }
+    return !info.no_gnuplot;
 }
 
 static void print_summary(const zp_report *r) {
     const zp_search_result *s = r->res;
     const zp_result *run = r->v->run;
+    if (!s->found) {
+        printf("no schedule keeps the margin: none of %ld simulations survived with it; the "
+               "closest candidate is written, marked as such\n", s->evals);
+    }
     printf("%sbest schedule (N):", s->interrupted ? "interrupted; " : "");
     for (int k = 0; k < r->m->nsec; k++) {
         printf(" %.4f", s->force[k]);
@@ -183,10 +273,14 @@ static void print_summary(const zp_report *r) {
            r->v->agree ? ", verified" : ", NOT verified at the tighter tolerance");
     if (s->base_found) {
         printf("best constant push: %.3f N, %.4f s\n", s->base_force, s->base.time);
+    } else {
+        printf("best constant push: none found that keeps the margin\n");
     }
     printf("search: %s, %ld simulations in %.2f s on %d threads\n", r->algo, s->evals,
            s->wall_s, s->nthreads);
-    printf("wrote %s/report.md, schedule.ini, summary.json, trajectory.csv\n", r->out_dir);
+    char conv[512];
+    zp_report_convergence(conv, sizeof conv, s);
+    printf("convergence: %s\n", conv);
 }
 
 int zp_cmd_search(int argc, char **argv) {
@@ -196,31 +290,28 @@ int zp_cmd_search(int argc, char **argv) {
         return pa > 0 ? ZP_EXIT_OK : ZP_EXIT_USAGE;
     }
     static zp_setup st; /* large: kept off the stack */
-    zp_overrides ov = {NULL, NULL, a.seed, a.max_evals};
+    zp_overrides ov = {.has_seed = a.has_seed, .seed = a.seed, .max_evals = (long)a.max_evals};
     if (zp_setup_load("", a.scene, &ov, &st)) {
         return ZP_EXIT_USAGE;
     }
     const zp_model *m = st.m;
     const zp_scene *sc = &st.sc;
-    char dir[1024];
-    zp_cli_out_dir(a.out, sc, dir, sizeof dir);
+    zp_tx tx;
+    if (zp_cli_out_begin(&tx, "", "search", a.out, sc)) {
+        zp_setup_free(&st);
+        return ZP_EXIT_FAIL;
+    }
+    zp_tx_soft_interrupt(&tx, &interrupted);
 
     zp_objective ob = {m, st.limit, st.sim.t_max, &st.sched};
-    progress_ctx pc = {.sc = sc, .shape = &st.sched, .tty = isatty(STDERR_FILENO)};
-    snprintf(pc.checkpoint_dir, sizeof pc.checkpoint_dir, "%s", dir);
+    progress_ctx pc = {.sc = sc, .shape = &st.sched, .tx = &tx, .tty = isatty(STDERR_FILENO)};
     zp_search_opts o = {.algo = a.algo ? zp_search_algo_find(a.algo) : 0,
-                        .max_evals = st.max_evals, .seed = st.seed, .stop = &interrupted,
-                        .progress = on_progress, .user = &pc};
-    struct sigaction sa = {.sa_handler = on_sigint, .sa_flags = SA_RESETHAND}, old;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, &old);
+                        .max_evals = st.max_evals, .max_time = a.max_time, .seed = st.seed,
+                        .stop = &interrupted, .progress = on_progress, .user = &pc};
     static zp_search_result res;
     char err[512] = "";
-    zp_status rc = zp_search_run(&ob, &st.search, st.sched.lo[0], st.sched.hi[0], &o, &res, err,
+    zp_status rc = zp_search_run(&ob, &st.search, st.sched.lo, st.sched.hi, &o, &res, err,
                                  sizeof err);
-    if (pc.shown) {
-        fputc('\n', stderr);
-    }
     int status = ZP_EXIT_FAIL;
     zp_sim *best_sim = NULL, *study_sim = NULL;
     zp_verify v = {0};
@@ -229,8 +320,13 @@ int zp_cmd_search(int argc, char **argv) {
         goto done;
     }
     /* verification (always) and robustness (not after Ctrl-C: the user wants out) */
+    phase_start(&pc, "verification: the best schedule with [solver] and 100x tighter");
     rc = zp_verify_run(&ob, &st.sim, res.force, st.seed, res.interrupted ? 0 : NROBUST, 0,
-                       &best_sim, &v, err, sizeof err);
+                       &best_sim, &v, on_verify, &pc, err, sizeof err);
+    if (pc.shown) {
+        fputc('\n', stderr);
+        pc.shown = 0;
+    }
     if (rc) {
         fprintf(stderr, "zipopt: %s; nothing was written\n", err);
         goto done;
@@ -248,42 +344,33 @@ int zp_cmd_search(int argc, char **argv) {
                 STUDY_FORCE, study_sim ? study.message : "out of memory");
         goto done;
     }
-    /* the figures first, so that the report links only those that exist */
-    int figures = 0;
+    /* the figures first, so that the report links only those drawn */
     if (!a.no_plot) {
-        zp_plot_opts po;
-        zp_plot_opts_default(&po);
-        po.margin = sc->margin * M_PI / 180;
-        zp_schedule best = zp_schedule_with(&st.sched, res.force);
-        po.sched = &best;
-        zp_plot_info info;
-        if (zp_plot_run(dir, m, best_sim, v.run, &po, &info, err, sizeof err)) {
-            fprintf(stderr, "zipopt: figures: %s; nothing was written\n", err);
-            goto done;
-        }
-        figures = !info.no_gnuplot;
-        if (info.no_gnuplot) {
-            fputs("zipopt: gnuplot is not installed (apt-get install gnuplot-nox): wrote the "
-                  "figures' data and scripts, not the images\n",
-                  stderr);
-        }
+        phase_start(&pc, "figures: drawing the best run with gnuplot\n");
+        pc.shown = 0;
     }
+    int drawn = a.no_plot ? 0 : figures(&tx, m, sc, &st.sched, &res, &v, best_sim);
     zp_report r = {sc, m, &res, &v, best_sim, &study, STUDY_FORCE,
                    zp_search_algo_get(o.algo)->name, zp_method_get(st.sim.method)->name, a.scene,
-                   dir, figures, &st.search, &st.sim, &st.sched, st.seed, st.max_evals};
-    status = write_outputs(&r, best_sim);
-    if (status == ZP_EXIT_OK) {
-        char cp[1100];
-        snprintf(cp, sizeof cp, "%s/checkpoint.ini", dir);
-        remove(cp); /* superseded by schedule.ini */
-        print_summary(&r);
-        if (res.interrupted) {
-            fputs("zipopt: interrupted; wrote the best schedule found so far\n", stderr);
-            status = ZP_EXIT_FAIL;
-        }
+                   tx.dir, drawn > 0, &st.search, &st.sim, &st.sched, st.seed, st.max_evals};
+    if (drawn < 0 || write_outputs(&tx, &r, best_sim) || zp_cli_out_commit(&tx, "")) {
+        goto done;
+    }
+    print_summary(&r);
+    printf("wrote in %s: %s\n", tx.dir, tx.written);
+    status = ZP_EXIT_OK;
+    if (res.interrupted) {
+        fputs("zipopt: interrupted; wrote the best schedule found so far\n", stderr);
+        status = ZP_EXIT_FAIL;
+    } else if (!res.found) {
+        status = ZP_EXIT_NONE; /* the closest candidate is written, marked */
+    } else if (interrupted) {
+        fputs("zipopt: interrupted after the search had finished; the files are complete\n",
+              stderr);
+        status = ZP_EXIT_FAIL;
     }
 done:
-    sigaction(SIGINT, &old, NULL);
+    zp_tx_abort(&tx); /* nothing of the run remains unless it was committed */
     zp_verify_free(&v);
     zp_sim_free(best_sim);
     zp_sim_free(study_sim);

@@ -14,6 +14,7 @@
 #include "sim.h"
 
 #define MAX_SAMPLES 10000
+#define MAX_ANIM_FRAMES 20000 /* run.gif: 13 min at 25 fps */
 
 static void usage(FILE *f) {
     fputs("usage: zipopt simulate SCENE.ini [--force F1,F2,..] [--schedule FILE] [--json]\n"
@@ -27,8 +28,8 @@ static void usage(FILE *f) {
           "  --schedule FILE     a schedule file ([drive] forces) laid over the scene\n"
           "  --json              print the result as one JSON object (keys: README, CLI.md)\n"
           "  --sample-times T,.. also report the state at these times (s)\n"
-          "  --out DIR           write trajectory.csv and summary.json to DIR\n"
-          "                      (default out/<scene name>/)\n"
+          "  --out DIR           write trajectory.csv and summary.json in DIR itself\n"
+          "                      (default out/<scene name>/simulate/)\n"
           "  --plot              also draw the run with gnuplot into the same folder:\n"
           "                      course.png (course, sections, kinks, every centre-of-mass\n"
           "                      path), energy.png, angles.png (death angle and search\n"
@@ -51,43 +52,89 @@ typedef struct sim_args {
     const char *frames_text, *fps_text, *size_text, *speedup_text;
 } sim_args;
 
+enum {
+    O_JSON = ZP_OPT_FIRST,
+    O_FORCE,
+    O_SCHEDULE,
+    O_SAMPLES,
+    O_OUT,
+    O_PLOT,
+    O_ANIMATE,
+    O_FRAMES,
+    O_FPS,
+    O_SIZE,
+    O_SPEEDUP
+};
+static const struct option options[] = {
+    {"help", no_argument, NULL, 'h'},
+    {"json", no_argument, NULL, O_JSON},
+    {"force", required_argument, NULL, O_FORCE},
+    {"schedule", required_argument, NULL, O_SCHEDULE},
+    {"sample-times", required_argument, NULL, O_SAMPLES},
+    {"out", required_argument, NULL, O_OUT},
+    {"plot", no_argument, NULL, O_PLOT},
+    {"animate", no_argument, NULL, O_ANIMATE},
+    {"frames-at", required_argument, NULL, O_FRAMES},
+    {"fps", required_argument, NULL, O_FPS},
+    {"size", required_argument, NULL, O_SIZE},
+    {"speedup", required_argument, NULL, O_SPEEDUP},
+    {NULL, 0, NULL, 0},
+};
+
+/* 1: --help was shown; -1: a mistake (reported) */
 static int parse_args(int argc, char **argv, sim_args *a) {
     memset(a, 0, sizeof *a);
-    for (int i = 1; i < argc; i++) {
-        const char *o = argv[i];
-        int has_value = i + 1 < argc;
-        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
+    zp_cli_opts_begin();
+    for (int c; (c = zp_cli_opts_next("simulate", argc, argv, options)) != -1;) {
+        switch (c) {
+        case 'h':
             usage(stdout);
-            exit(ZP_EXIT_OK);
-        } else if (!strcmp(o, "--json")) {
+            return 1;
+        case O_JSON:
             a->json = 1;
-        } else if (!strcmp(o, "--force") && has_value) {
-            a->force_text = argv[++i];
-        } else if (!strcmp(o, "--schedule") && has_value) {
-            a->schedule = argv[++i];
-        } else if (!strcmp(o, "--sample-times") && has_value) {
-            a->sample_text = argv[++i];
-        } else if (!strcmp(o, "--out") && has_value) {
-            a->out = argv[++i];
-        } else if (!strcmp(o, "--plot")) {
+            break;
+        case O_FORCE:
+            a->force_text = optarg;
+            break;
+        case O_SCHEDULE:
+            a->schedule = optarg;
+            break;
+        case O_SAMPLES:
+            a->sample_text = optarg;
+            break;
+        case O_OUT:
+            a->out = optarg;
+            break;
+        case O_PLOT:
             a->plot = 1;
-        } else if (!strcmp(o, "--animate")) {
+            break;
+        case O_ANIMATE:
             a->plot = a->animate = 1;
-        } else if (!strcmp(o, "--frames-at") && has_value) {
+            break;
+        case O_FRAMES:
             a->plot = 1;
-            a->frames_text = argv[++i];
-        } else if (!strcmp(o, "--fps") && has_value) {
-            a->fps_text = argv[++i];
-        } else if (!strcmp(o, "--size") && has_value) {
-            a->size_text = argv[++i];
-        } else if (!strcmp(o, "--speedup") && has_value) {
-            a->speedup_text = argv[++i];
-        } else if (zp_cli_scene_arg("simulate", o, &a->scene)) {
+            a->frames_text = optarg;
+            break;
+        case O_FPS:
+            a->fps_text = optarg;
+            break;
+        case O_SIZE:
+            a->size_text = optarg;
+            break;
+        case O_SPEEDUP:
+            a->speedup_text = optarg;
+            break;
+        default:
             return -1;
         }
     }
+    if (zp_cli_scene_operand("simulate", argc, argv, &a->scene) ||
+        (a->out && zp_cli_path_ok("simulate", "--out", a->out)) ||
+        (a->schedule && zp_cli_path_ok("simulate", "--schedule", a->schedule))) {
+        return -1;
+    }
     if (!a->scene) {
-        fputs("zipopt simulate: a scene file is required; see zipopt simulate --help\n", stderr);
+        zp_cli_error("simulate", "a scene file is required; see zipopt simulate --help");
         return -1;
     }
     return 0;
@@ -132,30 +179,45 @@ static void print_estimate(const zp_result *r, const zp_estimate *e) {
         printf("time error estimate: %.2g s (difference from a run at rtol %.0e)\n",
                e->time_error, e->rtol);
     }
+    if (e->ok && e->energy_large) {
+        printf("SUSPECT: the energy audit residual %.3g J is large against the energies of the "
+               "run: the tolerances are too loose for this answer\n",
+               e->energy_residual);
+    }
 }
 
-/* trajectory.csv and summary.json, both or neither */
-static int write_files(const char *dir, const zp_model *m, zp_sim *s, const zp_result *r,
+/* trajectory.csv and summary.json into the command's transaction */
+static int write_files(zp_tx *t, const zp_model *m, zp_sim *s, const zp_result *r,
                        const zp_run_meta *meta) {
-    zp_out_set set;
-    zp_out_set_init(&set);
-    char err[1200] = "";
-    FILE *csv = zp_out_set_open(&set, dir, "trajectory.csv", err, sizeof err);
-    FILE *js = csv ? zp_out_set_open(&set, dir, "summary.json", err, sizeof err) : NULL;
+    char err[1400] = "";
+    FILE *csv = zp_tx_open(t, "trajectory.csv", err, sizeof err);
+    FILE *js = csv ? zp_tx_open(t, "summary.json", err, sizeof err) : NULL;
     if (!js) {
-        zp_out_set_abort(&set);
         fprintf(stderr, "zipopt simulate: %s; nothing was written\n", err);
-        return ZP_EXIT_FAIL;
+        return -1;
     }
     int nrows;
     const zp_row *rows = zp_sim_rows(s, &nrows);
     zp_out_csv_trajectory(csv, m, rows, nrows);
     zp_out_json_result(js, m, r, s, meta);
-    if (zp_out_set_commit(&set, err, sizeof err)) {
-        fprintf(stderr, "zipopt simulate: %s; nothing was written\n", err);
-        return ZP_EXIT_FAIL;
+    return 0;
+}
+
+/* the state at each reached --sample-times value, and the times never reached */
+static void print_samples(const zp_model *m, const zp_row *smp, int nsmp, const zp_run_meta *meta,
+                          double t_end) {
+    for (int k = 0; k < nsmp; k++) {
+        printf("sample t = %g s: x = %.6f m, y = %.6f m, section %d, theta (deg):", smp[k].t,
+               smp[k].c.q[0], smp[k].c.q[1], smp[k].sec + 1);
+        for (int i = 0; i < m->nlink; i++) {
+            printf(" %.3f", smp[k].c.q[2 + i] * 180.0 / M_PI);
+        }
+        printf(", normal force %.3f N\n", smp[k].loads.normal);
     }
-    return ZP_EXIT_OK;
+    for (int k = 0; k < meta->nunreached; k++) {
+        printf("sample t = %g s: not reached (the run ended at %.9f s)\n", meta->unreached[k],
+               t_end);
+    }
 }
 
 /* the --plot options, checked before the run; 0, or -1 with the message printed */
@@ -189,28 +251,48 @@ static int plot_opts(const sim_args *a, const zp_setup *st, zp_plot_opts *po) {
         snprintf(expect, sizeof expect, "one number above 0 and at most 1000");
     }
     if (opt) {
-        fprintf(stderr, "zipopt simulate: %s: %s%s%s; nothing was written\n", opt,
-                *why ? why : "bad value", *why ? "; expected " : ", expected ", expect);
+        zp_cli_error("simulate", "%s: %s%s%s; nothing was written", opt, *why ? why : "bad value",
+                     *why ? "; expected " : ", expected ", expect);
         return -1;
     }
     return 0;
 }
 
-/* the figures of the run; says what was made (on stderr when stdout carries JSON) */
-static int draw(const char *dir, const zp_model *m, zp_sim *s, const zp_result *r,
-                const zp_plot_opts *po, FILE *say) {
-    zp_plot_info info;
-    char err[1200];
-    if (zp_plot_run(dir, m, s, r, po, &info, err, sizeof err)) {
-        fprintf(stderr, "zipopt simulate: %s; no figures were written\n", err);
-        return ZP_EXIT_FAIL;
+/* run.gif's frame count, known once the run's length is: within MAX_ANIM_FRAMES or refused
+   (bad input: the options ask for too many) before anything is written */
+static int anim_fits(const zp_result *r, const zp_plot_opts *po) {
+    double frames = floor(r->time * po->fps / po->speedup) + 2;
+    if (!po->animate || frames <= MAX_ANIM_FRAMES) {
+        return 1;
     }
-    if (info.nskipped) {
+    zp_cli_error("simulate",
+                 "--animate: the run of %.3f s at --speedup %g and --fps %g needs %.3g frames; "
+                 "at most %d are drawn (use --speedup %.3g or more); nothing was written",
+                 r->time, po->speedup, po->fps, frames, MAX_ANIM_FRAMES,
+                 r->time * po->fps / (MAX_ANIM_FRAMES - 2));
+    return 0;
+}
+
+/* the figures of the run into the transaction; 0, or -1 with why on stderr */
+static int draw(zp_tx *t, const zp_model *m, zp_sim *s, const zp_result *r,
+                const zp_plot_opts *po, zp_plot_info *info) {
+    char err[1400];
+    if (zp_plot_run(t, m, s, r, po, info, err, sizeof err)) {
+        fprintf(stderr, "zipopt simulate: figures: %s; nothing was written\n", err);
+        return -1;
+    }
+    if (info->nskipped) {
         fprintf(stderr, "zipopt simulate: %d of the still frames asked for lie beyond the end of "
                         "the run (t = %.2f s, x = %.2f m) and were not drawn\n",
-                info.nskipped, r->time, r->x);
+                info->nskipped, r->time, r->x);
     }
-    if (info.no_gnuplot) {
+    return 0;
+}
+
+/* what the figures came to, once committed */
+static int say_figures(const char *dir, const zp_plot_opts *po, const zp_plot_info *info,
+                       FILE *say) {
+    if (info->no_gnuplot) {
         fprintf(stderr, "zipopt simulate: gnuplot is not installed (apt-get install gnuplot-nox): "
                         "no images were drawn; the plot data and the .gp scripts are in %s, run "
                         "`gnuplot course.gp` (and the other scripts) there once it is\n",
@@ -218,11 +300,11 @@ static int draw(const char *dir, const zp_model *m, zp_sim *s, const zp_result *
         return ZP_EXIT_FAIL;
     }
     fprintf(say, "figures in %s: course.png (and .svg) energy.png angles.png loads.png", dir);
-    if (info.nframe) {
-        fprintf(say, ", %d still frame%s", info.nframe, info.nframe == 1 ? "" : "s");
+    if (info->nframe) {
+        fprintf(say, ", %d still frame%s", info->nframe, info->nframe == 1 ? "" : "s");
     }
     if (po->animate) {
-        fprintf(say, ", run.gif (%d frames)%s", info.anim_frames, info.mp4 ? ", run.mp4" : "");
+        fprintf(say, ", run.gif (%d frames)%s", info->anim_frames, info->mp4 ? ", run.mp4" : "");
     }
     fprintf(say, "\n");
     return ZP_EXIT_OK;
@@ -230,11 +312,12 @@ static int draw(const char *dir, const zp_model *m, zp_sim *s, const zp_result *
 
 int zp_cmd_simulate(int argc, char **argv) {
     sim_args a;
-    if (parse_args(argc, argv, &a)) {
-        return ZP_EXIT_USAGE;
+    int pa = parse_args(argc, argv, &a);
+    if (pa) {
+        return pa > 0 ? ZP_EXIT_OK : ZP_EXIT_USAGE;
     }
     static zp_setup st; /* large: kept off the stack */
-    zp_overrides ov = {a.schedule, a.force_text, -1, 0};
+    zp_overrides ov = {.schedule = a.schedule, .force = a.force_text};
     if (zp_setup_load("simulate", a.scene, &ov, &st)) {
         return ZP_EXIT_USAGE;
     }
@@ -256,8 +339,7 @@ int zp_cmd_simulate(int argc, char **argv) {
             }
         }
         if (nsample < 0) {
-            fprintf(stderr, "zipopt simulate: --sample-times: %s; expected times >= 0 in s\n",
-                    why);
+            zp_cli_error("simulate", "--sample-times: %s; expected times >= 0 in s", why);
             goto done;
         }
         qsort(samples, nsample, sizeof *samples, cmp_double);
@@ -278,25 +360,36 @@ int zp_cmd_simulate(int argc, char **argv) {
         fprintf(stderr, "zipopt simulate: %s; nothing was written\n", r.message);
         goto done;
     }
+    if (!anim_fits(&r, &po)) {
+        status = ZP_EXIT_USAGE;
+        goto done;
+    }
+    int nsmp;
+    const zp_row *smp = zp_sim_samples(s, &nsmp);
     zp_estimate est;
     zp_estimate_run(m, &o, &in, &r, &est);
     zp_run_meta meta = {st.sc.name, zp_method_get(o.method)->name,
-                        zp_formulation_get(o.formulation)->name, o.rtol, o.atol, &st.sched, &est};
-    char dir[1024];
-    zp_cli_out_dir(a.out, &st.sc, dir, sizeof dir);
-    status = write_files(dir, m, s, &r, &meta);
-    if (status == ZP_EXIT_OK) {
-        if (a.json) {
-            zp_out_json_result(stdout, m, &r, s, &meta);
-        } else {
-            print_text(m, &r);
-            print_estimate(&r, &est);
-            printf("wrote %s/trajectory.csv and %s/summary.json\n", dir, dir);
-        }
+                        zp_formulation_get(o.formulation)->name, o.rtol, o.atol, &st.sched, &est,
+                        samples + nsmp, nsample - nsmp};
+    zp_tx t;
+    zp_plot_info info;
+    if (zp_cli_out_begin(&t, "simulate", "simulate", a.out, &st.sc)) {
+        goto done;
     }
-    if (status == ZP_EXIT_OK && a.plot) {
-        status = draw(dir, m, s, &r, &po, a.json ? stderr : stdout);
+    if (write_files(&t, m, s, &r, &meta) || (a.plot && draw(&t, m, s, &r, &po, &info)) ||
+        zp_cli_out_commit(&t, "simulate")) {
+        zp_tx_abort(&t);
+        goto done;
     }
+    if (a.json) {
+        zp_out_json_result(stdout, m, &r, s, &meta);
+    } else {
+        print_text(m, &r);
+        print_samples(m, smp, nsmp, &meta, r.time);
+        print_estimate(&r, &est);
+    }
+    fprintf(a.json ? stderr : stdout, "wrote in %s: %s\n", t.dir, t.written);
+    status = a.plot ? say_figures(t.dir, &po, &info, a.json ? stderr : stdout) : ZP_EXIT_OK;
 done:
     free(samples);
     zp_sim_free(s);

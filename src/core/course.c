@@ -5,6 +5,7 @@
 
 #include <assert.h>
 #include <ctype.h>
+#include <math.h>
 #include <matheval.h>
 #include <pthread.h>
 #include <stdatomic.h>
@@ -335,16 +336,39 @@ int zp_course_compiled(const zp_course *c) {
     return c->code != NULL;
 }
 
-zp_track zp_course_eval(const zp_course *c, int sec, double x) {
-    assert(sec >= 0 && sec < c->nsec);
+/* f' of section sec at x, by whichever evaluator c has */
+static double fp_at(const zp_course *c, int sec, double x) {
     if (c->code) {
         double out[3];
         zp_jit_get(c->code->jit, sec)(x, out);
-        return (zp_track){out[0], out[1], out[2]};
+        return out[1];
     }
-    const zp_course_sec *s = &c->sec[sec];
-    return (zp_track){evaluator_evaluate_x(s->f, x), evaluator_evaluate_x(s->fp, x),
-                      evaluator_evaluate_x(s->fpp, x)};
+    return evaluator_evaluate_x(c->sec[sec].fp, x);
+}
+
+/* f'' where its expression overflows though f' is finite (tanh(100 x) far from 0: sinh/cosh^3
+   is inf/inf): the central difference of f', which the finite f' bounds */
+static double fpp_by_difference(const zp_course *c, int sec, double x) {
+    double h = 1e-6 * (1 + fabs(x));
+    return (fp_at(c, sec, x + h) - fp_at(c, sec, x - h)) / (2 * h);
+}
+
+zp_track zp_course_eval(const zp_course *c, int sec, double x) {
+    assert(sec >= 0 && sec < c->nsec);
+    zp_track t;
+    if (c->code) {
+        double out[3];
+        zp_jit_get(c->code->jit, sec)(x, out);
+        t = (zp_track){out[0], out[1], out[2]};
+    } else {
+        const zp_course_sec *s = &c->sec[sec];
+        t = (zp_track){evaluator_evaluate_x(s->f, x), evaluator_evaluate_x(s->fp, x),
+                       evaluator_evaluate_x(s->fpp, x)};
+    }
+    if (!isfinite(t.fpp) && isfinite(t.fp)) {
+        t.fpp = fpp_by_difference(c, sec, x);
+    }
+    return t;
 }
 
 const char *zp_course_deriv_text(const zp_course *c, int sec, int order) {

@@ -161,7 +161,7 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
                                m->physics & ZP_PHYS_ROLLING ? sim_root_rolling : sim_root, s,
                                &mo);
     if (o->output_dt > 0) {
-        s->cap_rows = (int)fmin(o->t_max / o->output_dt + 2, 1e7);
+        s->cap_rows = (int)fmin(o->t_max / o->output_dt + 2, ZP_MAX_ROWS + 2);
         s->rows = malloc(sizeof *s->rows * s->cap_rows);
     }
     if (!s->course || !s->fwork || !s->y || !s->ydot || !s->yout || !s->roots || !s->cross ||
