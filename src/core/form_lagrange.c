@@ -340,9 +340,11 @@ static inline void cholesky_subst(double M[ZP_MAX_LINKS + 1][ZP_MAX_LINKS + 1], 
 }
 
 /* the equations of motion for n links with the effects phys (ZP_PHYS_* flags), both constants
-   where it is inlined */
-static inline int fast_rhs(const zp_model *m, const zp_drive_now *dn, const double *y, double *ydot,
-                           zp_loads *loads, int n, int phys) {
+   where it is inlined (always: a copy per (n, phys) with no test of phys left at run time) */
+__attribute__((always_inline)) static inline int fast_rhs(const zp_model *m,
+                                                         const zp_drive_now *dn, const double *y,
+                                                         double *ydot, zp_loads *loads, int n,
+                                                         int phys) {
     const int nq = n + 1;
     double fp = dn->tr.fp, fpp = dn->tr.fpp, xd = y[nq];
     double s[ZP_MAX_LINKS], c[ZP_MAX_LINKS], wd2[ZP_MAX_LINKS], wj[ZP_MAX_LINKS + 1];

@@ -232,8 +232,12 @@ static int newton_friction(const zp_model *m, newton_work *nw, const zp_drive_no
     return 0;
 }
 
-static int newton_rhs_with(const zp_model *m, newton_work *nw, const zp_drive_now *dn,
-                           const double *y, double *ydot, zp_loads *loads, int phys) {
+/* phys constant where inlined (always: a copy per set of effects) */
+__attribute__((always_inline)) static inline int newton_rhs_with(const zp_model *m,
+                                                                newton_work *nw,
+                                                                const zp_drive_now *dn,
+                                                                const double *y, double *ydot,
+                                                                zp_loads *loads, int phys) {
     const int n = m->nlink, np = npos(m), rr = np, rn = np + 2 * n; /* reaction, normal cols */
     const double a = NE_STAB_RATE, fp = dn->tr.fp;
     gsl_matrix *A = nw->A;
@@ -334,13 +338,13 @@ static int newton_rhs_with(const zp_model *m, newton_work *nw, const zp_drive_no
     }
     ydot[2 * np] = dn->fx * xd + dn->fy * y[np + 1];
     ydot[2 * np + 1] = pdamp;
-    double sq = sqrt(1 + fp * fp), ft = (z[rn] + fp * z[rn + 1]) / sq; /* course's tangential */
     if (phys) {
+        double sq = sqrt(1 + fp * fp), ft = (z[rn] + fp * z[rn + 1]) / sq; /* tangential */
         ydot[2 * np + 2] = pdrag;
         ydot[2 * np + 3] = -ft * (xd + fp * y[np + 1]) / sq;
     }
     if (loads) {
-        loads->hold = ft;
+        loads->hold = (z[rn] + fp * z[rn + 1]) / sqrt(1 + fp * fp);
         loads->normal = (-fp * z[rn] + z[rn + 1]) / sqrt(1 + fp * fp);
         loads->acc[0][0] = z[0];
         loads->acc[0][1] = z[1];

@@ -22,8 +22,6 @@ typedef zp_track (*track_fn)(const zp_model *m, const zp_course *c, int sec, dou
 
 struct zp_sim {
     const zp_model *m; /* borrowed */
-    track_fn track;    /* the course with its arcs, or the plain course (chosen at create) */
-    int w0;            /* index of the first work integral in the state */
     zp_sim_opts o;
     const zp_formulation *form;
     void *fwork; /* owned */
@@ -45,9 +43,14 @@ struct zp_sim {
     zp_row *samples; /* owned, cap_samples */
     int nsamples, cap_samples;
     zp_load_peaks peaks; /* so far; every evaluation of the loads updates them */
-    zp_arc_peaks arc_peaks[ZP_MAX_SECTIONS]; /* the same on each arc */
+
     zp_crossing *cross;  /* owned, ZP_MAX_CROSSINGS */
     int ncross;          /* kept in cross (the result counts all) */
+
+    /* [physics] */
+    track_fn track; /* the course with its arcs, or the plain course (chosen at create) */
+    int w0;         /* index of the first work integral in the state */
+    zp_arc_peaks arc_peaks[ZP_MAX_SECTIONS]; /* load peaks on each arc */
 };
 
 static zp_track plain_track(const zp_model *m, const zp_course *c, int sec, double x) {
