@@ -4,7 +4,7 @@
 # seed run finishes at the program's time, bit for bit; a bad scene exits 2 naming file and
 # line), and the installed Python module imported from its documented folder.
 # usage: check_lib_install.sh BUILD_DIR CMAKE SOURCE_DIR PYTHON3
-build=$1 cmake=$2 src=$3 py=$4
+build=$1 cmake=$2 src=$(cd "$3" && pwd) py=$4
 tmp=$(mktemp -d) || exit 1
 trap 'rm -rf "$tmp"' EXIT
 pass=0 fail=0
