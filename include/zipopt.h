@@ -69,7 +69,7 @@ ZIPOPT_API int zipopt_scene_set_forces(zipopt_scene *s, const double *force, int
 ZIPOPT_API zipopt_run *zipopt_simulate(zipopt_scene *s, char *err, size_t errlen);
 ZIPOPT_API void zipopt_run_free(zipopt_run *r); /* NULL is fine */
 
-ZIPOPT_API int zipopt_run_outcome(const zipopt_run *r); /* ZIPOPT_FINISHED, _DIED, _STALLED */
+ZIPOPT_API int zipopt_run_outcome(const zipopt_run *r);  /* ZIPOPT_FINISHED, _DIED, _STALLED */
 ZIPOPT_API const char *zipopt_outcome_name(int outcome); /* "finished", .. ; NULL if unknown */
 /* Why a stalled run stalled ("t_max", "rolled_back", ..), "" for the others. */
 ZIPOPT_API const char *zipopt_run_stall(const zipopt_run *r);

@@ -7,6 +7,7 @@
 #include <math.h>
 #include <pthread.h>
 #include <signal.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -15,7 +16,7 @@
 #include "search.h"
 
 /* the stop flag is handed to the search as its sig_atomic_t flag */
-_Static_assert(_Generic((sig_atomic_t)0, int: 1, default: 0), "sig_atomic_t is int");
+_Static_assert(_Generic((sig_atomic_t)0, int : 1, default : 0), "sig_atomic_t is int");
 
 #define NCOL_MAX (5 + 3 * ZP_MAX_LINKS + 5) /* trajectory columns of the largest chain */
 #define COL_NAME 16
@@ -44,9 +45,13 @@ struct zipopt_search {
     int np; /* parameters of the schedule: one force per section */
 };
 
-static void say(char *err, size_t errlen, const char *fmt, const char *what) {
+__attribute__((format(printf, 3, 4))) static void say(char *err, size_t errlen, const char *fmt,
+                                                      ...) {
     if (err && errlen) {
-        snprintf(err, errlen, fmt, what);
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(err, errlen, fmt, ap);
+        va_end(ap);
     }
 }
 
@@ -72,7 +77,7 @@ const char *zipopt_version(void) {
 static zipopt_scene *load(const char *path, const char *text, char *err, size_t errlen) {
     zipopt_scene *s = calloc(1, sizeof *s);
     if (!s) {
-        say(err, errlen, "%s", "out of memory");
+        say(err, errlen, "out of memory");
         return NULL;
     }
     zp_diag d;
@@ -90,7 +95,7 @@ static zipopt_scene *load(const char *path, const char *text, char *err, size_t 
         return NULL;
     }
     if (!s->sim) {
-        say(err, errlen, "%s", "cannot create the simulator (out of memory)");
+        say(err, errlen, "cannot create the simulator (out of memory)");
         zipopt_scene_free(s);
         return NULL;
     }
@@ -99,7 +104,7 @@ static zipopt_scene *load(const char *path, const char *text, char *err, size_t 
 
 zipopt_scene *zipopt_scene_load(const char *path, char *err, size_t errlen) {
     if (!path) {
-        say(err, errlen, "%s", "no scene file given");
+        say(err, errlen, "no scene file given");
         return NULL;
     }
     return load(path, NULL, err, errlen);
@@ -108,7 +113,7 @@ zipopt_scene *zipopt_scene_load(const char *path, char *err, size_t errlen) {
 zipopt_scene *zipopt_scene_load_string(const char *text, const char *name, char *err,
                                        size_t errlen) {
     if (!text) {
-        say(err, errlen, "%s", "no scene text given");
+        say(err, errlen, "no scene text given");
         return NULL;
     }
     return load(name ? name : "<string>", text, err, errlen);
@@ -142,18 +147,15 @@ int zipopt_scene_forces(const zipopt_scene *s, double *force, int n) {
     return sh->np;
 }
 
-int zipopt_scene_set_forces(zipopt_scene *s, const double *force, int n, char *err,
-                            size_t errlen) {
+int zipopt_scene_set_forces(zipopt_scene *s, const double *force, int n, char *err, size_t errlen) {
     const zp_schedule *sh = &s->st.sched;
     if (n != sh->np) {
-        char what[64];
-        snprintf(what, sizeof what, "%d", sh->np);
-        say(err, errlen, "forces: expected %s values (one per section, N)", what);
+        say(err, errlen, "forces: %d values, expected %d (one per section, N)", n, sh->np);
         return -1;
     }
     for (int k = 0; k < n; k++) {
         if (!isfinite(force[k])) {
-            say(err, errlen, "forces: %s", "every value must be a finite number (N)");
+            say(err, errlen, "forces: item %d is not a finite number; expected N", k + 1);
             return -1;
         }
     }
@@ -239,7 +241,7 @@ static int copy_out(zipopt_run *u, const zp_model *m, const zp_sim *sim) {
 zipopt_run *zipopt_simulate(zipopt_scene *s, char *err, size_t errlen) {
     zipopt_run *u = calloc(1, sizeof *u);
     if (!u) {
-        say(err, errlen, "%s", "out of memory");
+        say(err, errlen, "out of memory");
         return NULL;
     }
     const zp_model *m = s->st.m;
@@ -250,7 +252,7 @@ zipopt_run *zipopt_simulate(zipopt_scene *s, char *err, size_t errlen) {
         return NULL;
     }
     if (copy_out(u, m, s->sim)) {
-        say(err, errlen, "%s", "out of memory");
+        say(err, errlen, "out of memory");
         zipopt_run_free(u);
         return NULL;
     }
@@ -304,13 +306,24 @@ RUN_NUM(steps, r->steps)
 RUN_NUM(rhs_evals, r->rhs_evals)
 RUN_NUM(wall_s, r->wall_s)
 
-#define ENTRY(prefix, name) {#name, prefix##_##name}
+#define ENTRY(prefix, name)                                                                        \
+    { #name, prefix##_##name }
 static const named run_keys[] = {
-    ENTRY(run, time),      ENTRY(run, x),         ENTRY(run, speed),
-    ENTRY(run, died_link), ENTRY(run, kinks),     ENTRY(run, e_initial),
-    ENTRY(run, e_final),   ENTRY(run, w_drive),   ENTRY(run, w_damp),
-    ENTRY(run, e_impulse), ENTRY(run, energy_residual), ENTRY(run, constraint_residual),
-    ENTRY(run, steps),     ENTRY(run, rhs_evals), ENTRY(run, wall_s),
+    ENTRY(run, time),
+    ENTRY(run, x),
+    ENTRY(run, speed),
+    ENTRY(run, died_link),
+    ENTRY(run, kinks),
+    ENTRY(run, e_initial),
+    ENTRY(run, e_final),
+    ENTRY(run, w_drive),
+    ENTRY(run, w_damp),
+    ENTRY(run, e_impulse),
+    ENTRY(run, energy_residual),
+    ENTRY(run, constraint_residual),
+    ENTRY(run, steps),
+    ENTRY(run, rhs_evals),
+    ENTRY(run, wall_s),
 };
 
 static double lookup(const named *t, size_t n, const void *h, const char *key) {
@@ -388,7 +401,7 @@ zipopt_search *zipopt_search_run(zipopt_scene *s, long max_evals, long seed,
                                  char *err, size_t errlen) {
     zipopt_search *u = calloc(1, sizeof *u);
     if (!u) {
-        say(err, errlen, "%s", "out of memory");
+        say(err, errlen, "out of memory");
         return NULL;
     }
     const zp_setup *st = &s->st;
@@ -436,10 +449,10 @@ SEARCH_NUM(base_force, r->base_found ? r->base_force : NAN)
 SEARCH_NUM(base_time, r->base_found ? r->base.time : NAN)
 
 static const named search_keys[] = {
-    ENTRY(search, found),      ENTRY(search, time),        ENTRY(search, angle),
-    ENTRY(search, evals),      ENTRY(search, feasible),    ENTRY(search, failed),
-    ENTRY(search, threads),    ENTRY(search, wall_s),      ENTRY(search, interrupted),
-    ENTRY(search, base_found), ENTRY(search, base_force),  ENTRY(search, base_time),
+    ENTRY(search, found),      ENTRY(search, time),       ENTRY(search, angle),
+    ENTRY(search, evals),      ENTRY(search, feasible),   ENTRY(search, failed),
+    ENTRY(search, threads),    ENTRY(search, wall_s),     ENTRY(search, interrupted),
+    ENTRY(search, base_found), ENTRY(search, base_force), ENTRY(search, base_time),
 };
 
 double zipopt_search_get(const zipopt_search *r, const char *key) {
