@@ -4,6 +4,8 @@
 
 #include <stdio.h>
 
+#include "cli.h"
+
 int zp_setup_load(const char *cmd, const char *path, const zp_overrides *ov, zp_setup *st) {
     zp_diag d;
     zp_diag_init(&d);
@@ -12,8 +14,7 @@ int zp_setup_load(const char *cmd, const char *path, const zp_overrides *ov, zp_
     }
     zp_diag_print(&d, stderr);
     int n = d.n + d.dropped;
-    fprintf(stderr, "zipopt: %s: %d error%s; nothing was written\n", st->sc.path, n,
-            n == 1 ? "" : "s");
+    zp_cli_error("", "%s: %d error%s; nothing was written", st->sc.path, n, n == 1 ? "" : "s");
     return -1;
 }
 

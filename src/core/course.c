@@ -4,6 +4,7 @@
 
 #include <assert.h>
 #include <ctype.h>
+#include <math.h>
 #include <matheval.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -220,11 +221,22 @@ void zp_course_free(zp_course *c) {
     free(c);
 }
 
+/* f'' where its expression overflows though f' is finite (tanh(100 x) far from 0: sinh/cosh^3
+   is inf/inf): the central difference of f', which the finite f' bounds */
+static double fpp_by_difference(const zp_course_sec *s, double x) {
+    double h = 1e-6 * (1 + fabs(x));
+    return (evaluator_evaluate_x(s->fp, x + h) - evaluator_evaluate_x(s->fp, x - h)) / (2 * h);
+}
+
 zp_track zp_course_eval(const zp_course *c, int sec, double x) {
     assert(sec >= 0 && sec < c->nsec);
     const zp_course_sec *s = &c->sec[sec];
-    return (zp_track){evaluator_evaluate_x(s->f, x), evaluator_evaluate_x(s->fp, x),
-                      evaluator_evaluate_x(s->fpp, x)};
+    zp_track t = {evaluator_evaluate_x(s->f, x), evaluator_evaluate_x(s->fp, x),
+                  evaluator_evaluate_x(s->fpp, x)};
+    if (!isfinite(t.fpp) && isfinite(t.fp)) {
+        t.fpp = fpp_by_difference(s, x);
+    }
+    return t;
 }
 
 const char *zp_course_deriv_text(const zp_course *c, int sec, int order) {

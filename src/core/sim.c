@@ -125,7 +125,7 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
     zp_method_opts mo = {o->rtol, o->atol, o->max_steps};
     s->mwork = s->meth->create(s->n, s->nroot, dir, zp_sim_rhs, sim_root, s, &mo);
     if (o->output_dt > 0) {
-        s->cap_rows = (int)fmin(o->t_max / o->output_dt + 2, 1e7);
+        s->cap_rows = (int)fmin(o->t_max / o->output_dt + 2, ZP_MAX_ROWS + 2);
         s->rows = malloc(sizeof *s->rows * s->cap_rows);
     }
     if (!s->course || !s->fwork || !s->y || !s->ydot || !s->yout || !s->roots || !s->cross ||

@@ -39,7 +39,7 @@ static void overrides(const char *cmd, zp_setup *st, const zp_overrides *ov, zp_
             st->sched = zp_schedule_with(&st->sched, s.p);
         }
     }
-    st->seed = ov->seed >= 0 ? (unsigned long)ov->seed : sc->seed;
+    st->seed = ov->has_seed ? ov->seed : sc->seed;
     st->max_evals = ov->max_evals > 0 ? ov->max_evals : sc->max_evals;
 }
 
