@@ -21,6 +21,17 @@ _Static_assert(_Generic((sig_atomic_t)0, int : 1, default : 0), "sig_atomic_t is
 #define NCOL_MAX (5 + 3 * ZP_MAX_LINKS + 5) /* trajectory columns of the largest chain */
 #define COL_NAME 16
 
+/* the named numbers of a run and of a search (zipopt.h), in the order *_numbers fills them */
+static const char *const run_keys[] = {
+    "time",    "x",         "speed",  "died_link", "kinks",           "e_initial",
+    "e_final", "w_drive",   "w_damp", "e_impulse", "energy_residual", "constraint_residual",
+    "steps",   "rhs_evals", "wall_s"};
+#define NRUN_KEYS ((int)(sizeof run_keys / sizeof *run_keys))
+static const char *const search_keys[] = {"found",       "time",       "angle",      "evals",
+                                          "feasible",    "failed",     "threads",    "wall_s",
+                                          "interrupted", "base_found", "base_force", "base_time"};
+#define NSEARCH_KEYS ((int)(sizeof search_keys / sizeof *search_keys))
+
 /* libmatheval's parser keeps globals and nlopt_srand is process-wide: loads and searches take
    turns; the lock is the library's only static and holds no data */
 static pthread_mutex_t turn = PTHREAD_MUTEX_INITIALIZER;
@@ -32,6 +43,7 @@ struct zipopt_scene {
 
 struct zipopt_run {
     zp_result r;
+    double num[NRUN_KEYS];
     int nlink;
     int nrow, ncol;
     double *traj; /* owned, nrow x ncol */
@@ -42,6 +54,7 @@ struct zipopt_run {
 
 struct zipopt_search {
     zp_search_result res;
+    double num[NSEARCH_KEYS];
     int np; /* parameters of the schedule: one force per section */
 };
 
@@ -238,6 +251,26 @@ static int copy_out(zipopt_run *u, const zp_model *m, const zp_sim *sim) {
     return 0;
 }
 
+static void run_numbers(const zp_result *r, double *v) {
+    const double n[] = {r->time,
+                        r->x,
+                        r->v,
+                        r->died_link,
+                        r->ncross,
+                        r->e_initial,
+                        r->e_final,
+                        r->w_drive,
+                        r->w_damp,
+                        r->e_impulse,
+                        r->e_final - r->e_initial - r->w_drive + r->w_damp + r->e_impulse,
+                        r->constraint_residual,
+                        (double)r->steps,
+                        (double)r->rhs_evals,
+                        r->wall_s};
+    _Static_assert(sizeof n / sizeof *n == NRUN_KEYS, "one number per key");
+    memcpy(v, n, sizeof n);
+}
+
 zipopt_run *zipopt_simulate(zipopt_scene *s, char *err, size_t errlen) {
     zipopt_run *u = calloc(1, sizeof *u);
     if (!u) {
@@ -251,6 +284,7 @@ zipopt_run *zipopt_simulate(zipopt_scene *s, char *err, size_t errlen) {
         free(u);
         return NULL;
     }
+    run_numbers(&u->r, u->num);
     if (copy_out(u, m, s->sim)) {
         say(err, errlen, "out of memory");
         zipopt_run_free(u);
@@ -279,68 +313,22 @@ const char *zipopt_run_stall(const zipopt_run *r) {
     return r->r.outcome == ZP_OUTCOME_STALLED ? zp_sim_stall_name(r->r.stall) : "";
 }
 
-/* the named numbers of a result: one table read by the getter and the key list */
-typedef struct named {
-    const char *key;
-    double (*get)(const void *h);
-} named;
-
-#define RUN_NUM(name, expr)                                                                        \
-    static double run_##name(const void *h) {                                                      \
-        const zp_result *r = &((const zipopt_run *)h)->r;                                          \
-        return (double)(expr);                                                                     \
-    }
-RUN_NUM(time, r->time)
-RUN_NUM(x, r->x)
-RUN_NUM(speed, r->v)
-RUN_NUM(died_link, r->died_link)
-RUN_NUM(kinks, r->ncross)
-RUN_NUM(e_initial, r->e_initial)
-RUN_NUM(e_final, r->e_final)
-RUN_NUM(w_drive, r->w_drive)
-RUN_NUM(w_damp, r->w_damp)
-RUN_NUM(e_impulse, r->e_impulse)
-RUN_NUM(energy_residual, r->e_final - r->e_initial - r->w_drive + r->w_damp + r->e_impulse)
-RUN_NUM(constraint_residual, r->constraint_residual)
-RUN_NUM(steps, r->steps)
-RUN_NUM(rhs_evals, r->rhs_evals)
-RUN_NUM(wall_s, r->wall_s)
-
-#define ENTRY(prefix, name)                                                                        \
-    { #name, prefix##_##name }
-static const named run_keys[] = {
-    ENTRY(run, time),
-    ENTRY(run, x),
-    ENTRY(run, speed),
-    ENTRY(run, died_link),
-    ENTRY(run, kinks),
-    ENTRY(run, e_initial),
-    ENTRY(run, e_final),
-    ENTRY(run, w_drive),
-    ENTRY(run, w_damp),
-    ENTRY(run, e_impulse),
-    ENTRY(run, energy_residual),
-    ENTRY(run, constraint_residual),
-    ENTRY(run, steps),
-    ENTRY(run, rhs_evals),
-    ENTRY(run, wall_s),
-};
-
-static double lookup(const named *t, size_t n, const void *h, const char *key) {
-    for (size_t i = 0; key && i < n; i++) {
-        if (!strcmp(t[i].key, key)) {
-            return t[i].get(h);
+/* the value of key in keys (n of them) from v; NaN when no key matches */
+static double lookup(const char *const *keys, int n, const double *v, const char *key) {
+    for (int i = 0; key && i < n; i++) {
+        if (!strcmp(keys[i], key)) {
+            return v[i];
         }
     }
     return NAN;
 }
 
 double zipopt_run_get(const zipopt_run *r, const char *key) {
-    return lookup(run_keys, sizeof run_keys / sizeof *run_keys, r, key);
+    return lookup(run_keys, NRUN_KEYS, r->num, key);
 }
 
 const char *zipopt_run_key(int i) {
-    return i >= 0 && (size_t)i < sizeof run_keys / sizeof *run_keys ? run_keys[i].key : NULL;
+    return i >= 0 && i < NRUN_KEYS ? run_keys[i] : NULL;
 }
 
 int zipopt_run_max_angles(const zipopt_run *r, double *angle, int n) {
@@ -396,6 +384,23 @@ static zp_status search(const zp_setup *st, const zp_search_opts *o, zp_search_r
     return zp_search_run(&ob, &st->search, st->sched.lo[0], st->sched.hi[0], o, res, err, errlen);
 }
 
+static void search_numbers(const zp_search_result *r, double *v) {
+    const double n[] = {r->found,
+                        r->best.time,
+                        r->best.angle,
+                        (double)r->evals,
+                        (double)r->nfeasible,
+                        (double)r->nfailed,
+                        r->nthreads,
+                        r->wall_s,
+                        r->interrupted,
+                        r->base_found,
+                        r->base_found ? r->base_force : NAN,
+                        r->base_found ? r->base.time : NAN};
+    _Static_assert(sizeof n / sizeof *n == NSEARCH_KEYS, "one number per key");
+    memcpy(v, n, sizeof n);
+}
+
 zipopt_search *zipopt_search_run(zipopt_scene *s, long max_evals, long seed,
                                  zipopt_progress_fn progress, void *user, volatile int *stop,
                                  char *err, size_t errlen) {
@@ -423,6 +428,7 @@ zipopt_search *zipopt_search_run(zipopt_scene *s, long max_evals, long seed,
         return NULL;
     }
     u->np = st->sched.np;
+    search_numbers(&u->res, u->num);
     return u;
 }
 
@@ -430,38 +436,12 @@ void zipopt_search_free(zipopt_search *r) {
     free(r);
 }
 
-#define SEARCH_NUM(name, expr)                                                                     \
-    static double search_##name(const void *h) {                                                   \
-        const zp_search_result *r = &((const zipopt_search *)h)->res;                              \
-        return (double)(expr);                                                                     \
-    }
-SEARCH_NUM(found, r->found)
-SEARCH_NUM(time, r->best.time)
-SEARCH_NUM(angle, r->best.angle)
-SEARCH_NUM(evals, r->evals)
-SEARCH_NUM(feasible, r->nfeasible)
-SEARCH_NUM(failed, r->nfailed)
-SEARCH_NUM(threads, r->nthreads)
-SEARCH_NUM(wall_s, r->wall_s)
-SEARCH_NUM(interrupted, r->interrupted)
-SEARCH_NUM(base_found, r->base_found)
-SEARCH_NUM(base_force, r->base_found ? r->base_force : NAN)
-SEARCH_NUM(base_time, r->base_found ? r->base.time : NAN)
-
-static const named search_keys[] = {
-    ENTRY(search, found),      ENTRY(search, time),       ENTRY(search, angle),
-    ENTRY(search, evals),      ENTRY(search, feasible),   ENTRY(search, failed),
-    ENTRY(search, threads),    ENTRY(search, wall_s),     ENTRY(search, interrupted),
-    ENTRY(search, base_found), ENTRY(search, base_force), ENTRY(search, base_time),
-};
-
 double zipopt_search_get(const zipopt_search *r, const char *key) {
-    return lookup(search_keys, sizeof search_keys / sizeof *search_keys, r, key);
+    return lookup(search_keys, NSEARCH_KEYS, r->num, key);
 }
 
 const char *zipopt_search_key(int i) {
-    return i >= 0 && (size_t)i < sizeof search_keys / sizeof *search_keys ? search_keys[i].key
-                                                                          : NULL;
+    return i >= 0 && i < NSEARCH_KEYS ? search_keys[i] : NULL;
 }
 
 int zipopt_search_forces(const zipopt_search *r, double *force, int n) {
