@@ -113,7 +113,9 @@ ZIPOPT_API void zipopt_search_free(zipopt_search *r); /* NULL is fine */
 /* A number of the answer by name (zipopt_search_key lists them); NaN for an unknown name:
    found (1 when a survivable schedule was found), time (s, its finish), angle (rad, its
    largest relative joint angle), evals, feasible, failed (simulations), threads, wall_s,
-   interrupted, base_found, base_force (N, the best constant push), base_time (s). */
+   interrupted, base_found, base_force (N, the best constant push), base_time (s); time,
+   angle and the base_ numbers are NaN when nothing survivable was found. A search stopped
+   before it began runs nothing: interrupted, and its forces are the scene's. */
 ZIPOPT_API double zipopt_search_get(const zipopt_search *r, const char *key);
 ZIPOPT_API const char *zipopt_search_key(int i); /* the i-th name, NULL past the last */
 /* The best schedule (N per section) into force (room for n); returns the number of sections.

@@ -386,8 +386,8 @@ static zp_status search(const zp_setup *st, const zp_search_opts *o, zp_search_r
 
 static void search_numbers(const zp_search_result *r, double *v) {
     const double n[] = {r->found,
-                        r->best.time,
-                        r->best.angle,
+                        r->found ? r->best.time : NAN,
+                        r->found ? r->best.angle : NAN,
                         (double)r->evals,
                         (double)r->nfeasible,
                         (double)r->nfailed,
@@ -419,9 +419,16 @@ zipopt_search *zipopt_search_run(zipopt_scene *s, long max_evals, long seed,
                         .progress = progress ? on_progress : NULL,
                         .user = &pc};
     char why[512] = "";
-    pthread_mutex_lock(&turn);
-    zp_status rc = search(st, &o, &u->res, why, sizeof why);
-    pthread_mutex_unlock(&turn);
+    zp_status rc = ZP_OK;
+    if (*pc.flag) {
+        /* stopped before it began: nothing run, the scene's forces stand */
+        u->res.interrupted = 1;
+        memcpy(u->res.force, st->sched.p, sizeof *u->res.force * (size_t)st->sched.np);
+    } else {
+        pthread_mutex_lock(&turn);
+        rc = search(st, &o, &u->res, why, sizeof why);
+        pthread_mutex_unlock(&turn);
+    }
     if (rc) {
         say(err, errlen, "%s", why);
         free(u);
