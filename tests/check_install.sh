@@ -102,8 +102,8 @@ if [ -n "$src" ]; then
     [ $rc = 2 ] && grep -q "bad.ini:4: \[body\] masses" "$prefix/err" ||
         fail "examples/simulate on a bad scene: exit $rc, $(cat "$prefix/err")"
     # the Python module from its documented folder, the library by the system loader
-    init=$(find "$prefix" -path '*/dist-packages/zipopt/__init__.py')
-    [ -n "$init" ] || fail "no Python module in lib/python3/dist-packages"
+    init=$(find "$prefix" -path '*/python*/zipopt/__init__.py')
+    [ -n "$init" ] || fail "no Python module in lib/python3.X/dist-packages"
     if [ -n "$init" ] && "$py" -c 'import numpy' 2>/dev/null; then
         py_t=$(cd "$prefix" && PYTHONPATH=${init%/zipopt/__init__.py} LD_LIBRARY_PATH=$libdir \
             "$py" -c "import zipopt; print(repr(zipopt.simulate('$seed', [10, 10, 10]).time))")
