@@ -8,6 +8,7 @@
 #include <matheval.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "check.h"
@@ -316,6 +317,30 @@ static void test_cache(const char *cache) {
     CHECK(v[0][0] == sinh(2.5 / 7) + pow(2.5, 3) / 1000);
 }
 
+/* loading cached code runs it: a cache folder others may write to is not used (the course is
+   still compiled, in memory, and nothing is written there) */
+static void test_cache_not_shared(const char *cache) {
+    char dir[1100];
+    snprintf(dir, sizeof dir, "%s/shared", cache);
+    CHECK(mkdir(dir, 0700) == 0 && chmod(dir, 0777) == 0);
+    char sub[1200];
+    snprintf(sub, sizeof sub, "%s/zipopt", dir);
+    CHECK(mkdir(sub, 0777) == 0 && chmod(sub, 0777) == 0);
+    setenv("XDG_CACHE_HOME", dir, 1);
+    const char *expr[] = {"cosh(x/9) - x^2/500"};
+    zp_course_err err;
+    zp_course *built = zp_course_create(1, expr, &err);
+    zp_course *c = built ? zp_course_for_thread(built, &err) : NULL;
+    CHECK(c && zp_course_compiled(c));
+    unsigned long ino = 0;
+    CHECK(count_files(sub, &ino) == 0);
+    zp_course_free(c);
+    zp_course_free(built);
+    setenv("XDG_CACHE_HOME", cache, 1);
+    rmdir(sub);
+    rmdir(dir);
+}
+
 /* each bad text is refused by zp_course_check and by zp_course_create, which names the
    (1-based) section and says why */
 static void test_bad(const char *bad, const char *why_part) {
@@ -337,6 +362,7 @@ int main(void) {
     CHECK(mkdtemp(cache) != NULL);
     setenv("XDG_CACHE_HOME", cache, 1);
     test_cache(cache);
+    test_cache_not_shared(cache);
     test_seed_course();
     test_functions();
     test_scenes_compiled();
