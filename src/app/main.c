@@ -13,6 +13,7 @@ static const struct {
     {"simulate", zp_cmd_simulate},
     {"check", zp_cmd_check},
     {"landscape", zp_cmd_landscape},
+    {"sweep", zp_cmd_sweep},
     {"bench", zp_cmd_bench},
 };
 #define NCOMMAND ((int)(sizeof commands / sizeof commands[0]))
