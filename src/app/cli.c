@@ -139,12 +139,24 @@ int zp_cli_whole(const char *cmd, const char *opt, const char *text, unsigned lo
     return 0;
 }
 
-void zp_cli_out_dir(const char *out, const zp_scene *sc, char *dir, size_t cap) {
-    if (out) {
-        snprintf(dir, cap, "%s", out);
-    } else {
-        snprintf(dir, cap, "out/%s", sc->name);
+int zp_cli_out_begin(zp_tx *t, const char *cmd, const char *folder, const char *out,
+                     const zp_scene *sc) {
+    char sub[2 * ZP_NAME_MAX], err[1400];
+    snprintf(sub, sizeof sub, "%s/%s", sc->name, folder);
+    if (zp_tx_begin(t, out ? out : "out", out ? NULL : sub, err, sizeof err)) {
+        fprintf(stderr, "zipopt%s%s: %s; nothing was written\n", *cmd ? " " : "", cmd, err);
+        return -1;
     }
+    return 0;
+}
+
+int zp_cli_out_commit(zp_tx *t, const char *cmd) {
+    char err[1400];
+    if (zp_tx_commit(t, err, sizeof err)) {
+        fprintf(stderr, "zipopt%s%s: %s; nothing was written\n", *cmd ? " " : "", cmd, err);
+        return -1;
+    }
+    return 0;
 }
 
 void zp_cli_print_registries(FILE *f) {
@@ -175,7 +187,7 @@ void zp_cli_usage(FILE *f) {
           "  (none)      Search for the fastest survivable schedule of drive forces (one per\n"
           "              course section), verify it 100x tighter and write report.md,\n"
           "              schedule.ini, summary.json, the best run's trajectory and figures to\n"
-          "              out/<scene name>/ (or DIR). With no file: the built-in seed scene.\n"
+          "              out/<scene name>/search/ (or DIR). With no file: the built-in seed scene.\n"
           "  simulate    Run one schedule through the simulator: --force or --schedule\n"
           "              replace the scene's [drive] forces (N); --json prints the result as\n"
           "              JSON. Writes trajectory.csv and summary.json; --plot also draws the\n"
@@ -190,7 +202,7 @@ void zp_cli_usage(FILE *f) {
           "              out/<scene name>/sweep/. Under `mpirun -np N` the points are spread\n"
           "              over the ranks.\n"
           "  bench       bench trade: work-precision study of every method over rtol\n"
-          "              1e-3..1e-12; writes out/bench/trade.csv, trade.gp and trade.png.\n"
+          "              1e-3..1e-12; writes out/<scene name>/bench/trade.*.\n"
           "Each command's options: zipopt COMMAND --help (the search's: zipopt SCENE --help);\n"
           "all of them: zipopt --help-all (the text of the man page zipopt(1)). Options take\n"
           "--name VALUE or --name=VALUE, before or after the scene file; -- ends them.\n"
