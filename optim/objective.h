@@ -26,6 +26,10 @@ typedef struct zp_objective {
                                  constants (N) */
 } zp_objective;
 
+/* How many parameters the search varies: ob->shape's, or one force per section. */
+static inline int zp_objective_nparams(const zp_objective *ob) {
+    return ob->shape ? ob->shape->np : ob->m->nsec;
+}
 /* The schedule the search's parameters p stand for (ob->shape with p). */
 zp_schedule zp_objective_schedule(const zp_objective *ob, const double *p);
 /* Runs the schedule of parameters p on the workspace s and scores it; r receives the run. */

@@ -84,7 +84,7 @@ static void run_search(const zp_scene *sc, const zp_model *m, const zp_objective
         fail(row, "out of memory for the search");
         return;
     }
-    if (zp_search_run(ob, &fast, ob->shape->lo[0], ob->shape->hi[0], &o, res, err, sizeof err)) {
+    if (zp_search_run(ob, &fast, ob->shape->lo, ob->shape->hi, &o, res, err, sizeof err)) {
         fail(row, err);
         free(res);
         return;
@@ -94,7 +94,7 @@ static void run_search(const zp_scene *sc, const zp_model *m, const zp_objective
     memcpy(row->force, res->force, sizeof *row->force * (size_t)row->np);
     zp_verify v;
     zp_sim *best = NULL;
-    if (zp_verify_run(ob, so, res->force, sc->seed, 0, 0, &best, &v, err, sizeof err)) {
+    if (zp_verify_run(ob, so, res->force, sc->seed, 0, 0, &best, &v, NULL, NULL, err, sizeof err)) {
         fail(row, err);
     } else {
         row->verified = v.agree;

@@ -381,7 +381,7 @@ static void on_progress(void *user, const zp_search_progress *p, int improved) {
 static zp_status search(const zp_setup *st, const zp_search_opts *o, zp_search_result *res,
                         char *err, size_t errlen) {
     zp_objective ob = {st->m, st->limit, st->sim.t_max, &st->sched};
-    return zp_search_run(&ob, &st->search, st->sched.lo[0], st->sched.hi[0], o, res, err, errlen);
+    return zp_search_run(&ob, &st->search, st->sched.lo, st->sched.hi, o, res, err, errlen);
 }
 
 static void search_numbers(const zp_search_result *r, double *v) {
