@@ -5,6 +5,7 @@
 
 #include <stdio.h>
 
+#include "robust.h"
 #include "search.h"
 #include "verify.h"
 
@@ -20,6 +21,11 @@ typedef struct zp_report {
     const char *scene_arg;         /* the scene file as given, NULL: the built-in seed */
     const char *out_dir;
     int figures;                   /* 1: course, energy, angles, loads .png beside the report */
+    const zp_limits *lim;          /* borrowed: [limits], NULL or all 0: none */
+    const zp_box *box;             /* borrowed, NULL: no [robust] */
+    const zp_scen_set *set;        /* borrowed with box: the scenarios the answer is held to */
+    const zp_robust_info *rinfo;   /* borrowed with box */
+    const zp_robust_check *check;  /* borrowed with box: the verification on fresh scenarios */
 } zp_report;
 
 /* A schedule file: only [drive] forces (CONFIG.md), with comments saying what it is. */

@@ -9,7 +9,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define TIGHTER 100   /* tolerance factor of the verification run */
 #define KILL_TOL 1e-4 /* relative precision of the smallest deadly change, per force */
 
 static const double levels[ZP_VERIFY_LEVELS] = {0.02, 0.05};
@@ -72,8 +71,8 @@ zp_status zp_verify_run(const zp_objective *ob, const zp_sim_opts *so, const dou
     memset(v, 0, sizeof *v);
     *sim_out = NULL;
     zp_sim_opts to = *so;
-    to.rtol /= TIGHTER;
-    to.atol /= TIGHTER;
+    to.rtol /= ZP_VERIFY_TIGHTER;
+    to.atol /= ZP_VERIFY_TIGHTER;
     to.output_dt = 0;
     to.track_loads = 0;
     v->run = malloc(sizeof *v->run);

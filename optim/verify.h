@@ -27,6 +27,7 @@ typedef struct zp_verify {
     int kill_section; /* 1-based section whose change alone kills at `kill`, 0: a random mix */
 } zp_verify;
 
+#define ZP_VERIFY_TIGHTER 100 /* tolerance factor of the verification runs */
 #define ZP_VERIFY_DT 1e-4 /* s: finish times at the two tolerances must agree to this */
 
 /* Checks force (N per section) with fresh workspaces from so; trajectory rows of v->run stay

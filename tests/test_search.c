@@ -31,7 +31,7 @@ static const char *swing =
     "[optimize]\nmargin = 5\nmax_evals = 400\n";
 
 static zp_objective objective(const zp_model *m, const zp_scene *sc, const zp_sim_opts *o) {
-    return (zp_objective){m, m->phi_max - sc->margin * M_PI / 180, o->t_max};
+    return (zp_objective){.m = m, .limit = m->phi_max - sc->margin * M_PI / 180, .t_max = o->t_max};
 }
 
 static zp_search_result res, res2;

@@ -6,7 +6,7 @@
 #include "model.h"
 #include "scene_read.h"
 
-enum { ZP_EXIT_OK = 0, ZP_EXIT_FAIL = 1, ZP_EXIT_USAGE = 2 };
+enum { ZP_EXIT_OK = 0, ZP_EXIT_FAIL = 1, ZP_EXIT_USAGE = 2, ZP_EXIT_NONE = 3 };
 
 /* Parses "a,b,c" into at most max doubles; returns the count, or -1 (with why) on a bad
    number or an empty item. */

@@ -12,11 +12,13 @@
 #include "out_file.h"
 #include "plot.h"
 #include "report.h"
+#include "robust.h"
 #include "search.h"
 #include "verify.h"
 
 #define STUDY_FORCE 100 /* N per section: the original study's push */
 #define NROBUST 200     /* robustness runs per perturbation level */
+#define ROBUST_ROUNDS 4 /* searches of the robust search: the adversary adds up to 3 scenarios */
 
 static volatile sig_atomic_t interrupted;
 
@@ -162,6 +164,18 @@ static int write_outputs(const zp_report *r, zp_sim *best_sim) {
     return ZP_EXIT_OK;
 }
 
+/* the answer on fresh random scenarios at the verification's tighter tolerance */
+static zp_status robust_check(const zp_objective *ob, const zp_box *box, const zp_sim_opts *so,
+                              const zp_scene *sc, const double *force, zp_robust_check *c) {
+    zp_sim_opts to = *so;
+    to.rtol /= ZP_VERIFY_TIGHTER;
+    to.atol /= ZP_VERIFY_TIGHTER;
+    to.output_dt = 0;
+    to.track_loads = 0;
+    to.peaks = zp_limits_need_peaks(&ob->lim);
+    return zp_robust_verify(ob, box, &to, force, sc->verify_samples, sc->seed, 0, c);
+}
+
 static void print_summary(const zp_report *r) {
     const zp_search_result *s = r->res;
     const zp_result *run = r->v->run;
@@ -218,7 +232,18 @@ int zp_cmd_search(int argc, char **argv) {
     fast.method = zp_method_find(sc.search_method);
     fast.rtol = sc.search_rtol;
     fast.atol = sc.search_rtol / 100;
-    zp_objective ob = {m, m->phi_max - sc.margin * M_PI / 180, so.t_max};
+    zp_objective ob = {.m = m, .limit = m->phi_max - sc.margin * M_PI / 180, .t_max = so.t_max};
+    zp_limits_from_scene(&sc, &ob.lim);
+    fast.peaks = zp_limits_need_peaks(&ob.lim);
+    zp_box box;
+    zp_box_from_scene(&sc, m, &box);
+    zp_scen_set set = {0};
+    if (sc.robust && zp_scen_set_build(&set, &box, m, sc.robust_samples, sc.seed)) {
+        fputs("zipopt: out of memory building the scenarios; nothing was written\n", stderr);
+        zp_model_free(m);
+        return ZP_EXIT_FAIL;
+    }
+    ob.set = sc.robust && box.d > 0 ? &set : NULL;
     progress_ctx pc = {.sc = &sc, .tty = isatty(STDERR_FILENO)};
     snprintf(pc.checkpoint_dir, sizeof pc.checkpoint_dir, "%s", dir);
     zp_search_opts o = {.algo = a.algo ? zp_search_algo_find(a.algo) : 0,
@@ -229,19 +254,27 @@ int zp_cmd_search(int argc, char **argv) {
     sigaction(SIGINT, &sa, &old);
     static zp_search_result res;
     char err[512] = "";
-    zp_status st = zp_search_run(&ob, &fast, sc.force_min, sc.force_max, &o, &res, err,
-                                 sizeof err);
+    zp_robust_info rinfo;
+    zp_status st = zp_robust_search(&ob, &box, &fast, sc.force_min, sc.force_max, &o,
+                                    ob.set ? ROBUST_ROUNDS : 1, &res, &rinfo, err, sizeof err);
     if (pc.shown) {
         fputc('\n', stderr);
     }
     int status = ZP_EXIT_FAIL;
     zp_sim *best_sim = NULL, *study_sim = NULL;
     zp_verify v = {0};
+    zp_robust_check check = {0};
     if (st) {
         fprintf(stderr, "zipopt: %s; nothing was written\n", err);
         goto done;
     }
-    /* verification (always) and robustness (not after Ctrl-C: the user wants out) */
+    if (ob.set && !res.interrupted && robust_check(&ob, &box, &so, &sc, res.force, &check)) {
+        fputs("zipopt: out of memory verifying the scenarios; nothing was written\n", stderr);
+        goto done;
+    }
+    /* verification (always) and robustness (not after Ctrl-C: the user wants out), of the
+       nominal scene: the scenarios were checked above */
+    ob.set = NULL;
     st = zp_verify_run(&ob, &so, res.force, sc.seed, res.interrupted ? 0 : NROBUST, 0,
                        &best_sim, &v, err, sizeof err);
     if (st) {
@@ -281,9 +314,13 @@ int zp_cmd_search(int argc, char **argv) {
                   stderr);
         }
     }
-    zp_report r = {&sc, m, &res, &v, &study, STUDY_FORCE,
-                   zp_search_algo_get(o.algo)->name, zp_method_get(so.method)->name, a.scene,
-                   dir, figures};
+    int robust = sc.robust && box.d > 0;
+    zp_report r = {.sc = &sc, .m = m, .res = &res, .v = &v, .study = &study,
+                   .study_force = STUDY_FORCE, .algo = zp_search_algo_get(o.algo)->name,
+                   .method = zp_method_get(so.method)->name, .scene_arg = a.scene,
+                   .out_dir = dir, .figures = figures, .lim = &ob.lim,
+                   .box = robust ? &box : NULL, .set = robust ? &set : NULL,
+                   .rinfo = robust ? &rinfo : NULL, .check = robust ? &check : NULL};
     status = write_outputs(&r, best_sim);
     if (status == ZP_EXIT_OK) {
         char cp[1100];
@@ -293,6 +330,10 @@ int zp_cmd_search(int argc, char **argv) {
         if (res.interrupted) {
             fputs("zipopt: interrupted; wrote the best schedule found so far\n", stderr);
             status = ZP_EXIT_FAIL;
+        } else if (!res.found) {
+            fputs("zipopt: no schedule keeps the margin, the [limits] and the [robust] "
+                  "scenarios; wrote the closest candidate, marked as such\n", stderr);
+            status = ZP_EXIT_NONE;
         }
     }
 done:
@@ -300,6 +341,7 @@ done:
     zp_verify_free(&v);
     zp_sim_free(best_sim);
     zp_sim_free(study_sim);
+    zp_scen_set_free(&set);
     zp_model_free(m);
     return status;
 }
