@@ -19,9 +19,8 @@
 #define ADV_POINTS 128       /* random points of the adversary's first look */
 #define ADV_POLISH 2         /* of them, the worst polished locally */
 #define ADV_EVALS 60         /* simulations per polish */
-#define STREAM_SET 0x5e7u    /* seeds of the set's shift, the adversary and the verification: */
-#define STREAM_ADV 0xad5u    /* three streams apart */
-#define STREAM_VERIFY 0x7e1fu
+#define STREAM_SET 0x5e7u    /* seeds of the set's shift and the adversary: streams apart from */
+#define STREAM_ADV 0xad5u    /* each other and from ZP_ROBUST_STREAM_VERIFY */
 
 void zp_box_from_scene(const zp_scene *sc, const zp_model *m, zp_box *b) {
     memset(b, 0, sizeof *b);
@@ -396,7 +395,7 @@ zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim
         gsl_rng_free(rng);
         return ZP_ERR_NOMEM;
     }
-    gsl_rng_set(rng, seed ^ STREAM_VERIFY);
+    gsl_rng_set(rng, seed ^ ZP_ROBUST_STREAM_VERIFY);
     for (long i = 0; i < (long)n * b->d; i++) {
         u[i] = 2 * gsl_rng_uniform(rng) - 1;
     }

@@ -34,6 +34,7 @@ typedef struct zp_scen_set {
     long *fails;       /* owned, cap: candidates each scenario stopped, for the order */
 } zp_scen_set;
 
+#define ZP_ROBUST_STREAM_VERIFY 0x7e1fUL
 #define ZP_BOX_MAX (ZP_MAX_SECTIONS + 4 + ZP_MAX_LINKS)
 
 /* samples scenarios of b around nom: every corner when 2^d fits in samples (else samples/2
@@ -83,8 +84,10 @@ zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts 
                            double hi, const zp_search_opts *o, int max_rounds,
                            zp_search_result *res, zp_robust_info *info, char *err,
                            size_t errlen);
-/* force checked on n fresh scenarios of b (seeded apart from the set) with workspaces from so
-   (the caller passes the tighter verification tolerance); nthreads 0: OpenMP's default. */
+/* force checked on n fresh scenarios of b with workspaces from so (the caller passes the
+   tighter verification tolerance); nthreads 0: OpenMP's default. Scenario i is the point of
+   coordinates 2 U - 1, U the next b->d uniforms of gsl_rng_mt19937 seeded with
+   seed ^ ZP_ROBUST_STREAM_VERIFY (a stream apart from the set's and the adversary's). */
 zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
                            const double *force, int n, unsigned long seed, int nthreads,
                            zp_robust_check *c);
