@@ -97,6 +97,18 @@ static int cmp_double(const void *a, const void *b) {
     return (x > y) - (x < y);
 }
 
+/* each [limits] value set: reached against the limit */
+static void print_limits(const zp_model *m, const zp_result *r, const zp_limits *lim) {
+    double v[ZP_LIMIT_COUNT];
+    zp_limits_reached(m, r, v);
+    for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
+        if (lim->max[i] > 0) {
+            printf("limit %s: reached %.4g %s of %g (%s)\n", zp_limit_name(i), v[i],
+                   zp_limit_unit(i), lim->max[i], v[i] <= lim->max[i] ? "kept" : "BROKEN");
+        }
+    }
+}
+
 static void print_text(const zp_model *m, const zp_result *r) {
     printf("outcome: %s", zp_sim_outcome_name(r->outcome));
     if (r->outcome == ZP_OUTCOME_DIED) {
@@ -271,6 +283,9 @@ int zp_cmd_simulate(int argc, char **argv) {
         goto done;
     }
     status = ZP_EXIT_FAIL;
+    zp_limits lim;
+    zp_limits_from_scene(&sc, &lim);
+    o.peaks = zp_limits_need_peaks(&lim);
     s = zp_sim_create(m, &o);
     if (!s) {
         fputs("zipopt simulate: cannot create the simulator (out of memory)\n", stderr);
@@ -287,7 +302,8 @@ int zp_cmd_simulate(int argc, char **argv) {
     zp_estimate est;
     zp_estimate_run(m, &o, &in, &r, &est);
     zp_run_meta meta = {sc.name, zp_method_get(o.method)->name,
-                        zp_formulation_get(o.formulation)->name, o.rtol, o.atol, sc.forces, &est};
+                        zp_formulation_get(o.formulation)->name, o.rtol, o.atol, sc.forces, &est,
+                        &lim};
     char dir[1024];
     zp_cli_out_dir(a.out, &sc, dir, sizeof dir);
     status = write_files(dir, m, s, &r, smp, nsmp, &meta);
@@ -296,6 +312,7 @@ int zp_cmd_simulate(int argc, char **argv) {
             zp_out_json_result(stdout, m, &r, smp, nsmp, &meta);
         } else {
             print_text(m, &r);
+            print_limits(m, &r, &lim);
             print_estimate(&r, &est);
             printf("wrote %s/trajectory.csv and %s/summary.json\n", dir, dir);
         }

@@ -5,6 +5,7 @@
 #include <stdio.h>
 
 #include "estimate.h"
+#include "scenario.h"
 #include "sim.h"
 
 /* What the run was, echoed so a JSON file stands on its own. */
@@ -15,6 +16,7 @@ typedef struct zp_run_meta {
     double rtol, atol;
     const double *force; /* N, per section */
     const zp_estimate *estimate; /* borrowed; NULL: no error estimate was made */
+    const zp_limits *lim;        /* borrowed; NULL: no [limits] (each reached value still shown) */
 } zp_run_meta;
 
 /* A number that round-trips, or null if it is not finite. */
