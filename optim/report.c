@@ -56,6 +56,20 @@ static void json_robust(FILE *f, const zp_verify *v) {
     fputc('}', f);
 }
 
+/* the robust search's key (CLI.md): its scenarios, and the answer on fresh ones */
+static void json_scenarios(FILE *f, const zp_report *r) {
+    const zp_robust_check *c = r->check;
+    fprintf(f, ",\n  \"robust\": {\"scenarios\": %d, \"corners\": %d, \"added\": %d, "
+               "\"rounds\": %d, \"worst_margin_deg\": ",
+            r->set->n, r->set->ncorner, r->rinfo->added, r->rinfo->rounds);
+    zp_out_json_number(f, c->worst_margin_deg);
+    fprintf(f, ", \"verify\": {\"samples\": %d, \"survived\": %d, \"margin_kept\": %d, "
+               "\"limits_kept\": %d, \"all_kept\": %d, \"lower_95\": ",
+            c->samples, c->survived, c->margin_kept, c->limits_kept, c->all_kept);
+    zp_out_json_number(f, c->lower_95);
+    fputs("}}", f);
+}
+
 void zp_report_write_json(FILE *f, const zp_report *r) {
     const zp_search_result *s = r->res;
     const zp_result *run = r->v->run;
@@ -103,6 +117,11 @@ void zp_report_write_json(FILE *f, const zp_report *r) {
     zp_out_json_number(f, r->study->time);
     fputs("},\n  \"robustness\": ", f);
     json_robust(f, r->v);
+    fputs(",\n  \"limits\": ", f);
+    zp_out_json_limits(f, m, run, r->lim);
+    if (r->box) {
+        json_scenarios(f, r);
+    }
     fputs(",\n  \"history\": [", f);
     for (int i = 0; i < s->nhist; i++) {
         fprintf(f, "[%ld, ", s->hist[i].evals);
@@ -115,6 +134,79 @@ void zp_report_write_json(FILE *f, const zp_report *r) {
 static void md_gain(FILE *f, const char *what, double t_best, double t_other) {
     fprintf(f, "- over %s: %.3f s faster (%.1f %%)\n", what, t_other - t_best,
             100 * (t_other - t_best) / t_other);
+}
+
+/* each [limits] value of the best run against its limit */
+static void md_limits(FILE *f, const zp_report *r) {
+    if (!r->lim || !zp_limits_any(r->lim)) {
+        return;
+    }
+    double v[ZP_LIMIT_COUNT];
+    zp_limits_reached(r->m, r->v->run, v);
+    fputs("\n## Limits\n\n| limit | reached | allowed | |\n|---|---|---|---|\n", f);
+    for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
+        if (r->lim->max[i] > 0) {
+            fprintf(f, "| %s | %.4g %s | %g %s | %s |\n", zp_limit_name(i), v[i],
+                    zp_limit_unit(i), r->lim->max[i], zp_limit_unit(i),
+                    v[i] <= r->lim->max[i] ? "kept" : "**broken**");
+        }
+    }
+}
+
+/* one [robust] range as the designer reads it, if it is varied */
+static void md_range(FILE *f, const char *what, const double range[2]) {
+    if (range[0] != 100 || range[1] != 100) {
+        fprintf(f, "- %s from %g %% to %g %% of nominal\n", what, range[0], range[1]);
+    }
+}
+
+/* the ranges held, the verification on fresh scenarios, the worst scenario found */
+static void md_survivable(FILE *f, const zp_report *r) {
+    const zp_scene *sc = r->sc;
+    const zp_robust_check *c = r->check;
+    const zp_robust_worst *w = &r->rinfo->worst;
+    fputs("\n## Survivable for\n\n", f);
+    if (sc->force_error > 0) {
+        fprintf(f, "- every section's force off by up to +/-%g %%, independently\n",
+                sc->force_error);
+    }
+    md_range(f, "rider mass (all links)", sc->mass_range);
+    md_range(f, "rider size (all link lengths)", sc->length_range);
+    md_range(f, "trolley mass", sc->trolley_mass_range);
+    md_range(f, "joint damping", sc->damping_range);
+    if (sc->start_angle > 0) {
+        fprintf(f, "- each link starting swung by up to +/-%g deg\n", sc->start_angle);
+    }
+    fprintf(f, "\nHeld during the search to %d scenarios (%d corners of the ranges, %d "
+               "quasi-random, %d added where the answer broke) besides the nominal scene.\n",
+            r->set->n, r->set->ncorner, r->set->n - r->set->ncorner - r->rinfo->added,
+            r->rinfo->added);
+    if (c->samples > 0) {
+        fprintf(f, "\nChecked on %d fresh random scenarios at rtol %.0e: %d finished alive, %d "
+                   "kept the margin, %d kept every limit; survivable (both) in %d, so the "
+                   "probability of a survivable ride is at least **%.2f %%** (95 %% confidence, "
+                   "Clopper-Pearson). Smallest margin seen: %.2f deg.\n",
+                c->samples, sc->rtol / ZP_VERIFY_TIGHTER, c->survived, c->margin_kept,
+                c->limits_kept, c->all_kept, 100 * c->lower_95, c->worst_margin_deg);
+    }
+    if (r->rinfo->rounds > 0 && isfinite(w->cons)) {
+        zp_scenario s;
+        zp_box_scenario(r->box, w->u, &s);
+        fprintf(f, "\nWorst scenario found (the adversary's search of the ranges): forces x");
+        for (int k = 0; k < r->m->nsec; k++) {
+            fprintf(f, " %.4f", s.force[k]);
+        }
+        fprintf(f, ", masses x %.3f, lengths x %.3f, trolley x %.3f, damping x %.3f: %s, "
+                   "margin %.2f deg at joint %d",
+                s.mass, s.length, s.trolley, s.damping, zp_sim_outcome_name(w->outcome),
+                w->margin_deg, w->joint);
+        if (w->limit >= 0) {
+            fprintf(f, "; nearest limit %s at %+.1f %% of it", zp_limit_name(w->limit),
+                    100 * w->excess);
+        }
+        fprintf(f, " (%s).\n", w->cons > 0 ? "**broken**: the search ran out of rounds"
+                                             : "kept");
+    }
 }
 
 void zp_report_write_md(FILE *f, const zp_report *r) {
@@ -229,6 +321,11 @@ void zp_report_write_md(FILE *f, const zp_report *r) {
             pk->normal_min, pk->normal_max,
             pk->normal_min < 0 ? " (negative: the trolley pulls on the course, which must "
                                  "hold it from above too)" : "");
+
+    md_limits(f, r);
+    if (r->box) {
+        md_survivable(f, r);
+    }
 
     fputs("\n## Search\n\n", f);
     fprintf(f, "- algorithm: %s, seed %lu, budget %ld simulations\n", r->algo, sc->seed,

@@ -149,8 +149,10 @@ static int write_outputs(const zp_report *r, zp_sim *best_sim) {
         return ZP_EXIT_FAIL;
     }
     zp_report_write_md(md, r);
-    snprintf(note, sizeof note, "best schedule of the search%s: %s, %.6f s; rerun with zipopt "
-             "simulate SCENE.ini --schedule this-file", r->res->interrupted ? " (interrupted)" : "",
+    snprintf(note, sizeof note, "%s of the search%s: %s, %.6f s; rerun with zipopt "
+             "simulate SCENE.ini --schedule this-file",
+             r->res->found ? "best schedule" : "CLOSEST CANDIDATE (nothing met the constraints)",
+             r->res->interrupted ? " (interrupted)" : "",
              zp_sim_outcome_name(r->v->run->outcome), r->v->run->time);
     zp_report_write_schedule(ini, r->sc, r->res->force, note);
     zp_report_write_json(js, r);
@@ -196,6 +198,13 @@ static void print_summary(const zp_report *r) {
     }
     printf("search: %s, %ld simulations in %.2f s on %d threads\n", r->algo, s->evals,
            s->wall_s, s->nthreads);
+    if (r->box) {
+        const zp_robust_check *c = r->check;
+        printf("robust: held to %d scenarios (%d added by the adversary); on %d fresh ones %d "
+               "finished, %d kept the margin, %d every limit: P(survivable) >= %.4f (95 %%)\n",
+               r->set->n, r->rinfo->added, c->samples, c->survived, c->margin_kept,
+               c->limits_kept, c->lower_95);
+    }
     printf("wrote %s/report.md, schedule.ini, summary.json, trajectory.csv\n", r->out_dir);
 }
 
@@ -275,6 +284,7 @@ int zp_cmd_search(int argc, char **argv) {
     /* verification (always) and robustness (not after Ctrl-C: the user wants out), of the
        nominal scene: the scenarios were checked above */
     ob.set = NULL;
+    so.peaks = fast.peaks;
     st = zp_verify_run(&ob, &so, res.force, sc.seed, res.interrupted ? 0 : NROBUST, 0,
                        &best_sim, &v, err, sizeof err);
     if (st) {

@@ -59,11 +59,10 @@ static void write_samples(FILE *f, const zp_model *m, const zp_row *s, int n) {
     fputs(n ? "\n  ],\n" : "],\n", f);
 }
 
-/* each [limits] value: what the run reached and the limit (null when off) */
-static void write_limits(FILE *f, const zp_model *m, const zp_result *r, const zp_limits *lim) {
+void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp_limits *lim) {
     double v[ZP_LIMIT_COUNT];
     zp_limits_reached(m, r, v);
-    fputs("  \"limits\": {", f);
+    fputs("{", f);
     for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
         double max = lim ? lim->max[i] : 0;
         fprintf(f, "\"%s\": {", zp_limit_name(i));
@@ -74,7 +73,7 @@ static void write_limits(FILE *f, const zp_model *m, const zp_result *r, const z
         } else {
             fputs("\"limit\": null}", f);
         }
-        fputs(i + 1 < ZP_LIMIT_COUNT ? ", " : "},\n", f);
+        fputs(i + 1 < ZP_LIMIT_COUNT ? ", " : "}", f);
     }
 }
 
@@ -141,7 +140,9 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
     fputs("\"acc_peak_g\": ", f);
     num_list(f, r->peaks.acc_g, m->nlink, 1.0);
     fputs("},\n", f);
-    write_limits(f, m, r, meta->lim);
+    fputs("  \"limits\": ", f);
+    zp_out_json_limits(f, m, r, meta->lim);
+    fputs(",\n", f);
     write_samples(f, m, samples, nsamples);
     fprintf(f, "  \"stats\": {\"steps\": %ld, \"rhs_evals\": %ld, ", r->steps, r->rhs_evals);
     key_num(f, "wall_s", r->wall_s, "}\n}\n");

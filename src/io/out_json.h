@@ -23,6 +23,9 @@ typedef struct zp_run_meta {
 void zp_out_json_number(FILE *f, double v);
 /* A string with JSON escapes. */
 void zp_out_json_string(FILE *f, const char *s);
+/* The [limits] object: for each limit, what r reached and the limit (null when off, lim may
+   be NULL), and whether it was kept. */
+void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp_limits *lim);
 /* The whole object, with samples (may be 0). */
 void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp_row *samples,
                         int nsamples, const zp_run_meta *meta);
