@@ -79,6 +79,8 @@ void zp_objective_eval(const zp_objective *ob, zp_sim *s, const double *force, z
             zp_objective_eval_run(ob, &set->m[j], s, &in, &ej, r);
             double cons = zp_objective_scenario_cons(ob, &ej);
             e->cons = fmax(e->cons, cons);
+#pragma omp atomic
+            set->runs++;
             if (cons > 0) {
                 e->scenario = j;
 #pragma omp atomic

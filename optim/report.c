@@ -62,10 +62,11 @@ static void json_scenarios(FILE *f, const zp_report *r) {
     fprintf(f, ",\n  \"robust\": {\"scenarios\": %d, \"corners\": %d, \"added\": %d, "
                "\"rounds\": %d, \"worst_margin_deg\": ",
             r->set->n, r->set->ncorner, r->rinfo->added, r->rinfo->rounds);
-    zp_out_json_number(f, c->worst_margin_deg);
-    fprintf(f, ", \"verify\": {\"samples\": %d, \"survived\": %d, \"margin_kept\": %d, "
-               "\"limits_kept\": %d, \"all_kept\": %d, \"lower_95\": ",
-            c->samples, c->survived, c->margin_kept, c->limits_kept, c->all_kept);
+    /* the smallest margin seen: on the fresh scenarios or the adversary's worst */
+    zp_out_json_number(f, fmin(c->worst_margin_deg, r->rinfo->worst.margin_deg));
+    fprintf(f, ", \"scenario_runs\": %ld, \"verify\": {\"samples\": %d, \"survived\": %d, "
+               "\"margin_kept\": %d, \"limits_kept\": %d, \"all_kept\": %d, \"lower_95\": ",
+            r->set->runs, c->samples, c->survived, c->margin_kept, c->limits_kept, c->all_kept);
     zp_out_json_number(f, c->lower_95);
     fputs("}}", f);
 }
@@ -178,9 +179,10 @@ static void md_survivable(FILE *f, const zp_report *r) {
         fprintf(f, "- each link starting swung by up to +/-%g deg\n", sc->start_angle);
     }
     fprintf(f, "\nHeld during the search to %d scenarios (%d corners of the ranges, %d "
-               "quasi-random, %d added where the answer broke) besides the nominal scene.\n",
+               "quasi-random, %d added where the answer broke) besides the nominal scene: %ld "
+               "scenario runs in %d rounds, and %ld runs of the adversary.\n",
             r->set->n, r->set->ncorner, r->set->n - r->set->ncorner - r->rinfo->added,
-            r->rinfo->added);
+            r->rinfo->added, r->set->runs, r->rinfo->rounds, r->rinfo->sims);
     if (c->samples > 0) {
         fprintf(f, "\nChecked on %d fresh random scenarios at rtol %.0e: %d finished alive, %d "
                    "kept the margin, %d kept every limit; survivable (both) in %d, so the "

@@ -32,6 +32,7 @@ typedef struct zp_scen_set {
     zp_chain *start;   /* owned, cap */
     int *order;        /* owned, n: the order of evaluation, worst first */
     long *fails;       /* owned, cap: candidates each scenario stopped, for the order */
+    long runs;         /* scenario simulations so far (the search counts candidates) */
 } zp_scen_set;
 
 #define ZP_ROBUST_STREAM_VERIFY 0x7e1fUL
