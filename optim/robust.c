@@ -8,11 +8,13 @@
 #include <gsl/gsl_rng.h>
 #include <math.h>
 #include <nlopt.h>
+#include <stdio.h>
 #include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "state.h"
+#include "verify.h"
 
 #define DEG (180.0 / M_PI)
 #define SOBOL_MAX_DIM 40     /* gsl_qrng_sobol's largest dimension */
@@ -425,3 +427,52 @@ zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim
     gsl_rng_free(rng);
     return ZP_OK;
 }
+
+zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_model *m,
+                          const zp_sim_opts *so, zp_sim_opts *fast) {
+    memset(p, 0, sizeof *p);
+    p->ob = (zp_objective){.m = m, .limit = m->phi_max - sc->margin * M_PI / 180,
+                            .t_max = so->t_max};
+    zp_limits_from_scene(sc, &p->ob.lim);
+    /* the search runs without trajectories or sampled load peaks: faster, and only the best
+       run needs them; ranking schedules needs ~1e-6 s, not the scene's accuracy */
+    *fast = *so;
+    fast->output_dt = 0;
+    fast->track_loads = 0;
+    fast->peaks = zp_limits_need_peaks(&p->ob.lim);
+    fast->method = zp_method_find(sc->search_method);
+    fast->rtol = sc->search_rtol;
+    fast->atol = sc->search_rtol / 100;
+    zp_box_from_scene(sc, m, &p->box);
+    p->robust = sc->robust && p->box.d > 0;
+    if (p->robust && zp_scen_set_build(&p->set, &p->box, m, sc->robust_samples, sc->seed)) {
+        return ZP_ERR_NOMEM;
+    }
+    p->ob.set = p->robust ? &p->set : NULL;
+    return ZP_OK;
+}
+
+zp_status zp_robust_solve(zp_robust_problem *p, const zp_scene *sc, const zp_sim_opts *so,
+                          const zp_sim_opts *fast, const zp_search_opts *o,
+                          zp_search_result *res, char *err, size_t errlen) {
+    zp_status st = zp_robust_search(&p->ob, &p->box, fast, sc->force_min, sc->force_max, o,
+                                    p->robust ? ZP_ROBUST_ROUNDS : 1, res, &p->info, err,
+                                    errlen);
+    if (st || !p->robust || res->interrupted) {
+        return st;
+    }
+    zp_sim_opts to = *so;
+    to.rtol /= ZP_VERIFY_TIGHTER;
+    to.atol /= ZP_VERIFY_TIGHTER;
+    to.output_dt = 0;
+    to.track_loads = 0;
+    to.peaks = fast->peaks;
+    st = zp_robust_verify(&p->ob, &p->box, &to, res->force, sc->verify_samples, sc->seed,
+                          o->nthreads, &p->check);
+    if (st) {
+        snprintf(err, errlen, "out of memory verifying the scenarios");
+    }
+    return st;
+}
+
+void zp_robust_problem_free(zp_robust_problem *p) { zp_scen_set_free(&p->set); }

@@ -92,6 +92,30 @@ zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts 
 zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
                            const double *force, int n, unsigned long seed, int nthreads,
                            zp_robust_check *c);
+/* A scene's problem as the search sees it: the objective (margin, limits, and the set when
+   the scene has [robust] ranges), the box and the set, then what the robust search found. */
+typedef struct zp_robust_problem {
+    zp_objective ob;
+    int robust;          /* the scene has [robust] ranges: ob.set = &set */
+    zp_box box;
+    zp_scen_set set;
+    zp_robust_info info;
+    zp_robust_check check; /* samples 0: not verified */
+} zp_robust_problem;
+
+#define ZP_ROBUST_ROUNDS 4 /* searches at most: the adversary adds up to 3 scenarios */
+
+/* p for sc and m; fast = so as the search runs it ([optimize] method and rtol, no trajectory,
+   exact peaks when a limit needs them). ZP_OK or ZP_ERR_NOMEM. */
+zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_model *m,
+                          const zp_sim_opts *so, zp_sim_opts *fast);
+/* The (robust) search with the adversary, then, unless interrupted, the answer verified on
+   sc->verify_samples fresh scenarios at so's tolerance made ZP_VERIFY_TIGHTER times tighter. */
+zp_status zp_robust_solve(zp_robust_problem *p, const zp_scene *sc, const zp_sim_opts *so,
+                          const zp_sim_opts *fast, const zp_search_opts *o,
+                          zp_search_result *res, char *err, size_t errlen);
+void zp_robust_problem_free(zp_robust_problem *p);
+
 /* The one-sided 95 % Clopper-Pearson lower bound of a probability with k successes in n. */
 double zp_clopper_pearson_lower(int k, int n, double alpha);
 

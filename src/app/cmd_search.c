@@ -18,7 +18,6 @@
 
 #define STUDY_FORCE 100 /* N per section: the original study's push */
 #define NROBUST 200     /* robustness runs per perturbation level */
-#define ROBUST_ROUNDS 4 /* searches of the robust search: the adversary adds up to 3 scenarios */
 
 static volatile sig_atomic_t interrupted;
 
@@ -166,18 +165,6 @@ static int write_outputs(const zp_report *r, zp_sim *best_sim) {
     return ZP_EXIT_OK;
 }
 
-/* the answer on fresh random scenarios at the verification's tighter tolerance */
-static zp_status robust_check(const zp_objective *ob, const zp_box *box, const zp_sim_opts *so,
-                              const zp_scene *sc, const double *force, zp_robust_check *c) {
-    zp_sim_opts to = *so;
-    to.rtol /= ZP_VERIFY_TIGHTER;
-    to.atol /= ZP_VERIFY_TIGHTER;
-    to.output_dt = 0;
-    to.track_loads = 0;
-    to.peaks = zp_limits_need_peaks(&ob->lim);
-    return zp_robust_verify(ob, box, &to, force, sc->verify_samples, sc->seed, 0, c);
-}
-
 static void print_summary(const zp_report *r) {
     const zp_search_result *s = r->res;
     const zp_result *run = r->v->run;
@@ -232,27 +219,14 @@ int zp_cmd_search(int argc, char **argv) {
     char dir[1024];
     zp_cli_out_dir(a.out, &sc, dir, sizeof dir);
 
-    /* the search runs without trajectories or load peaks: faster, and only the best run
-       needs them */
-    zp_sim_opts fast = so;
-    fast.output_dt = 0;
-    fast.track_loads = 0;
-    /* ranking schedules needs ~1e-6 s, not the scene's accuracy: [optimize] method, rtol */
-    fast.method = zp_method_find(sc.search_method);
-    fast.rtol = sc.search_rtol;
-    fast.atol = sc.search_rtol / 100;
-    zp_objective ob = {.m = m, .limit = m->phi_max - sc.margin * M_PI / 180, .t_max = so.t_max};
-    zp_limits_from_scene(&sc, &ob.lim);
-    fast.peaks = zp_limits_need_peaks(&ob.lim);
-    zp_box box;
-    zp_box_from_scene(&sc, m, &box);
-    zp_scen_set set = {0};
-    if (sc.robust && zp_scen_set_build(&set, &box, m, sc.robust_samples, sc.seed)) {
+    zp_sim_opts fast;
+    zp_robust_problem pb;
+    if (zp_robust_setup(&pb, &sc, m, &so, &fast)) {
         fputs("zipopt: out of memory building the scenarios; nothing was written\n", stderr);
+        zp_robust_problem_free(&pb);
         zp_model_free(m);
         return ZP_EXIT_FAIL;
     }
-    ob.set = sc.robust && box.d > 0 ? &set : NULL;
     progress_ctx pc = {.sc = &sc, .tty = isatty(STDERR_FILENO)};
     snprintf(pc.checkpoint_dir, sizeof pc.checkpoint_dir, "%s", dir);
     zp_search_opts o = {.algo = a.algo ? zp_search_algo_find(a.algo) : 0,
@@ -263,26 +237,20 @@ int zp_cmd_search(int argc, char **argv) {
     sigaction(SIGINT, &sa, &old);
     static zp_search_result res;
     char err[512] = "";
-    zp_robust_info rinfo;
-    zp_status st = zp_robust_search(&ob, &box, &fast, sc.force_min, sc.force_max, &o,
-                                    ob.set ? ROBUST_ROUNDS : 1, &res, &rinfo, err, sizeof err);
+    zp_status st = zp_robust_solve(&pb, &sc, &so, &fast, &o, &res, err, sizeof err);
     if (pc.shown) {
         fputc('\n', stderr);
     }
     int status = ZP_EXIT_FAIL;
     zp_sim *best_sim = NULL, *study_sim = NULL;
     zp_verify v = {0};
-    zp_robust_check check = {0};
     if (st) {
         fprintf(stderr, "zipopt: %s; nothing was written\n", err);
         goto done;
     }
-    if (ob.set && !res.interrupted && robust_check(&ob, &box, &so, &sc, res.force, &check)) {
-        fputs("zipopt: out of memory verifying the scenarios; nothing was written\n", stderr);
-        goto done;
-    }
     /* verification (always) and robustness (not after Ctrl-C: the user wants out), of the
        nominal scene: the scenarios were checked above */
+    zp_objective ob = pb.ob;
     ob.set = NULL;
     so.peaks = fast.peaks;
     st = zp_verify_run(&ob, &so, res.force, sc.seed, res.interrupted ? 0 : NROBUST, 0,
@@ -324,13 +292,13 @@ int zp_cmd_search(int argc, char **argv) {
                   stderr);
         }
     }
-    int robust = sc.robust && box.d > 0;
+    int robust = pb.robust;
     zp_report r = {.sc = &sc, .m = m, .res = &res, .v = &v, .study = &study,
                    .study_force = STUDY_FORCE, .algo = zp_search_algo_get(o.algo)->name,
                    .method = zp_method_get(so.method)->name, .scene_arg = a.scene,
-                   .out_dir = dir, .figures = figures, .lim = &ob.lim,
-                   .box = robust ? &box : NULL, .set = robust ? &set : NULL,
-                   .rinfo = robust ? &rinfo : NULL, .check = robust ? &check : NULL};
+                   .out_dir = dir, .figures = figures, .lim = &pb.ob.lim,
+                   .box = robust ? &pb.box : NULL, .set = robust ? &pb.set : NULL,
+                   .rinfo = robust ? &pb.info : NULL, .check = robust ? &pb.check : NULL};
     status = write_outputs(&r, best_sim);
     if (status == ZP_EXIT_OK) {
         char cp[1100];
@@ -351,7 +319,7 @@ done:
     zp_verify_free(&v);
     zp_sim_free(best_sim);
     zp_sim_free(study_sim);
-    zp_scen_set_free(&set);
+    zp_robust_problem_free(&pb);
     zp_model_free(m);
     return status;
 }
