@@ -25,6 +25,9 @@ int main(int argc, char **argv) {
     if (argc >= 2 && !strcmp(argv[1], "landscape")) {
         return zp_cmd_landscape(argc - 1, argv + 1);
     }
+    if (argc >= 2 && !strcmp(argv[1], "tradeoff")) {
+        return zp_cmd_tradeoff(argc - 1, argv + 1);
+    }
     if (argc >= 2 && !strcmp(argv[1], "bench")) {
         return zp_cmd_bench(argc - 1, argv + 1);
     }

@@ -1,0 +1,229 @@
+/* `zipopt tradeoff SCENE.ini [--levels P1,P2,..]`: the robust search at each force_error level
+   (the scene's other [robust] ranges as given): what robustness costs (CLI.md). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "gnuplot.h"
+#include "robust.h"
+
+#define MAX_LEVELS 16
+#define KMH 3.6
+
+static void usage(FILE *f) {
+    fputs("usage: zipopt tradeoff SCENE.ini [--levels P1,P2,..] [--out DIR]\n"
+          "Runs the robust search (zipopt SCENE.ini) at each force error level P (%, each\n"
+          "section's force off by up to +/-P %; the scene's other [robust] ranges and [limits]\n"
+          "as given) and writes tradeoff.csv, tradeoff.png (finish time and arrival speed\n"
+          "against the level, the nominal optimum marked) and report.md (what each level\n"
+          "costs against the nominal optimum) to out/<scene name>/tradeoff/ (or DIR).\n"
+          "  --levels P1,..  force error levels in % (default 0,1,2,5,10), each in [0, 100)\n"
+          "  --out DIR       output folder\n",
+          f);
+}
+
+typedef struct level_out {
+    double p;    /* % */
+    int found;
+    double time; /* s, nominal finish time of the answer */
+    double arrival; /* km/h */
+    double force[ZP_MAX_SECTIONS];
+    int scenarios;
+    zp_robust_check check;
+} level_out;
+
+/* the robust answer at force error p; its arrival speed from one nominal run */
+static zp_status solve_level(const zp_scene *base, const zp_model *m, const zp_sim_opts *so,
+                             double p, level_out *out, char *err, size_t errlen) {
+    zp_scene sc = *base;
+    sc.force_error = p;
+    sc.robust = sc.robust || p > 0;
+    zp_robust_problem pb;
+    zp_sim_opts fast;
+    static zp_search_result res;
+    static zp_result run;
+    zp_status st = zp_robust_setup(&pb, &sc, m, so, &fast);
+    zp_search_opts o = {.max_evals = sc.max_evals, .seed = sc.seed};
+    if (!st) {
+        st = zp_robust_solve(&pb, &sc, so, &fast, &o, &res, err, errlen);
+    }
+    zp_sim *s = st ? NULL : zp_sim_create(m, &fast);
+    zp_input in = {.force = res.force};
+    if (!st && (!s || zp_sim_run(m, s, &in, &run))) {
+        snprintf(err, errlen, "the answer's run failed: %s", s ? run.message : "out of memory");
+        st = ZP_ERR_NUMERIC;
+    }
+    if (!st) {
+        *out = (level_out){.p = p, .found = res.found, .time = res.best.time,
+                           .arrival = run.v * KMH, .scenarios = pb.robust ? pb.set.n : 0,
+                           .check = pb.check};
+        memcpy(out->force, res.force, sizeof out->force);
+    }
+    zp_sim_free(s);
+    zp_robust_problem_free(&pb);
+    return st;
+}
+
+static void write_csv(FILE *f, const level_out *L, int n, int nsec) {
+    fputs("force_error_pct,found,time_s,cost_s,cost_pct,arrival_kmh,scenarios,verify_samples,"
+          "verify_kept,lower_95",
+          f);
+    for (int k = 0; k < nsec; k++) {
+        fprintf(f, ",force_%d_N", k + 1);
+    }
+    fputc('\n', f);
+    for (int i = 0; i < n; i++) {
+        fprintf(f, "%g,%d,%.9g,%.6g,%.4g,%.6g,%d,%d,%d,%.6g", L[i].p, L[i].found, L[i].time,
+                L[i].time - L[0].time, 100 * (L[i].time - L[0].time) / L[0].time, L[i].arrival,
+                L[i].scenarios, L[i].check.samples, L[i].check.all_kept, L[i].check.lower_95);
+        for (int k = 0; k < nsec; k++) {
+            fprintf(f, ",%.9g", L[i].force[k]);
+        }
+        fputc('\n', f);
+    }
+}
+
+static void write_plot(FILE *f) {
+    fputs("set terminal pngcairo size 900,500 enhanced font 'DejaVu Sans,11' linewidth 1.3\n"
+          "set output 'tradeoff.png'\nset datafile separator ','\nset key top left\n"
+          "set title 'What robustness costs'\nset xlabel 'force error held (+/- %)'\n"
+          "set ylabel 'finish time (s)'\nset y2label 'arrival speed (km/h)'\n"
+          "set ytics nomirror\nset y2tics\nset grid\n"
+          "plot 'tradeoff.csv' every ::1 using 1:3 with linespoints pt 7 title 'finish time', \\\n"
+          "     '' every ::1 using 1:6 axes x1y2 with linespoints pt 5 dt 2 title 'arrival speed', "
+          "\\\n     '' every ::1::1 using 1:3 with points pt 6 ps 3 lc rgb 'black' "
+          "title 'nominal optimum'\n",
+          f);
+}
+
+static void write_md(FILE *f, const zp_scene *sc, const level_out *L, int n) {
+    fprintf(f, "# What robustness costs: %s\n\nThe robust search at each force error level "
+               "(every section's force off by up to +/-p %%, independently%s), against the "
+               "nominal optimum (%.4f s).\n\n| +/-p | found | finish (s) | costs (s) | costs "
+               "(%%) | arrival (km/h) | verified survivable |\n|---|---|---|---|---|---|---|\n",
+            sc->name, sc->robust ? "; the scene's other [robust] ranges as given" : "",
+            L[0].time);
+    for (int i = 0; i < n; i++) {
+        fprintf(f, "| %g %% | %s | %.4f | %.4f | %.1f | %.1f | ", L[i].p, L[i].found ? "yes" : "no",
+                L[i].time, L[i].time - L[0].time, 100 * (L[i].time - L[0].time) / L[0].time,
+                L[i].arrival);
+        if (L[i].check.samples) {
+            fprintf(f, "%d / %d (>= %.2f %%) |\n", L[i].check.all_kept, L[i].check.samples,
+                    100 * L[i].check.lower_95);
+        } else {
+            fputs("- |\n", f);
+        }
+    }
+    fputc('\n', f);
+    for (int i = 1; i < n; i++) {
+        if (L[i].found) {
+            fprintf(f, "Robust to +/-%g %% costs %.3f s (%.1f %%).\n", L[i].p,
+                    L[i].time - L[0].time, 100 * (L[i].time - L[0].time) / L[0].time);
+        }
+    }
+    fputs("\n![finish time and arrival speed against the level](tradeoff.png)\n", f);
+}
+
+/* the levels: 0 first (the nominal optimum), then the ones asked for in the order given */
+static int parse_levels(const char *text, double *lv) {
+    double got[MAX_LEVELS];
+    char why[128] = "";
+    int n = text ? zp_cli_parse_list(text, got, MAX_LEVELS - 1, why, sizeof why) : 4;
+    if (!text) {
+        memcpy(got, (double[]){1, 2, 5, 10}, sizeof(double) * 4);
+    }
+    if (n < 1) {
+        fprintf(stderr, "zipopt tradeoff: --levels '%s': %s; expected levels in %% such as "
+                        "0,1,2,5,10; nothing was written\n", text, *why ? why : "bad list");
+        return -1;
+    }
+    int m = 1;
+    lv[0] = 0;
+    for (int i = 0; i < n; i++) {
+        if (!(got[i] >= 0 && got[i] < 100)) {
+            fprintf(stderr, "zipopt tradeoff: --levels: %g is not a level; expected each in "
+                            "[0, 100) %%; nothing was written\n", got[i]);
+            return -1;
+        }
+        if (got[i] > 0) {
+            lv[m++] = got[i];
+        }
+    }
+    return m;
+}
+
+int zp_cmd_tradeoff(int argc, char **argv) {
+    const char *scene = NULL, *out = NULL, *levels = NULL;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            usage(stdout);
+            return ZP_EXIT_OK;
+        } else if (!strcmp(argv[i], "--levels") && i + 1 < argc) {
+            levels = argv[++i];
+        } else if (!strcmp(argv[i], "--out") && i + 1 < argc) {
+            out = argv[++i];
+        } else if (zp_cli_scene_arg("tradeoff", argv[i], &scene)) {
+            return ZP_EXIT_USAGE;
+        }
+    }
+    double lv[MAX_LEVELS];
+    int n = parse_levels(levels, lv);
+    zp_scene sc;
+    zp_model *m = n < 1 ? NULL : zp_cli_load(scene, &sc);
+    zp_diag d;
+    zp_diag_init(&d);
+    zp_sim_opts so;
+    if (!m || zp_sim_opts_from_scene(&sc, &so, &d)) {
+        zp_diag_print(&d, stderr);
+        zp_model_free(m);
+        return ZP_EXIT_USAGE;
+    }
+    static level_out L[MAX_LEVELS];
+    char err[1200] = "";
+    int status = ZP_EXIT_FAIL;
+    for (int i = 0; i < n; i++) {
+        if (solve_level(&sc, m, &so, lv[i], &L[i], err, sizeof err)) {
+            fprintf(stderr, "zipopt tradeoff: level %g %%: %s; nothing was written\n", lv[i], err);
+            goto done;
+        }
+        fprintf(stderr, "tradeoff: +/-%g %%: %s %.4f s\n", lv[i], L[i].found ? "" : "(none)",
+                L[i].time);
+    }
+    char dir[1024], base[1024];
+    zp_cli_out_dir(out, &sc, base, sizeof base);
+    snprintf(dir, sizeof dir, out ? "%s" : "%s/tradeoff", base);
+    zp_gnuplot g;
+    if (zp_gnuplot_begin(&g, dir, err, sizeof err)) {
+        fprintf(stderr, "zipopt tradeoff: %s; nothing was written\n", err);
+        goto done;
+    }
+    FILE *csv = zp_gnuplot_open(&g, "tradeoff.csv", 0, err, sizeof err);
+    FILE *gp = csv ? zp_gnuplot_open(&g, "tradeoff.gp", 1, err, sizeof err) : NULL;
+    FILE *md = gp ? zp_gnuplot_open(&g, "report.md", 0, err, sizeof err) : NULL;
+    int missing = 0;
+    if (!md) {
+        zp_gnuplot_abort(&g);
+        fprintf(stderr, "zipopt tradeoff: %s; nothing was written\n", err);
+        goto done;
+    }
+    write_csv(csv, L, n, m->nsec);
+    write_plot(gp);
+    write_md(md, &sc, L, n);
+    if (zp_gnuplot_finish(&g, &missing, err, sizeof err)) {
+        fprintf(stderr, "zipopt tradeoff: %s\n", err);
+        goto done;
+    }
+    for (int i = 1; i < n; i++) {
+        printf("robust to +/-%g %%: %.4f s, costs %.3f s (%.1f %%)%s\n", L[i].p, L[i].time,
+               L[i].time - L[0].time, 100 * (L[i].time - L[0].time) / L[0].time,
+               L[i].found ? "" : ", NOT found");
+    }
+    printf("wrote %s/tradeoff.csv, tradeoff.png, report.md%s\n", dir,
+           missing ? " (no gnuplot: tradeoff.gp without its image)" : "");
+    status = ZP_EXIT_OK;
+done:
+    zp_model_free(m);
+    return status;
+}
