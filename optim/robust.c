@@ -353,6 +353,7 @@ zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts 
                            zp_search_result *res, zp_robust_info *info, char *err,
                            size_t errlen) {
     memset(info, 0, sizeof *info);
+    info->worst.cons = NAN; /* no adversary yet */
     workers w = {0};
     if (b->d > 0 && workers_make(&w, ob->m, so, o->nthreads)) {
         snprintf(err, errlen, "out of memory for the adversary's workspaces");
