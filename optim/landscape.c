@@ -33,6 +33,7 @@ zp_status zp_landscape_sweep(const zp_model *m, const zp_sim_opts *o, const doub
                 p->time = r->time;
                 p->x = r->x;
                 p->died_link = r->died_link;
+                zp_limits_reached(m, r, p->reached);
                 p->max_rel_angle = 0;
                 for (int i = 0; i < m->nlink; i++) {
                     p->max_rel_angle = fmax(p->max_rel_angle, r->max_rel_angle[i]);

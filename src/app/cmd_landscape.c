@@ -122,14 +122,24 @@ static const char *outcome_name(const zp_landscape_point *p) {
     return p->failed ? "failed" : zp_sim_outcome_name(p->outcome);
 }
 
-/* one CSV row's result columns */
-static void write_point(FILE *f, const zp_landscape_point *p) {
-    fprintf(f, ",%s,%s,%.9g,%.9g,%d,%.6g\n", outcome_name(p),
-            p->failed || p->outcome != ZP_OUTCOME_STALLED ? "" : zp_sim_stall_name(p->stall),
-            p->time, p->x, p->died_link, p->max_rel_angle * 180 / M_PI);
+/* 1 when p finished with the margin (limit, rad) and every [limits] value kept */
+static int keeps(const zp_landscape_point *p, double limit, const zp_limits *lim) {
+    int kept = !p->failed && p->outcome == ZP_OUTCOME_FINISHED && p->max_rel_angle <= limit;
+    for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
+        kept &= !(lim->max[i] > 0) || p->reached[i] <= lim->max[i];
+    }
+    return kept;
 }
 
-static const char *result_header = "outcome,stall_reason,time,x,died_link,max_rel_angle_deg";
+/* one CSV row's result columns */
+static void write_point(FILE *f, const zp_landscape_point *p, int kept) {
+    fprintf(f, ",%s,%s,%.9g,%.9g,%d,%.6g,%d\n", outcome_name(p),
+            p->failed || p->outcome != ZP_OUTCOME_STALLED ? "" : zp_sim_stall_name(p->stall),
+            p->time, p->x, p->died_link, p->max_rel_angle * 180 / M_PI, kept);
+}
+
+static const char *result_header =
+    "outcome,stall_reason,time,x,died_link,max_rel_angle_deg,kept";
 
 /* user text (scene name, file name) for a gnuplot string: quotes and backslashes become
    backquotes, so no name can end the string early */
@@ -222,8 +232,11 @@ static void script_2d(FILE *f, const zp_scene *sc, int si, int sj, const range *
     }
     fprintf(f,
             ") N\"\nEOD\n"
-            "plot 'landscape_slice.csv' using 'f%d':'f%d':(strcol('outcome') eq 'finished' ? "
+            "plot 'landscape_slice.csv' using 'f%d':'f%d':(column('kept') == 1 ? "
             "column('time') : NaN) with image notitle, \\\n"
+            "     '' using 'f%d':'f%d':(%g):(strcol('outcome') eq 'finished' && "
+            "column('kept') == 0 ? %g : NaN) with boxxyerror lc rgb '#f4a582' "
+            "title 'finished, margin or a limit broken', \\\n"
             "     '' using 'f%d':'f%d':(%g):(strcol('outcome') eq 'died' ? %g : NaN) "
             "with boxxyerror lc rgb '#8c2d2d' title 'died', \\\n"
             "     '' using 'f%d':'f%d':(%g):(strcol('outcome') eq 'stalled' ? %g : NaN) "
@@ -236,6 +249,7 @@ static void script_2d(FILE *f, const zp_scene *sc, int si, int sj, const range *
             "     $base using 1:2:3 with labels %s offset %g, %g tc rgb 'black' boxed "
             "font ',10' notitle\n",
             si + 1, sj + 1, si + 1, sj + 1, 0.51 * dx, 0.51 * dy, si + 1, sj + 1, 0.51 * dx,
+            0.51 * dy, si + 1, sj + 1, 0.51 * dx,
             0.51 * dy, si + 1, sj + 1, 0.51 * dx, 0.51 * dy, right ? "right" : "left",
             right ? -1.5 : 1.5, upper ? -1.2 : 1.2);
 }
@@ -327,6 +341,10 @@ int zp_cmd_landscape(int argc, char **argv) {
         goto done;
     }
     o.output_dt = 0; /* outcomes only */
+    zp_limits lim;
+    zp_limits_from_scene(&sc, &lim);
+    o.peaks = zp_limits_need_peaks(&lim);
+    double limit = (sc.death_angle - sc.margin) * M_PI / 180;
 
     /* the schedules: the constant pushes, then the slice */
     status = ZP_EXIT_FAIL;
@@ -379,7 +397,7 @@ int zp_cmd_landscape(int argc, char **argv) {
     fprintf(csv, "force,%s\n", result_header);
     for (int k = 0; k < n1; k++) {
         fprintf(csv, "%.9g", at(&r1, k));
-        write_point(csv, &pt[k]);
+        write_point(csv, &pt[k], keeps(&pt[k], limit, &lim));
     }
     script_1d(gp, &sc, &r1);
     if (n2) {
@@ -387,7 +405,7 @@ int zp_cmd_landscape(int argc, char **argv) {
         for (int k = 0; k < n2; k++) {
             const double *f = force + (size_t)(n1 + k) * ns;
             fprintf(csv2, "%.9g,%.9g", f[si], f[sj]);
-            write_point(csv2, &pt[n1 + k]);
+            write_point(csv2, &pt[n1 + k], keeps(&pt[n1 + k], limit, &lim));
         }
         script_2d(gp2, &sc, si, sj, &rx, &ry, sc.forces,
                   a.schedule     ? a.schedule
