@@ -168,18 +168,19 @@ zp_status zp_scen_set_build(zp_scen_set *set, const zp_box *b, const zp_model *n
     return st;
 }
 
-static const zp_scen_set *sort_set;
-static int by_fails(const void *a, const void *b) {
-    int i = *(const int *)a, j = *(const int *)b;
-    long fi = sort_set->fails[i], fj = sort_set->fails[j];
-    return fi != fj ? (fi < fj) - (fi > fj) : (i > j) - (i < j);
+/* scenario i goes before j: more fails, then the lower index */
+static int before(const zp_scen_set *set, int i, int j) {
+    return set->fails[i] != set->fails[j] ? set->fails[i] > set->fails[j] : i < j;
 }
 
 void zp_scen_set_reorder(zp_scen_set *set) {
-#pragma omp critical(zp_scen_sort)
-    {
-        sort_set = set;
-        qsort(set->order, set->n, sizeof *set->order, by_fails);
+    /* insertion sort: a few hundred scenarios at most, between searches */
+    for (int a = 1; a < set->n; a++) {
+        int v = set->order[a], b = a;
+        for (; b > 0 && before(set, v, set->order[b - 1]); b--) {
+            set->order[b] = set->order[b - 1];
+        }
+        set->order[b] = v;
     }
 }
 

@@ -17,22 +17,10 @@
 
 #define BOUND_TOL 2e-3 /* s: the search polishes forces to ~1e-3 N (as in test_search) */
 
-static const char *swing =
-    "[course]\nx_start = 0\nsection = 40 : -x/10 + 10\n"
-    "[trolley]\nmass = 30\n"
-    "[body]\nlengths = 1\nmasses = 5\ndamping = 2\ndeath_angle = 30\n"
-    "[drive]\nmin = 0\nmax = 400\n"
-    "[optimize]\nmargin = 5\nmax_evals = 400\n";
-
-static zp_objective objective(const zp_model *m, const zp_scene *sc, const zp_sim_opts *o) {
-    return (zp_objective){.m = m, .limit = m->phi_max - sc->margin * M_PI / 180,
-                          .t_max = o->t_max};
-}
-
 /* the corners of a 1-D range are exactly its ends; the derived model is the scaled scene's */
 static void corners_and_models(void) {
     zp_scene sc;
-    zp_model *m = tu_model(swing, &sc);
+    zp_model *m = tu_model(tu_swing, &sc);
     sc.force_error = 5;
     zp_box b;
     zp_box_from_scene(&sc, m, &b);
@@ -145,7 +133,7 @@ static void kink_dv(void) {
 /* the exact peaks reach at least the finest sampling of the same run, and not much more */
 static void exact_peaks(void) {
     zp_scene sc;
-    zp_model *m = tu_model(swing, &sc);
+    zp_model *m = tu_model(tu_swing, &sc);
     zp_sim_opts o = tu_opts(&sc, 1e-10);
     double f[1] = {150};
     zp_input in = {.force = f};
@@ -199,9 +187,9 @@ static void robust_search(zp_objective *ob, const zp_scene *sc, const zp_sim_opt
 /* survival monotone in the force: the robust optimum is the largest push over 1 + p */
 static void monotone(void) {
     zp_scene sc;
-    zp_model *m = tu_model(swing, &sc);
+    zp_model *m = tu_model(tu_swing, &sc);
     zp_sim_opts o = tu_opts(&sc, 1e-8);
-    zp_objective ob = objective(m, &sc, &o);
+    zp_objective ob = tu_objective(m, &sc, &o);
     double p = 0.05, top = largest_push(m, &o, ob.limit);
     sc.force_error = 100 * p;
     sc.robust_samples = 8;
@@ -244,9 +232,9 @@ static void monotone(void) {
 /* several uncertain quantities: the same seed gives the same bits on 1 and 2 threads */
 static void threads(void) {
     zp_scene sc;
-    zp_model *m = tu_model(swing, &sc);
+    zp_model *m = tu_model(tu_swing, &sc);
     zp_sim_opts o = tu_opts(&sc, 1e-8);
-    zp_objective ob = objective(m, &sc, &o);
+    zp_objective ob = tu_objective(m, &sc, &o);
     sc.force_error = 3;
     sc.mass_range[0] = 90;
     sc.mass_range[1] = 110;

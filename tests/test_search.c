@@ -23,17 +23,6 @@ static const char *bare =
     "[drive]\nmin = 0\nmax = 50\n"
     "[optimize]\nmargin = 10\nmax_evals = 300\n";
 
-static const char *swing =
-    "[course]\nx_start = 0\nsection = 40 : -x/10 + 10\n"
-    "[trolley]\nmass = 30\n"
-    "[body]\nlengths = 1\nmasses = 5\ndamping = 2\ndeath_angle = 30\n"
-    "[drive]\nmin = 0\nmax = 400\n"
-    "[optimize]\nmargin = 5\nmax_evals = 400\n";
-
-static zp_objective objective(const zp_model *m, const zp_scene *sc, const zp_sim_opts *o) {
-    return (zp_objective){.m = m, .limit = m->phi_max - sc->margin * M_PI / 180, .t_max = o->t_max};
-}
-
 static zp_search_result res, res2;
 
 static void search(const zp_objective *ob, const zp_sim_opts *o, const zp_scene *sc,
@@ -51,7 +40,7 @@ int main(void) {
     {
         zp_model *m = tu_model(bare, &sc);
         zp_sim_opts o = tu_opts(&sc, 1e-8);
-        zp_objective ob = objective(m, &sc, &o);
+        zp_objective ob = tu_objective(m, &sc, &o);
         search(&ob, &o, &sc, 2, &res);
         double alpha = atan(0.1), mass = 30 + 0.001;
         double a = 9.81 * sin(alpha) + 50 / mass * cos(alpha);
@@ -66,9 +55,9 @@ int main(void) {
     /* a swinging spy whose swing grows with the push: the optimum is the largest push that
        keeps the margin, found here by bisection with the simulator alone */
     {
-        zp_model *m = tu_model(swing, &sc);
+        zp_model *m = tu_model(tu_swing, &sc);
         zp_sim_opts o = tu_opts(&sc, 1e-8);
-        zp_objective ob = objective(m, &sc, &o);
+        zp_objective ob = tu_objective(m, &sc, &o);
         double lo = 0, hi = 400, f[1];
         zp_input in = {.force = f};
         f[0] = hi;
@@ -103,7 +92,7 @@ int main(void) {
         zp_model *m = zp_model_build(&sc, &d);
         zp_sim_opts o = tu_opts(&sc, sc.rtol);
         o.atol = sc.atol;
-        zp_objective ob = objective(m, &sc, &o);
+        zp_objective ob = tu_objective(m, &sc, &o);
         search(&ob, &o, &sc, 2, &res);
         search(&ob, &o, &sc, 2, &res2);
         CHECK(!memcmp(res.force, res2.force, sizeof res.force));
