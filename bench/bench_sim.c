@@ -54,8 +54,9 @@ int main(int argc, char **argv) {
     for (int k = 0; k < m->nsec; k++) {
         f[k] = force;
     }
-    zp_input in = {.force = f};
-    static zp_result r;
+    zp_schedule sched = zp_schedule_sections(m->nsec, f, 0, 0);
+    zp_input in = {.sched = &sched};
+    zp_result r;
     for (int a = first_rtol; a < argc; a++) {
         double rtol = atof(argv[a]);
         zp_sim_opts o = {.method = method,

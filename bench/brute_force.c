@@ -9,8 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "cli.h"
-#include "sim.h"
+#include "setup.h"
 
 int main(int argc, char **argv) {
     if (argc < 3) {
@@ -20,20 +19,15 @@ int main(int argc, char **argv) {
     gsl_set_error_handler_off();
     double seconds = atof(argv[2]);
     unsigned long seed = argc > 3 ? strtoul(argv[3], NULL, 10) : 1;
-    zp_scene sc;
-    zp_model *m = zp_cli_load(argv[1], &sc);
-    zp_diag d;
-    zp_diag_init(&d);
-    zp_sim_opts o;
-    if (!m || zp_sim_opts_from_scene(&sc, &o, &d)) {
+    static zp_setup st; /* large: kept off the stack */
+    zp_overrides none = ZP_OVERRIDES_NONE;
+    if (zp_setup_load("brute_force", argv[1], &none, &st)) {
         return 2;
     }
-    o.method = zp_method_find(sc.search_method);
-    o.rtol = sc.search_rtol;
-    o.atol = sc.search_rtol / 100;
-    o.output_dt = 0;
-    o.track_loads = 0;
-    double limit = m->phi_max - sc.margin * M_PI / 180;
+    const zp_model *m = st.m;
+    const zp_sim_opts o = st.search;
+    const zp_schedule *box = &st.sched; /* [drive] min, max */
+    double limit = st.limit;
     int nt = omp_get_max_threads();
     zp_sim **sims = malloc(sizeof *sims * nt);
     for (int i = 0; i < nt; i++) {
@@ -47,13 +41,14 @@ int main(int argc, char **argv) {
         int id = omp_get_thread_num();
         gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
         gsl_rng_set(rng, seed * 1000 + id);
-        static zp_result rs[64];
-        zp_result *r = &rs[id];
-        double f[ZP_MAX_SECTIONS];
-        zp_input in = {.force = f};
+        zp_result res;
+        zp_result *r = &res;
+        zp_schedule sched = *box;
+        double *f = sched.p;
+        zp_input in = {.sched = &sched};
         while (omp_get_wtime() - t0 < seconds) {
-            for (int k = 0; k < m->nsec; k++) {
-                f[k] = sc.force_min + (sc.force_max - sc.force_min) * gsl_rng_uniform(rng);
+            for (int k = 0; k < sched.np; k++) {
+                f[k] = box->lo[k] + (box->hi[k] - box->lo[k]) * gsl_rng_uniform(rng);
             }
             total++;
             if (zp_sim_run(m, sims[id], &in, r) || r->outcome != ZP_OUTCOME_FINISHED) {

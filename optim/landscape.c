@@ -24,7 +24,9 @@ zp_status zp_landscape_sweep(const zp_model *m, const zp_sim_opts *o, const doub
             int t = omp_get_thread_num();
 #pragma omp for schedule(dynamic)
             for (int k = 0; k < n; k++) {
-                zp_input in = {.force = force + (size_t)k * m->nsec};
+                zp_schedule sched =
+                    zp_schedule_sections(m->nsec, force + (size_t)k * m->nsec, 0, 0);
+                zp_input in = {.sched = &sched};
                 zp_result *r = &res[t];
                 zp_landscape_point *p = &out[k];
                 p->failed = zp_sim_run(m, sims[t], &in, r) != ZP_OK;

@@ -64,18 +64,25 @@ double zp_objective_scenario_cons(const zp_objective *ob, const zp_eval *e) {
     return e->cons;
 }
 
-void zp_objective_eval(const zp_objective *ob, zp_sim *s, const double *force, zp_eval *e,
+zp_schedule zp_objective_schedule(const zp_objective *ob, const double *p) {
+    if (ob->shape) {
+        return zp_schedule_with(ob->shape, p);
+    }
+    return zp_schedule_sections(ob->m->nsec, p, -INFINITY, INFINITY);
+}
+
+void zp_objective_eval(const zp_objective *ob, zp_sim *s, const double *p, zp_eval *e,
                        zp_result *r) {
-    zp_input in = {.force = force};
+    zp_schedule sched = zp_objective_schedule(ob, p);
+    zp_input in = {.sched = &sched};
     zp_objective_eval_run(ob, ob->m, s, &in, e, r);
     if (ob->set && zp_objective_feasible(e)) {
         zp_scen_set *set = ob->set;
-        double f[ZP_MAX_SECTIONS];
         for (int i = 0; i < set->n; i++) {
             int j = set->order[i];
             zp_eval ej;
-            zp_scenario_forces(ob->m, &set->sc[j], force, f);
-            in = (zp_input){.force = f, .start = &set->start[j]};
+            in = (zp_input){.sched = &sched, .force_scale = set->sc[j].force,
+                            .start = &set->start[j]};
             zp_objective_eval_run(ob, &set->m[j], s, &in, &ej, r);
             double cons = zp_objective_scenario_cons(ob, &ej);
             e->cons = fmax(e->cons, cons);

@@ -1,5 +1,5 @@
-/* The search's view of one simulation (issue 4 "Objective and constraint"): a schedule of
-   forces in; the finish time and a continuous survival constraint out, always finite. */
+/* The search's view of one simulation (issue 4 "Objective and constraint"): a schedule's
+   parameters in; the finish time and a continuous survival constraint out, always finite. */
 #ifndef ZP_OBJECTIVE_H
 #define ZP_OBJECTIVE_H
 
@@ -26,15 +26,19 @@ typedef struct zp_objective {
     const zp_model *m; /* borrowed */
     double limit;      /* rad, largest |relative joint angle| allowed: death angle - margin */
     double t_max;      /* s, the stall time of the runs */
+    const zp_schedule *shape; /* borrowed: the kind the parameters fill; NULL: per-section
+                                 constants (N) */
     zp_limits lim;     /* [limits]; all 0: none */
     struct zp_scen_set *set; /* borrowed, NULL: the nominal scene only; else every candidate
                                 that survives the nominal scene is held to each scenario */
 } zp_objective;
 
-/* Runs force (N, per section) on the workspace s and scores it: in the nominal scene, then (a
-   survivor, with a set) in each scenario of the set in its order, stopping at the first that
-   breaks the margin or a limit; cons is the worst over the runs. r receives the last run. */
-void zp_objective_eval(const zp_objective *ob, zp_sim *s, const double *force, zp_eval *e,
+/* The schedule the search's parameters p stand for (ob->shape with p). */
+zp_schedule zp_objective_schedule(const zp_objective *ob, const double *p);
+/* Runs the schedule of parameters p on the workspace s and scores it: in the nominal scene,
+   then (a survivor, with a set) in each scenario of the set in its order, stopping at the first
+   that breaks the margin or a limit; cons is the worst over the runs. r receives the last run. */
+void zp_objective_eval(const zp_objective *ob, zp_sim *s, const double *p, zp_eval *e,
                        zp_result *r);
 /* One run of in on model m (ob->m or a scenario's model), scored without the set. */
 void zp_objective_eval_run(const zp_objective *ob, const zp_model *m, zp_sim *s,

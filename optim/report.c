@@ -11,12 +11,11 @@
 #define BRAKE_KMH 10     /* zip-line practice: arriving faster than this needs a brake */
 #define ACTIVE_KMH 24    /* ... and active brakes stop riders up to about this */
 
-void zp_report_write_schedule(FILE *f, const zp_scene *sc, const double *force,
+void zp_report_write_schedule(FILE *f, const zp_scene *sc, const zp_schedule *sched,
                               const char *comment) {
-    fprintf(f, "; %s\n; scene: %s\n[drive]\nforces = ", comment, sc->name);
-    for (int k = 0; k < sc->nsec; k++) {
-        fprintf(f, "%.17g%s", force[k], k + 1 < sc->nsec ? ", " : "\n");
-    }
+    char text[ZP_SCHED_MAX_PARAMS * 26];
+    zp_schedule_format(sched, text, sizeof text);
+    fprintf(f, "; %s\n; scene: %s\n[drive]\nforces = %s\n", comment, sc->name, text);
 }
 
 static double largest_angle(const zp_model *m, const zp_result *r) {
@@ -101,7 +100,7 @@ void zp_report_write_json(FILE *f, const zp_report *r) {
     fprintf(f, ",\n  \"evaluations\": %ld,\n  \"wall_s\": ", s->evals);
     zp_out_json_number(f, s->wall_s);
     fprintf(f, ",\n  \"algorithm\": \"%s\",\n  \"seed\": %lu,\n  \"interrupted\": %s", r->algo,
-            r->sc->seed, s->interrupted ? "true" : "false");
+            r->seed, s->interrupted ? "true" : "false");
     fputs(",\n  \"baseline\": ", f);
     if (s->base_found) {
         fputs("{\"force\": ", f);
@@ -188,7 +187,7 @@ static void md_survivable(FILE *f, const zp_report *r) {
                    "kept the margin, %d kept every limit; survivable (both) in %d, so the "
                    "probability of a survivable ride is at least **%.2f %%** (95 %% confidence, "
                    "Clopper-Pearson). Smallest margin seen: %.2f deg.\n",
-                c->samples, sc->rtol / ZP_VERIFY_TIGHTER, c->survived, c->margin_kept,
+                c->samples, r->v->rtol, c->survived, c->margin_kept,
                 c->limits_kept, c->all_kept, 100 * c->lower_95, c->worst_margin_deg);
     }
     if (r->rinfo->rounds > 0 && isfinite(w->cons)) {
@@ -233,22 +232,25 @@ void zp_report_write_md(FILE *f, const zp_report *r) {
     for (int k = 0; k < m->nsec; k++) {
         fprintf(f, "| %d | %g | %g | %.4f |\n", k + 1, m->xb[k], m->xb[k + 1], s->force[k]);
     }
-    fprintf(f, "\nDrive: %s; bounds [%g, %g] N.\n\n", zp_model_drive_name(m->drive),
-            sc->force_min, sc->force_max);
+    fprintf(f, "\nDrive: %s; bounds [%g, %g] N.\n\n", zp_drive_dir_name(m->drive),
+            r->shape->lo[0], r->shape->hi[0]);
 
     fputs("## Result\n\n", f);
     double err = fabs(run->time - v->tight->time);
     if (fin) {
-        fprintf(f, "Finish time: **%.4f s** (error estimate %.1e s: the same run at a 100x "
+        fprintf(f, "Finish time: **%.4f s** (error estimate %.1e s: the same run at a %gx "
                    "tighter tolerance finishes at %.6f s).\n",
-                run->time, err, v->tight->time);
+                run->time, err, ZP_ESTIMATE_FACTOR, v->tight->time);
     } else {
         fprintf(f, "Outcome: **%s** at t = %.4f s, x = %.2f m.\n", zp_sim_outcome_name(run->outcome),
                 run->time, run->x);
     }
-    fprintf(f, "Verification at rtol %.0e, atol %.0e: %s.\n\n", sc->rtol / 100, sc->atol / 100,
-            v->agree ? "same outcome, finish times agree within 1e-4 s, margin kept"
-                     : "**does not agree** (outcome, finish time or margin differ)");
+    fprintf(f, "Verification at rtol %.0e, atol %.0e: ", v->rtol, v->atol);
+    if (v->agree) {
+        fprintf(f, "same outcome, finish times agree within %g s, margin kept.\n\n", ZP_VERIFY_DT);
+    } else {
+        fputs("**does not agree** (outcome, finish time or margin differ).\n\n", f);
+    }
 
     fprintf(f, "## Margin per joint\n\nDeath at %g deg; the search keeps %g deg below it "
                "(limit %g deg).\n\n| joint | largest relative angle (deg) | margin (deg) |\n"
@@ -303,9 +305,10 @@ void zp_report_write_md(FILE *f, const zp_report *r) {
     } else {
         fputs("| t (s) | x (m) | sections | impulse (N s) | energy lost (J) |\n"
               "|---|---|---|---|---|\n", f);
-        int n = run->ncross < ZP_MAX_CROSSINGS ? run->ncross : ZP_MAX_CROSSINGS;
+        int n;
+        const zp_crossing *cross = zp_sim_crossings(r->best, &n);
         for (int i = 0; i < n; i++) {
-            const zp_crossing *c = &run->cross[i];
+            const zp_crossing *c = &cross[i];
             fprintf(f, "| %.4f | %g | %d -> %d | %.3f | %.2f |\n", c->t, c->x, c->from + 1,
                     c->to + 1, c->impulse, c->energy_lost);
         }
@@ -330,16 +333,16 @@ void zp_report_write_md(FILE *f, const zp_report *r) {
     }
 
     fputs("\n## Search\n\n", f);
-    fprintf(f, "- algorithm: %s, seed %lu, budget %ld simulations\n", r->algo, sc->seed,
-            sc->max_evals);
+    fprintf(f, "- algorithm: %s, seed %lu, budget %ld simulations\n", r->algo, r->seed,
+            r->max_evals);
     fprintf(f, "- simulations: %ld (%ld survived with the margin, %ld gave the integrator up) "
                "from %d local starts\n", s->evals, s->nfeasible, s->nfailed, s->nstarts);
     fprintf(f, "- wall time: %.2f s on %d threads (%.0f simulations/s)\n", s->wall_s,
             s->nthreads, s->evals / fmax(s->wall_s, 1e-9));
     fprintf(f, "- integrators: the search's runs %s at rtol %g, atol %g ([optimize]); the best\n"
-               "  schedule rerun with %s at rtol %g, atol %g ([solver]) and verified 100x tighter\n",
-            sc->search_method, sc->search_rtol, sc->search_rtol / 100, r->method, sc->rtol,
-            sc->atol);
+               "  schedule rerun with %s at rtol %g, atol %g ([solver]) and verified %gx tighter\n",
+            zp_method_get(r->search->method)->name, r->search->rtol, r->search->atol, r->method,
+            r->solver->rtol, r->solver->atol, ZP_ESTIMATE_FACTOR);
     if (s->nhist > 0) {
         fputs("- best finish time against simulations spent:", f);
         int step = s->nhist > 12 ? s->nhist / 12 : 1;

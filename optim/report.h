@@ -14,6 +14,7 @@ typedef struct zp_report {
     const zp_model *m;             /* borrowed */
     const zp_search_result *res;   /* borrowed */
     const zp_verify *v;            /* borrowed: v->run is the best run at the scene's tolerance */
+    const zp_sim *best;            /* borrowed: the workspace of v->run (its kink crossings) */
     const zp_result *study;        /* borrowed: the study's constant push, study_force */
     double study_force;            /* N */
     const char *algo;              /* strategy name */
@@ -21,6 +22,11 @@ typedef struct zp_report {
     const char *scene_arg;         /* the scene file as given, NULL: the built-in seed */
     const char *out_dir;
     int figures;                   /* 1: course, energy, angles, loads .png beside the report */
+    const zp_sim_opts *search;     /* borrowed: the options the search's runs used */
+    const zp_sim_opts *solver;     /* borrowed: those of the best run (v->run) */
+    const zp_schedule *shape;      /* borrowed: the kind and bounds res->force fills */
+    unsigned long seed;            /* the search's seed and budget, as they ran */
+    long max_evals;
     const zp_limits *lim;          /* borrowed: [limits], NULL or all 0: none */
     const zp_box *box;             /* borrowed, NULL: no [robust] */
     const zp_scen_set *set;        /* borrowed with box: the scenarios the answer is held to */
@@ -29,7 +35,7 @@ typedef struct zp_report {
 } zp_report;
 
 /* A schedule file: only [drive] forces (CONFIG.md), with comments saying what it is. */
-void zp_report_write_schedule(FILE *f, const zp_scene *sc, const double *force,
+void zp_report_write_schedule(FILE *f, const zp_scene *sc, const zp_schedule *sched,
                               const char *comment);
 void zp_report_write_json(FILE *f, const zp_report *r);
 void zp_report_write_md(FILE *f, const zp_report *r);

@@ -14,7 +14,7 @@
 #include <string.h>
 
 #include "state.h"
-#include "verify.h"
+#include "estimate.h"
 
 #define DEG (180.0 / M_PI)
 #define SOBOL_MAX_DIM 40     /* gsl_qrng_sobol's largest dimension */
@@ -223,19 +223,17 @@ static zp_status workers_make(workers *w, const zp_model *m, const zp_sim_opts *
     return ZP_OK;
 }
 
-/* force in the scenario at u, judged in full: *w filled; returns the constraint (deg) */
+/* sched in the scenario at u, judged in full: *w filled; returns the constraint (deg) */
 static double scen_judge(const zp_objective *ob, const zp_box *b, const zp_chain *c0,
-                         zp_sim *s, zp_result *r, const double *force, const double *u,
+                         zp_sim *s, zp_result *r, const zp_schedule *sched, const double *u,
                          zp_robust_worst *w) {
     zp_scenario sc;
     zp_model m;
     zp_chain start;
-    double f[ZP_MAX_SECTIONS];
     zp_box_scenario(b, u, &sc);
     zp_scenario_model(ob->m, &sc, &m);
     zp_scenario_start(c0, m.nlink, &sc, &start);
-    zp_scenario_forces(&m, &sc, force, f);
-    zp_input in = {.force = f, .start = &start};
+    zp_input in = {.sched = sched, .force_scale = sc.force, .start = &start};
     zp_eval e;
     zp_objective_eval_run(ob, &m, s, &in, &e, r);
     memcpy(w->u, u, sizeof *u * b->d);
@@ -261,7 +259,7 @@ typedef struct adv_ctx {
     const zp_chain *c0;
     zp_sim *s;
     zp_result *r;
-    const double *force;
+    const zp_schedule *sched;
     zp_robust_worst best;
     long sims;
 } adv_ctx;
@@ -271,7 +269,7 @@ static double adv_obj(unsigned n, const double *u, double *grad, void *data) {
     (void)n;
     (void)grad;
     zp_robust_worst w;
-    double c = scen_judge(a->ob, a->b, a->c0, a->s, a->r, a->force, u, &w);
+    double c = scen_judge(a->ob, a->b, a->c0, a->s, a->r, a->sched, u, &w);
     a->sims++;
     if (c > a->best.cons) {
         a->best = w;
@@ -281,8 +279,9 @@ static double adv_obj(unsigned n, const double *u, double *grad, void *data) {
 
 /* the worst scenario of force found in the box: ADV_POINTS seeded random points in parallel,
    the worst ADV_POLISH of them polished by BOBYQA (the box's corners included as points) */
-static void adversary(const zp_objective *ob, const zp_box *b, workers *w, const double *force,
+static void adversary(const zp_objective *ob, const zp_box *b, workers *w, const double *p,
                       unsigned long seed, int round, zp_robust_worst *worst, long *sims) {
+    zp_schedule sched = zp_objective_schedule(ob, p);
     int d = b->d, npt = ADV_POINTS;
     double *u = malloc(sizeof *u * npt * d);
     zp_robust_worst *pw = malloc(sizeof *pw * npt);
@@ -300,7 +299,7 @@ static void adversary(const zp_objective *ob, const zp_box *b, workers *w, const
 #pragma omp parallel for num_threads(w->n) schedule(dynamic, 1)
     for (int i = 0; i < npt; i++) {
         int t = omp_get_thread_num();
-        scen_judge(ob, b, &c0, w->sim[t], w->r[t], force, u + (size_t)i * d, &pw[i]);
+        scen_judge(ob, b, &c0, w->sim[t], w->r[t], &sched, u + (size_t)i * d, &pw[i]);
     }
     *sims += npt;
     int top[ADV_POLISH];
@@ -325,7 +324,7 @@ static void adversary(const zp_objective *ob, const zp_box *b, workers *w, const
         hi[c] = 1;
     }
     for (int k = 0; k < ADV_POLISH; k++) {
-        adv_ctx a = {ob, b, &c0, w->sim[0], w->r[0], force, pw[top[k]], 0};
+        adv_ctx a = {ob, b, &c0, w->sim[0], w->r[0], &sched, pw[top[k]], 0};
         nlopt_opt opt = nlopt_create(d > 1 ? NLOPT_LN_BOBYQA : NLOPT_LN_COBYLA, d);
         double x[ZP_BOX_MAX], val;
         memcpy(x, pw[top[k]].u, sizeof *x * d);
@@ -384,8 +383,9 @@ zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts 
 }
 
 zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
-                           const double *force, int n, unsigned long seed, int nthreads,
+                           const double *p, int n, unsigned long seed, int nthreads,
                            zp_robust_check *c) {
+    zp_schedule sched = zp_objective_schedule(ob, p);
     memset(c, 0, sizeof *c);
     c->samples = n;
     c->worst_margin_deg = INFINITY;
@@ -408,7 +408,7 @@ zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim
 #pragma omp parallel for num_threads(w.n) schedule(dynamic, 4)
     for (int i = 0; i < n; i++) {
         int t = omp_get_thread_num();
-        scen_judge(ob, b, &c0, w.sim[t], w.r[t], force, u + (size_t)i * b->d, &pw[i]);
+        scen_judge(ob, b, &c0, w.sim[t], w.r[t], &sched, u + (size_t)i * b->d, &pw[i]);
     }
     for (int i = 0; i < n; i++) {
         int fin = pw[i].outcome == ZP_OUTCOME_FINISHED;
@@ -431,20 +431,13 @@ zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim
 }
 
 zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_model *m,
-                          const zp_sim_opts *so, zp_sim_opts *fast) {
+                          double limit, const zp_schedule *shape, const zp_sim_opts *so,
+                          const zp_sim_opts *search, zp_sim_opts *fast) {
     memset(p, 0, sizeof *p);
-    p->ob = (zp_objective){.m = m, .limit = m->phi_max - sc->margin * M_PI / 180,
-                            .t_max = so->t_max};
+    p->ob = (zp_objective){.m = m, .limit = limit, .t_max = so->t_max, .shape = shape};
     zp_limits_from_scene(sc, &p->ob.lim);
-    /* the search runs without trajectories or sampled load peaks: faster, and only the best
-       run needs them; ranking schedules needs ~1e-6 s, not the scene's accuracy */
-    *fast = *so;
-    fast->output_dt = 0;
-    fast->track_loads = 0;
+    *fast = *search;
     fast->peaks = zp_limits_need_peaks(&p->ob.lim);
-    fast->method = zp_method_find(sc->search_method);
-    fast->rtol = sc->search_rtol;
-    fast->atol = sc->search_rtol / 100;
     zp_box_from_scene(sc, m, &p->box);
     p->robust = sc->robust && p->box.d > 0;
     if (p->robust && zp_scen_set_build(&p->set, &p->box, m, sc->robust_samples, sc->seed)) {
@@ -455,17 +448,15 @@ zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_mod
 }
 
 zp_status zp_robust_solve(zp_robust_problem *p, const zp_scene *sc, const zp_sim_opts *so,
-                          const zp_sim_opts *fast, const zp_search_opts *o,
+                          const zp_sim_opts *fast, double lo, double hi, const zp_search_opts *o,
                           zp_search_result *res, char *err, size_t errlen) {
-    zp_status st = zp_robust_search(&p->ob, &p->box, fast, sc->force_min, sc->force_max, o,
+    zp_status st = zp_robust_search(&p->ob, &p->box, fast, lo, hi, o,
                                     p->robust ? ZP_ROBUST_ROUNDS : 1, res, &p->info, err,
                                     errlen);
     if (st || !p->robust || res->interrupted) {
         return st;
     }
-    zp_sim_opts to = *so;
-    to.rtol /= ZP_VERIFY_TIGHTER;
-    to.atol /= ZP_VERIFY_TIGHTER;
+    zp_sim_opts to = zp_estimate_tighter(so);
     to.output_dt = 0;
     to.track_loads = 0;
     to.peaks = fast->peaks;

@@ -85,12 +85,12 @@ zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts 
                            double hi, const zp_search_opts *o, int max_rounds,
                            zp_search_result *res, zp_robust_info *info, char *err,
                            size_t errlen);
-/* force checked on n fresh scenarios of b with workspaces from so (the caller passes the
+/* The schedule of parameters p checked on n fresh scenarios of b with workspaces from so (the caller passes the
    tighter verification tolerance); nthreads 0: OpenMP's default. Scenario i is the point of
    coordinates 2 U - 1, U the next b->d uniforms of gsl_rng_mt19937 seeded with
    seed ^ ZP_ROBUST_STREAM_VERIFY (a stream apart from the set's and the adversary's). */
 zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
-                           const double *force, int n, unsigned long seed, int nthreads,
+                           const double *p, int n, unsigned long seed, int nthreads,
                            zp_robust_check *c);
 /* A scene's problem as the search sees it: the objective (margin, limits, and the set when
    the scene has [robust] ranges), the box and the set, then what the robust search found. */
@@ -105,14 +105,17 @@ typedef struct zp_robust_problem {
 
 #define ZP_ROBUST_ROUNDS 4 /* searches at most: the adversary adds up to 3 scenarios */
 
-/* p for sc and m; fast = so as the search runs it ([optimize] method and rtol, no trajectory,
-   exact peaks when a limit needs them). ZP_OK or ZP_ERR_NOMEM. */
+/* p for sc and m: the objective (limit: rad, the largest joint angle allowed; shape: the
+   schedule kind the parameters fill; t_max of the [solver] options so), and fast = search (the
+   search's runs) with exact load peaks when a limit needs them. ZP_OK or ZP_ERR_NOMEM. */
 zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_model *m,
-                          const zp_sim_opts *so, zp_sim_opts *fast);
-/* The (robust) search with the adversary, then, unless interrupted, the answer verified on
-   sc->verify_samples fresh scenarios at so's tolerance made ZP_VERIFY_TIGHTER times tighter. */
+                          double limit, const zp_schedule *shape, const zp_sim_opts *so,
+                          const zp_sim_opts *search, zp_sim_opts *fast);
+/* The (robust) search over [lo, hi] with the adversary, then, unless interrupted, the answer
+   verified on sc->verify_samples fresh scenarios at so's tolerance made tighter as
+   zp_estimate_tighter does. */
 zp_status zp_robust_solve(zp_robust_problem *p, const zp_scene *sc, const zp_sim_opts *so,
-                          const zp_sim_opts *fast, const zp_search_opts *o,
+                          const zp_sim_opts *fast, double lo, double hi, const zp_search_opts *o,
                           zp_search_result *res, char *err, size_t errlen);
 void zp_robust_problem_free(zp_robust_problem *p);
 

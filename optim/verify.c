@@ -70,11 +70,9 @@ zp_status zp_verify_run(const zp_objective *ob, const zp_sim_opts *so, const dou
     int nsec = m->nsec;
     memset(v, 0, sizeof *v);
     *sim_out = NULL;
-    zp_sim_opts to = *so;
-    to.rtol /= ZP_VERIFY_TIGHTER;
-    to.atol /= ZP_VERIFY_TIGHTER;
-    to.output_dt = 0;
-    to.track_loads = 0;
+    zp_sim_opts to = zp_estimate_tighter(so);
+    v->rtol = to.rtol;
+    v->atol = to.atol;
     v->run = malloc(sizeof *v->run);
     v->tight = malloc(sizeof *v->tight);
     zp_sim *s = zp_sim_create(m, so), *st = zp_sim_create(m, &to);
@@ -85,7 +83,8 @@ zp_status zp_verify_run(const zp_objective *ob, const zp_sim_opts *so, const dou
         return ZP_ERR_NOMEM;
     }
     *sim_out = s;
-    zp_input in = {.force = force};
+    zp_schedule sched = zp_objective_schedule(ob, force);
+    zp_input in = {.sched = &sched};
     if (zp_sim_run(m, s, &in, v->run) || zp_sim_run(m, st, &in, v->tight)) {
         snprintf(err, errlen, "re-running the best schedule: %s",
                  v->run->message[0] ? v->run->message : v->tight->message);

@@ -5,6 +5,7 @@
 
 #include <signal.h>
 
+#include "estimate.h"
 #include "objective.h"
 
 #define ZP_VERIFY_LEVELS 2 /* perturbation levels: +/-2 % and +/-5 % */
@@ -18,7 +19,8 @@ typedef struct zp_robust {
 
 typedef struct zp_verify {
     zp_result *run;   /* owned: the schedule at the scene's tolerance, with its trajectory */
-    zp_result *tight; /* owned: the same at rtol/100, atol/100 */
+    zp_result *tight; /* owned: the same at rtol, atol (zp_estimate_tighter) */
+    double rtol, atol; /* of the tighter run */
     int agree;        /* same outcome, finish times within ZP_VERIFY_DT, margin kept */
     zp_robust rob[ZP_VERIFY_LEVELS];
     int robust_done;  /* robustness was measured (not when interrupted) */
@@ -27,8 +29,6 @@ typedef struct zp_verify {
     int kill_section; /* 1-based section whose change alone kills at `kill`, 0: a random mix */
 } zp_verify;
 
-#define ZP_VERIFY_TIGHTER 100 /* tolerance factor of the verification runs */
-#define ZP_VERIFY_DT 1e-4 /* s: finish times at the two tolerances must agree to this */
 
 /* Checks force (N per section) with fresh workspaces from so; trajectory rows of v->run stay
    in *sim_out (owned by the caller, freed with zp_sim_free). robust = 0 skips robustness.

@@ -182,6 +182,86 @@ static void test_configs(void) {
     CHECK_NEAR(inertia, 15.0 * 5 * 5 / 12, 1e-5 * 31.25);
 }
 
+/* `check` shows slopes as numbers (x/5: f' = 0.2, f'' = 0), every key it added with the value
+   taken (CONFIG.md's defaults), and warns on stderr about a force the search could not pick */
+static void test_check_shows(void) {
+    char text[1024], path[1024], args[2048];
+    snprintf(text, sizeof text, "%s[drive]\nforces = 600\n[solver]\natol = 1e-9\n", valid);
+    snprintf(path, sizeof path, "%s/shows.ini", tmp);
+    write_file(path, text);
+    snprintf(args, sizeof args, "check '%s'", path);
+    CHECK(run(args) == 0);
+    CHECK(strstr(out, "at x = 10: f = 2 m, f' = 0.2, f'' = 0 1/m") != NULL);
+    CHECK(strstr(out, "[solver] rtol = 1e-08\n") && strstr(out, "[body] death_angle = 180\n") &&
+          strstr(out, "[drive] max = 500\n") && strstr(out, "[optimize] margin = 10\n") &&
+          strstr(out, "[limits]: none given"));
+    CHECK(!strstr(out, "[solver] atol") && !strstr(out, "[drive] forces =")); /* given */
+    CHECK(strstr(err, "shows.ini:10: [drive] forces: warning: item 1 (600) is outside") != NULL);
+    if (!strstr(err, "warning")) {
+        fprintf(stderr, "  stdout:\n%s  stderr:\n%s", out, err);
+    }
+    /* the boundary height printed (sqrt(10): many digits), typed back as the next section, is
+       within the continuity tolerance */
+    const char *rest = strstr(valid, "[trolley]");
+    snprintf(text, sizeof text,
+             "[course]\nx_start = 1\nsection = 10 : sqrt(x)\nsection = 20 : sqrt(10) + 0*x\n%s", rest);
+    write_file(path, text);
+    run(args);
+    const char *y = strstr(out, "x = 10 m, y = ");
+    char typed[64] = "";
+    CHECK(y && sscanf(y + strlen("x = 10 m, y = "), "%63[0-9.]", typed) == 1);
+    snprintf(text, sizeof text,
+             "[course]\nx_start = 1\nsection = 10 : sqrt(x)\nsection = 20 : %s\n%s", typed, rest);
+    write_file(path, text);
+    CHECK(run(args) == 0 && strlen(typed) > 8);
+}
+
+/* one round names every problem: the reader's, the registries' ([solver] and [optimize]
+   method) and the command line's, in every command, before anything runs */
+static void test_all_at_once(void) {
+    char scene[1024], args[4096], fresh[1024];
+    snprintf(scene, sizeof scene, "%s/many.ini", tmp);
+    snprintf(fresh, sizeof fresh, "%s/out_many", tmp);
+    char text[2048];
+    snprintf(text, sizeof text,
+             "%s[solver]\nmethod = rk45\nformulation = hamilton\n[optimize]\nmethod = euler\n",
+             valid);
+    write_file(scene, text);
+    static const char *const commands[] = {"check '%s'", "simulate '%s' --out '%s'",
+                                           "'%s' --out '%s'", "landscape '%s' --out '%s'"};
+    static const char *const want[] = {":10: [solver] method: unknown method 'rk45'",
+                                       ":11: [solver] formulation: unknown formulation 'hamilton'",
+                                       ":13: [optimize] method: unknown method 'euler'"};
+    for (size_t k = 0; k < sizeof commands / sizeof *commands; k++) {
+        snprintf(args, sizeof args, commands[k], scene, fresh);
+        CHECK(run(args) == 2);
+        for (size_t i = 0; i < sizeof want / sizeof *want; i++) {
+            if (!strstr(err, want[i])) {
+                fprintf(stderr, "  zipopt %s: `%s` missing from:\n%s", args, want[i], err);
+                CHECK(0);
+            }
+        }
+        CHECK(strstr(err, "3 errors; nothing was written") != NULL);
+        CHECK(untouched(fresh));
+    }
+    /* a reader's problem and a registry name together */
+    snprintf(text, sizeof text,
+             "[course]\nx_start = 0\nsection = 10 : x/5\n[trolley]\n"
+             "mass = -10\n[body]\nlengths = 1\nmasses = 2\n"
+             "[solver]\nmethod = rk45\n");
+    write_file(scene, text);
+    snprintf(args, sizeof args, "simulate '%s' --out '%s'", scene, fresh);
+    CHECK(run(args) == 2);
+    CHECK(strstr(err, ":5: [trolley] mass:") && strstr(err, ":10: [solver] method:"));
+    /* and a bad --force with a bad registry name */
+    snprintf(text, sizeof text, "%s[solver]\nmethod = rk45\n", valid);
+    write_file(scene, text);
+    snprintf(args, sizeof args, "simulate '%s' --force 1,2 --out '%s'", scene, fresh);
+    CHECK(run(args) == 2);
+    CHECK(strstr(err, "--force: 2 values, expected 1") && strstr(err, "[solver] method:"));
+    CHECK(untouched(fresh));
+}
+
 int main(void) {
     snprintf(tmp, sizeof tmp, "%s/zp_cli_XXXXXX", getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp");
     if (!mkdtemp(tmp)) {
@@ -190,6 +270,8 @@ int main(void) {
     }
     test_bad_scenes();
     test_configs();
+    test_check_shows();
+    test_all_at_once();
     char cmd[1100];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp);
     CHECK(system(cmd) == 0);

@@ -48,7 +48,8 @@ int main(void) {
     zp_model *m = tu_seed_model(&sc);
     zp_sim_opts o = tu_opts(&sc, sc.rtol);
     o.atol = sc.atol;
-    zp_input in = {.force = sc.forces};
+    zp_schedule in_sched = tu_sched(m, sc.forces);
+    zp_input in = {.sched = &in_sched};
     const zp_result *r = tu_run(m, &o, &in);
     CHECK(!strcmp(outcome, zp_sim_outcome_name(r->outcome)));
     CHECK(t == r->time);
@@ -68,7 +69,7 @@ int main(void) {
              ZP_EXE, ZP_SOURCE_DIR, path, dir);
     CHECK(run(cmd) == 0);
     double f10[3] = {10, 10, 10};
-    in.force = f10;
+    in_sched = tu_sched(m, f10);
     r = tu_run(m, &o, &in);
     char expect[64];
     snprintf(expect, sizeof expect, "\"time\": %.17g,", r->time);

@@ -19,8 +19,8 @@ static void check_track(zp_track t, double f, double fp, double fpp) {
 
 static void test_seed_course(void) {
     const char *expr[] = {"(x/10 - 3)^2 + 1", "-x/10 + 16", "-(x/10 - 12)^2 + 10"};
-    char err[256] = "";
-    zp_course *c = zp_course_create(3, expr, err, sizeof err);
+    zp_course_err e;
+    zp_course *c = zp_course_create(3, expr, &e);
     CHECK(c != NULL);
     if (!c) {
         return;
@@ -51,11 +51,11 @@ static void test_functions(void) {
         "2*cosh(x/4) - 3*sin(2*x)",     "sqrt(1 + x^2) + exp(-x/3)", "log(2 + x) + tan(x/5)",
         "tanh(x) + sinh(x/2) * cos(x)", "1.5e-3*x^3 + 2E+1",
     };
-    char err[256] = "";
-    zp_course *c = zp_course_create(5, expr, err, sizeof err);
+    zp_course_err e;
+    zp_course *c = zp_course_create(5, expr, &e);
     CHECK(c != NULL);
     if (!c) {
-        fprintf(stderr, "%s\n", err);
+        fprintf(stderr, "%s\n", e.what);
         return;
     }
     const double xs[] = {0.3, 1, 2.5, 4};
@@ -88,9 +88,9 @@ static void test_bad(const char *bad, const char *why_part) {
         CHECK(0);
     }
     const char *expr[] = {"x", bad};
-    err[0] = '\0';
-    CHECK(zp_course_create(2, expr, err, sizeof err) == NULL);
-    CHECK(strstr(err, "section 2") != NULL);
+    zp_course_err e;
+    CHECK(zp_course_create(2, expr, &e) == NULL);
+    CHECK(e.section == 2 && strstr(e.what, "section 2") != NULL);
 }
 
 int main(void) {

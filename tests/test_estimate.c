@@ -18,7 +18,8 @@ static zp_outcome outcome_at(const zp_model *m, zp_sim_opts o, double force) {
     for (int k = 0; k < m->nsec; k++) {
         f[k] = force;
     }
-    zp_input in = {.force = f};
+    zp_schedule in_sched = tu_sched(m, f);
+    zp_input in = {.sched = &in_sched};
     return tu_run(m, &o, &in)->outcome;
 }
 
@@ -36,8 +37,9 @@ int main(void) {
     zp_scene sc;
     zp_model *m = tu_seed_model(&sc);
     CHECK(m != NULL);
-    double force[ZP_MAX_SECTIONS] = {10, 10, 10};
-    zp_input in = {.force = force};
+    zp_schedule in_sched = tu_sched(m, (double[3]){10, 10, 10});
+    double *force = in_sched.p; /* the schedule's forces, changed below */
+    zp_input in = {.sched = &in_sched};
 
     /* the estimate against the true error, for two tolerances */
     zp_sim_opts o = tu_opts(&sc, 1e-13);
@@ -80,6 +82,30 @@ int main(void) {
     r = *tu_run(m, &loose, &in);
     zp_estimate_run(m, &loose, &in, &r, &e);
     CHECK(e.ok && !e.sensitive && r.outcome == ZP_OUTCOME_DIED);
+
+    /* at the rtol floor the tighter run still tightens atol by the whole factor */
+    o = tu_opts(&sc, ZP_ESTIMATE_RTOL_MIN);
+    r = *tu_run(m, &o, &in);
+    zp_estimate_run(m, &o, &in, &r, &e);
+    CHECK(e.rtol == ZP_ESTIMATE_RTOL_MIN && e.atol == o.atol / ZP_ESTIMATE_FACTOR);
+
+    /* the energy audit (MODEL.md) of the answer: small at the default tolerances, flagged at
+       the loosest the scene allows (rtol 1e-2, atol 1: a drift of 1 m or 1 rad per step) */
+    for (int k = 0; k < m->nsec; k++) {
+        force[k] = 10;
+    }
+    for (int loose_run = 0; loose_run < 2; loose_run++) {
+        o = tu_opts(&sc, loose_run ? 1e-2 : 1e-8);
+        o.atol = loose_run ? 1 : 1e-10;
+        r = *tu_run(m, &o, &in);
+        zp_estimate_run(m, &o, &in, &r, &e);
+        double audit = r.e_final - r.e_initial - r.w_drive + r.w_damp + r.e_impulse;
+        double scale = fabs(r.e_initial) + fabs(r.e_final) + fabs(r.w_drive) + fabs(r.w_damp) +
+                       fabs(r.e_impulse);
+        CHECK(e.ok && e.energy_residual == audit);
+        CHECK(e.energy_large == loose_run);
+        CHECK(loose_run ? fabs(audit) > 1e-2 * scale : fabs(audit) < 1e-6 * scale);
+    }
     zp_model_free(m);
     return CHECK_DONE();
 }

@@ -68,7 +68,8 @@ static const zp_result *run_case(const xcase *c, zp_status *st, double *wall) {
     o.max_steps = STEP_BUDGET;
     zp_sim *s = zp_sim_create(m, &o);
     CHECK(s != NULL);
-    zp_input in = {.force = sc.forces};
+    zp_schedule in_sched = tu_sched(m, sc.forces);
+    zp_input in = {.sched = &in_sched};
     struct timespec t0, t1;
     clock_gettime(CLOCK_MONOTONIC, &t0);
     *st = zp_sim_run(m, s, &in, &r);

@@ -235,7 +235,8 @@ static void test_figures(void) {
     zp_sim *s = zp_sim_create(m, &o);
     static zp_result r;
     double force[3] = {20, 20, 20};
-    zp_input in = {.force = force};
+    zp_schedule in_sched = tu_sched(m, force);
+    zp_input in = {.sched = &in_sched};
     CHECK(s && zp_sim_run(m, s, &in, &r) == ZP_OK);
     CHECK(r.outcome == ZP_OUTCOME_FINISHED);
     int n;
@@ -250,11 +251,11 @@ static void test_figures(void) {
     po.fps = 10;
     po.speedup = 4;
     po.margin = 10 * M_PI / 180;
-    po.force = force;
+    po.sched = &in_sched;
     char dir[1024], e[2048];
     snprintf(dir, sizeof dir, "%s/figs", tmp);
     zp_plot_info info;
-    CHECK(zp_plot_run(dir, m, rows, n, &r, &po, &info, e, sizeof e) == ZP_OK);
+    CHECK(zp_plot_run(dir, m, s, &r, &po, &info, e, sizeof e) == ZP_OK);
     CHECK(!info.no_gnuplot);
     CHECK(info.nframe == 4 && info.nskipped == 0);
     /* the animation: every speedup/fps seconds of the run, plus its last instant */
@@ -317,7 +318,7 @@ static void test_figures(void) {
     setenv("PATH", fake, 1);
     snprintf(dir, sizeof dir, "%s/figs_fail", tmp);
     po.animate = 0;
-    CHECK(zp_plot_run(dir, m, rows, n, &r, &po, &info, e, sizeof e) == ZP_ERR_IO);
+    CHECK(zp_plot_run(dir, m, s, &r, &po, &info, e, sizeof e) == ZP_ERR_IO);
     CHECK(strstr(e, "no such terminal") != NULL);
     setenv("PATH", saved, 1);
     free(saved);
@@ -327,7 +328,7 @@ static void test_figures(void) {
     zp_plot_opts late = po;
     CHECK(zp_plot_parse_frames(m, "t=1,1000", &late, why, sizeof why) == 0);
     snprintf(dir, sizeof dir, "%s/figs_late", tmp);
-    CHECK(zp_plot_run(dir, m, rows, n, &r, &late, &info, e, sizeof e) == ZP_OK);
+    CHECK(zp_plot_run(dir, m, s, &r, &late, &info, e, sizeof e) == ZP_OK);
     CHECK(info.nframe == 1 && info.nskipped == 1);
     CHECK(exists(dir, "frame_t1.png") && !exists(dir, "frame_t1000.png"));
     zp_sim_free(s);
@@ -343,17 +344,16 @@ static void test_frame_geometry(void) {
     zp_sim *s = zp_sim_create(m, &o);
     static zp_result r;
     double force[3] = {100, 100, 100};
-    zp_input in = {.force = force};
+    zp_schedule in_sched = tu_sched(m, force);
+    zp_input in = {.sched = &in_sched};
     CHECK(s && zp_sim_run(m, s, &in, &r) == ZP_OK);
-    int n;
-    const zp_row *rows = zp_sim_rows(s, &n);
     zp_plot_opts po;
     zp_plot_opts_default(&po);
     char why[256], dir[1024], e[2048];
     CHECK(zp_plot_parse_frames(m, "x=20", &po, why, sizeof why) == 0);
     snprintf(dir, sizeof dir, "%s/figs20", tmp);
     zp_plot_info info;
-    CHECK(zp_plot_run(dir, m, rows, n, &r, &po, &info, e, sizeof e) == ZP_OK);
+    CHECK(zp_plot_run(dir, m, s, &r, &po, &info, e, sizeof e) == ZP_OK);
     check_frame_data(dir, m, 20);
     check_png(dir, "frame_x20.png", 640, 640);
     zp_sim_free(s);
@@ -416,7 +416,8 @@ static void test_landscape(void) {
     zp_landscape_point pt[NP];
     CHECK(zp_landscape_sweep(m, &o, force, NP, pt, NULL, NULL) == ZP_OK);
     for (int k = 0; k < NP; k++) {
-        zp_input in = {.force = force + 3 * k};
+        zp_schedule in_sched = tu_sched(m, force + 3 * k);
+        zp_input in = {.sched = &in_sched};
         const zp_result *r = tu_run(m, &o, &in);
         CHECK(!pt[k].failed);
         CHECK(pt[k].outcome == r->outcome);
@@ -459,7 +460,8 @@ static void test_landscape(void) {
     csv = slurp(dir, "landscape_slice.csv");
     CHECK(csv && !strncmp(csv, "f1,f2,outcome", 13));
     double cell[3] = {10, 25, sc.forces[2]};
-    zp_input in = {.force = cell};
+    zp_schedule in_sched = tu_sched(m, cell);
+    zp_input in = {.sched = &in_sched};
     const zp_result *r = tu_run(m, &o, &in);
     char want[64];
     snprintf(want, sizeof want, "\n10,25,%s,", zp_sim_outcome_name(r->outcome));

@@ -94,8 +94,8 @@ static void hanging_chain(void) {
     zp_chain c0, c;
     zp_state_start(m, m->course, &c0);
     zp_scenario_start(&c0, 3, &s, &c);
-    double f[1] = {F};
-    zp_input in = {.force = f, .start = &c};
+    zp_schedule sch = tu_sched(m, &F);
+    zp_input in = {.sched = &sch, .start = &c};
     const zp_result *r = tu_run(m, &o, &in);
     CHECK(r->outcome == ZP_OUTCOME_STALLED && r->stall == ZP_STALL_T_MAX);
     double below[3] = {22, 7, 2};
@@ -116,8 +116,8 @@ static void kink_dv(void) {
     zp_scene sc;
     zp_model *m = tu_model(kink, &sc);
     zp_sim_opts o = tu_opts(&sc, 1e-10);
-    double f[2] = {0, 0};
-    zp_input in = {.force = f};
+    zp_schedule sch = tu_sched(m, (double[2]){0, 0});
+    zp_input in = {.sched = &sch};
     const zp_result *r = tu_run(m, &o, &in);
     double v = sqrt(2 * 9.81 * 2); /* 2 m down to the kink */
     CHECK(r->ncross == 1);
@@ -135,8 +135,8 @@ static void exact_peaks(void) {
     zp_scene sc;
     zp_model *m = tu_model(tu_swing, &sc);
     zp_sim_opts o = tu_opts(&sc, 1e-10);
-    double f[1] = {150};
-    zp_input in = {.force = f};
+    zp_schedule sch = tu_sched(m, (double[1]){150});
+    zp_input in = {.sched = &sch};
     o.output_dt = 1e-4;
     o.track_loads = 0;
     zp_load_peaks fine = tu_run(m, &o, &in)->peaks;
@@ -156,8 +156,10 @@ static void exact_peaks(void) {
 
 /* the largest push that keeps the margin, by bisection with the simulator alone */
 static double largest_push(const zp_model *m, const zp_sim_opts *o, double limit) {
-    double lo = 0, hi = 400, f[1];
-    zp_input in = {.force = f};
+    double lo = 0, hi = 400;
+    zp_schedule sch = tu_sched(m, (double[1]){0});
+    double *f = sch.p; /* the schedule's one force, set below */
+    zp_input in = {.sched = &sch};
     while (hi - lo > 1e-7) {
         f[0] = 0.5 * (lo + hi);
         const zp_result *r = tu_run(m, o, &in);
@@ -195,8 +197,9 @@ static void monotone(void) {
     sc.robust_samples = 8;
     zp_robust_info info;
     robust_search(&ob, &sc, &o, 2, &res, &info);
-    double f[1] = {top / (1 + p)};
-    zp_input in = {.force = f};
+    zp_schedule sch = tu_sched(m, (double[1]){top / (1 + p)});
+    double *f = sch.p;
+    zp_input in = {.sched = &sch};
     double t_rob = tu_run(m, &o, &in)->time;
     CHECK(res.found);
     CHECK_NEAR(res.best.time, t_rob, BOUND_TOL);

@@ -4,7 +4,10 @@
 #include <stdio.h>
 #include <string.h>
 
+#include <math.h>
+
 #include "check.h"
+#include "model.h"
 #include "scene_read.h"
 
 /* a small valid scene; cases replace one of its lines (1-based) */
@@ -405,6 +408,227 @@ static void test_seed(void) {
     }
 }
 
+/* [limits]: each a positive ceiling when given, off (0) when not */
+static void test_limits(void) {
+    BAD(17, "margin = 10\n[limits]\nmax_g = 0", 19, "limits", "max_g");
+    BAD(17, "margin = 10\n[limits]\nmax_g = -6", 19, "limits", "max_g");
+    BAD(17, "margin = 10\n[limits]\nmax_joint_force = 0", 19, "limits", "max_joint_force");
+    BAD(17, "margin = 10\n[limits]\nmax_arrival_speed = -1", 19, "limits", "max_arrival_speed");
+    BAD(17, "margin = 10\n[limits]\nmax_kink_dv = 0", 19, "limits", "max_kink_dv");
+    BAD_HINT(17, "margin = 10\n[limits]\nmax_gee = 6", 19, "limits", "max_gee", "`max_g`");
+    zp_scene sc;
+    GOOD(0, "", &sc);
+    CHECK(sc.max_g == 0 && sc.max_joint_force == 0 && sc.max_arrival_speed == 0 &&
+          sc.max_kink_dv == 0);
+    GOOD(17,
+         "margin = 10\n[limits]\nmax_g = 6\nmax_joint_force = 3000\nmax_arrival_speed = 24\n"
+         "max_kink_dv = 8",
+         &sc);
+    CHECK(sc.max_g == 6 && sc.max_joint_force == 3000 && sc.max_arrival_speed == 24 &&
+          sc.max_kink_dv == 8);
+}
+
+/* [robust]: percentages, ranges lo <= hi, angles below 90, counts >= 1 */
+static void test_robust(void) {
+    BAD_HINT(17, "margin = 10\n[robust]\nforce_error = 100", 19, "robust", "force_error",
+             "[0, 100)");
+    BAD(17, "margin = 10\n[robust]\nforce_error = -1", 19, "robust", "force_error");
+    BAD_HINT(17, "margin = 10\n[robust]\nmass_range = 120, 80", 19, "robust", "mass_range",
+             "reversed");
+    BAD(17, "margin = 10\n[robust]\nlength_range = 0, 110", 19, "robust", "length_range");
+    BAD(17, "margin = 10\n[robust]\ntrolley_mass_range = -5, 110", 19, "robust",
+        "trolley_mass_range");
+    BAD_HINT(17, "margin = 10\n[robust]\ndamping_range = 50", 19, "robust", "damping_range",
+             "1 value, expected 2");
+    BAD(17, "margin = 10\n[robust]\ndamping_range = 50, 100, 200", 19, "robust", "damping_range");
+    BAD(17, "margin = 10\n[robust]\nstart_angle = 90", 19, "robust", "start_angle");
+    BAD(17, "margin = 10\n[robust]\nstart_angle = -1", 19, "robust", "start_angle");
+    BAD(17, "margin = 10\n[robust]\nsamples = 0", 19, "robust", "samples");
+    BAD(17, "margin = 10\n[robust]\nverify_samples = 0", 19, "robust", "verify_samples");
+    BAD(17, "margin = 10\n[robust]\nsamples = 2.5", 19, "robust", "samples");
+
+    zp_scene sc;
+    GOOD(0, "", &sc);
+    CHECK(sc.robust == 0 && sc.force_error == 0 && sc.mass_range[0] == 100 &&
+          sc.mass_range[1] == 100 && sc.robust_samples == 64 && sc.verify_samples == 2000);
+    GOOD(17, "margin = 10\n[robust]", &sc); /* the section alone asks for a robust search */
+    CHECK(sc.robust == 1);
+    GOOD(17,
+         "margin = 10\n[robust]\nforce_error = 99.5\nmass_range = 80, 120\nlength_range = 90, "
+         "90\ntrolley_mass_range = 90, 110\ndamping_range = 50, 200\nstart_angle = 89.9\n"
+         "samples = 1\nverify_samples = 1",
+         &sc);
+    CHECK(sc.robust == 1 && sc.force_error == 99.5 && sc.mass_range[0] == 80 &&
+          sc.mass_range[1] == 120 && sc.length_range[0] == 90 && sc.length_range[1] == 90 &&
+          sc.trolley_mass_range[1] == 110 && sc.damping_range[0] == 50 &&
+          sc.damping_range[1] == 200 && sc.start_angle == 89.9 && sc.robust_samples == 1 &&
+          sc.verify_samples == 1);
+}
+
+/* [physics]: drag one area per body (trolley + links), non-negative coefficients */
+static void test_physics(void) {
+    /* the base scene has 2 links: 3 areas */
+    BAD_HINT(17, "margin = 10\n[physics]\ndrag_area = 0.05, 0.2", 19, "physics", "drag_area",
+             "2 values, expected 3");
+    BAD(17, "margin = 10\n[physics]\ndrag_area = 0.05, 0.2, 0.3, 0.1", 19, "physics", "drag_area");
+    BAD(17, "margin = 10\n[physics]\ndrag_area = 0.05, -0.2, 0.3", 19, "physics", "drag_area");
+    BAD(17, "margin = 10\n[physics]\nair_density = -1", 19, "physics", "air_density");
+    BAD_HINT(17, "margin = 10\n[physics]\ndrag_area = 0.05, 0.2, 0.3\nair_density = 0", 20,
+             "physics", "air_density", "air_density > 0");
+    BAD(17, "margin = 10\n[physics]\nrolling = -0.01", 19, "physics", "rolling");
+    BAD(17, "margin = 10\n[physics]\nkink_radius = -2", 19, "physics", "kink_radius");
+    BAD(17, "margin = 10\n[physics]\nwind = inf", 19, "physics", "wind");
+
+    zp_scene sc;
+    GOOD(0, "", &sc);
+    CHECK(sc.ndrag == 0 && sc.air_density == 1.225 && sc.wind == 0 && sc.rolling == 0 &&
+          sc.kink_radius == 0 && sc.line_kink_radius == 0);
+    GOOD(17, "margin = 10\n[physics]\nair_density = 0", &sc); /* no drag: no air needed */
+    CHECK(sc.air_density == 0);
+    GOOD(17,
+         "margin = 10\n[physics]\ndrag_area = 0.05, 0, 0.3\nair_density = 1.2\nwind = -3\n"
+         "rolling = 0.01\nkink_radius = 2",
+         &sc);
+    CHECK(sc.ndrag == 3 && sc.drag_area[0] == 0.05 && sc.drag_area[1] == 0 &&
+          sc.drag_area[2] == 0.3 && sc.air_density == 1.2 && sc.wind == -3 && sc.rolling == 0.01 &&
+          sc.kink_radius == 2 && sc.line_kink_radius == 23);
+}
+
+/* [solver] bounds: tolerances within meaningful ranges, t_max and the trajectory's size */
+static void test_solver_bounds(void) {
+    BAD(15, "rtol = 1e-15", 15, "solver", "rtol");
+    BAD(15, "rtol = 0.1", 15, "solver", "rtol");
+    BAD(15, "rtol = 1e-300", 15, "solver", "rtol");
+    BAD(15, "atol = 1e-17", 15, "solver", "atol");
+    BAD(15, "atol = 1e300", 15, "solver", "atol");
+    BAD(17, "rtol = 1e-300", 17, "optimize", "rtol");
+    BAD_HINT(15, "t_max = 1e50\noutput_dt = 1e45", 15, "solver", "t_max", "(0, 1e6]");
+    /* rows: t_max / output_dt + 1 at most ZP_MAX_ROWS, named at the key given */
+    BAD_HINT(15, "output_dt = 1e-9", 15, "solver", "output_dt", "trajectory rows");
+    BAD_HINT(15, "t_max = 1e5", 15, "solver", "t_max", "trajectory rows");
+    zp_scene sc;
+    GOOD(15, "rtol = 1e-14\natol = 1e-16", &sc);
+    CHECK(sc.rtol == 1e-14 && sc.atol == 1e-16);
+    GOOD(15, "rtol = 1e-2\natol = 1", &sc);
+    CHECK(sc.rtol == 1e-2 && sc.atol == 1);
+    GOOD(15, "t_max = 1e6\noutput_dt = 1.000001", &sc); /* 999 999 + 1 rows */
+    CHECK(sc.t_max == 1e6);
+}
+
+/* the default margin obeys the rule a given one does: below death_angle */
+static void test_default_margin(void) {
+    char text[4096];
+    snprintf(text, sizeof text, "%s", with_line(11, "masses = 15, 5\ndeath_angle = 5"));
+    char *m = strstr(text, "margin = 10\n");
+    *m = '\0'; /* drop the explicit margin: the default 10 applies */
+    expect_bad_at(__LINE__, text, 12, "body", "death_angle", "default [optimize] margin 10");
+    zp_scene sc;
+    strcat(text, "margin = 4\n");
+    expect_good_at(__LINE__, text, &sc);
+    CHECK(sc.death_angle == 5 && sc.margin == 4);
+}
+
+static const char *write_bytes(const char *name, const char *bytes, size_t n);
+
+/* a NUL byte is an error at its line, not the file's end; /dev/zero is refused by size */
+static void test_file_bytes(void) {
+    static const char text[] = "[course]\nx_start = 0\nsection = 10 : x\n[trolley]\nmass = 3\0 0\n"
+                               "[body]\nlengths = 1\nmasses = 1\n";
+    const char *p = write_bytes("zp_test_nul.ini", text, sizeof text - 1);
+    zp_scene sc;
+    zp_diag d;
+    zp_diag_init(&d);
+    CHECK(zp_scene_load(p, &sc, &d) == ZP_ERR_INPUT);
+    CHECK(d.n == 1 && strstr(d.text[0], ":5: ") && strstr(d.text[0], "NUL byte at column 9"));
+    if (d.n != 1) {
+        show(&d);
+    }
+    remove(p);
+    zp_diag_init(&d);
+    CHECK(zp_scene_load("/dev/zero", &sc, &d) == ZP_ERR_INPUT);
+    CHECK(d.n == 1 && has_message(&d, "/dev/zero: cannot read") && has_message(&d, "1 MiB"));
+}
+
+/* loads text and builds its model: the status of the two, messages in d */
+static zp_status build(const char *text, zp_diag *d, zp_scene *sc, double xs[3], double ys[3]) {
+    zp_diag_init(d);
+    if (zp_scene_load_string(text, "t.ini", sc, d) != ZP_OK) {
+        return ZP_ERR_INPUT;
+    }
+    zp_model *m = zp_model_build(sc, d);
+    if (!m) {
+        return ZP_ERR_INPUT;
+    }
+    for (int i = 0; xs && i < 3; i++) {
+        int k = xs[i] <= sc->x_end[0] ? 0 : 1;
+        ys[i] = zp_course_eval(m->course, k, xs[i]).f;
+    }
+    zp_model_free(m);
+    return ZP_OK;
+}
+
+/* `pi`, `e` and `y0` become numbers; names that merely contain them stay names */
+static void test_expr_names(void) {
+    zp_scene sc;
+    zp_diag d;
+    double x[3] = {0, 30, 80}, y[3];
+    /* e^(x/60) - e + 10 meets -x/10 + 16 at 60; pi likewise */
+    CHECK(build(with_line(5, "section = 60 : e^(x/60) - e + 10 + pi*(x-60)/60"), &d, &sc, x, y) ==
+          ZP_OK);
+    CHECK_REL(y[0], 11 - M_E - M_PI, 1e-15);
+    CHECK_REL(y[1], exp(0.5) - M_E + 10 - M_PI / 2, 1e-15);
+    /* y0 is 10 here ((60/10 - 3)^2 + 1); a negative y0 stays one operand of ^ */
+    CHECK(build(with_line(6, "section = 100 : y0 - (x - 60)/10"), &d, &sc, x, y) == ZP_OK);
+    CHECK_REL(y[2], 8, 1e-15);
+    CHECK(build(with_lines(5, "section = 60 : x/10 - 8.5", 6, "section = 100 : y0^2 - 8.75 + 0*x"),
+                &d, &sc, x, y) == ZP_OK);
+    CHECK_REL(y[2], -2.5, 1e-15);
+    CHECK(build(with_line(5, "section = 60 : 1e1*x/600 + 9 + 0*exp(x)"), &d, &sc, NULL, NULL) ==
+          ZP_OK);
+    BAD_HINT(5, "section = 60 : y0 + (x/10 - 3)^2 + 1", 5, "course", "section",
+             "first section has none");
+    BAD_HINT(5, "section = 60 : pie*x", 5, "course", "section", "`pie`");
+    BAD_HINT(5, "section = 60 : 0*pi*pi*pi*pi*pi*pi*pi*pi*pi*pi*pi*pi*pi + x/6", 5, "course",
+             "section", "too long");
+    /* y0 chains: section 3 starts where section 2, itself written with y0, ends (8) */
+    CHECK(build(with_lines(6, "section = 100 : y0 - (x - 60)/20\nsection = 120 : y0 + 0*x", 13,
+                           "forces = 1, 2, 3"),
+                &d, &sc, NULL, NULL) == ZP_OK);
+    CHECK(!strcmp(sc.expr[2], "(8) + 0*x"));
+    BAD_HINT(5, "section = 60 : y0e", 5, "course", "section", "`y0e`");
+    /* after a section in error, y0 adds no second message */
+    zp_diag_init(&d);
+    CHECK(zp_scene_load_string(with_lines(5, "section = 60 : (x", 6, "section = 100 : y0 - x"),
+                               "t.ini", &sc, &d) == ZP_ERR_INPUT);
+    CHECK(d.n == 1 && has_message(&d, "t.ini:5: "));
+}
+
+/* the model's course checks: continuity states its tolerance; a NaN gap and a pole are
+   refused; a smooth step whose f'' expression overflows is accepted */
+static void test_course_probing(void) {
+    zp_scene sc;
+    zp_diag d;
+    CHECK(build(with_line(6, "section = 100 : -x/10 + 16.001"), &d, &sc, NULL, NULL) ==
+          ZP_ERR_INPUT);
+    CHECK(has_message(&d, "t.ini:6: [course] section: ") && has_message(&d, "1e-9 (1 + |y|)"));
+    CHECK(build(with_line(6, "section = 100 : -x/10 + 16 + 0*sqrt((x-80.3)^2-1e-4)"), &d, &sc, NULL,
+                NULL) == ZP_ERR_INPUT);
+    CHECK(has_message(&d, "t.ini:6: [course] section: ") && has_message(&d, "near x = 80.2"));
+    CHECK(build(with_line(6, "section = 100 : -x/10 + 16 + tan(x/10) - tan(6)"), &d, &sc, NULL,
+                NULL) == ZP_ERR_INPUT);
+    CHECK(has_message(&d, "t.ini:6: [course] section: ") && has_message(&d, "near x = 78.5"));
+    /* -10 tanh(100 (x - 80)): a 20 m drop over a few cm, smooth; f'' = inf/inf far from 80 */
+    double x[3] = {60, 80, 100}, y[3];
+    zp_status st =
+        build(with_line(6, "section = 100 : y0 - 10 - 10*tanh(100*(x-80))"), &d, &sc, x, y);
+    CHECK(st == ZP_OK);
+    if (st != ZP_OK) {
+        show(&d);
+    }
+    CHECK_NEAR(y[1], 0, 1e-12);
+    CHECK_NEAR(y[2], -10, 1e-12);
+}
+
 static const char *write_temp(const char *name, const char *text) {
     static char path[2][512];
     static int which;
@@ -414,6 +638,17 @@ static const char *write_temp(const char *name, const char *text) {
     CHECK(f != NULL);
     if (f) {
         fputs(text, f);
+        fclose(f);
+    }
+    return p;
+}
+
+static const char *write_bytes(const char *name, const char *bytes, size_t n) {
+    const char *p = write_temp(name, "");
+    FILE *f = fopen(p, "wb");
+    CHECK(f != NULL);
+    if (f) {
+        fwrite(bytes, 1, n, f);
         fclose(f);
     }
     return p;
@@ -497,5 +732,13 @@ int main(void) {
     test_seed();
     test_schedule();
     test_parse_list();
+    test_limits();
+    test_robust();
+    test_physics();
+    test_solver_bounds();
+    test_default_margin();
+    test_file_bytes();
+    test_expr_names();
+    test_course_probing();
     return CHECK_DONE();
 }

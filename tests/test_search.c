@@ -58,8 +58,10 @@ int main(void) {
         zp_model *m = tu_model(tu_swing, &sc);
         zp_sim_opts o = tu_opts(&sc, 1e-8);
         zp_objective ob = tu_objective(m, &sc, &o);
-        double lo = 0, hi = 400, f[1];
-        zp_input in = {.force = f};
+        double lo = 0, hi = 400;
+        zp_schedule in_sched = tu_sched(m, (double[1]){0});
+        double *f = in_sched.p; /* the schedule's one force, set below */
+        zp_input in = {.sched = &in_sched};
         f[0] = hi;
         CHECK(tu_run(m, &o, &in)->max_rel_angle[0] > ob.limit); /* the top of the box kills */
         while (hi - lo > 1e-6) {

@@ -47,7 +47,8 @@ static void check_effective_gravity(const char *dir) {
     }
     double times[] = {1, 3, 5};
     zp_sim_opts o = tu_opts(&sc, 1e-10);
-    zp_input in = {.force = sc.forces, .start = &start, .sample_t = times, .nsample = 3};
+    zp_schedule in_sched = tu_sched(m, sc.forces);
+    zp_input in = {.sched = &in_sched, .start = &start, .sample_t = times, .nsample = 3};
     zp_sim *s = zp_sim_create(m, &o);
     static zp_result r;
     CHECK(zp_sim_run(m, s, &in, &r) == ZP_OK);
@@ -78,7 +79,8 @@ static void check_small_oscillation(void) {
     start.q[2] = 0.01;
     zp_sim_opts o = tu_opts(&sc, 1e-10);
     o.output_dt = 1e-3;
-    zp_input in = {.force = sc.forces, .start = &start};
+    zp_schedule in_sched = tu_sched(m, sc.forces);
+    zp_input in = {.sched = &in_sched, .start = &start};
     zp_sim *s = zp_sim_create(m, &o);
     static zp_result r;
     CHECK(zp_sim_run(m, s, &in, &r) == ZP_OK);
@@ -113,7 +115,8 @@ static void check_conservation(void) {
     double prev = INFINITY;
     for (double rtol = 1e-6; rtol >= 1e-10; rtol /= 100) {
         zp_sim_opts o = tu_opts(&sc, rtol);
-        zp_input in = {.force = sc.forces};
+        zp_schedule in_sched = tu_sched(m, sc.forces);
+        zp_input in = {.sched = &in_sched};
         const zp_result *r = tu_run(m, &o, &in);
         double drift = fabs(r->e_final - r->e_initial);
         CHECK(r->outcome == ZP_OUTCOME_STALLED && r->ncross == 0);
@@ -132,7 +135,8 @@ static void check_audit(void) {
     double f[3] = {10, 10, 10}, prev = INFINITY;
     for (double rtol = 1e-6; rtol >= 1e-10; rtol /= 100) {
         zp_sim_opts o = tu_opts(&sc, rtol);
-        zp_input in = {.force = f};
+        zp_schedule in_sched = tu_sched(m, f);
+        zp_input in = {.sched = &in_sched};
         const zp_result *r = tu_run(m, &o, &in);
         double res = r->e_final - r->e_initial - r->w_drive + r->w_damp + r->e_impulse;
         CHECK(r->outcome == ZP_OUTCOME_FINISHED);
@@ -153,7 +157,8 @@ static void check_dampers(void) {
     double f[3] = {0, 0, 0};
     zp_sim_opts o = tu_opts(&sc, 1e-8);
     o.output_dt = 0.05;
-    zp_input in = {.force = f};
+    zp_schedule in_sched = tu_sched(m, f);
+    zp_input in = {.sched = &in_sched};
     zp_sim *s = zp_sim_create(m, &o);
     static zp_result r;
     CHECK(zp_sim_run(m, s, &in, &r) == ZP_OK);
@@ -175,7 +180,8 @@ static void check_seed_death(void) {
     zp_scene sc;
     zp_model *m = tu_seed_model(&sc);
     zp_sim_opts ref_o = tu_opts(&sc, 1e-12);
-    zp_input in = {.force = sc.forces};
+    zp_schedule in_sched = tu_sched(m, sc.forces);
+    zp_input in = {.sched = &in_sched};
     zp_result ref = *tu_run(m, &ref_o, &in);
     CHECK(ref.outcome == ZP_OUTCOME_DIED);
     CHECK(ref.died_link >= 1 && ref.died_link <= 3);
@@ -202,11 +208,12 @@ static void check_rollback(void) {
                            &sc);
     zp_sim_opts o = tu_opts(&sc, 1e-8);
     double weak = 100, strong = 300; /* holding force: M g f' = 40 * 9.81 * 0.5 = 196 N */
-    zp_input in = {.force = &weak};
+    zp_schedule in_sched = tu_sched(m, &weak);
+    zp_input in = {.sched = &in_sched};
     const zp_result *r = tu_run(m, &o, &in);
     CHECK(r->outcome == ZP_OUTCOME_STALLED && r->stall == ZP_STALL_ROLLED_BACK);
     CHECK(r->time == 0 && r->x == 0);
-    in.force = &strong;
+    in_sched = tu_sched(m, &strong);
     r = tu_run(m, &o, &in);
     CHECK(r->outcome != ZP_OUTCOME_STALLED || r->stall != ZP_STALL_ROLLED_BACK);
     zp_model_free(m);
@@ -219,11 +226,12 @@ static void check_trapped(void) {
                            "[trolley]\nmass = 30\n[body]\nlengths = 0.5\nmasses = 0.1\n",
                            &sc);
     zp_sim_opts o = tu_opts(&sc, 1e-8);
-    zp_input in = {.force = sc.forces};
+    zp_schedule in_sched = tu_sched(m, sc.forces);
+    zp_input in = {.sched = &in_sched};
     const zp_result *r = tu_run(m, &o, &in);
     CHECK(r->outcome == ZP_OUTCOME_STALLED && r->stall == ZP_STALL_TRAPPED_AT_KINK);
     CHECK_NEAR(r->x, 10, 1e-9);
-    CHECK(r->ncross == 1 && r->cross[0].energy_lost > 0);
+    CHECK(r->ncross == 1 && tu_crossings()[0].energy_lost > 0);
     zp_model_free(m);
 }
 
@@ -239,13 +247,14 @@ static void check_zeno_vee(void) {
                            &sc);
     double a = atan(0.5), t1 = sqrt(2 * (10 / cos(a)) / (G * sin(a))), mgh = 30 * G * 5;
     zp_sim_opts o = tu_opts(&sc, 1e-8);
-    zp_input in = {.force = sc.forces};
+    zp_schedule in_sched = tu_sched(m, sc.forces);
+    zp_input in = {.sched = &in_sched};
     const zp_result *r = tu_run(m, &o, &in);
     CHECK(r->outcome == ZP_OUTCOME_STALLED && r->stall == ZP_STALL_TRAPPED_AT_KINK);
     CHECK_NEAR(r->x, 10, 1e-12);
-    CHECK_NEAR(r->cross[0].t, t1, 1e-6);
+    CHECK_NEAR(tu_crossings()[0].t, t1, 1e-6);
     /* link mass 1e-6 of the trolley's: closed forms hold to ~1e-7 relative */
-    CHECK_REL(r->cross[0].energy_lost, (1 - 0.36) * mgh, 1e-6);
+    CHECK_REL(tu_crossings()[0].energy_lost, (1 - 0.36) * mgh, 1e-6);
     CHECK(r->ncross > 20);
     CHECK_NEAR(r->time, 4 * t1, 1e-5); /* stopped within ZP_ZENO_DT of the limit */
     CHECK_REL(r->e_impulse, mgh, 1e-6);
@@ -259,10 +268,11 @@ static void check_samples_and_extremes(void) {
     zp_model *m = tu_seed_model(&sc);
     double f[3] = {10, 10, 10};
     zp_sim_opts o = tu_opts(&sc, 1e-9);
-    zp_input in = {.force = f};
+    zp_schedule in_sched = tu_sched(m, f);
+    zp_input in = {.sched = &in_sched};
     zp_result first = *tu_run(m, &o, &in);
     CHECK(first.ncross == 2);
-    double tk[2] = {first.cross[0].t, first.cross[1].t};
+    double tk[2] = {tu_crossings()[0].t, tu_crossings()[1].t};
     o.output_dt = 1e-3;
     in.sample_t = tk;
     in.nsample = 2;
@@ -300,7 +310,8 @@ static void check_reproducible(void) {
     zp_model *m = tu_seed_model(&sc);
     double f[3] = {20, 12, 25};
     zp_sim_opts o = tu_opts(&sc, 1e-8);
-    zp_input in = {.force = f};
+    zp_schedule in_sched = tu_sched(m, f);
+    zp_input in = {.sched = &in_sched};
     zp_sim *a = zp_sim_create(m, &o), *b = zp_sim_create(m, &o);
     static zp_result r1, r2, r3;
     CHECK(zp_sim_run(m, a, &in, &r1) == ZP_OK);
@@ -314,7 +325,8 @@ static void check_reproducible(void) {
     zp_sim_opts traj = o;
     traj.output_dt = 0.01;
     double times[] = {0.5, 7.25, 13};
-    zp_input with_samples = {.force = f, .sample_t = times, .nsample = 3};
+    zp_schedule with_samples_sched = tu_sched(m, f);
+    zp_input with_samples = {.sched = &with_samples_sched, .sample_t = times, .nsample = 3};
     zp_sim *c = zp_sim_create(m, &traj);
     CHECK(zp_sim_run(m, c, &with_samples, &r2) == ZP_OK);
     CHECK(r1.time == r2.time && r1.x == r2.x && r1.steps == r2.steps);
@@ -330,14 +342,15 @@ static void check_numeric_failure(void) {
     zp_model *m = tu_seed_model(&sc);
     double f[3] = {1e300, 1e300, 1e300};
     zp_sim_opts o = tu_opts(&sc, 1e-8);
-    zp_input in = {.force = f};
+    zp_schedule in_sched = tu_sched(m, f);
+    zp_input in = {.sched = &in_sched};
     zp_sim *s = zp_sim_create(m, &o);
     static zp_result r;
     CHECK(zp_sim_run(m, s, &in, &r) == ZP_ERR_NUMERIC);
     CHECK(strstr(r.message, "numerical failure at t = ") != NULL);
     CHECK(strstr(r.message, "nan") == NULL);
     /* the workspace is still good for the next run */
-    in.force = sc.forces;
+    in_sched = tu_sched(m, sc.forces);
     CHECK(zp_sim_run(m, s, &in, &r) == ZP_OK && r.outcome == ZP_OUTCOME_DIED);
     zp_sim_free(s);
     zp_model_free(m);

@@ -55,15 +55,21 @@ static inline zp_sim_opts tu_opts(const zp_scene *sc, double rtol) {
     return o;
 }
 
+/* The workspace of the last tu_run (kept for its kink crossings until the next call). */
+static inline zp_sim **tu_last_sim(void) {
+    static zp_sim *s;
+    return &s;
+}
+
 /* One run; the result lives in static storage until the next call. */
 static inline const zp_result *tu_run(const zp_model *m, const zp_sim_opts *o, const zp_input *in) {
     static zp_result r;
-    zp_sim *s = zp_sim_create(m, o);
+    zp_sim_free(*tu_last_sim());
+    zp_sim *s = *tu_last_sim() = zp_sim_create(m, o);
     if (!s || zp_sim_run(m, s, in, &r) != ZP_OK) {
         fprintf(stderr, "run failed: %s\n", r.message);
         abort();
     }
-    zp_sim_free(s);
     return &r;
 }
 
@@ -81,6 +87,17 @@ static inline zp_objective tu_objective(const zp_model *m, const zp_scene *sc,
                                         const zp_sim_opts *o) {
     return (zp_objective){.m = m, .limit = m->phi_max - sc->margin * M_PI / 180,
                           .t_max = o->t_max};
+}
+
+/* The kink crossings of the last tu_run. */
+static inline const zp_crossing *tu_crossings(void) {
+    int n;
+    return zp_sim_crossings(*tu_last_sim(), &n);
+}
+
+/* Per-section constant forces f (N, one per section of m) as a schedule. */
+static inline zp_schedule tu_sched(const zp_model *m, const double *f) {
+    return zp_schedule_sections(m->nsec, f, 0, 0);
 }
 
 /* Runs a shell command; its stdout (up to cap - 1 bytes) in out; returns its exit status. */

@@ -1,12 +1,13 @@
-/* What the commands share (CLI.md): loading a scene into a model with every message on stderr,
-   number lists, and the usage text with the method and formulation registries. */
+/* What the commands share (CLI.md): the scene argument, the output folder, number lists, and
+   the usage text with the method and formulation registries. */
 #include "cli.h"
 
 #include "formulation.h"
 #include "method.h"
+#include "numtext.h"
 
 int zp_cli_parse_list(const char *text, double *out, int max, char *why, size_t whylen) {
-    return zp_scene_parse_list(text, out, max, why, whylen);
+    return zp_text_list(text, out, max, why, whylen);
 }
 
 int zp_cli_scene_arg(const char *cmd, const char *arg, const char **scene) {
@@ -21,57 +22,12 @@ int zp_cli_scene_arg(const char *cmd, const char *arg, const char **scene) {
     return 0;
 }
 
-int zp_cli_apply_forces(const char *cmd, zp_scene *sc, const char *schedule,
-                        const char *force_text) {
-    zp_diag d;
-    zp_diag_init(&d);
-    if (schedule && zp_scene_overlay_schedule(schedule, sc, &d)) {
-        zp_diag_print(&d, stderr);
-        fprintf(stderr, "zipopt %s: nothing was written\n", cmd);
-        return -1;
-    }
-    if (force_text) {
-        char why[256];
-        int n = zp_cli_parse_list(force_text, sc->forces, ZP_MAX_SECTIONS, why, sizeof why);
-        if (n != sc->nsec) {
-            fprintf(stderr,
-                    "zipopt %s: --force: %s; expected %d values (one per section); nothing "
-                    "was written\n",
-                    cmd, n < 0 ? why : "wrong number of values", sc->nsec);
-            return -1;
-        }
-        sc->nforce = n;
-    }
-    return 0;
-}
-
 void zp_cli_out_dir(const char *out, const zp_scene *sc, char *dir, size_t cap) {
     if (out) {
         snprintf(dir, cap, "%s", out);
     } else {
         snprintf(dir, cap, "out/%s", sc->name);
     }
-}
-
-zp_model *zp_cli_load(const char *path, zp_scene *sc) {
-    zp_diag d;
-    zp_diag_init(&d);
-    zp_model *m = NULL;
-    if (path) {
-        if (zp_scene_load(path, sc, &d) == ZP_OK) {
-            m = zp_model_build(sc, &d);
-        }
-    } else {
-        zp_scene_seed(sc);
-        m = zp_model_build(sc, &d);
-    }
-    zp_diag_print(&d, stderr);
-    if (!m) {
-        int n = d.n + d.dropped;
-        fprintf(stderr, "zipopt: %s: %d error%s; nothing was written\n", sc->path, n,
-                n == 1 ? "" : "s");
-    }
-    return m;
 }
 
 void zp_cli_print_registries(FILE *f) {

@@ -1,10 +1,11 @@
-/* Command-line helpers shared by the commands: scene loading with the usual messages,
-   number lists, usage text. Commands return the process exit status (0, 1, 2). */
+/* Command-line helpers shared by the commands: the scene argument, number lists, usage text
+   (loading is setup.h). Commands return the process exit status (0, 1, 2). */
 #ifndef ZP_CLI_H
 #define ZP_CLI_H
 
-#include "model.h"
-#include "scene_read.h"
+#include <stdio.h>
+
+#include "scene.h"
 
 enum { ZP_EXIT_OK = 0, ZP_EXIT_FAIL = 1, ZP_EXIT_USAGE = 2, ZP_EXIT_NONE = 3 };
 
@@ -15,15 +16,8 @@ int zp_cli_parse_list(const char *text, double *out, int max, char *why, size_t 
    looks like an option or a scene was given already, which it reports for `zipopt <cmd>`
    (cmd may be "") and returns -1. */
 int zp_cli_scene_arg(const char *cmd, const char *arg, const char **scene);
-/* Lays a schedule file (may be NULL), then a --force list (may be NULL), over sc's forces,
-   reporting problems for `zipopt <cmd>` (with "nothing was written"); 0 or -1. */
-int zp_cli_apply_forces(const char *cmd, zp_scene *sc, const char *schedule,
-                        const char *force_text);
 /* The output folder: --out DIR if given, else out/<scene name> (CLI.md "Files"). */
 void zp_cli_out_dir(const char *out, const zp_scene *sc, char *dir, size_t cap);
-/* Loads path (NULL: the built-in seed) and builds the model; prints every diagnostic to
-   stderr and returns NULL on bad input. */
-zp_model *zp_cli_load(const char *path, zp_scene *sc);
 /* The registries' names and docs, for --help. */
 void zp_cli_print_registries(FILE *f);
 void zp_cli_usage(FILE *f);

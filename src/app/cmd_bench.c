@@ -9,6 +9,7 @@
 
 #include "cli.h"
 #include "out_file.h"
+#include "setup.h"
 #include "sim.h"
 
 #define NTOL 10          /* rtol 1e-3 .. 1e-12 */
@@ -59,12 +60,14 @@ static int cmp_double(const void *a, const void *b) {
     return (x > y) - (x < y);
 }
 
-static reading read_result(const zp_model *m, const zp_result *r) {
+static reading read_result(const zp_model *m, const zp_result *r, const zp_sim *s) {
     reading d = {.ok = 1, .outcome = r->outcome, .died_link = r->died_link, .time = r->time,
                  .x = r->x, .v = r->v, .evals = r->rhs_evals, .steps = r->steps};
+    int n;
+    const zp_crossing *cross = zp_sim_crossings(s, &n);
     d.nimp = r->ncross;
-    for (int k = 0; k < r->ncross && k < MAX_IMPULSES; k++) {
-        d.impulse[k] = r->cross[k].impulse;
+    for (int k = 0; k < n && k < MAX_IMPULSES; k++) {
+        d.impulse[k] = cross[k].impulse;
     }
     for (int i = 0; i < m->nlink; i++) {
         d.angle[i] = r->max_rel_angle[i] * 180 / M_PI;
@@ -73,14 +76,14 @@ static reading read_result(const zp_model *m, const zp_result *r) {
 }
 
 /* one configuration: runs repeated within REPEAT_BUDGET (at most max_rep), median wall */
-static reading measure(const zp_model *m, zp_sim_opts o, const double *force, int max_rep) {
-    static zp_result r; /* large */
+static reading measure(const zp_model *m, zp_sim_opts o, const zp_schedule *sched, int max_rep) {
+    zp_result r;
     reading d = {0};
     zp_sim *s = zp_sim_create(m, &o);
     if (!s) {
         return d;
     }
-    zp_input in = {.force = force};
+    zp_input in = {.sched = sched};
     double walls[64];
     int n = 0;
     for (double spent = 0; n < max_rep && n < 64 && (n == 0 || spent < REPEAT_BUDGET); n++) {
@@ -91,7 +94,7 @@ static reading measure(const zp_model *m, zp_sim_opts o, const double *force, in
         walls[n] = r.wall_s;
         spent += r.wall_s;
     }
-    d = read_result(m, &r);
+    d = read_result(m, &r, s);
     qsort(walls, n, sizeof *walls, cmp_double);
     d.wall = n % 2 ? walls[n / 2] : 0.5 * (walls[n / 2 - 1] + walls[n / 2]);
     d.repeats = n;
@@ -219,12 +222,12 @@ int zp_cmd_bench(int argc, char **argv) {
     if (pa) {
         return pa > 0 ? ZP_EXIT_OK : ZP_EXIT_USAGE;
     }
-    zp_scene base;
-    zp_model *probe = zp_cli_load(a.scene, &base);
-    if (!probe) {
+    static zp_setup base; /* large: kept off the stack */
+    zp_overrides none = ZP_OVERRIDES_NONE;
+    if (zp_setup_load("bench trade", a.scene, &none, &base)) {
         return ZP_EXIT_USAGE;
     }
-    zp_model_free(probe);
+    zp_setup_free(&base);
 
     static reading runs[NCASE][ZP_METHOD_COUNT][NTOL];
     static errors errs[NCASE][ZP_METHOD_COUNT][NTOL];
@@ -247,11 +250,12 @@ int zp_cmd_bench(int argc, char **argv) {
           csv);
     for (int c = 0; c < NCASE; c++) {
         const trade_case *tc = &cases[c];
-        zp_scene sc = base;
-        sc.nforce = sc.nsec;
+        zp_scene sc = base.sc;
+        double push[ZP_MAX_SECTIONS];
         for (int k = 0; k < sc.nsec; k++) {
-            sc.forces[k] = tc->force;
+            push[k] = tc->force;
         }
+        zp_schedule sched = zp_schedule_sections(sc.nsec, push, 0, 0);
         if (tc->damping >= 0) {
             sc.ndamping = 1;
             sc.damping[0] = tc->damping;
@@ -272,9 +276,9 @@ int zp_cmd_bench(int argc, char **argv) {
         o.rtol = REF_RTOL;
         o.atol = REF_RTOL * ATOL_RATIO;
         o.method = ZP_METHOD_GSL_RK8PD;
-        reading ref = measure(m, o, sc.forces, 1);
+        reading ref = measure(m, o, &sched, 1);
         o.method = tc->ref_cvode;
-        reading ref2 = measure(m, o, sc.forces, 1);
+        reading ref2 = measure(m, o, &sched, 1);
         errors agree = compare(m, &ref2, &ref);
         fprintf(stderr, "%s: reference %s at %.9f s by %s and %s, which agree to %.1e s (time), "
                         "%.1e N s (impulses), %.1e deg (angles), %.1e m (x)\n",
@@ -294,7 +298,7 @@ int zp_cmd_bench(int argc, char **argv) {
                 o.rtol = tols[t];
                 o.atol = tols[t] * ATOL_RATIO;
                 reading *r = &runs[c][k][t];
-                *r = measure(m, o, sc.forces, a.repeats);
+                *r = measure(m, o, &sched, a.repeats);
                 errs[c][k][t] = compare(m, r, &ref);
                 const errors *e = &errs[c][k][t];
                 fprintf(csv, "%s,%s,%.0e,%s,%.12g,%.3e,%.3e,%.3e,%.3e,%.3e,%ld,%.6e,%ld,%d\n",

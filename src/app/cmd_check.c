@@ -7,16 +7,19 @@
 #include "cli.h"
 #include "formulation.h"
 #include "method.h"
+#include "scene_read.h"
+#include "setup.h"
 #include "sim.h"
 
 static void usage(FILE *f) {
     fputs("usage: zipopt check SCENE.ini\n"
           "Validates a scene file against every rule of CONFIG.md (all problems are listed on\n"
           "stderr as FILE:LINE: [section] key: what; expected, with exit status 2) and prints\n"
-          "the scene: each course section with f(x), f'(x) and f''(x); each boundary between\n"
-          "sections with its height, slope jump and whether it is a kink; the trolley and the\n"
-          "body's links (length, mass, inertia, damping); the drive, solver and search\n"
-          "settings. Writes no files.\n",
+          "the scene: each course section with f(x) and f, f', f'' at its ends; each boundary\n"
+          "between sections with its height, slope jump and whether it is a kink; the trolley\n"
+          "and the body's links (length, mass, inertia, damping); the drive, solver and search\n"
+          "settings; every key zipopt added with its value. Warns on stderr when a force lies\n"
+          "outside [min, max]. Writes no files.\n",
           f);
 }
 
@@ -36,8 +39,12 @@ static void print_course(const zp_model *m) {
     for (int k = 0; k < m->nsec; k++) {
         printf("  section %d: x in [%g, %g] m\n", k + 1, m->xb[k], m->xb[k + 1]);
         printf("    f(x)   = %s\n", m->expr[k]);
-        printf("    f'(x)  = %s\n", zp_course_deriv_text(m->course, k, 1));
-        printf("    f''(x) = %s\n", zp_course_deriv_text(m->course, k, 2));
+        /* libmatheval's derivative text is unsimplified: its values at the ends say more */
+        for (int end = 0; end < 2; end++) {
+            zp_track t = zp_course_eval(m->course, k, m->xb[k + end]);
+            printf("    at x = %g: f = %.10g m, f' = %.10g, f'' = %.10g 1/m\n", m->xb[k + end],
+                   t.f, t.fp, t.fpp);
+        }
     }
     if (m->nsec == 1) {
         return;
@@ -51,13 +58,16 @@ static void print_course(const zp_model *m) {
         for (int i = 0; i < m->nkink; i++) {
             kink |= m->kink[i].left == k - 1;
         }
-        printf("  x = %g m, y = %.6g m: slope %.6g -> %.6g (jump %+.6g, %.3g deg): %s\n", x, l.f,
+        /* 10 digits: typed back, the height is within the continuity tolerance 1e-9 (1 + |y|) */
+        printf("  x = %g m, y = %.10g m: slope %.6g -> %.6g (jump %+.6g, %.3g deg): %s\n", x, l.f,
                l.fp, r.fp, r.fp - l.fp, (atan(r.fp) - atan(l.fp)) * 180 / M_PI,
                kink ? "kink" : "smooth");
     }
 }
 
-static void print_scene(const zp_scene *sc, const zp_model *m) {
+static void print_scene(const zp_setup *st) {
+    const zp_scene *sc = &st->sc;
+    const zp_model *m = st->m;
     printf("scene: %s (%s)\n", sc->name, sc->path);
     printf("gravity: %g m/s^2\n", m->g);
     print_course(m);
@@ -68,9 +78,11 @@ static void print_scene(const zp_scene *sc, const zp_model *m) {
         printf("  link %d: length %g m, mass %g kg, inertia %.6g kg m^2, damping %g N m s/rad\n",
                i + 1, m->len[i], m->mass[i], m->inertia[i], m->damp[i]);
     }
-    printf("drive: %s; forces (N):", zp_model_drive_name(m->drive));
-    for (int k = 0; k < sc->nsec; k++) {
-        printf("%s %g", k ? "," : "", sc->forces[k]);
+    printf("drive: %s; forces:", zp_drive_dir_name(m->drive));
+    for (int k = 0; k < m->nsec; k++) {
+        char label[64];
+        zp_schedule_label(&st->sched, k, label, sizeof label);
+        printf("%s %s", k ? "," : "", label);
     }
     printf("%s; search bounds [%g, %g] N\n", sc->nforce ? "" : " (none given)", sc->force_min,
            sc->force_max);
@@ -80,6 +92,21 @@ static void print_scene(const zp_scene *sc, const zp_model *m) {
            sc->output_dt);
     printf("optimize: margin %g deg, max_evals %ld, seed %lu\n", sc->margin, sc->max_evals,
            sc->seed);
+    printf("added by zipopt (keys the file does not give, with the values taken):\n");
+    zp_scene_print_added(sc, stdout, "  ");
+}
+
+/* forces the search could never pick: legal for `simulate`, but worth a word */
+static void warn_forces(const zp_setup *st) {
+    const zp_schedule *sh = &st->sched;
+    for (int i = 0; i < st->sc.nforce && i < sh->np; i++) {
+        if (sh->p[i] < sh->lo[i] || sh->p[i] > sh->hi[i]) {
+            fprintf(stderr,
+                    "%s:%d: [drive] forces: warning: item %d (%g) is outside [min, max] = "
+                    "[%g, %g], the search's bounds\n",
+                    st->sc.path, st->sc.line_forces, i + 1, sh->p[i], sh->lo[i], sh->hi[i]);
+        }
+    }
 }
 
 int zp_cmd_check(int argc, char **argv) {
@@ -102,21 +129,14 @@ int zp_cmd_check(int argc, char **argv) {
         fputs("zipopt check: a scene file is required; see zipopt check --help\n", stderr);
         return ZP_EXIT_USAGE;
     }
-    zp_scene sc;
-    zp_model *m = zp_cli_load(path, &sc);
-    if (!m) {
+    /* judged exactly as every command judges it, registry names included */
+    static zp_setup st; /* large: kept off the stack */
+    zp_overrides none = ZP_OVERRIDES_NONE;
+    if (zp_setup_load("check", path, &none, &st)) {
         return ZP_EXIT_USAGE;
     }
-    /* the solver's names are judged against the registries, as `simulate` does */
-    zp_diag d;
-    zp_diag_init(&d);
-    zp_sim_opts o;
-    if (zp_sim_opts_from_scene(&sc, &o, &d) != ZP_OK) {
-        zp_diag_print(&d, stderr);
-        zp_model_free(m);
-        return ZP_EXIT_USAGE;
-    }
-    print_scene(&sc, m);
-    zp_model_free(m);
+    print_scene(&st);
+    warn_forces(&st);
+    zp_setup_free(&st);
     return ZP_EXIT_OK;
 }

@@ -10,6 +10,7 @@
 #include "cli.h"
 #include "gnuplot.h"
 #include "landscape.h"
+#include "setup.h"
 
 #define MAX_1D 100001 /* points of the constant-push sweep */
 #define MAX_2D 1001   /* points per axis of the slice */
@@ -282,21 +283,19 @@ int zp_cmd_landscape(int argc, char **argv) {
     if (parse_args(argc, argv, &a)) {
         return ZP_EXIT_USAGE;
     }
-    zp_scene sc;
-    zp_model *m = zp_cli_load(a.scene, &sc);
-    if (!m) {
+    static zp_setup st; /* large: kept off the stack */
+    zp_overrides ov = {a.schedule, a.force_text, -1, 0};
+    if (zp_setup_load("landscape", a.scene, &ov, &st)) {
         return ZP_EXIT_USAGE;
     }
+    const zp_model *m = st.m;
+    const zp_scene *sc = &st.sc;
+    const double *base = st.sched.p; /* N per section: the base schedule */
     int status = ZP_EXIT_USAGE;
     double *force = NULL;
     zp_landscape_point *pt = NULL;
-    zp_diag d;
-    zp_diag_init(&d);
     /* every option checked before any run */
-    if (zp_cli_apply_forces("landscape", &sc, a.schedule, a.force_text)) {
-        goto done;
-    }
-    range r1 = {sc.force_min, sc.force_max, 201};
+    range r1 = {st.sched.lo[0], st.sched.hi[0], 201};
     if (a.range1_text && parse_range(a.range1_text, &r1, MAX_1D) != (int)strlen(a.range1_text)) {
         fprintf(stderr,
                 "zipopt landscape: --force-range: '%s' is not A:B:N; expected forces "
@@ -305,15 +304,15 @@ int zp_cmd_landscape(int argc, char **argv) {
         goto done;
     }
     int si = -1, sj = -1;
-    range rx = {sc.force_min, sc.force_max, 41}, ry = rx;
+    range rx = {st.sched.lo[0], st.sched.hi[0], 41}, ry = rx;
     if (a.slice_text) {
         int used = 0;
         if (sscanf(a.slice_text, "%d,%d%n", &si, &sj, &used) != 2 || a.slice_text[used] || si < 1 ||
-            sj < 1 || si > sc.nsec || sj > sc.nsec || si == sj) {
+            sj < 1 || si > sc->nsec || sj > sc->nsec || si == sj) {
             fprintf(stderr,
                     "zipopt landscape: --slice: '%s' is not I,J; expected two different "
                     "sections from 1 to %d\n",
-                    a.slice_text, sc.nsec);
+                    a.slice_text, sc->nsec);
             goto done;
         }
         si--;
@@ -335,20 +334,16 @@ int zp_cmd_landscape(int argc, char **argv) {
             goto done;
         }
     }
-    zp_sim_opts o;
-    if (zp_sim_opts_from_scene(&sc, &o, &d)) {
-        zp_diag_print(&d, stderr);
-        goto done;
-    }
+    zp_sim_opts o = st.sim;
     o.output_dt = 0; /* outcomes only */
     zp_limits lim;
-    zp_limits_from_scene(&sc, &lim);
+    zp_limits_from_scene(sc, &lim);
     o.peaks = zp_limits_need_peaks(&lim);
-    double limit = (sc.death_angle - sc.margin) * M_PI / 180;
+    double limit = st.limit;
 
     /* the schedules: the constant pushes, then the slice */
     status = ZP_EXIT_FAIL;
-    int n1 = r1.n, n2 = si >= 0 ? rx.n * ry.n : 0, ns = sc.nsec;
+    int n1 = r1.n, n2 = si >= 0 ? rx.n * ry.n : 0, ns = sc->nsec;
     force = malloc(sizeof *force * (size_t)(n1 + n2) * (size_t)ns);
     pt = malloc(sizeof *pt * (size_t)(n1 + n2));
     if (!force || !pt) {
@@ -362,7 +357,7 @@ int zp_cmd_landscape(int argc, char **argv) {
     }
     for (int k = 0; k < n2; k++) {
         double *f = force + (size_t)(n1 + k) * ns;
-        memcpy(f, sc.forces, sizeof *f * (size_t)ns);
+        memcpy(f, base, sizeof *f * (size_t)ns);
         f[si] = at(&rx, k % rx.n);
         f[sj] = at(&ry, k / rx.n);
     }
@@ -379,7 +374,7 @@ int zp_cmd_landscape(int argc, char **argv) {
 
     /* the files, all or nothing */
     char dir[1024], err[1200];
-    zp_cli_out_dir(a.out, &sc, dir, sizeof dir);
+    zp_cli_out_dir(a.out, sc, dir, sizeof dir);
     zp_gnuplot g;
     if (zp_gnuplot_begin(&g, dir, err, sizeof err)) {
         fprintf(stderr, "zipopt landscape: %s; nothing was written\n", err);
@@ -399,7 +394,7 @@ int zp_cmd_landscape(int argc, char **argv) {
         fprintf(csv, "%.9g", at(&r1, k));
         write_point(csv, &pt[k], keeps(&pt[k], limit, &lim));
     }
-    script_1d(gp, &sc, &r1);
+    script_1d(gp, sc, &r1);
     if (n2) {
         fprintf(csv2, "f%d,f%d,%s\n", si + 1, sj + 1, result_header);
         for (int k = 0; k < n2; k++) {
@@ -407,7 +402,7 @@ int zp_cmd_landscape(int argc, char **argv) {
             fprintf(csv2, "%.9g,%.9g", f[si], f[sj]);
             write_point(csv2, &pt[n1 + k], keeps(&pt[n1 + k], limit, &lim));
         }
-        script_2d(gp2, &sc, si, sj, &rx, &ry, sc.forces,
+        script_2d(gp2, sc, si, sj, &rx, &ry, base,
                   a.schedule     ? a.schedule
                   : a.force_text ? "--force"
                                  : "[drive] forces");
@@ -429,16 +424,15 @@ int zp_cmd_landscape(int argc, char **argv) {
         goto done;
     }
     printf("figures: landscape.png%s\n", n2 ? ", landscape_slice.png" : "");
-    if (n2 && (sc.forces[si] < rx.a || sc.forces[si] > rx.b || sc.forces[sj] < ry.a ||
-               sc.forces[sj] > ry.b)) {
+    if (n2 && (base[si] < rx.a || base[si] > rx.b || base[sj] < ry.a || base[sj] > ry.b)) {
         printf("note: the base schedule (F%d = %g, F%d = %g N) lies outside the slice and is not "
                "marked\n",
-               si + 1, sc.forces[si], sj + 1, sc.forces[sj]);
+               si + 1, base[si], sj + 1, base[sj]);
     }
     status = ZP_EXIT_OK;
 done:
     free(force);
     free(pt);
-    zp_model_free(m);
+    zp_setup_free(&st);
     return status;
 }

@@ -14,6 +14,7 @@
 #include "report.h"
 #include "robust.h"
 #include "search.h"
+#include "setup.h"
 #include "verify.h"
 
 #define STUDY_FORCE 100 /* N per section: the original study's push */
@@ -105,6 +106,7 @@ static int parse_args(int argc, char **argv, search_args *a) {
 
 typedef struct progress_ctx {
     const zp_scene *sc;
+    const zp_schedule *shape; /* the kind and bounds the search's parameters fill */
     char checkpoint_dir[1024];
     int tty;      /* stderr is a terminal: show the progress line */
     int shown;    /* a progress line is on screen */
@@ -121,7 +123,8 @@ static void on_progress(void *user, const zp_search_progress *p, int improved) {
         if (f) {
             snprintf(note, sizeof note, "search checkpoint: best so far, finish %.6f s after %ld "
                      "simulations", p->time, p->evals);
-            zp_report_write_schedule(f, c->sc, p->force, note);
+            zp_schedule best = zp_schedule_with(c->shape, p->force);
+            zp_report_write_schedule(f, c->sc, &best, note);
             zp_out_set_commit(&set, err, sizeof err);
         }
     }
@@ -153,7 +156,8 @@ static int write_outputs(const zp_report *r, zp_sim *best_sim) {
              r->res->found ? "best schedule" : "CLOSEST CANDIDATE (nothing met the constraints)",
              r->res->interrupted ? " (interrupted)" : "",
              zp_sim_outcome_name(r->v->run->outcome), r->v->run->time);
-    zp_report_write_schedule(ini, r->sc, r->res->force, note);
+    zp_schedule best = zp_schedule_with(r->shape, r->res->force);
+    zp_report_write_schedule(ini, r->sc, &best, note);
     zp_report_write_json(js, r);
     int nrows;
     const zp_row *rows = zp_sim_rows(best_sim, &nrows);
@@ -201,50 +205,43 @@ int zp_cmd_search(int argc, char **argv) {
     if (pa) {
         return pa > 0 ? ZP_EXIT_OK : ZP_EXIT_USAGE;
     }
-    zp_scene sc;
-    zp_model *m = zp_cli_load(a.scene, &sc);
-    if (!m) {
+    static zp_setup st; /* large: kept off the stack */
+    zp_overrides ov = {NULL, NULL, a.seed, a.max_evals};
+    if (zp_setup_load("", a.scene, &ov, &st)) {
         return ZP_EXIT_USAGE;
     }
-    sc.seed = a.seed >= 0 ? (unsigned long)a.seed : sc.seed;
-    sc.max_evals = a.max_evals > 0 ? a.max_evals : sc.max_evals;
-    zp_diag d;
-    zp_diag_init(&d);
-    zp_sim_opts so;
-    if (zp_sim_opts_from_scene(&sc, &so, &d)) {
-        zp_diag_print(&d, stderr);
-        zp_model_free(m);
-        return ZP_EXIT_USAGE;
-    }
+    const zp_model *m = st.m;
+    const zp_scene *sc = &st.sc;
     char dir[1024];
-    zp_cli_out_dir(a.out, &sc, dir, sizeof dir);
+    zp_cli_out_dir(a.out, sc, dir, sizeof dir);
 
     zp_sim_opts fast;
-    zp_robust_problem pb;
-    if (zp_robust_setup(&pb, &sc, m, &so, &fast)) {
+    static zp_robust_problem pb; /* large: kept off the stack */
+    if (zp_robust_setup(&pb, sc, m, st.limit, &st.sched, &st.sim, &st.search, &fast)) {
         fputs("zipopt: out of memory building the scenarios; nothing was written\n", stderr);
         zp_robust_problem_free(&pb);
-        zp_model_free(m);
+        zp_setup_free(&st);
         return ZP_EXIT_FAIL;
     }
-    progress_ctx pc = {.sc = &sc, .tty = isatty(STDERR_FILENO)};
+    progress_ctx pc = {.sc = sc, .shape = &st.sched, .tty = isatty(STDERR_FILENO)};
     snprintf(pc.checkpoint_dir, sizeof pc.checkpoint_dir, "%s", dir);
     zp_search_opts o = {.algo = a.algo ? zp_search_algo_find(a.algo) : 0,
-                        .max_evals = sc.max_evals, .seed = sc.seed, .stop = &interrupted,
+                        .max_evals = st.max_evals, .seed = st.seed, .stop = &interrupted,
                         .progress = on_progress, .user = &pc};
     struct sigaction sa = {.sa_handler = on_sigint, .sa_flags = SA_RESETHAND}, old;
     sigemptyset(&sa.sa_mask);
     sigaction(SIGINT, &sa, &old);
     static zp_search_result res;
     char err[512] = "";
-    zp_status st = zp_robust_solve(&pb, &sc, &so, &fast, &o, &res, err, sizeof err);
+    zp_status rc = zp_robust_solve(&pb, sc, &st.sim, &fast, st.sched.lo[0], st.sched.hi[0], &o,
+                                   &res, err, sizeof err);
     if (pc.shown) {
         fputc('\n', stderr);
     }
     int status = ZP_EXIT_FAIL;
     zp_sim *best_sim = NULL, *study_sim = NULL;
     zp_verify v = {0};
-    if (st) {
+    if (rc) {
         fprintf(stderr, "zipopt: %s; nothing was written\n", err);
         goto done;
     }
@@ -252,20 +249,22 @@ int zp_cmd_search(int argc, char **argv) {
        nominal scene: the scenarios were checked above */
     zp_objective ob = pb.ob;
     ob.set = NULL;
-    so.peaks = fast.peaks;
-    st = zp_verify_run(&ob, &so, res.force, sc.seed, res.interrupted ? 0 : NROBUST, 0,
+    zp_sim_opts solver = st.sim;
+    solver.peaks = fast.peaks;
+    rc = zp_verify_run(&ob, &solver, res.force, st.seed, res.interrupted ? 0 : NROBUST, 0,
                        &best_sim, &v, err, sizeof err);
-    if (st) {
+    if (rc) {
         fprintf(stderr, "zipopt: %s; nothing was written\n", err);
         goto done;
     }
-    static zp_result study;
+    zp_result study;
     double study_f[ZP_MAX_SECTIONS];
     for (int k = 0; k < m->nsec; k++) {
         study_f[k] = STUDY_FORCE;
     }
-    study_sim = zp_sim_create(m, &fast);
-    zp_input in = {.force = study_f};
+    study_sim = zp_sim_create(m, &st.search);
+    zp_schedule study_sched = zp_schedule_sections(m->nsec, study_f, 0, 0);
+    zp_input in = {.sched = &study_sched};
     if (!study_sim || zp_sim_run(m, study_sim, &in, &study)) {
         fprintf(stderr, "zipopt: the study's %d N run failed: %s; nothing was written\n",
                 STUDY_FORCE, study_sim ? study.message : "out of memory");
@@ -276,12 +275,11 @@ int zp_cmd_search(int argc, char **argv) {
     if (!a.no_plot) {
         zp_plot_opts po;
         zp_plot_opts_default(&po);
-        po.margin = sc.margin * M_PI / 180;
-        po.force = res.force;
+        po.margin = sc->margin * M_PI / 180;
+        zp_schedule best = zp_schedule_with(&st.sched, res.force);
+        po.sched = &best;
         zp_plot_info info;
-        int nrows;
-        const zp_row *rows = zp_sim_rows(best_sim, &nrows);
-        if (zp_plot_run(dir, m, rows, nrows, v.run, &po, &info, err, sizeof err)) {
+        if (zp_plot_run(dir, m, best_sim, v.run, &po, &info, err, sizeof err)) {
             fprintf(stderr, "zipopt: figures: %s; nothing was written\n", err);
             goto done;
         }
@@ -293,12 +291,12 @@ int zp_cmd_search(int argc, char **argv) {
         }
     }
     int robust = pb.robust;
-    zp_report r = {.sc = &sc, .m = m, .res = &res, .v = &v, .study = &study,
-                   .study_force = STUDY_FORCE, .algo = zp_search_algo_get(o.algo)->name,
-                   .method = zp_method_get(so.method)->name, .scene_arg = a.scene,
-                   .out_dir = dir, .figures = figures, .lim = &pb.ob.lim,
-                   .box = robust ? &pb.box : NULL, .set = robust ? &pb.set : NULL,
-                   .rinfo = robust ? &pb.info : NULL, .check = robust ? &pb.check : NULL};
+    zp_report r = {sc, m, &res, &v, best_sim, &study, STUDY_FORCE,
+                   zp_search_algo_get(o.algo)->name, zp_method_get(st.sim.method)->name, a.scene,
+                   dir, figures, &fast, &solver, &st.sched, st.seed, st.max_evals,
+                   .lim = &pb.ob.lim, .box = robust ? &pb.box : NULL,
+                   .set = robust ? &pb.set : NULL, .rinfo = robust ? &pb.info : NULL,
+                   .check = robust ? &pb.check : NULL};
     status = write_outputs(&r, best_sim);
     if (status == ZP_EXIT_OK) {
         char cp[1100];
@@ -320,6 +318,6 @@ done:
     zp_sim_free(best_sim);
     zp_sim_free(study_sim);
     zp_robust_problem_free(&pb);
-    zp_model_free(m);
+    zp_setup_free(&st);
     return status;
 }

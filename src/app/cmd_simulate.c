@@ -10,6 +10,7 @@
 #include "out_file.h"
 #include "out_json.h"
 #include "plot.h"
+#include "setup.h"
 #include "sim.h"
 
 #define MAX_SAMPLES 10000
@@ -140,11 +141,16 @@ static void print_estimate(const zp_result *r, const zp_estimate *e) {
         printf("time error estimate: %.2g s (difference from a run at rtol %.0e)\n",
                e->time_error, e->rtol);
     }
+    if (e->ok && e->energy_large) {
+        printf("SUSPECT: the energy audit residual %.3g J is large against the energies of the "
+               "run: the tolerances are too loose for this answer\n",
+               e->energy_residual);
+    }
 }
 
 /* trajectory.csv and summary.json, both or neither */
 static int write_files(const char *dir, const zp_model *m, zp_sim *s, const zp_result *r,
-                       const zp_row *smp, int nsmp, const zp_run_meta *meta) {
+                       const zp_run_meta *meta) {
     zp_out_set set;
     zp_out_set_init(&set);
     char err[1200] = "";
@@ -158,7 +164,7 @@ static int write_files(const char *dir, const zp_model *m, zp_sim *s, const zp_r
     int nrows;
     const zp_row *rows = zp_sim_rows(s, &nrows);
     zp_out_csv_trajectory(csv, m, rows, nrows);
-    zp_out_json_result(js, m, r, smp, nsmp, meta);
+    zp_out_json_result(js, m, r, s, meta);
     if (zp_out_set_commit(&set, err, sizeof err)) {
         fprintf(stderr, "zipopt simulate: %s; nothing was written\n", err);
         return ZP_EXIT_FAIL;
@@ -167,16 +173,18 @@ static int write_files(const char *dir, const zp_model *m, zp_sim *s, const zp_r
 }
 
 /* the --plot options, checked before the run; 0, or -1 with the message printed */
-static int plot_opts(const sim_args *a, const zp_model *m, const zp_scene *sc, zp_plot_opts *po) {
+static int plot_opts(const sim_args *a, const zp_setup *st, zp_plot_opts *po) {
+    const zp_model *m = st->m;
+    const zp_scene *sc = &st->sc;
     zp_plot_opts_default(po);
     po->margin = sc->margin * M_PI / 180;
-    po->force = sc->forces;
+    po->sched = &st->sched;
     po->animate = a->animate;
     char why[256] = "", expect[128] = "";
     const char *opt = NULL;
-    if (a->plot && !(sc->output_dt > 0)) {
+    if (a->plot && !(st->sim.output_dt > 0)) {
         opt = "--plot";
-        snprintf(why, sizeof why, "[solver] output_dt = %g gives no trajectory", sc->output_dt);
+        snprintf(why, sizeof why, "[solver] output_dt = %g gives no trajectory", st->sim.output_dt);
         snprintf(expect, sizeof expect, "output_dt > 0 in the scene");
     } else if (a->frames_text && zp_plot_parse_frames(m, a->frames_text, po, why, sizeof why)) {
         opt = "--frames-at";
@@ -205,11 +213,9 @@ static int plot_opts(const sim_args *a, const zp_model *m, const zp_scene *sc, z
 /* the figures of the run; says what was made (on stderr when stdout carries JSON) */
 static int draw(const char *dir, const zp_model *m, zp_sim *s, const zp_result *r,
                 const zp_plot_opts *po, FILE *say) {
-    int nrows;
-    const zp_row *rows = zp_sim_rows(s, &nrows);
     zp_plot_info info;
     char err[1200];
-    if (zp_plot_run(dir, m, rows, nrows, r, po, &info, err, sizeof err)) {
+    if (zp_plot_run(dir, m, s, r, po, &info, err, sizeof err)) {
         fprintf(stderr, "zipopt simulate: %s; no figures were written\n", err);
         return ZP_EXIT_FAIL;
     }
@@ -241,19 +247,16 @@ int zp_cmd_simulate(int argc, char **argv) {
     if (parse_args(argc, argv, &a)) {
         return ZP_EXIT_USAGE;
     }
-    zp_scene sc;
-    zp_model *m = zp_cli_load(a.scene, &sc);
-    if (!m) {
+    static zp_setup st; /* large: kept off the stack */
+    zp_overrides ov = {a.schedule, a.force_text, -1, 0};
+    if (zp_setup_load("simulate", a.scene, &ov, &st)) {
         return ZP_EXIT_USAGE;
     }
+    const zp_model *m = st.m;
+    zp_sim_opts o = st.sim;
     int status = ZP_EXIT_USAGE;
     zp_sim *s = NULL;
     double *samples = NULL;
-    zp_diag d;
-    zp_diag_init(&d);
-    if (zp_cli_apply_forces("simulate", &sc, a.schedule, a.force_text)) {
-        goto done;
-    }
     char why[256];
     int nsample = 0;
     if (a.sample_text) {
@@ -273,43 +276,36 @@ int zp_cmd_simulate(int argc, char **argv) {
         }
         qsort(samples, nsample, sizeof *samples, cmp_double);
     }
-    zp_sim_opts o;
-    if (zp_sim_opts_from_scene(&sc, &o, &d)) {
-        zp_diag_print(&d, stderr);
-        goto done;
-    }
     zp_plot_opts po;
-    if (plot_opts(&a, m, &sc, &po)) {
+    if (plot_opts(&a, &st, &po)) {
         goto done;
     }
     status = ZP_EXIT_FAIL;
     zp_limits lim;
-    zp_limits_from_scene(&sc, &lim);
+    zp_limits_from_scene(&st.sc, &lim);
     o.peaks = zp_limits_need_peaks(&lim);
     s = zp_sim_create(m, &o);
     if (!s) {
         fputs("zipopt simulate: cannot create the simulator (out of memory)\n", stderr);
         goto done;
     }
-    static zp_result r; /* large: kept off the stack */
-    zp_input in = {.force = sc.forces, .sample_t = samples, .nsample = nsample};
+    zp_result r;
+    zp_input in = {.sched = &st.sched, .sample_t = samples, .nsample = nsample};
     if (zp_sim_run(m, s, &in, &r)) {
         fprintf(stderr, "zipopt simulate: %s; nothing was written\n", r.message);
         goto done;
     }
-    int nsmp;
-    const zp_row *smp = zp_sim_samples(s, &nsmp);
     zp_estimate est;
     zp_estimate_run(m, &o, &in, &r, &est);
-    zp_run_meta meta = {sc.name, zp_method_get(o.method)->name,
-                        zp_formulation_get(o.formulation)->name, o.rtol, o.atol, sc.forces, &est,
+    zp_run_meta meta = {st.sc.name, zp_method_get(o.method)->name,
+                        zp_formulation_get(o.formulation)->name, o.rtol, o.atol, &st.sched, &est,
                         &lim};
     char dir[1024];
-    zp_cli_out_dir(a.out, &sc, dir, sizeof dir);
-    status = write_files(dir, m, s, &r, smp, nsmp, &meta);
+    zp_cli_out_dir(a.out, &st.sc, dir, sizeof dir);
+    status = write_files(dir, m, s, &r, &meta);
     if (status == ZP_EXIT_OK) {
         if (a.json) {
-            zp_out_json_result(stdout, m, &r, smp, nsmp, &meta);
+            zp_out_json_result(stdout, m, &r, s, &meta);
         } else {
             print_text(m, &r);
             print_limits(m, &r, &lim);
@@ -323,6 +319,6 @@ int zp_cmd_simulate(int argc, char **argv) {
 done:
     free(samples);
     zp_sim_free(s);
-    zp_model_free(m);
+    zp_setup_free(&st);
     return status;
 }

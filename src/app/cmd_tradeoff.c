@@ -8,6 +8,7 @@
 #include "cli.h"
 #include "gnuplot.h"
 #include "robust.h"
+#include "setup.h"
 
 #define MAX_LEVELS 16
 #define KMH 3.6
@@ -35,22 +36,26 @@ typedef struct level_out {
 } level_out;
 
 /* the robust answer at force error p; its arrival speed from one nominal run */
-static zp_status solve_level(const zp_scene *base, const zp_model *m, const zp_sim_opts *so,
-                             double p, level_out *out, char *err, size_t errlen) {
-    zp_scene sc = *base;
+static zp_status solve_level(const zp_setup *su, double p, level_out *out, char *err,
+                             size_t errlen) {
+    zp_scene sc = su->sc;
+    const zp_model *m = su->m;
     sc.force_error = p;
     sc.robust = sc.robust || p > 0;
-    zp_robust_problem pb;
+    static zp_robust_problem pb;
     zp_sim_opts fast;
     static zp_search_result res;
     static zp_result run;
-    zp_status st = zp_robust_setup(&pb, &sc, m, so, &fast);
-    zp_search_opts o = {.max_evals = sc.max_evals, .seed = sc.seed};
+    zp_status st = zp_robust_setup(&pb, &sc, m, su->limit, &su->sched, &su->sim, &su->search,
+                                   &fast);
+    zp_search_opts o = {.max_evals = su->max_evals, .seed = su->seed};
     if (!st) {
-        st = zp_robust_solve(&pb, &sc, so, &fast, &o, &res, err, errlen);
+        st = zp_robust_solve(&pb, &sc, &su->sim, &fast, su->sched.lo[0], su->sched.hi[0], &o,
+                             &res, err, errlen);
     }
     zp_sim *s = st ? NULL : zp_sim_create(m, &fast);
-    zp_input in = {.force = res.force};
+    zp_schedule sched = zp_schedule_with(&su->sched, res.force);
+    zp_input in = {.sched = &sched};
     if (!st && (!s || zp_sim_run(m, s, &in, &run))) {
         snprintf(err, errlen, "the answer's run failed: %s", s ? run.message : "out of memory");
         st = ZP_ERR_NUMERIC;
@@ -170,21 +175,16 @@ int zp_cmd_tradeoff(int argc, char **argv) {
     }
     double lv[MAX_LEVELS];
     int n = parse_levels(levels, lv);
-    zp_scene sc;
-    zp_model *m = n < 1 ? NULL : zp_cli_load(scene, &sc);
-    zp_diag d;
-    zp_diag_init(&d);
-    zp_sim_opts so;
-    if (!m || zp_sim_opts_from_scene(&sc, &so, &d)) {
-        zp_diag_print(&d, stderr);
-        zp_model_free(m);
+    static zp_setup su; /* large: kept off the stack */
+    if (n < 1 || zp_setup_load("tradeoff", scene, &ZP_OVERRIDES_NONE, &su)) {
         return ZP_EXIT_USAGE;
     }
+    const zp_scene *sc = &su.sc;
     static level_out L[MAX_LEVELS];
     char err[1200] = "";
     int status = ZP_EXIT_FAIL;
     for (int i = 0; i < n; i++) {
-        if (solve_level(&sc, m, &so, lv[i], &L[i], err, sizeof err)) {
+        if (solve_level(&su, lv[i], &L[i], err, sizeof err)) {
             fprintf(stderr, "zipopt tradeoff: level %g %%: %s; nothing was written\n", lv[i], err);
             goto done;
         }
@@ -192,7 +192,7 @@ int zp_cmd_tradeoff(int argc, char **argv) {
                 L[i].time);
     }
     char dir[1024], base[1024];
-    zp_cli_out_dir(out, &sc, base, sizeof base);
+    zp_cli_out_dir(out, sc, base, sizeof base);
     snprintf(dir, sizeof dir, out ? "%s" : "%s/tradeoff", base);
     zp_gnuplot g;
     if (zp_gnuplot_begin(&g, dir, err, sizeof err)) {
@@ -208,9 +208,9 @@ int zp_cmd_tradeoff(int argc, char **argv) {
         fprintf(stderr, "zipopt tradeoff: %s; nothing was written\n", err);
         goto done;
     }
-    write_csv(csv, L, n, m->nsec);
+    write_csv(csv, L, n, su.m->nsec);
     write_plot(gp);
-    write_md(md, &sc, L, n);
+    write_md(md, sc, L, n);
     if (zp_gnuplot_finish(&g, &missing, err, sizeof err)) {
         fprintf(stderr, "zipopt tradeoff: %s\n", err);
         goto done;
@@ -224,6 +224,6 @@ int zp_cmd_tradeoff(int argc, char **argv) {
            missing ? " (no gnuplot: tradeoff.gp without its image)" : "");
     status = ZP_EXIT_OK;
 done:
-    zp_model_free(m);
+    zp_setup_free(&su);
     return status;
 }

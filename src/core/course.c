@@ -4,6 +4,7 @@
 
 #include <assert.h>
 #include <ctype.h>
+#include <math.h>
 #include <matheval.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -188,17 +189,20 @@ int zp_course_check(const char *expr, char *err, size_t errlen) {
     return 0;
 }
 
-zp_course *zp_course_create(int nsec, const char *const *expr, char *err, size_t errlen) {
+zp_course *zp_course_create(int nsec, const char *const *expr, zp_course_err *e) {
     assert(nsec >= 0);
+    *e = (zp_course_err){0, ""};
     zp_course *c = calloc(1, sizeof *c + (size_t)nsec * sizeof c->sec[0]);
     if (!c) {
-        snprintf(err, errlen, "out of memory");
+        snprintf(e->what, sizeof e->what, "out of memory");
         return NULL;
     }
     for (int k = 0; k < nsec; k++) {
         char why[256];
         if (compile(expr[k], &c->sec[k], why, sizeof why)) {
-            snprintf(err, errlen, "section %d: f(x) = `%s`: %s", k + 1, expr[k], why);
+            e->section = k + 1;
+            snprintf(e->what, sizeof e->what, "section %d: f(x) = `%.200s`: %s", k + 1, expr[k],
+                     why);
             zp_course_free(c);
             return NULL;
         }
@@ -217,11 +221,22 @@ void zp_course_free(zp_course *c) {
     free(c);
 }
 
+/* f'' where its expression overflows though f' is finite (tanh(100 x) far from 0: sinh/cosh^3
+   is inf/inf): the central difference of f', which the finite f' bounds */
+static double fpp_by_difference(const zp_course_sec *s, double x) {
+    double h = 1e-6 * (1 + fabs(x));
+    return (evaluator_evaluate_x(s->fp, x + h) - evaluator_evaluate_x(s->fp, x - h)) / (2 * h);
+}
+
 zp_track zp_course_eval(const zp_course *c, int sec, double x) {
     assert(sec >= 0 && sec < c->nsec);
     const zp_course_sec *s = &c->sec[sec];
-    return (zp_track){evaluator_evaluate_x(s->f, x), evaluator_evaluate_x(s->fp, x),
-                      evaluator_evaluate_x(s->fpp, x)};
+    zp_track t = {evaluator_evaluate_x(s->f, x), evaluator_evaluate_x(s->fp, x),
+                  evaluator_evaluate_x(s->fpp, x)};
+    if (!isfinite(t.fpp) && isfinite(t.fp)) {
+        t.fpp = fpp_by_difference(s, x);
+    }
+    return t;
 }
 
 const char *zp_course_deriv_text(const zp_course *c, int sec, int order) {

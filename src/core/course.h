@@ -13,10 +13,16 @@ typedef struct zp_track {
     double fpp; /* 1/m */
 } zp_track;
 
-/* Compiles nsec expressions in x. Returns NULL and writes err (naming the section, 1-based)
-   when one does not parse or uses a variable other than x. Each zp_course owns its
-   evaluators: libmatheval is not thread-safe, so each thread's workspace creates its own. */
-zp_course *zp_course_create(int nsec, const char *const *expr, char *err, size_t errlen);
+/* Why a course did not compile. */
+typedef struct zp_course_err {
+    int section;    /* 1-based section whose f(x) failed; 0: none in particular (out of memory) */
+    char what[512]; /* "section 2: f(x) = `x +`: syntax error; expected .." */
+} zp_course_err;
+
+/* Compiles nsec expressions in x. Returns NULL and fills e when one does not parse or uses a
+   variable other than x. Each zp_course owns its evaluators: libmatheval is not thread-safe,
+   so each thread's workspace creates its own. */
+zp_course *zp_course_create(int nsec, const char *const *expr, zp_course_err *e);
 void zp_course_free(zp_course *c);
 /* Checks one f(x) text exactly as zp_course_create does, for messages that name the scene
    line: 0 when it compiles, else -1 with what is wrong and what is expected in err. */

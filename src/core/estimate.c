@@ -6,14 +6,31 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-void zp_estimate_run(const zp_model *m, const zp_sim_opts *o, const zp_input *in,
-                     const zp_result *r, zp_estimate *e) {
+/* the work-energy audit of MODEL.md: E_final - E_initial - W_drive + W_damp + E_impulse */
+static double energy_residual(const zp_result *r) {
+    return r->e_final - r->e_initial - r->w_drive + r->w_damp + r->e_impulse;
+}
+
+/* the energies the audit adds up: a residual is judged against their size */
+static double energy_scale(const zp_result *r) {
+    return fabs(r->e_initial) + fabs(r->e_final) + fabs(r->w_drive) + fabs(r->w_damp) +
+           fabs(r->e_impulse);
+}
+
+zp_sim_opts zp_estimate_tighter(const zp_sim_opts *o) {
     zp_sim_opts ot = *o;
+    /* both tighter: rtol down to round-off, atol by the whole factor (it has no such floor) */
     ot.rtol = fmax(o->rtol / ZP_ESTIMATE_FACTOR, ZP_ESTIMATE_RTOL_MIN);
-    ot.atol = o->atol * ot.rtol / o->rtol;
+    ot.atol = o->atol / ZP_ESTIMATE_FACTOR;
     ot.output_dt = 0;
     ot.track_loads = 0;
-    zp_input it = {.force = in->force, .start = in->start};
+    return ot;
+}
+
+void zp_estimate_run(const zp_model *m, const zp_sim_opts *o, const zp_input *in,
+                     const zp_result *r, zp_estimate *e) {
+    zp_sim_opts ot = zp_estimate_tighter(o);
+    zp_input it = {.sched = in->sched, .start = in->start};
     *e = (zp_estimate){.rtol = ot.rtol, .atol = ot.atol, .time_error = NAN};
     /* heap, not static: a library function keeps no state between calls (or threads) */
     zp_result *tight = malloc(sizeof *tight);
@@ -30,6 +47,8 @@ void zp_estimate_run(const zp_model *m, const zp_sim_opts *o, const zp_input *in
         e->time_error = fabs(r->time - tight->time);
         e->sensitive = tight->outcome != r->outcome || tight->died_link != r->died_link ||
                        tight->stall != r->stall;
+        e->energy_residual = energy_residual(r);
+        e->energy_large = fabs(e->energy_residual) > ZP_ESTIMATE_ENERGY_REL * energy_scale(r);
     }
     zp_sim_free(s);
     free(tight);

@@ -3,11 +3,14 @@
 
 #include "formulation.h"
 
-extern const zp_formulation zp_form_lagrange, zp_form_newton;
+#define ZP_FORM(id, obj) extern const zp_formulation obj;
+#include "formulations.def"
+#undef ZP_FORM
 
 static const zp_formulation *const registry[ZP_FORM_COUNT] = {
-    [ZP_FORM_LAGRANGE] = &zp_form_lagrange,
-    [ZP_FORM_NEWTON] = &zp_form_newton,
+#define ZP_FORM(id, obj) [ZP_FORM_##id] = &obj,
+#include "formulations.def"
+#undef ZP_FORM
 };
 
 const zp_formulation *zp_formulation_get(int id) {

@@ -43,7 +43,13 @@ typedef struct zp_formulation {
                                   const double *y);
 } zp_formulation;
 
-typedef enum { ZP_FORM_LAGRANGE, ZP_FORM_NEWTON, ZP_FORM_COUNT } zp_form_id;
+/* ZP_FORM_<ID> for every line of formulations.def */
+typedef enum {
+#define ZP_FORM(id, obj) ZP_FORM_##id,
+#include "formulations.def"
+#undef ZP_FORM
+    ZP_FORM_COUNT
+} zp_form_id;
 
 const zp_formulation *zp_formulation_get(int id);
 int zp_formulation_find(const char *name); /* -1 if unknown */

@@ -7,19 +7,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char *const drive_names[ZP_DRIVE_COUNT] = {"horizontal", "tangent"};
-
-const char *zp_model_drive_name(zp_drive_dir d) { return drive_names[d]; }
-
-int zp_model_drive_find(const char *name) {
-    for (int i = 0; i < ZP_DRIVE_COUNT; i++) {
-        if (!strcmp(name, drive_names[i])) {
-            return i;
-        }
-    }
-    return -1;
-}
-
 /* the chain's constant coefficients: M_x,thj = B_j (cos thj + f' sin thj),
    M_thj,thk = C_jk cos(thj - thk) (derivation in form_lagrange.c) */
 void zp_model_derive(zp_model *m) {
@@ -46,22 +33,47 @@ void zp_model_derive(zp_model *m) {
     }
 }
 
+/* probes per section: at least 4096, and no gap over 1 cm below 2^20 of them, so a narrow
+   non-finite stretch (a NaN gap, a pole) is met, not stepped over */
+static int probe_count(double width) {
+    return (int)fmin(fmax(4096, ceil(width / 0.01)), 1 << 20);
+}
+
+/* section k over its range: f and f' finite (an f'' that overflows where f' is finite is the
+   derivative expression's overflow, which zp_course_eval replaces by a difference), and no
+   jump between neighbouring probes that the slopes at both ends do not explain (a pole, where
+   tan stays finite in floating point). 0 and the x that fails in *bad. */
+static int section_smooth(const zp_model *m, int k, double *bad) {
+    int n = probe_count(m->xb[k + 1] - m->xb[k]);
+    double h = (m->xb[k + 1] - m->xb[k]) / n;
+    zp_track prev = {0};
+    for (int p = 0; p <= n; p++) {
+        double x = m->xb[k] + (m->xb[k + 1] - m->xb[k]) * p / n;
+        zp_track tr = zp_course_eval(m->course, k, x);
+        *bad = x;
+        if (!isfinite(tr.f) || !isfinite(tr.fp) || !isfinite(tr.fpp)) {
+            return 0;
+        }
+        double df = tr.f - prev.f, trap = 0.5 * h * (tr.fp + prev.fp);
+        if (p > 0 && fabs(df - trap) > 0.5 * (fabs(df) + fabs(trap)) + 1e-9 * (1 + fabs(tr.f))) {
+            return 0;
+        }
+        prev = tr;
+    }
+    return 1;
+}
+
 /* every section's f finite over its range; neighbours meet; slope jumps listed as kinks */
 static int check_course(zp_model *m, const zp_scene *sc, zp_diag *d) {
-    const int nprobe = 64;
     int ok = 1;
     for (int k = 0; k < m->nsec; k++) {
-        for (int p = 0; p <= nprobe; p++) {
-            double x = m->xb[k] + (m->xb[k + 1] - m->xb[k]) * p / nprobe;
-            zp_track tr = zp_course_eval(m->course, k, x);
-            if (!isfinite(tr.f) || !isfinite(tr.fp) || !isfinite(tr.fpp)) {
-                zp_diag_add(d, sc->path, sc->sec_line[k], "course", "section",
-                            "f(x) = %s is not finite at x = %g (or its slope or curvature is "
-                            "not); expected a smooth curve over [%g, %g]",
-                            m->expr[k], x, m->xb[k], m->xb[k + 1]);
-                ok = 0;
-                break;
-            }
+        double x;
+        if (!section_smooth(m, k, &x)) {
+            zp_diag_add(d, sc->path, sc->sec_line[k], "course", "section",
+                        "f(x) = %s is not finite or not continuous near x = %.9g (or its slope "
+                        "is not); expected a smooth curve over [%g, %g]",
+                        m->expr[k], x, m->xb[k], m->xb[k + 1]);
+            ok = 0;
         }
     }
     if (!ok) {
@@ -73,9 +85,9 @@ static int check_course(zp_model *m, const zp_scene *sc, zp_diag *d) {
         zp_track l = zp_course_eval(m->course, k, b), r = zp_course_eval(m->course, k + 1, b);
         if (fabs(l.f - r.f) > 1e-9 * (1 + fabs(l.f))) {
             zp_diag_add(d, sc->path, sc->sec_line[k + 1], "course", "section",
-                        "the course is discontinuous at x = %g: section %d ends at y = %.10g, "
-                        "section %d starts at y = %.10g (jump %.3g m); expected sections that "
-                        "meet",
+                        "the course is discontinuous at x = %g: section %d ends at y = %.17g, "
+                        "section %d starts at y = %.17g (jump %.3g m); expected sections that "
+                        "meet within 1e-9 (1 + |y|) m (write `y0` for where the previous ends)",
                         b, k + 1, l.f, k + 2, r.f, r.f - l.f);
             ok = 0;
             continue;
@@ -87,12 +99,12 @@ static int check_course(zp_model *m, const zp_scene *sc, zp_diag *d) {
     return ok;
 }
 
-zp_course *zp_model_course(const zp_model *m, char *err, size_t errlen) {
+zp_course *zp_model_course(const zp_model *m, zp_course_err *e) {
     const char *exprs[ZP_MAX_SECTIONS];
     for (int k = 0; k < m->nsec; k++) {
         exprs[k] = m->expr[k];
     }
-    return zp_course_create(m->nsec, exprs, err, errlen);
+    return zp_course_create(m->nsec, exprs, e);
 }
 
 zp_model *zp_model_build(const zp_scene *sc, zp_diag *d) {
@@ -108,14 +120,13 @@ zp_model *zp_model_build(const zp_scene *sc, zp_diag *d) {
         m->xb[k + 1] = sc->x_end[k];
         memcpy(m->expr[k], sc->expr[k], ZP_EXPR_MAX);
     }
-    char err[256] = "";
-    m->course = zp_model_course(m, err, sizeof err);
+    zp_course_err ce;
+    m->course = zp_model_course(m, &ce);
     if (!m->course) {
-        /* the message names the 1-based section; its line is that section's key */
-        int k = 0;
-        sscanf(err, "section %d", &k);
+        /* the line of the failing section's key */
+        int k = ce.section;
         int line = (k >= 1 && k <= sc->nsec) ? sc->sec_line[k - 1] : 0;
-        zp_diag_add(d, sc->path, line, "course", "section", "%s", err);
+        zp_diag_add(d, sc->path, line, "course", "section", "%s", ce.what);
         free(m);
         return NULL;
     }
@@ -130,7 +141,7 @@ zp_model *zp_model_build(const zp_scene *sc, zp_diag *d) {
         m->damp[i] = sc->ndamping == 1 ? sc->damping[0] : sc->damping[i];
     }
     m->phi_max = sc->death_angle * M_PI / 180.0;
-    int dir = zp_model_drive_find(sc->direction);
+    int dir = zp_drive_dir_find(sc->direction);
     m->drive = dir < 0 ? ZP_DRIVE_HORIZONTAL : (zp_drive_dir)dir;
     zp_model_derive(m);
 

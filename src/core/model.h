@@ -5,9 +5,8 @@
 
 #include "course.h"
 #include "diag.h"
+#include "drive.h"
 #include "scene.h"
-
-typedef enum { ZP_DRIVE_HORIZONTAL, ZP_DRIVE_TANGENT, ZP_DRIVE_COUNT } zp_drive_dir;
 
 typedef struct zp_kink {
     int left;         /* section on the left (0-based); the kink is at xb[left + 1] */
@@ -49,10 +48,7 @@ void zp_model_free(zp_model *m);
 /* Recomputes mtot, B and C from m0, len, half, mass and inertia (after changing them). */
 void zp_model_derive(zp_model *m);
 /* A new set of course evaluators for m's sections, owned by the caller (one per thread);
-   NULL with why in err. */
-zp_course *zp_model_course(const zp_model *m, char *err, size_t errlen);
-/* Names for the user-typed drive directions (CONFIG.md), and lookup (-1 if unknown). */
-const char *zp_model_drive_name(zp_drive_dir d);
-int zp_model_drive_find(const char *name);
+   NULL with why in e. */
+zp_course *zp_model_course(const zp_model *m, zp_course_err *e);
 
 #endif

@@ -35,13 +35,6 @@ void zp_scenario_start(const zp_chain *nominal, int nlink, const zp_scenario *s,
     }
 }
 
-void zp_scenario_forces(const zp_model *m, const zp_scenario *s, const double *force,
-                        double *out) {
-    for (int k = 0; k < m->nsec; k++) {
-        out[k] = force[k] * s->force[k];
-    }
-}
-
 static const char *const limit_names[ZP_LIMIT_COUNT] = {"max_g", "max_joint_force",
                                                          "max_arrival_speed", "max_kink_dv"};
 static const char *const limit_units[ZP_LIMIT_COUNT] = {"g", "N", "km/h", "m/s"};

@@ -21,10 +21,6 @@ void zp_scenario_model(const zp_model *nom, const zp_scenario *s, zp_model *out)
 /* The start of s: nominal (the MODEL.md start, zp_state_start) with each of the nlink links
    turned to s->theta, at rest. */
 void zp_scenario_start(const zp_chain *nominal, int nlink, const zp_scenario *s, zp_chain *c);
-/* force scaled by s's factors, per section. */
-void zp_scenario_forces(const zp_model *m, const zp_scenario *s, const double *force,
-                        double *out);
-
 /* [limits] (CONFIG.md): each 0 when off. */
 typedef enum { ZP_LIMIT_G, ZP_LIMIT_JOINT, ZP_LIMIT_ARRIVAL, ZP_LIMIT_KINK_DV, ZP_LIMIT_COUNT }
 zp_limit_id;

@@ -11,6 +11,25 @@
 #define ZP_MAX_SECTIONS 64
 #define ZP_EXPR_MAX 256
 #define ZP_NAME_MAX 128
+#define ZP_MAX_DRIVE_PARAMS (4 * ZP_MAX_SECTIONS) /* parameters of a drive schedule */
+
+/* Bounds the reader holds [solver] to (CONFIG.md), each also as text for its messages.
+   Tolerances: tighter than 1e-14 (rtol) is below round-off for every method; looser than
+   1e-2 answers nothing worth the name; atol in m, m/s, rad. t_max: CVODE sizes its first step
+   from it (a first step of ~1e50 s fails at t = 0); a ride of 11 days is past any course.
+   Rows: t_max / output_dt + 1 trajectory rows at most, refused before running (each row is
+   held in memory, about 0.5 kB, and written to trajectory.csv: 1e6 rows is 0.5 GB). */
+#define ZP_RTOL_MIN 1e-14
+#define ZP_RTOL_MAX 1e-2
+#define ZP_ATOL_MIN 1e-16
+#define ZP_ATOL_MAX 1.0
+#define ZP_T_MAX_MAX 1e6
+#define ZP_MAX_ROWS 1000000
+#define ZP_RTOL_MIN_S "1e-14"
+#define ZP_RTOL_MAX_S "1e-2"
+#define ZP_ATOL_MIN_S "1e-16"
+#define ZP_ATOL_MAX_S "1"
+#define ZP_T_MAX_MAX_S "1e6"
 
 typedef struct zp_scene {
     char path[1024];           /* the file this came from, for messages */
@@ -33,8 +52,9 @@ typedef struct zp_scene {
     double death_angle;           /* deg */
 
     char direction[16];                /* horizontal | tangent */
-    int nforce;                        /* 0 when absent: all forces 0 */
-    double forces[ZP_MAX_SECTIONS];    /* N, per section */
+    int drive_kind;                    /* zp_sched_kind (drive.h) of the forces */
+    int nforce;                        /* parameters; 0 when absent: all forces 0 */
+    double forces[ZP_MAX_DRIVE_PARAMS]; /* the schedule's parameters (N per section) */
     double force_min, force_max;       /* N, search bounds */
 
     char method[32];      /* integrator name (method registry) */
@@ -73,6 +93,10 @@ typedef struct zp_scene {
     double wind;                           /* m/s, horizontal, + toward +x */
     double rolling;                        /* rolling-resistance coefficient mu (default 0) */
     double kink_radius;                    /* m, 0: sharp kinks */
+
+    /* bit k set: the file gave key k of the reader's table (io/scene_read.h), so `check` can
+       show every key zipopt added itself */
+    unsigned long long given;
 
     /* lines of keys that later stages judge (0 if absent), for their messages */
     int line_forces, line_method, line_formulation, line_search_method, line_kink_radius;

@@ -36,7 +36,10 @@ struct zp_sim {
     int *roots;       /* owned, nroot */
 
     /* the run under way */
-    const double *force; /* borrowed, per section */
+    const zp_schedule *sched; /* borrowed */
+    const double *scale;      /* borrowed, per section, NULL: 1 (zp_input.force_scale) */
+    double breaks[ZP_SCHED_MAX_BREAKS]; /* s, where the force jumps in time */
+    int nbreak;
     int sec;
     double e_impulse; /* J, cumulative */
     zp_row *rows;     /* owned, cap_rows */
@@ -44,13 +47,18 @@ struct zp_sim {
     zp_row *samples; /* owned, cap_samples */
     int nsamples, cap_samples;
     zp_load_peaks peaks; /* so far; every evaluation of the loads updates them */
+    zp_crossing *cross;  /* owned, ZP_MAX_CROSSINGS */
+    int ncross;          /* kept in cross (the result counts all) */
     gsl_min_fminimizer *brent; /* owned when o.peaks */
 };
 
-/* course and drive at the trolley's x on the current section */
-static zp_drive_now drive_now(const zp_sim *s, double x) {
+/* course and drive at time t and the trolley's x on the current section */
+static zp_drive_now drive_now(const zp_sim *s, double t, double x) {
     zp_drive_now dn = {zp_course_eval(s->course, s->sec, x), 0, 0};
-    double F = s->force[s->sec];
+    double F = zp_schedule_force(s->sched, t, x, s->sec);
+    if (s->scale) {
+        F *= s->scale[s->sec];
+    }
     if (s->m->drive == ZP_DRIVE_TANGENT) {
         double norm = sqrt(1 + dn.tr.fp * dn.tr.fp);
         dn.fx = F / norm;
@@ -65,8 +73,7 @@ static zp_drive_now drive_now(const zp_sim *s, double x) {
 int zp_sim_rhs(double t, const double *y, double *ydot, void *user);
 int zp_sim_rhs(double t, const double *y, double *ydot, void *user) {
     zp_sim *s = user;
-    zp_drive_now dn = drive_now(s, y[0]);
-    (void)t;
+    zp_drive_now dn = drive_now(s, t, y[0]);
     return s->form->rhs(s->m, s->fwork, &dn, y, ydot, NULL);
 }
 
@@ -96,6 +103,7 @@ void zp_sim_free(zp_sim *s) {
     free(s->roots);
     free(s->rows);
     free(s->samples);
+    free(s->cross);
     if (s->brent) {
         gsl_min_fminimizer_free(s->brent);
     }
@@ -115,8 +123,8 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
         zp_sim_free(s);
         return NULL;
     }
-    char err[256];
-    s->course = zp_model_course(m, err, sizeof err);
+    zp_course_err ce;
+    s->course = zp_model_course(m, &ce);
     s->n = s->form->nstate(m);
     s->nroot = zp_events_count(m);
     s->fwork = s->form->create(m);
@@ -124,6 +132,7 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
     s->ydot = calloc(s->n, sizeof *s->ydot);
     s->yout = calloc(s->n, sizeof *s->yout);
     s->roots = calloc(s->nroot, sizeof *s->roots);
+    s->cross = malloc(sizeof *s->cross * ZP_MAX_CROSSINGS);
     int dir[2 + 2 * ZP_MAX_LINKS];
     zp_events_directions(m, dir);
     zp_method_opts mo = {o->rtol, o->atol, o->max_steps};
@@ -132,11 +141,11 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
         s->brent = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
     }
     if (o->output_dt > 0) {
-        s->cap_rows = (int)fmin(o->t_max / o->output_dt + 2, 1e7);
+        s->cap_rows = (int)fmin(o->t_max / o->output_dt + 2, ZP_MAX_ROWS + 2);
         s->rows = malloc(sizeof *s->rows * s->cap_rows);
     }
-    if (!s->course || !s->fwork || !s->y || !s->ydot || !s->yout || !s->roots || !s->mwork ||
-        (o->output_dt > 0 && !s->rows) || (o->peaks && !s->brent)) {
+    if (!s->course || !s->fwork || !s->y || !s->ydot || !s->yout || !s->roots || !s->cross ||
+        !s->mwork || (o->output_dt > 0 && !s->rows) || (o->peaks && !s->brent)) {
         zp_sim_free(s);
         return NULL;
     }
@@ -150,15 +159,8 @@ static zp_chain chain_of(const zp_sim *s, const double *y) {
     return c;
 }
 
-/* link i's load: which 0, its felt (proper) acceleration |a - g| in g (1 hanging at rest);
-   which 1, the force of its joint in N */
-static double link_level(const zp_sim *s, const zp_loads *l, int which, int i) {
-    return which ? hypot(l->joint[i][0], l->joint[i][1])
-                 : hypot(l->acc[i + 1][0], l->acc[i + 1][1] + s->m->g) / s->m->g;
-}
-
 static zp_row row_of(zp_sim *s, double t, const double *y) {
-    zp_drive_now dn = drive_now(s, y[0]); /* its course point serves the chain too */
+    zp_drive_now dn = drive_now(s, t, y[0]); /* its course point serves the chain too */
     zp_row r = {.t = t, .sec = s->sec};
     s->form->to_chain(s->m, &dn.tr, y, &r.c);
     r.w_drive = y[s->n - 2];
@@ -168,9 +170,11 @@ static zp_row row_of(zp_sim *s, double t, const double *y) {
     zp_load_peaks *p = &s->peaks;
     p->normal_min = fmin(p->normal_min, r.loads.normal);
     p->normal_max = fmax(p->normal_max, r.loads.normal);
+    double joint[ZP_MAX_LINKS], acc_g[ZP_MAX_LINKS];
+    zp_row_loads(s->m, &r.loads, joint, acc_g);
     for (int i = 0; i < s->m->nlink; i++) {
-        p->joint[i] = fmax(p->joint[i], link_level(s, &r.loads, 1, i));
-        p->acc_g[i] = fmax(p->acc_g[i], link_level(s, &r.loads, 0, i));
+        p->joint[i] = fmax(p->joint[i], joint[i]);
+        p->acc_g[i] = fmax(p->acc_g[i], acc_g[i]);
     }
     return r;
 }
@@ -179,10 +183,12 @@ static zp_row row_of(zp_sim *s, double t, const double *y) {
    take them in as a side effect */
 static void load_levels(zp_sim *s, double t, const double *y, double lv[2]) {
     zp_row r = row_of(s, t, y);
+    double load[2][ZP_MAX_LINKS]; /* acceleration, joint force */
+    zp_row_loads(s->m, &r.loads, load[1], load[0]);
     for (int q = 0; q < 2; q++) {
         lv[q] = 0;
         for (int i = 0; i < s->m->nlink; i++) {
-            lv[q] = fmax(lv[q], link_level(s, &r.loads, q, i));
+            lv[q] = fmax(lv[q], load[q][i]);
         }
         lv[q] = isfinite(lv[q]) ? lv[q] : 0;
     }
@@ -251,8 +257,8 @@ static void step_peaks(zp_sim *s, double a, double b, const double la[2], const 
 }
 
 /* which way the trolley leaves x: its velocity, or from rest its acceleration */
-static int departure(zp_sim *s, const double *y) {
-    zp_row r = row_of(s, 0, y);
+static int departure(zp_sim *s, double t, const double *y) {
+    zp_row r = row_of(s, t, y);
     double v = r.c.v[0] != 0 ? r.c.v[0] : r.loads.acc[0][0];
     return (v > 0) - (v < 0);
 }
@@ -301,7 +307,7 @@ static void emit_outputs(zp_sim *s, const zp_input *in, double t_upto, int dense
     }
 }
 
-static void track_extremes(zp_sim *s, const double *y, zp_result *r) {
+static void track_extremes(zp_sim *s, double t, const double *y, zp_result *r) {
     double phi[ZP_MAX_LINKS], w[ZP_MAX_LINKS];
     s->form->relative(s->m, y, phi, w);
     for (int i = 0; i < s->m->nlink; i++) {
@@ -309,7 +315,7 @@ static void track_extremes(zp_sim *s, const double *y, zp_result *r) {
     }
     /* load and speed peaks, when asked for, are sampled at every step (one more rhs call) */
     if (s->o.track_loads) {
-        zp_chain c = row_of(s, 0, y).c;
+        zp_chain c = row_of(s, t, y).c;
         r->max_speed = fmax(r->max_speed, hypot(c.v[0], c.v[1]));
     }
     if (s->form->constraint_residual) {
@@ -347,18 +353,18 @@ static int cross_kink(zp_sim *s, double t, zp_result *r, int to) {
     s->e_impulse += imp.energy_lost;
     int from = s->sec;
     s->sec = to;
-    if (r->ncross < ZP_MAX_CROSSINGS) {
-        r->cross[r->ncross] = (zp_crossing){t, b, from, to, imp.lambda, imp.energy_lost};
+    if (s->ncross < ZP_MAX_CROSSINGS) {
+        s->cross[s->ncross++] = (zp_crossing){t, b, from, to, imp.lambda, imp.energy_lost};
     }
     r->ncross++;
     /* the last ZP_ZENO_RUN crossings: all at this kink, each close after the one before */
     int zeno = r->ncross >= ZP_ZENO_RUN && r->ncross <= ZP_MAX_CROSSINGS;
     for (int i = r->ncross - 1; zeno && i > r->ncross - ZP_ZENO_RUN; i--) {
-        const zp_crossing *p = &r->cross[i], *q = &r->cross[i - 1];
+        const zp_crossing *p = &s->cross[i], *q = &s->cross[i - 1];
         zeno = p->x == q->x && p->t - q->t < ZP_ZENO_DT;
     }
     int dir = to > from ? 1 : -1;
-    return zeno || r->ncross >= ZP_MAX_CROSSINGS || departure(s, s->y) * dir < 0;
+    return zeno || r->ncross >= ZP_MAX_CROSSINGS || departure(s, t, s->y) * dir < 0;
 }
 
 static void finish_result(zp_sim *s, zp_result *r, double t, zp_outcome o, zp_stall st) {
@@ -397,6 +403,16 @@ static void add_stats(zp_sim *s, zp_result *r) {
     r->rhs_evals += evals;
 }
 
+/* where the integrator stops next: the schedule's next break after t, or t_max */
+static double stop_after(const zp_sim *s, double t) {
+    for (int i = 0; i < s->nbreak; i++) {
+        if (s->breaks[i] > t) {
+            return fmin(s->breaks[i], s->o.t_max);
+        }
+    }
+    return s->o.t_max;
+}
+
 static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result *r) {
     zp_chain c;
     if (in->start) {
@@ -413,11 +429,11 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     int next_sample = 0;
     emit_outputs(s, in, t, 0, &next_row, &next_sample);
     /* a root finder ignores a root at t0: a start that rolls back at once is caught here */
-    if (departure(s, s->y) < 0) {
+    if (departure(s, t, s->y) < 0) {
         finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_ROLLED_BACK);
         return ZP_OK;
     }
-    if (s->meth->reset(s->mwork, t, s->y, s->o.t_max)) {
+    if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
         return fail(s, r, t, "the integrator could not start");
     }
     double ta = t, la[2] = {0, 0}; /* the last step's start and load levels there (o.peaks) */
@@ -441,7 +457,7 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             }
             return fail(s, r, t, err);
         }
-        track_extremes(s, s->y, r);
+        track_extremes(s, t, s->y, r);
         if (s->o.peaks) {
             double lb[2];
             load_levels(s, t, s->y, lb);
@@ -455,6 +471,13 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             if (s->y[0] < m->xb[s->sec] || s->y[0] > m->xb[s->sec + 1]) {
                 memset(s->roots, 0, sizeof *s->roots * s->nroot);
                 s->roots[s->y[0] < m->xb[s->sec] ? ZP_ROOT_LEFT : ZP_ROOT_RIGHT] = 1;
+            } else if (adv == ZP_ADV_STOP && s->nbreak > 0 && t < s->o.t_max) {
+                /* a break of the schedule: the force jumps, the integrator starts afresh */
+                add_stats(s, r);
+                if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
+                    return fail(s, r, t, "the integrator could not restart at a break");
+                }
+                continue;
             } else if (adv == ZP_ADV_STOP) {
                 add_stats(s, r);
                 finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_T_MAX);
@@ -490,7 +513,7 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_TRAPPED_AT_KINK);
             return ZP_OK;
         }
-        if (s->meth->reset(s->mwork, t, s->y, s->o.t_max)) {
+        if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
             return fail(s, r, t, "the integrator could not restart after the kink");
         }
         if (s->o.peaks) {
@@ -504,10 +527,12 @@ zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     clock_gettime(CLOCK_MONOTONIC, &t0);
     memset(r, 0, sizeof *r);
     s->m = m;
-    s->force = in->force;
+    s->sched = in->sched;
+    s->scale = in->force_scale;
+    s->nbreak = zp_schedule_breaks(in->sched, s->breaks, ZP_SCHED_MAX_BREAKS);
     s->sec = 0;
     s->e_impulse = 0;
-    s->nrows = s->nsamples = 0;
+    s->nrows = s->nsamples = s->ncross = 0;
     s->peaks = (zp_load_peaks){.normal_min = INFINITY, .normal_max = -INFINITY};
     zp_status st = run(m, s, in, r);
     clock_gettime(CLOCK_MONOTONIC, &t1);
@@ -523,6 +548,11 @@ const zp_row *zp_sim_rows(const zp_sim *s, int *n) {
 const zp_row *zp_sim_samples(const zp_sim *s, int *n) {
     *n = s->nsamples;
     return s->samples;
+}
+
+const zp_crossing *zp_sim_crossings(const zp_sim *s, int *n) {
+    *n = s->ncross;
+    return s->cross;
 }
 
 static const char *const outcome_names[ZP_OUTCOME_COUNT] = {"finished", "died", "stalled"};
@@ -551,11 +581,5 @@ zp_status zp_sim_opts_from_scene(const zp_scene *sc, zp_sim_opts *o, zp_diag *d)
                     "unknown formulation '%s'; expected one of those listed by zipopt --help",
                     sc->formulation);
     }
-    int search_method = zp_method_find(sc->search_method);
-    if (search_method < 0) {
-        zp_diag_add(d, sc->path, sc->line_search_method, "optimize", "method",
-                    "unknown method '%s'; expected one of those listed by zipopt --help",
-                    sc->search_method);
-    }
-    return o->method < 0 || o->formulation < 0 || search_method < 0 ? ZP_ERR_INPUT : ZP_OK;
+    return o->method < 0 || o->formulation < 0 ? ZP_ERR_INPUT : ZP_OK;
 }

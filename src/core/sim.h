@@ -6,6 +6,7 @@
 #include "formulation.h"
 #include "method.h"
 #include "model.h"
+#include "row.h"
 
 typedef enum {
     ZP_OUTCOME_FINISHED,
@@ -39,7 +40,9 @@ typedef struct zp_sim_opts {
 } zp_sim_opts;
 
 typedef struct zp_input {
-    const double *force;   /* borrowed; N, one per section */
+    const zp_schedule *sched; /* borrowed; the drive force at (t, x, section) */
+    const double *force_scale; /* borrowed, may be NULL: a factor on each section's force (a
+                                  scenario's force error) */
     const zp_chain *start; /* borrowed; NULL: the MODEL.md start. Its x must lie in section 1
                               and its y on the course; for tests and split runs */
     const double *sample_t; /* borrowed; s, ascending sample times (may be NULL) */
@@ -53,15 +56,6 @@ typedef struct zp_crossing {
     double impulse;     /* N s, Lambda of MODEL.md */
     double energy_lost; /* J */
 } zp_crossing;
-
-/* One sampled instant: the state in chain coordinates plus what the outputs need. */
-typedef struct zp_row {
-    double t;     /* s */
-    int sec;      /* 0-based */
-    zp_chain c;
-    double w_drive, w_damp, e_impulse; /* J, cumulative */
-    zp_loads loads;
-} zp_row;
 
 /* Extremes of the loads (MODEL.md forces) over a run, taken wherever the simulator evaluates
    them: the start, every integrator step, every output row and sample, and the state just
@@ -82,12 +76,12 @@ typedef struct zp_result {
     int died_link;  /* 1-based, 0 when nobody died */
     double max_rel_angle[ZP_MAX_LINKS]; /* rad, largest |phi_i| over the run */
     double max_speed;                   /* m/s, largest trolley speed at a step (track_loads) */
-    int ncross;                         /* kink crossings (all of them) */
-    zp_crossing cross[ZP_MAX_CROSSINGS];
+    int ncross;                         /* kink crossings (all of them; the first
+                                           ZP_MAX_CROSSINGS are in zp_sim_crossings) */
     double e_initial, e_final;          /* J */
     double w_drive, w_damp, e_impulse;  /* J: drive work, damper loss, impulse loss */
     double constraint_residual;         /* m */
-    zp_load_peaks peaks;                /* the kink impulses are in cross[] */
+    zp_load_peaks peaks;                /* the kink impulses are in zp_sim_crossings */
     long steps, rhs_evals;
     double wall_s;
     char message[256]; /* why a run failed (status ZP_ERR_NUMERIC) */
@@ -95,7 +89,8 @@ typedef struct zp_result {
 
 typedef struct zp_sim zp_sim;
 
-/* Options from the scene's [solver] section. */
+/* Options from the scene's [solver] section; its method and formulation names judged against
+   their registries (into d). */
 zp_status zp_sim_opts_from_scene(const zp_scene *sc, zp_sim_opts *o, zp_diag *d);
 zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o);
 void zp_sim_free(zp_sim *s);
@@ -107,6 +102,9 @@ zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
    next run. */
 const zp_row *zp_sim_rows(const zp_sim *s, int *n);
 const zp_row *zp_sim_samples(const zp_sim *s, int *n);
+/* Kink crossings of the last run, in time order (at most ZP_MAX_CROSSINGS); valid until the
+   next run. */
+const zp_crossing *zp_sim_crossings(const zp_sim *s, int *n);
 
 const char *zp_sim_outcome_name(zp_outcome o);
 const char *zp_sim_stall_name(zp_stall s);

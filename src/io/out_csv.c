@@ -34,12 +34,9 @@ void zp_out_csv_trajectory(FILE *f, const zp_model *m, const zp_row *rows, int n
     header(f, m);
     for (int k = 0; k < n; k++) {
         const zp_row *r = &rows[k];
-        double com[ZP_MAX_LINKS + 1][2], phi[ZP_MAX_LINKS], w[ZP_MAX_LINKS];
-        zp_state_com(m, &r->c, com);
-        zp_state_relative(m, &r->c, phi, w);
-        zp_energy e = zp_state_energy(m, &r->c);
-        fprintf(f, "%.10g,%d,%.10g,%.10g,%.10g", r->t, r->sec + 1, r->c.q[0], r->c.q[1],
-                hypot(r->c.v[0], r->c.v[1]));
+        zp_row_view v;
+        zp_row_derive(m, r, &v);
+        fprintf(f, "%.10g,%d,%.10g,%.10g,%.10g", r->t, r->sec + 1, r->c.q[0], r->c.q[1], v.speed);
         for (int i = 0; i < m->nlink; i++) {
             fprintf(f, ",%.10g", r->c.q[2 + i] * DEG);
         }
@@ -47,18 +44,18 @@ void zp_out_csv_trajectory(FILE *f, const zp_model *m, const zp_row *rows, int n
             fprintf(f, ",%.10g", r->c.v[2 + i] * DEG);
         }
         for (int i = 0; i < m->nlink; i++) {
-            fprintf(f, ",%.10g", phi[i] * DEG);
+            fprintf(f, ",%.10g", v.phi[i] * DEG);
         }
         for (int b = 0; b <= m->nlink; b++) {
-            fprintf(f, ",%.10g,%.10g", com[b][0], com[b][1]);
+            fprintf(f, ",%.10g,%.10g", v.com[b][0], v.com[b][1]);
         }
-        fprintf(f, ",%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g", e.kinetic, e.potential,
-                e.kinetic + e.potential, r->w_drive, r->w_damp, r->e_impulse, r->loads.normal);
+        fprintf(f, ",%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g", v.e.kinetic, v.e.potential,
+                v.e.kinetic + v.e.potential, r->w_drive, r->w_damp, r->e_impulse, r->loads.normal);
         for (int i = 0; i < m->nlink; i++) {
             fprintf(f, ",%.10g,%.10g", r->loads.joint[i][0], r->loads.joint[i][1]);
         }
-        for (int i = 1; i <= m->nlink; i++) {
-            fprintf(f, ",%.10g", hypot(r->loads.acc[i][0], r->loads.acc[i][1] + m->g) / m->g);
+        for (int i = 0; i < m->nlink; i++) {
+            fprintf(f, ",%.10g", v.acc_g[i]);
         }
         fputc('\n', f);
     }

@@ -77,8 +77,11 @@ void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp
     }
 }
 
-void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp_row *samples,
-                        int nsamples, const zp_run_meta *meta) {
+void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp_sim *s,
+                        const zp_run_meta *meta) {
+    int nsamples, nk;
+    const zp_row *samples = zp_sim_samples(s, &nsamples);
+    const zp_crossing *cross = zp_sim_crossings(s, &nk);
     fputs("{\n  \"scene\": ", f);
     zp_out_json_string(f, meta->scene);
     fprintf(f, ",\n  \"method\": \"%s\",\n  \"formulation\": \"%s\",\n  ", meta->method,
@@ -86,7 +89,7 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
     key_num(f, "rtol", meta->rtol, ", ");
     key_num(f, "atol", meta->atol, ",\n");
     fputs("  \"forces\": ", f);
-    num_list(f, meta->force, m->nsec, 1.0);
+    num_list(f, meta->sched->p, meta->sched->np, 1.0);
     fprintf(f, ",\n  \"outcome\": \"%s\",\n  ", zp_sim_outcome_name(r->outcome));
     key_num(f, "time", r->time, ",\n  ");
     key_num(f, "x", r->x, ",\n  ");
@@ -110,9 +113,8 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
         fputs("  \"stall_reason\": null,\n", f);
     }
     fputs("  \"kinks\": [", f);
-    int nk = r->ncross < ZP_MAX_CROSSINGS ? r->ncross : ZP_MAX_CROSSINGS;
     for (int k = 0; k < nk; k++) {
-        const zp_crossing *c = &r->cross[k];
+        const zp_crossing *c = &cross[k];
         fputs(k ? ",\n    {" : "\n    {", f);
         key_num(f, "t", c->t, ", ");
         key_num(f, "x", c->x, ", ");

@@ -14,7 +14,7 @@ typedef struct zp_run_meta {
     const char *method;      /* integrator name */
     const char *formulation; /* formulation name */
     double rtol, atol;
-    const double *force; /* N, per section */
+    const zp_schedule *sched; /* borrowed: the drive schedule that ran */
     const zp_estimate *estimate; /* borrowed; NULL: no error estimate was made */
     const zp_limits *lim;        /* borrowed; NULL: no [limits] (each reached value still shown) */
 } zp_run_meta;
@@ -26,8 +26,8 @@ void zp_out_json_string(FILE *f, const char *s);
 /* The [limits] object: for each limit, what r reached and the limit (null when off, lim may
    be NULL), and whether it was kept. */
 void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp_limits *lim);
-/* The whole object, with samples (may be 0). */
-void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp_row *samples,
-                        int nsamples, const zp_run_meta *meta);
+/* The whole object of r, the last run of workspace s (its samples and kink crossings). */
+void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp_sim *s,
+                        const zp_run_meta *meta);
 
 #endif

@@ -163,28 +163,25 @@ static box write_run(FILE *f, const zp_model *m, const zp_row *rows, int n) {
     double e0 = 0;
     for (int k = 0; k < n; k++) {
         const zp_row *r = &rows[k];
-        double com[ZP_MAX_LINKS + 1][2], phi[ZP_MAX_LINKS], w[ZP_MAX_LINKS];
-        zp_state_com(m, &r->c, com);
-        zp_state_relative(m, &r->c, phi, w);
-        zp_energy e = zp_state_energy(m, &r->c);
-        double total = e.kinetic + e.potential;
+        zp_row_view v;
+        zp_row_derive(m, r, &v);
+        double total = v.e.kinetic + v.e.potential;
         if (k == 0) {
             e0 = total - r->w_drive + r->w_damp + r->e_impulse;
         }
-        fprintf(f, "%.9g %d %.9g %.9g %.9g", r->t, r->sec + 1, r->c.q[0], r->c.q[1],
-                hypot(r->c.v[0], r->c.v[1]));
+        fprintf(f, "%.9g %d %.9g %.9g %.9g", r->t, r->sec + 1, r->c.q[0], r->c.q[1], v.speed);
         for (int i = 0; i <= m->nlink; i++) {
-            fprintf(f, " %.9g %.9g", com[i][0], com[i][1]);
-            grow(&b, com[i][0], com[i][1]);
+            fprintf(f, " %.9g %.9g", v.com[i][0], v.com[i][1]);
+            grow(&b, v.com[i][0], v.com[i][1]);
         }
         for (int i = 0; i < m->nlink; i++) {
-            fprintf(f, " %.9g", phi[i] * DEG);
+            fprintf(f, " %.9g", v.phi[i] * DEG);
         }
-        fprintf(f, " %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g", e.kinetic, e.potential, total,
+        fprintf(f, " %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g", v.e.kinetic, v.e.potential, total,
                 r->w_drive, r->w_damp, r->e_impulse, e0 + r->w_drive - r->w_damp - r->e_impulse,
                 r->loads.normal);
         for (int i = 0; i < m->nlink; i++) {
-            fprintf(f, " %.9g", hypot(r->loads.joint[i][0], r->loads.joint[i][1]));
+            fprintf(f, " %.9g", v.joint[i]);
         }
         fputc('\n', f);
     }
@@ -215,8 +212,10 @@ static void outcome_text(const zp_result *r, char *buf, size_t len) {
 }
 
 static void section_text(const zp_plot_opts *o, int sec, char *buf, size_t len) {
-    if (o->force) {
-        snprintf(buf, len, "section %d (%g N)", sec + 1, o->force[sec]);
+    if (o->sched) {
+        char drive[32];
+        zp_schedule_label(o->sched, sec, drive, sizeof drive);
+        snprintf(buf, len, "section %d (%s)", sec + 1, drive);
     } else {
         snprintf(buf, len, "section %d", sec + 1);
     }
@@ -254,20 +253,27 @@ static void section_bands(FILE *f, const zp_model *m, const zp_plot_opts *o) {
     }
 }
 
+/* the run's kink crossings (zp_sim_crossings) */
+typedef struct kinks {
+    const zp_crossing *c;
+    int n;
+} kinks;
+
 /* dotted vertical lines at every kink crossing, and the kink's x at its first crossing */
-static void kink_lines(FILE *f, const zp_result *r) {
-    for (int k = 0; k < r->ncross; k++) {
+static void kink_lines(FILE *f, const kinks *kk) {
+    const zp_crossing *c = kk->c;
+    for (int k = 0; k < kk->n; k++) {
         fprintf(f, "set arrow from %.9g, graph 0 to %.9g, graph 1 nohead dt 3 lc rgb '#999999'\n",
-                r->cross[k].t, r->cross[k].t);
+                c[k].t, c[k].t);
         int first = 1;
         for (int j = 0; j < k; j++) {
-            first &= r->cross[j].x != r->cross[k].x;
+            first &= c[j].x != c[k].x;
         }
         if (first) {
             fprintf(f,
                     "set label 'kink x = %g m' at %.9g, graph 0.98 rotate by 90 right "
                     "offset -0.6, 0 font ',9' tc rgb '#777777'\n",
-                    r->cross[k].x, r->cross[k].t);
+                    c[k].x, c[k].t);
         }
     }
 }
@@ -338,13 +344,13 @@ static void script_course(FILE *f, const zp_model *m, const zp_result *r, const 
             COURSE_W, h);
 }
 
-static void script_energy(FILE *f, const zp_model *m, const zp_result *r) {
+static void script_energy(FILE *f, const zp_model *m, const zp_result *r, const kinks *kk) {
     head_png(f, m, "energy", "energy terms and cumulative work against time", FIG_W, 560, 0);
     fputs("set title 'Energy: kinetic + potential = E(0) + drive work − damper and kink losses'\n"
           "set xlabel 't (s)'\nset ylabel 'energy (J)'\n"
           "set key outside right top box lc rgb '#cccccc'\n",
           f);
-    kink_lines(f, r);
+    kink_lines(f, kk);
     death_line(f, r);
     fputs("plot 'plot_run.dat' using 't':'kinetic' with lines lw 2 lc rgb '#1f77b4' "
           "title 'kinetic', \\\n"
@@ -361,8 +367,8 @@ static void script_energy(FILE *f, const zp_model *m, const zp_result *r) {
           f);
 }
 
-static void script_angles(FILE *f, const zp_model *m, const zp_result *r, const zp_plot_opts *o,
-                          const zp_row *last) {
+static void script_angles(FILE *f, const zp_model *m, const zp_result *r, const kinks *kk,
+                          const zp_plot_opts *o, const zp_row *last) {
     double dmax = m->phi_max * DEG, keep = (m->phi_max - o->margin) * DEG;
     head_png(f, m, "angles", "relative joint angles against time", FIG_W, 560, 0);
     fprintf(f,
@@ -387,7 +393,7 @@ static void script_angles(FILE *f, const zp_model *m, const zp_result *r, const 
                 "offset 0, -0.8 tc rgb '#ff7f0e'\n",
                 keep, keep, -keep, -keep, keep, o->margin * DEG, keep);
     }
-    kink_lines(f, r);
+    kink_lines(f, kk);
     fputs("plot ", f);
     for (int i = 1; i <= m->nlink; i++) {
         fprintf(f, "%s'plot_run.dat' using 't':'phi%d' with lines lt %d title 'joint %d'",
@@ -406,13 +412,13 @@ static void script_angles(FILE *f, const zp_model *m, const zp_result *r, const 
     fputc('\n', f);
 }
 
-static void script_loads(FILE *f, const zp_model *m, const zp_result *r) {
+static void script_loads(FILE *f, const zp_model *m, const zp_result *r, const kinks *kk) {
     head_png(f, m, "loads", "joint reactions and normal force against time", FIG_W, 720, 0);
     fputs("set multiplot layout 2, 1 title 'Loads'\n"
           "set lmargin 12\nset rmargin 4\n"
           "set key inside left top opaque box lc rgb '#cccccc'\n",
           f);
-    kink_lines(f, r);
+    kink_lines(f, kk);
     death_line(f, r);
     fputs("set ylabel 'joint reaction (N)'\nset format x ''\n", f);
     fputs("plot ", f);
@@ -583,10 +589,13 @@ static void write_anim(FILE *gp, FILE *dat, FILE *lab, const zp_model *m, const 
             course.x0 - 1, course.x1 + 1, course.y0 - 1, course.y1 + 1);
 }
 
-zp_status zp_plot_run(const char *dir, const zp_model *m, const zp_row *rows, int n,
-                      const zp_result *r, const zp_plot_opts *o, zp_plot_info *info, char *err,
-                      size_t errlen) {
+zp_status zp_plot_run(const char *dir, const zp_model *m, const zp_sim *s, const zp_result *r,
+                      const zp_plot_opts *o, zp_plot_info *info, char *err, size_t errlen) {
     memset(info, 0, sizeof *info);
+    int n;
+    const zp_row *rows = zp_sim_rows(s, &n);
+    kinks kk;
+    kk.c = zp_sim_crossings(s, &kk.n);
     if (n < 1) {
         snprintf(err, errlen, "the run has no trajectory rows to plot (output_dt <= 0?)");
         return ZP_ERR_IO;
@@ -618,9 +627,9 @@ zp_status zp_plot_run(const char *dir, const zp_model *m, const zp_row *rows, in
         }
     }
     script_course(gp[0], m, r, o, both, last);
-    script_energy(gp[1], m, r);
-    script_angles(gp[2], m, r, o, last);
-    script_loads(gp[3], m, r);
+    script_energy(gp[1], m, r, &kk);
+    script_angles(gp[2], m, r, &kk, o, last);
+    script_loads(gp[3], m, r, &kk);
     if (o->nframe) {
         FILE *fg = zp_gnuplot_open(&g, "frames.gp", 1, err, errlen);
         FILE *fd = fg ? zp_gnuplot_open(&g, "plot_frames.dat", 0, err, errlen) : NULL;

@@ -19,7 +19,7 @@ typedef struct zp_plot_opts {
     double fps;                          /* animation frames per second, 1 to 100 */
     int width, height;                   /* px, animation size; height 0: from the course's shape */
     double speedup;                      /* simulated seconds shown per second of animation */
-    const double *force; /* borrowed, may be NULL: N per section, shown in the labels */
+    const zp_schedule *sched; /* borrowed, may be NULL: each section's drive in the labels */
 } zp_plot_opts;
 
 /* What zp_plot_run made. */
@@ -40,13 +40,13 @@ int zp_plot_parse_frames(const zp_model *m, const char *text, zp_plot_opts *o, c
 /* Parses --size text "WxH" (px) into o; 0, or -1 with why. */
 int zp_plot_parse_size(const char *text, zp_plot_opts *o, char *why, size_t whylen);
 
-/* Draws the run (rows: its trajectory, borrowed; r: its result, for the kinks and the death)
+/* Draws the last run of s (its trajectory rows and kink crossings; r: its result, for the
+   death)
    into dir: course.png, energy.png, angles.png, loads.png, frame_x<X>.png / frame_t<T>.png
    and run.gif as o asks, each with its .gp script, and the plot_*.dat data they read; all or
    nothing. ZP_OK with info filled (also when gnuplot is missing: info->no_gnuplot), or
    ZP_ERR_IO with why in err and nothing written. Single-threaded: it evaluates m->course. */
-zp_status zp_plot_run(const char *dir, const zp_model *m, const zp_row *rows, int n,
-                      const zp_result *r, const zp_plot_opts *o, zp_plot_info *info, char *err,
-                      size_t errlen);
+zp_status zp_plot_run(const char *dir, const zp_model *m, const zp_sim *s, const zp_result *r,
+                      const zp_plot_opts *o, zp_plot_info *info, char *err, size_t errlen);
 
 #endif

@@ -3,6 +3,8 @@
 #ifndef ZP_SCENE_READ_H
 #define ZP_SCENE_READ_H
 
+#include <stdio.h>
+
 #include "scene.h"
 
 /* Reads and validates a scene file (every CONFIG.md rule). On error fills d and returns
@@ -17,5 +19,10 @@ zp_status zp_scene_overlay_schedule(const char *path, zp_scene *sc, zp_diag *d);
 /* Parses "a, b, c" (finite decimal numbers, CONFIG.md lists) into at most max doubles;
    returns the count, or -1 with why on an empty or bad item or more than max items. */
 int zp_scene_parse_list(const char *text, double *out, int max, char *why, size_t whylen);
+
+/* Writes, one per line after indent, each key the file did not give with the value zipopt
+   took for it (`[solver] rtol = 1e-08`); an optional section with no key is one line. Returns
+   how many keys were added. */
+int zp_scene_print_added(const zp_scene *sc, FILE *f, const char *indent);
 
 #endif

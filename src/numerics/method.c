@@ -3,14 +3,14 @@
 
 #include "method.h"
 
-extern const zp_method zp_method_cvode_adams, zp_method_cvode_bdf;
-extern const zp_method zp_method_gsl_rk8pd, zp_method_gsl_rk4imp;
+#define ZP_METHOD(id, obj) extern const zp_method obj;
+#include "methods.def"
+#undef ZP_METHOD
 
 static const zp_method *const registry[ZP_METHOD_COUNT] = {
-    [ZP_METHOD_CVODE_ADAMS] = &zp_method_cvode_adams,
-    [ZP_METHOD_CVODE_BDF] = &zp_method_cvode_bdf,
-    [ZP_METHOD_GSL_RK8PD] = &zp_method_gsl_rk8pd,
-    [ZP_METHOD_GSL_RK4IMP] = &zp_method_gsl_rk4imp,
+#define ZP_METHOD(id, obj) [ZP_METHOD_##id] = &obj,
+#include "methods.def"
+#undef ZP_METHOD
 };
 
 const zp_method *zp_method_get(int id) {

@@ -40,11 +40,11 @@ typedef struct zp_method {
     void (*free)(void *w);
 } zp_method;
 
+/* ZP_METHOD_<ID> for every line of methods.def */
 typedef enum {
-    ZP_METHOD_CVODE_ADAMS,
-    ZP_METHOD_CVODE_BDF,
-    ZP_METHOD_GSL_RK8PD,
-    ZP_METHOD_GSL_RK4IMP,
+#define ZP_METHOD(id, obj) ZP_METHOD_##id,
+#include "methods.def"
+#undef ZP_METHOD
     ZP_METHOD_COUNT
 } zp_method_id;
 

@@ -24,9 +24,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     if (zp_scene_load_string(text, "fuzz.ini", &sc, &d) == ZP_OK) {
         zp_model_free(zp_model_build(&sc, &d));
     }
-    char err[256];
+    zp_course_err e;
     const char *expr = text;
-    zp_course *c = zp_course_create(1, &expr, err, sizeof err);
+    zp_course *c = zp_course_create(1, &expr, &e);
     if (c) {
         zp_course_eval(c, 0, 0.5);
     }

@@ -1,0 +1,70 @@
+/* The scene reader's second pass for the optional sections (CONFIG.md [limits], [robust],
+   [physics]): each key off unless given, each refusal naming the key and what it expects. */
+#include <string.h>
+
+#include "scene_parse.h"
+
+/* every limit is a positive ceiling: 0 would forbid any ride and means "off" inside */
+void zp_scene_read_limits(parse_ctx *c, zp_scene *sc) {
+    zp_scene_get_number(c, K_MAX_G, R_POS, &sc->max_g);
+    zp_scene_get_number(c, K_MAX_JOINT_FORCE, R_POS, &sc->max_joint_force);
+    zp_scene_get_number(c, K_MAX_ARRIVAL_SPEED, R_POS, &sc->max_arrival_speed);
+    zp_scene_get_number(c, K_MAX_KINK_DV, R_POS, &sc->max_kink_dv);
+}
+
+/* key k as `lo, hi` percentages with 0 < lo <= hi */
+static void get_range(parse_ctx *c, int k, double out[2]) {
+    double v[2];
+    int n = zp_scene_get_list(c, k, R_POS, v, 2);
+    if (n == 1) {
+        zp_scene_bad_count(c, k, n, "2 (lo, hi)");
+    } else if (n == 2 && v[0] > v[1]) {
+        zp_scene_bad_key(c, k, "the range %g, %g is reversed", v[0], v[1]);
+    } else if (n == 2) {
+        memcpy(out, v, sizeof v);
+    }
+}
+
+/* key k as a number in [0, below) */
+static void get_below(parse_ctx *c, int k, double below, double *out) {
+    double v;
+    if (zp_scene_get_number(c, k, R_NONNEG, &v) > 0) {
+        if (v >= below) {
+            zp_scene_bad_key(c, k, "%g is out of range", v);
+        } else {
+            *out = v;
+        }
+    }
+}
+
+void zp_scene_read_robust(parse_ctx *c, zp_scene *sc) {
+    sc->robust = c->sec_line[S_ROBUST] != 0;
+    get_below(c, K_FORCE_ERROR, 100, &sc->force_error);
+    get_range(c, K_MASS_RANGE, sc->mass_range);
+    get_range(c, K_LENGTH_RANGE, sc->length_range);
+    get_range(c, K_TROLLEY_MASS_RANGE, sc->trolley_mass_range);
+    get_range(c, K_DAMPING_RANGE, sc->damping_range);
+    get_below(c, K_START_ANGLE, 90, &sc->start_angle);
+    unsigned long u;
+    if (zp_scene_get_whole(c, K_SAMPLES, 1, 1000000000, &u) > 0) {
+        sc->robust_samples = (int)u;
+    }
+    if (zp_scene_get_whole(c, K_VERIFY_SAMPLES, 1, 1000000000, &u) > 0) {
+        sc->verify_samples = (int)u;
+    }
+}
+
+/* drag_area's count (nlink + 1) and air_density > 0 with drag are judged in scene_rules.c */
+void zp_scene_read_physics(parse_ctx *c, zp_scene *sc) {
+    double tmp[ZP_MAX_LINKS + 1];
+    int n = zp_scene_get_list(c, K_DRAG_AREA, R_NONNEG, tmp, ZP_MAX_LINKS + 1);
+    if (n > 0) {
+        sc->ndrag = n;
+        memcpy(sc->drag_area, tmp, (size_t)n * sizeof *tmp);
+    }
+    zp_scene_get_number(c, K_AIR_DENSITY, R_NONNEG, &sc->air_density);
+    zp_scene_get_number(c, K_WIND, R_ANY, &sc->wind);
+    zp_scene_get_number(c, K_ROLLING, R_NONNEG, &sc->rolling);
+    zp_scene_get_number(c, K_KINK_RADIUS, R_NONNEG, &sc->kink_radius);
+    sc->line_kink_radius = c->key_line[K_KINK_RADIUS];
+}

@@ -1,0 +1,341 @@
+/* The scene reader's first pass: hands inih the text line by line (counting lines, checking each
+   line's shape, refusing NUL bytes), files each key's value and line, holds the messages and
+   suggests the nearest valid name for a typo. */
+#include <ctype.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "numtext.h"
+#include "scene_parse.h"
+
+const char *const zp_scene_sec_names[S_COUNT] = {"scene",  "course", "trolley",  "body",
+                                                 "drive",  "solver", "optimize", "limits",
+                                                 "robust", "physics"};
+
+const zp_scene_key zp_scene_keys[K_COUNT] = {
+    [K_NAME] = {S_SCENE, "name", "a folder name of letters, digits, `.`, `_` or `-`"},
+    [K_GRAVITY] = {S_SCENE, "gravity", "a number >= 0 (m/s^2)"},
+    [K_X_START] = {S_COURSE, "x_start", "a number (m)"},
+    [K_SECTION] = {S_COURSE, "section", "`x_end : f(x)`, x_end in m"},
+    [K_MASS] = {S_TROLLEY, "mass", "a number > 0 (kg)"},
+    [K_LENGTHS] = {S_BODY, "lengths", "1 to 8 numbers > 0 (m), one per link"},
+    [K_MASSES] = {S_BODY, "masses", "numbers > 0 (kg), one per link"},
+    [K_DAMPING] = {S_BODY, "damping", "numbers >= 0 (N m s/rad), one, or one per joint"},
+    [K_DEATH_ANGLE] = {S_BODY, "death_angle", "a number in (0, 360] (deg)"},
+    [K_DIRECTION] = {S_DRIVE, "direction", "horizontal or tangent"},
+    [K_FORCES] = {S_DRIVE, "forces", "numbers (N), one per section"},
+    [K_MIN] = {S_DRIVE, "min", "a number (N)"},
+    [K_MAX] = {S_DRIVE, "max", "a number (N)"},
+    [K_METHOD] = {S_SOLVER, "method", "a method name (see zipopt --help)"},
+    [K_RTOL] = {S_SOLVER, "rtol", "a number in [" ZP_RTOL_MIN_S ", " ZP_RTOL_MAX_S "]"},
+    [K_ATOL] = {S_SOLVER, "atol", "a number in [" ZP_ATOL_MIN_S ", " ZP_ATOL_MAX_S "]"},
+    [K_T_MAX] = {S_SOLVER, "t_max", "a number in (0, " ZP_T_MAX_MAX_S "] (s)"},
+    [K_FORMULATION] = {S_SOLVER, "formulation", "a formulation name (see zipopt --help)"},
+    [K_OUTPUT_DT] = {S_SOLVER, "output_dt", "a number > 0 (s)"},
+    [K_MARGIN] = {S_OPTIMIZE, "margin", "a number >= 0 (deg) below death_angle"},
+    [K_MAX_EVALS] = {S_OPTIMIZE, "max_evals", "a whole number >= 1"},
+    [K_SEED] = {S_OPTIMIZE, "seed", "a whole number >= 0"},
+    [K_SEARCH_METHOD] = {S_OPTIMIZE, "method", "a method name (see zipopt --help)"},
+    [K_SEARCH_RTOL] = {S_OPTIMIZE, "rtol", "a number in [" ZP_RTOL_MIN_S ", " ZP_RTOL_MAX_S "]"},
+    [K_MAX_G] = {S_LIMITS, "max_g", "a number > 0 (g)"},
+    [K_MAX_JOINT_FORCE] = {S_LIMITS, "max_joint_force", "a number > 0 (N)"},
+    [K_MAX_ARRIVAL_SPEED] = {S_LIMITS, "max_arrival_speed", "a number > 0 (km/h)"},
+    [K_MAX_KINK_DV] = {S_LIMITS, "max_kink_dv", "a number > 0 (m/s)"},
+    [K_FORCE_ERROR] = {S_ROBUST, "force_error", "a number in [0, 100) (%)"},
+    [K_MASS_RANGE] = {S_ROBUST, "mass_range", "two numbers lo, hi with 0 < lo <= hi (%)"},
+    [K_LENGTH_RANGE] = {S_ROBUST, "length_range", "two numbers lo, hi with 0 < lo <= hi (%)"},
+    [K_TROLLEY_MASS_RANGE] = {S_ROBUST, "trolley_mass_range",
+                              "two numbers lo, hi with 0 < lo <= hi (%)"},
+    [K_DAMPING_RANGE] = {S_ROBUST, "damping_range", "two numbers lo, hi with 0 < lo <= hi (%)"},
+    [K_START_ANGLE] = {S_ROBUST, "start_angle", "a number in [0, 90) (deg)"},
+    [K_SAMPLES] = {S_ROBUST, "samples", "a whole number >= 1"},
+    [K_VERIFY_SAMPLES] = {S_ROBUST, "verify_samples", "a whole number >= 1"},
+    [K_DRAG_AREA] = {S_PHYSICS, "drag_area",
+                     "numbers >= 0 (m^2), the trolley's then one per link (nlink + 1)"},
+    [K_AIR_DENSITY] = {S_PHYSICS, "air_density", "a number >= 0 (kg/m^3), > 0 with drag_area"},
+    [K_WIND] = {S_PHYSICS, "wind", "a number (m/s)"},
+    [K_ROLLING] = {S_PHYSICS, "rolling", "a number >= 0"},
+    [K_KINK_RADIUS] = {S_PHYSICS, "kink_radius", "a number >= 0 (m)"},
+};
+
+static const char *sec_of(int k) {
+    return zp_scene_sec_names[zp_scene_keys[k].sec];
+}
+
+static int find_section(const char *name) {
+    for (int s = 0; s < S_COUNT; s++) {
+        if (!strcmp(name, zp_scene_sec_names[s])) {
+            return s;
+        }
+    }
+    return -1;
+}
+
+/* edit distance with adjacent transpositions counting 1, so `lenghts` is 1 from `lengths` */
+static int edit_distance(const char *a, const char *b) {
+    enum { N = 40 };
+    size_t na = strlen(a), nb = strlen(b);
+    if (na >= N || nb >= N) {
+        return N;
+    }
+    int dp[N + 1][N + 1];
+    for (size_t i = 0; i <= na; i++) {
+        for (size_t j = 0; j <= nb; j++) {
+            if (i == 0 || j == 0) {
+                dp[i][j] = (int)(i + j);
+                continue;
+            }
+            int best = dp[i - 1][j - 1] + (a[i - 1] != b[j - 1]);
+            best = dp[i - 1][j] + 1 < best ? dp[i - 1][j] + 1 : best;
+            best = dp[i][j - 1] + 1 < best ? dp[i][j - 1] + 1 : best;
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] &&
+                dp[i - 2][j - 2] + 1 < best) {
+                best = dp[i - 2][j - 2] + 1;
+            }
+            dp[i][j] = best;
+        }
+    }
+    return dp[na][nb];
+}
+
+/* close enough to be a typo: about one slip per four letters */
+static int is_near(const char *typed, const char *valid) {
+    return edit_distance(typed, valid) <= 1 + (int)strlen(valid) / 4;
+}
+
+void zp_scene_bad(parse_ctx *c, int line, const char *sec, const char *key, const char *fmt, ...) {
+    if (c->nmsg == MSG_MAX) {
+        c->nmore++;
+        return;
+    }
+    int i = c->nmsg++;
+    c->msg[i].line = line;
+    snprintf(c->msg[i].sec, sizeof c->msg[i].sec, "%s", sec ? sec : "");
+    snprintf(c->msg[i].key, sizeof c->msg[i].key, "%s", key ? key : "");
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(c->msg[i].what, sizeof c->msg[i].what, fmt, ap);
+    va_end(ap);
+}
+
+int zp_scene_flush(parse_ctx *c) {
+    int done[MSG_MAX] = {0};
+    for (int n = 0; n < c->nmsg; n++) {
+        int best = -1;
+        for (int i = 0; i < c->nmsg; i++) {
+            if (!done[i] && (best < 0 || c->msg[i].line < c->msg[best].line)) {
+                best = i;
+            }
+        }
+        done[best] = 1;
+        zp_diag_add(c->d, c->file, c->msg[best].line, c->msg[best].sec[0] ? c->msg[best].sec : NULL,
+                    c->msg[best].key[0] ? c->msg[best].key : NULL, "%s", c->msg[best].what);
+    }
+    c->d->dropped += c->nmore;
+    return c->nmsg;
+}
+/* ---- reading: inih's reader and handler ---- */
+
+static void unknown_section(parse_ctx *c, const char *name) {
+    if (c->schedule) {
+        zp_scene_bad(c, c->line, NULL, NULL,
+                     "unknown section [%s]; a schedule file holds only [drive] forces", name);
+        return;
+    }
+    for (int s = 0; s < S_COUNT; s++) {
+        if (is_near(name, zp_scene_sec_names[s])) {
+            zp_scene_bad(c, c->line, NULL, NULL, "unknown section [%s]; did you mean [%s]?", name,
+                         zp_scene_sec_names[s]);
+            return;
+        }
+    }
+    zp_scene_bad(c, c->line, NULL, NULL,
+                 "unknown section [%s]; expected one of [scene] [course] [trolley] [body] [drive] "
+                 "[solver] [optimize] [limits] [robust] [physics]",
+                 name);
+}
+
+static void unknown_key(parse_ctx *c, int s, const char *name) {
+    if (c->schedule) {
+        zp_scene_bad(c, c->line, zp_scene_sec_names[s], name,
+                     "unknown key; a schedule file holds only [drive] forces");
+        return;
+    }
+    /* a right key in the wrong section says where it belongs, before any near miss */
+    for (int k = 0; k < K_COUNT; k++) {
+        if (!strcmp(name, zp_scene_keys[k].name)) {
+            zp_scene_bad(c, c->line, zp_scene_sec_names[s], name,
+                         "unknown key here; `%s` belongs in [%s]", name, sec_of(k));
+            return;
+        }
+    }
+    int best = -1, best_d = 0;
+    for (int k = 0; k < K_COUNT; k++) {
+        if (zp_scene_keys[k].sec == s && is_near(name, zp_scene_keys[k].name)) {
+            int dk = edit_distance(name, zp_scene_keys[k].name);
+            if (best < 0 || dk < best_d) {
+                best = k;
+                best_d = dk;
+            }
+        }
+    }
+    if (best >= 0) {
+        zp_scene_bad(c, c->line, zp_scene_sec_names[s], name, "unknown key; did you mean `%s`?",
+                     zp_scene_keys[best].name);
+        return;
+    }
+    char list[256] = "";
+    for (int k = 0; k < K_COUNT; k++) {
+        if (zp_scene_keys[k].sec == s) {
+            size_t len = strlen(list);
+            snprintf(list + len, sizeof list - len, "%s%s", len ? ", " : "", zp_scene_keys[k].name);
+        }
+    }
+    zp_scene_bad(c, c->line, zp_scene_sec_names[s], name, "unknown key; expected one of: %s", list);
+}
+
+/* the next raw line of the text (without its newline, CR, or the file's UTF-8 mark) in
+ *s, *len; 0 at the end. A NUL byte inside the file is reported and its line blanked. */
+static int take_line(parse_ctx *c, const char **s, size_t *len) {
+    if (c->pos >= c->len) {
+        return 0;
+    }
+    const char *p = c->text + c->pos, *nl = memchr(p, '\n', c->len - c->pos);
+    size_t n = nl ? (size_t)(nl - p) : c->len - c->pos;
+    c->pos += n + (nl != NULL);
+    c->line++;
+    /* reported; the line is read up to it, so the NUL is the only message */
+    const char *nul = memchr(p, '\0', n);
+    if (nul) {
+        zp_scene_bad(c, c->line, NULL, NULL,
+                     "a NUL byte at column %zu; expected a text file without NUL bytes",
+                     (size_t)(nul - p) + 1);
+        n = (size_t)(nul - p);
+    }
+    if (n > 0 && p[n - 1] == '\r') {
+        n--;
+    }
+    if (c->line == 1 && n >= 3 && !memcmp(p, "\xEF\xBB\xBF", 3)) {
+        p += 3;
+        n -= 3;
+    }
+    *s = p;
+    *len = n;
+    return 1;
+}
+
+/* a section header in str: checked here, since inih does not report headers; str becomes
+   what inih should see (`[?]` for a section whose keys are to be skipped, "" if malformed) */
+static void header(parse_ctx *c, char *str, int num) {
+    char *close = strchr(str, ']');
+    if (!close) {
+        zp_scene_bad(c, c->line, NULL, NULL, "section header without `]`; expected [name]");
+        str[0] = '\0';
+        return;
+    }
+    if (close[1]) {
+        zp_scene_bad(c, c->line, NULL, NULL,
+                     "text after the section header; expected [name] alone");
+    }
+    *close = '\0';
+    char name[LINE_CAP];
+    strcpy(name, str + 1);
+    zp_text_trim(name);
+    int sec = find_section(name);
+    if (sec < 0 || (c->schedule && sec != S_DRIVE)) {
+        unknown_section(c, name);
+        /* its keys are skipped: the handler ignores sections it does not know */
+        strcpy(str, "[?]");
+        return;
+    }
+    if (!c->sec_line[sec]) {
+        c->sec_line[sec] = c->line;
+    }
+    snprintf(str, (size_t)num, "[%s]", name);
+}
+
+/* hands inih one line at a time, left-trimmed (so no line reads as a continuation of the
+   previous value), without ` ;...` or ` #...` comments, and blank if malformed (reported) */
+static char *read_line(char *str, int num, void *stream) {
+    parse_ctx *c = stream;
+    const char *s;
+    size_t len;
+    if (!take_line(c, &s, &len)) {
+        return NULL;
+    }
+    str[0] = '\0';
+    if (len + 2 > (size_t)num) {
+        zp_scene_bad(c, c->line, NULL, NULL, "line is %zu characters long; expected at most %d",
+                     len, num - 2);
+        return str;
+    }
+    memcpy(str, s, len);
+    str[len] = '\0';
+    for (size_t i = 0; str[i]; i++) {
+        if ((str[i] == ';' || str[i] == '#') && (i == 0 || isspace((unsigned char)str[i - 1]))) {
+            str[i] = '\0';
+            break;
+        }
+    }
+    zp_text_trim(str);
+    if (str[0] == '[') {
+        header(c, str, num);
+        return str;
+    }
+    /* key = value; inih also splits at `:`, which CONFIG.md does not use for keys */
+    size_t eq = strcspn(str, "=:");
+    if (*str && (str[eq] != '=' || eq == 0)) {
+        zp_scene_bad(c, c->line, NULL, NULL,
+                     "`%s` is not a `key = value` line; expected key = value", str);
+        str[0] = '\0';
+    }
+    return str;
+}
+
+static int on_key(void *user, const char *section, const char *name, const char *value) {
+    parse_ctx *c = user;
+    if (!*section) {
+        zp_scene_bad(c, c->line, NULL, name,
+                     "key outside any section; expected it under its [section]");
+        return 1;
+    }
+    int s = find_section(section);
+    if (s < 0) {
+        return 1; /* an unknown section, reported at its header */
+    }
+    int k = 0;
+    while (k < K_COUNT && !(zp_scene_keys[k].sec == s && !strcmp(zp_scene_keys[k].name, name))) {
+        k++;
+    }
+    if (k == K_COUNT || (c->schedule && k != K_FORCES)) {
+        unknown_key(c, s, name);
+        return 1;
+    }
+    /* `section` repeats, once per course section */
+    if (k == K_SECTION) {
+        if (c->nsect < ZP_MAX_SECTIONS) {
+            c->sect_line[c->nsect] = c->line;
+            snprintf(c->sect_val[c->nsect], LINE_CAP, "%s", value);
+        } else if (c->nsect == ZP_MAX_SECTIONS) {
+            zp_scene_bad(c, c->line, "course", "section",
+                         "more than %d sections; expected at most %d", ZP_MAX_SECTIONS,
+                         ZP_MAX_SECTIONS);
+        }
+        c->nsect++;
+        return 1;
+    }
+    if (c->key_line[k]) {
+        zp_scene_bad(c, c->line, zp_scene_sec_names[s], name,
+                     "duplicate key (first set on line %d); expected it once", c->key_line[k]);
+        return 1;
+    }
+    c->key_line[k] = c->line;
+    snprintf(c->val[k], LINE_CAP, "%s", value);
+    return 1;
+}
+void zp_scene_parse_text(parse_ctx *c, const char *text, size_t len) {
+    c->text = text;
+    c->len = len;
+    ini_parse_stream(read_line, c, on_key, c);
+}

@@ -1,0 +1,153 @@
+/* What zipopt added to a scene: each key the file did not give, with the value it took
+   (CONFIG.md defaults, the file's stem for the name), for `check`. */
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scene_parse.h"
+#include "scene_read.h"
+
+_Static_assert(K_COUNT <= 64, "zp_scene.given holds one bit per key");
+
+static void list(char *out, size_t cap, const double *v, int n) {
+    size_t len = 0;
+    out[0] = '\0';
+    for (int i = 0; i < n && len < cap; i++) {
+        len += (size_t)snprintf(out + len, cap - len, "%s%g", i ? ", " : "", v[i]);
+    }
+}
+
+/* keys whose value is one double, and keys whose value is a `lo, hi` pair, in zp_scene */
+static const struct {
+    int k;
+    size_t off;
+} numbers[] =
+    {
+        {K_GRAVITY, offsetof(zp_scene, gravity)},
+        {K_DEATH_ANGLE, offsetof(zp_scene, death_angle)},
+        {K_MIN, offsetof(zp_scene, force_min)},
+        {K_MAX, offsetof(zp_scene, force_max)},
+        {K_RTOL, offsetof(zp_scene, rtol)},
+        {K_ATOL, offsetof(zp_scene, atol)},
+        {K_T_MAX, offsetof(zp_scene, t_max)},
+        {K_OUTPUT_DT, offsetof(zp_scene, output_dt)},
+        {K_MARGIN, offsetof(zp_scene, margin)},
+        {K_SEARCH_RTOL, offsetof(zp_scene, search_rtol)},
+        {K_FORCE_ERROR, offsetof(zp_scene, force_error)},
+        {K_START_ANGLE, offsetof(zp_scene, start_angle)},
+        {K_AIR_DENSITY, offsetof(zp_scene, air_density)},
+        {K_WIND, offsetof(zp_scene, wind)},
+        {K_ROLLING, offsetof(zp_scene, rolling)},
+        {K_KINK_RADIUS, offsetof(zp_scene, kink_radius)},
+},
+  pairs[] = {
+      {K_MASS_RANGE, offsetof(zp_scene, mass_range)},
+      {K_LENGTH_RANGE, offsetof(zp_scene, length_range)},
+      {K_TROLLEY_MASS_RANGE, offsetof(zp_scene, trolley_mass_range)},
+      {K_DAMPING_RANGE, offsetof(zp_scene, damping_range)},
+};
+
+/* the shortest text that reads back as the same double */
+static void number(char *out, size_t cap, double v) {
+    for (int digits = 15; digits <= 17; digits++) {
+        snprintf(out, cap, "%.*g", digits, v);
+        if (strtod(out, NULL) == v) {
+            return;
+        }
+    }
+}
+
+/* the value of a key that is neither one double nor a pair */
+static void other_text(const zp_scene *sc, int k, char *out, size_t cap) {
+    switch (k) {
+    case K_NAME:
+        snprintf(out, cap, "%s", sc->name);
+        break;
+    case K_DIRECTION:
+        snprintf(out, cap, "%s", sc->direction);
+        break;
+    case K_METHOD:
+        snprintf(out, cap, "%s", sc->method);
+        break;
+    case K_FORMULATION:
+        snprintf(out, cap, "%s", sc->formulation);
+        break;
+    case K_SEARCH_METHOD:
+        snprintf(out, cap, "%s", sc->search_method);
+        break;
+    case K_MAX_EVALS:
+        snprintf(out, cap, "%ld", sc->max_evals);
+        break;
+    case K_SEED:
+        snprintf(out, cap, "%lu", sc->seed);
+        break;
+    case K_SAMPLES:
+        snprintf(out, cap, "%d", sc->robust_samples);
+        break;
+    case K_VERIFY_SAMPLES:
+        snprintf(out, cap, "%d", sc->verify_samples);
+        break;
+    case K_DAMPING:
+        list(out, cap, sc->damping, sc->ndamping);
+        break;
+    case K_FORCES:
+        snprintf(out, cap, "0 for every section");
+        break;
+    case K_DRAG_AREA:
+        snprintf(out, cap, "none (no drag)");
+        break;
+    case K_MAX_G:
+    case K_MAX_JOINT_FORCE:
+    case K_MAX_ARRIVAL_SPEED:
+    case K_MAX_KINK_DV:
+        snprintf(out, cap, "off");
+        break;
+    default:
+        snprintf(out, cap, "(required, not given)");
+        break;
+    }
+}
+
+/* the value key k holds in sc, as scene-file text */
+static void value_text(const zp_scene *sc, int k, char *out, size_t cap) {
+    const char *base = (const char *)sc;
+    for (size_t i = 0; i < sizeof numbers / sizeof *numbers; i++) {
+        if (numbers[i].k == k) {
+            number(out, cap, *(const double *)(base + numbers[i].off));
+            return;
+        }
+    }
+    for (size_t i = 0; i < sizeof pairs / sizeof *pairs; i++) {
+        if (pairs[i].k == k) {
+            list(out, cap, (const double *)(base + pairs[i].off), 2);
+            return;
+        }
+    }
+    other_text(sc, k, out, cap);
+}
+
+int zp_scene_print_added(const zp_scene *sc, FILE *f, const char *indent) {
+    int n = 0;
+    for (int s = 0; s < S_COUNT; s++) {
+        int optional = s == S_LIMITS || s == S_ROBUST || s == S_PHYSICS;
+        int any = s == S_ROBUST && sc->robust;
+        for (int k = 0; k < K_COUNT; k++) {
+            any |= zp_scene_keys[k].sec == s && (sc->given >> k & 1);
+        }
+        if (optional && !any) {
+            fprintf(f, "%s[%s]: none given, all off\n", indent, zp_scene_sec_names[s]);
+            continue;
+        }
+        for (int k = 0; k < K_COUNT; k++) {
+            if (zp_scene_keys[k].sec == s && !(sc->given >> k & 1)) {
+                char v[256];
+                value_text(sc, k, v, sizeof v);
+                fprintf(f, "%s[%s] %s = %s\n", indent, zp_scene_sec_names[s], zp_scene_keys[k].name,
+                        v);
+                n++;
+            }
+        }
+    }
+    return n;
+}

@@ -1,0 +1,126 @@
+/* The scene reader's values: raw key text -> numbers, lists, whole numbers and names, each
+   refusal naming the key and what it expects. */
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "numtext.h"
+#include "scene_parse.h"
+#include "scene_read.h"
+
+static const char *sec_of(int k) {
+    return zp_scene_sec_names[zp_scene_keys[k].sec];
+}
+
+int zp_scene_parse_list(const char *text, double *out, int max, char *why, size_t whylen) {
+    return zp_text_list(text, out, max, why, whylen);
+}
+
+void zp_scene_bad_key(parse_ctx *c, int k, const char *fmt, ...) {
+    char what[LINE_CAP + 64];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    c->key_bad[k] = 1;
+    zp_scene_bad(c, c->key_line[k], sec_of(k), zp_scene_keys[k].name, "%s; expected %s", what,
+                 zp_scene_keys[k].expect);
+}
+
+void zp_scene_bad_count(parse_ctx *c, int k, int n, const char *fmt, ...) {
+    char what[128];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    c->key_bad[k] = 1;
+    zp_scene_bad(c, c->key_line[k], sec_of(k), zp_scene_keys[k].name, "%d value%s, expected %s", n,
+                 n == 1 ? "" : "s", what);
+}
+
+void zp_scene_missing(parse_ctx *c, int k, const char *what) {
+    int line = c->sec_line[zp_scene_keys[k].sec] ? c->sec_line[zp_scene_keys[k].sec] : c->line;
+    zp_scene_bad(c, line, sec_of(k), zp_scene_keys[k].name, "missing; required: %s", what);
+}
+
+static int in_range(double v, zp_range r) {
+    return r == R_ANY || (r == R_POS && v > 0) || (r == R_NONNEG && v >= 0);
+}
+
+int zp_scene_get_number(parse_ctx *c, int k, zp_range r, double *out) {
+    if (!c->key_line[k]) {
+        return 0;
+    }
+    double v;
+    if (zp_text_number(c->val[k], &v)) {
+        if (c->val[k][0]) {
+            zp_scene_bad_key(c, k, "`%s` is not a number", c->val[k]);
+        } else {
+            zp_scene_bad_key(c, k, "no value");
+        }
+        return -1;
+    }
+    if (!in_range(v, r)) {
+        zp_scene_bad_key(c, k, "%g is out of range", v);
+        return -1;
+    }
+    *out = v;
+    return 1;
+}
+
+int zp_scene_get_list(parse_ctx *c, int k, zp_range r, double *out, int max) {
+    if (!c->key_line[k]) {
+        return 0;
+    }
+    char what[LINE_CAP + 64];
+    double v[ZP_MAX_SECTIONS];
+    int n = zp_text_items(c->val[k], v, ZP_MAX_SECTIONS, what, sizeof what);
+    if (n < 0) {
+        zp_scene_bad_key(c, k, "%s", what);
+        return -1;
+    }
+    if (n > max) {
+        zp_scene_bad_key(c, k, "%d values, more than %d", n, max);
+        return -1;
+    }
+    for (int i = 0; i < n; i++) {
+        if (!in_range(v[i], r)) {
+            zp_scene_bad_key(c, k, "item %d (%g) is out of range", i + 1, v[i]);
+            return -1;
+        }
+    }
+    memcpy(out, v, (size_t)n * sizeof *v);
+    return n;
+}
+
+int zp_scene_get_whole(parse_ctx *c, int k, unsigned long lo, unsigned long hi,
+                       unsigned long *out) {
+    if (!c->key_line[k]) {
+        return 0;
+    }
+    const char *t = c->val[k];
+    char *end;
+    errno = 0;
+    unsigned long v = strtoul(t, &end, 10);
+    if (!*t || strspn(t, "0123456789") != strlen(t) || errno || *end || v < lo || v > hi) {
+        zp_scene_bad_key(c, k, "`%s` is not a whole number in [%lu, %lu]", t, lo, hi);
+        return -1;
+    }
+    *out = v;
+    return 1;
+}
+
+int zp_scene_get_text(parse_ctx *c, int k, char *out, size_t cap) {
+    if (!c->key_line[k]) {
+        return 0;
+    }
+    if (!c->val[k][0] || strlen(c->val[k]) >= cap) {
+        zp_scene_bad_key(c, k, "%s", c->val[k][0] ? "too long" : "empty");
+        return -1;
+    }
+    strcpy(out, c->val[k]);
+    return 1;
+}

@@ -1,0 +1,106 @@
+/* The drive schedule (drive.h): per-section constants give p[sec] at every t and x and have no
+   breaks; the [drive] forces text reads back bit for bit; bad text is refused with why; the
+   scene's [drive] becomes the schedule with its bounds; direction names round-trip. */
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#include "check.h"
+#include "drive.h"
+#include "scene_read.h"
+
+static void test_sections(void) {
+    const double f[3] = {12.5, -3, 0};
+    zp_schedule s = zp_schedule_sections(3, f, -10, 20);
+    CHECK(s.kind == ZP_SCHED_SECTIONS && s.nsec == 3 && s.np == 3);
+    const double ts[] = {0, 1e-9, 7.25, 1e6}, xs[] = {-5, 0, 33.3, 1e4};
+    for (int k = 0; k < 3; k++) {
+        CHECK(s.lo[k] == -10 && s.hi[k] == 20);
+        for (int i = 0; i < 4; i++) {
+            CHECK(zp_schedule_force(&s, ts[i], xs[i], k) == f[k]);
+        }
+    }
+    double br[4];
+    CHECK(zp_schedule_breaks(&s, br, 4) == 0);
+    /* the same shape with other parameters keeps kind, sections and bounds */
+    const double g[3] = {1, 2, 3};
+    zp_schedule w = zp_schedule_with(&s, g);
+    CHECK(w.np == 3 && w.lo[2] == -10 && w.hi[0] == 20 && zp_schedule_force(&w, 5, 5, 1) == 2);
+}
+
+static void test_round_trip(void) {
+    const double v[] = {59.589211512356975,  1.0 / 3, -0.1, 5e-324, DBL_MAX, -DBL_MIN, 0, 1e22,
+                        -123456789.123456789};
+    int n = (int)(sizeof v / sizeof *v);
+    zp_schedule s = zp_schedule_sections(n, v, 0, 0), back;
+    char text[1024], why[256];
+    CHECK(zp_schedule_format(&s, text, sizeof text) < (int)sizeof text);
+    CHECK(zp_schedule_parse(text, n, &back, why, sizeof why) == 0);
+    CHECK(back.kind == s.kind && back.np == n && !memcmp(back.p, v, sizeof v));
+    /* snprintf's contract: the full length even when the buffer is short */
+    char small[8];
+    CHECK(zp_schedule_format(&s, small, sizeof small) == (int)strlen(text));
+    CHECK(strlen(small) == sizeof small - 1);
+}
+
+static void test_bad_text(void) {
+    static const struct {
+        const char *text;
+        int rc;
+        const char *why;
+    } cases[] = {
+        {"1, 2", -2, "2 values, expected 3 (one per section)"},
+        {"1, 2, 3, 4", -2, "4 values, expected 3"},
+        {"1,,3", -1, "item 2 is empty"},
+        {"", -1, "the list is empty"},
+        {"1, x, 3", -1, "item 2 `x` is not a number"},
+        {"1, nan, 3", -1, "item 2 `nan` is not a number"},
+        {"1, 2, inf", -1, "item 3 `inf` is not a number"},
+        {"1, 2, 0x10", -1, "item 3"},
+        {"1, 2, 1e999", -1, "item 3"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
+        zp_schedule s;
+        char why[256] = "";
+        int rc = zp_schedule_parse(cases[i].text, 3, &s, why, sizeof why);
+        CHECK(rc == cases[i].rc);
+        if (!strstr(why, cases[i].why)) {
+            fprintf(stderr, "`%s`: `%s` lacks `%s`\n", cases[i].text, why, cases[i].why);
+            CHECK(0);
+        }
+    }
+}
+
+static void test_scene(void) {
+    zp_scene sc;
+    zp_scene_seed(&sc); /* CONFIG.md's example: 100 N on each of 3 sections, box [0, 500] */
+    zp_schedule s = zp_schedule_of_scene(&sc);
+    CHECK(s.kind == ZP_SCHED_SECTIONS && s.np == 3);
+    for (int k = 0; k < 3; k++) {
+        CHECK(s.p[k] == 100 && s.lo[k] == 0 && s.hi[k] == 500);
+    }
+    sc.nforce = 0; /* no forces given: all 0 */
+    s = zp_schedule_of_scene(&sc);
+    CHECK(s.np == 3 && s.p[0] == 0 && s.p[2] == 0);
+    char label[32];
+    zp_schedule one = zp_schedule_sections(1, (double[1]){59.589211512356975}, 0, 1);
+    zp_schedule_label(&one, 0, label, sizeof label);
+    CHECK(!strcmp(label, "59.5892 N"));
+}
+
+static void test_directions(void) {
+    for (int d = 0; d < ZP_DRIVE_COUNT; d++) {
+        CHECK(zp_drive_dir_find(zp_drive_dir_name((zp_drive_dir)d)) == d);
+    }
+    CHECK(!strcmp(zp_drive_dir_name(ZP_DRIVE_TANGENT), "tangent"));
+    CHECK(zp_drive_dir_find("sideways") == -1 && zp_drive_dir_find("") == -1);
+}
+
+int main(void) {
+    test_sections();
+    test_round_trip();
+    test_bad_text();
+    test_scene();
+    test_directions();
+    return CHECK_DONE();
+}
