@@ -182,6 +182,141 @@ static void test_configs(void) {
     CHECK_NEAR(inertia, 15.0 * 5 * 5 / 12, 1e-5 * 31.25);
 }
 
+/* the lines of the last stderr */
+static int err_lines(void) {
+    int n = 0;
+    for (const char *p = err; *p; p++) {
+        n += *p == '\n';
+    }
+    return n;
+}
+
+/* a message for the run of args: its status, stderr, and what it was expected to say */
+static void expect(const char *args, int status, const char *want) {
+    int st = run(args);
+    int said = !want || strstr(err, want) != NULL;
+    CHECK(st == status);
+    CHECK(said);
+    if (st != status || !said) {
+        fprintf(stderr, "  zipopt %s: status %d (wanted %d), wanted `%s` in stderr:\n%s", args, st,
+                status, want ? want : "", err);
+    }
+}
+
+/* getopt_long's forms (CLI.md): --name=value, `--`, and one message per mistake */
+static void test_options(const char *scene) {
+    char args[4096], dir[1024], path[1100];
+    snprintf(dir, sizeof dir, "%s/eq", tmp);
+    snprintf(args, sizeof args, "simulate '%s' --out='%s' --force=5", scene, dir);
+    expect(args, 0, NULL);
+    snprintf(path, sizeof path, "%s/summary.json", dir);
+    CHECK(access(path, F_OK) == 0);
+
+    /* `--` ends the options: a scene file whose name starts with a dash */
+    char cwd[1024];
+    CHECK(getcwd(cwd, sizeof cwd) != NULL);
+    CHECK(chdir(tmp) == 0);
+    write_file("-dash.ini", valid);
+    expect("check -- -dash.ini", 0, NULL);
+    CHECK(chdir(cwd) == 0);
+
+    snprintf(args, sizeof args, "simulate '%s' --out", scene);
+    expect(args, 2, "option '--out' requires an argument");
+    CHECK(err_lines() == 1);
+    snprintf(args, sizeof args, "--max-evals -5 '%s'", scene);
+    expect(args, 2, "--max-evals");
+    CHECK(err_lines() == 1);
+    snprintf(args, sizeof args, "simulate '%s' --forse 5", scene);
+    expect(args, 2, "unknown option '--forse'; did you mean '--force'?");
+    CHECK(err_lines() == 1);
+    snprintf(args, sizeof args, "check '%s' --json=yes", scene);
+    expect(args, 2, "option '--json' takes no value");
+    snprintf(args, sizeof args, "--algorithm scan-cobila '%s'", scene);
+    expect(args, 2, "did you mean 'scan-cobyla'?");
+    snprintf(args, sizeof args, "simulat '%s'", scene);
+    expect(args, 2, "unknown command 'simulat'; did you mean 'simulate'?");
+    CHECK(err_lines() == 1);
+}
+
+/* numbers beyond their type, control bytes, long paths and huge animations: refused with a
+   message that says so, nothing written */
+static void test_limits(const char *scene) {
+    char args[8192], dir[4096];
+    snprintf(dir, sizeof dir, "%s/lim", tmp);
+    snprintf(args, sizeof args,
+             "--seed 99999999999999999999999 --max-evals 1 --no-plot --out "
+             "'%s' '%s'",
+             dir, scene);
+    expect(args, 2, "--seed: '99999999999999999999999' is out of range");
+    CHECK(untouched(dir));
+    snprintf(args, sizeof args, "simulate '%s' --force 1e400 --out '%s'", scene, dir);
+    expect(args, 2, "`1e400` is out of range");
+    CHECK(strstr(err, "not a number") == NULL);
+
+    /* a control byte in user text is shown escaped, never sent raw */
+    snprintf(args, sizeof args, "check '%s/bad\001name.ini'", tmp);
+    expect(args, 2, "bad\\x01name.ini");
+    CHECK(strchr(err, '\001') == NULL);
+    snprintf(args, sizeof args, "simulate '%s' --force '5\002'", scene);
+    expect(args, 2, "5\\x02");
+    CHECK(strchr(err, '\002') == NULL);
+
+    /* a 1010-character output folder: refused, not truncated into another folder */
+    size_t len = strlen(dir);
+    while (len < 1010) {
+        len +=
+            (size_t)snprintf(dir + len, sizeof dir - len, "/%s", "dddddddddddddddddddddddddddddd");
+    }
+    snprintf(args, sizeof args, "simulate '%s' --out '%s'", scene, dir);
+    expect(args, 2, "at most 900");
+    char lim[1100];
+    snprintf(lim, sizeof lim, "%s/lim", tmp);
+    CHECK(untouched(lim));
+
+    /* frames of run.gif: capped before anything is written */
+    snprintf(args, sizeof args, "simulate '%s' --force 50 --animate --speedup 1e-9 --out '%s'",
+             scene, lim);
+    expect(args, 2, "at most 20000");
+    snprintf(args, sizeof args,
+             "simulate '%s' --force 50 --animate --speedup 0.001 --fps 100 --out '%s'", scene, lim);
+    expect(args, 2, "at most 20000");
+    CHECK(untouched(lim));
+}
+
+/* --json on check and landscape: one JSON object on stdout (parsed by Python's json) */
+static void test_json(void) {
+    char args[2048], json[1100], cmd[4096];
+    snprintf(json, sizeof json, "%s/out.json", tmp);
+    snprintf(args, sizeof args, "check '%s/config/seed.ini' --json", ZP_SOURCE_DIR);
+    expect(args, 0, NULL);
+    write_file(json, out);
+    /* MODEL.md: the seed course's kinks at x = 60 (y = 10) and 100 (y = 6) */
+    snprintf(cmd, sizeof cmd,
+             "python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); "
+             "b=d[\"boundaries\"]; assert [(x[\"x\"], x[\"y\"], x[\"kink\"]) for x in b] == "
+             "[(60, 10, True), (100, 6, True)], b; assert len(d[\"sections\"]) == 3' '%s'",
+             json);
+    CHECK(system(cmd) == 0);
+    snprintf(args, sizeof args,
+             "landscape '%s/config/seed.ini' --force-range 0:100:11 --json --out '%s/land'",
+             ZP_SOURCE_DIR, tmp);
+    expect(args, 0, NULL);
+    write_file(json, out);
+    /* the windows are runs of consecutive finished rows of landscape.csv */
+    snprintf(cmd, sizeof cmd,
+             "python3 -c 'import json,sys,csv; d=json.load(open(sys.argv[1])); "
+             "rows=list(csv.DictReader(open(sys.argv[2]))); w=[]; prev=False\n"
+             "for r in rows:\n"
+             "  fin = r[\"outcome\"] == \"finished\"; f = float(r[\"force\"])\n"
+             "  if fin and not prev: w.append([f, f])\n"
+             "  if fin: w[-1][1] = f\n"
+             "  prev = fin\n"
+             "assert d[\"windows\"] == w, (d[\"windows\"], w); assert d[\"points\"] == 11' "
+             "'%s' '%s/land/landscape.csv'",
+             json, tmp);
+    CHECK(system(cmd) == 0);
+}
+
 /* `check` shows slopes as numbers (x/5: f' = 0.2, f'' = 0), every key it added with the value
    taken (CONFIG.md's defaults), and warns on stderr about a force the search could not pick */
 static void test_check_shows(void) {
@@ -270,6 +405,12 @@ int main(void) {
     }
     test_bad_scenes();
     test_configs();
+    char scene[1024];
+    snprintf(scene, sizeof scene, "%s/valid.ini", tmp);
+    write_file(scene, valid);
+    test_options(scene);
+    test_limits(scene);
+    test_json();
     test_check_shows();
     test_all_at_once();
     char cmd[1100];

@@ -43,7 +43,7 @@ static void check_method(int id) {
     const zp_method *me = zp_method_get(id);
     CHECK(me && me->name && me->doc && me->doc[0]);
     osc o = {-1, 0};
-    zp_method_opts mo = {RTOL, RTOL * 1e-2, 100000};
+    zp_method_opts mo = {RTOL, RTOL * 1e-2, 100000, NULL};
     int dir[2] = {-1, 0}; /* g0: falling only (y0 from + to -: t = pi/2 + 2 k pi) */
     void *w = me->create(2, 2, dir, rhs, root, &o, &mo);
     CHECK(w != NULL);

@@ -117,6 +117,9 @@ static void test_numbers(void) {
     BAD(4, "x_start = 1,2", 4, "course", "x_start");
     BAD(8, "mass = -30", 8, "trolley", "mass");
     BAD(8, "mass = 0", 8, "trolley", "mass");
+    /* beyond the largest double: said so, not "not a number" (scalars and list items) */
+    BAD_HINT(8, "mass = 1e400", 8, "trolley", "mass", "`1e400` is out of range");
+    BAD_HINT(11, "masses = 15, 1e400", 11, "body", "masses", "`1e400` is out of range");
     BAD(15, "rtol = 0", 15, "solver", "rtol");
     BAD(15, "atol = -1e-10", 15, "solver", "atol");
     BAD(15, "t_max = 0", 15, "solver", "t_max");

@@ -1,6 +1,11 @@
-/* What the commands share (CLI.md): the scene argument, the output folder, number lists, and
-   the usage text with the method and formulation registries. */
+/* What the commands share (CLI.md): options by getopt_long with one message per mistake, the
+   scene operand, the output folder, number lists, the usage text with the registries. */
 #include "cli.h"
+
+#include <errno.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
 
 #include "formulation.h"
 #include "method.h"
@@ -10,15 +15,127 @@ int zp_cli_parse_list(const char *text, double *out, int max, char *why, size_t 
     return zp_text_list(text, out, max, why, whylen);
 }
 
-int zp_cli_scene_arg(const char *cmd, const char *arg, const char **scene) {
+void zp_cli_error(const char *cmd, const char *fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    int n = vsnprintf(NULL, 0, fmt, ap);
+    va_end(ap);
+    char *text = n >= 0 ? malloc((size_t)n + 1) : NULL;
+    fprintf(stderr, "zipopt%s%s: ", *cmd ? " " : "", cmd);
+    if (text) {
+        va_start(ap, fmt);
+        vsnprintf(text, (size_t)n + 1, fmt, ap);
+        va_end(ap);
+        zp_diag_put_escaped(stderr, text);
+    } else {
+        fputs(fmt, stderr);
+    }
+    fputc('\n', stderr);
+    free(text);
+}
+
+void zp_cli_opts_begin(void) {
+    optind = 0; /* glibc: 0 starts a fresh scan */
+    opterr = 0; /* the messages are ours: one per mistake */
+}
+
+static const struct option *opt_by_val(const struct option *opts, int val) {
+    for (; opts->name; opts++) {
+        if (opts->val == val) {
+            return opts;
+        }
+    }
+    return NULL;
+}
+
+/* `--name` or `--name=value` that getopt_long refused: unknown or ambiguous */
+static void bad_long(const char *cmd, const char *arg, const struct option *opts) {
+    size_t len = strcspn(arg + 2, "=");
+    char name[64];
+    snprintf(name, sizeof name, "%.*s", (int)(len < 63 ? len : 63), arg + 2);
+    char list[512] = "";
+    int nprefix = 0, n = 0;
+    const char *names[64];
+    for (const struct option *o = opts; o->name && n < 64; o++) {
+        names[n++] = o->name;
+        if (!strncmp(o->name, name, len)) {
+            size_t used = strlen(list);
+            snprintf(list + used, sizeof list - used, "%s--%s", nprefix++ ? ", " : "", o->name);
+        }
+    }
+    if (nprefix > 1) {
+        zp_cli_error(cmd, "option '--%s' is ambiguous: %s; see zipopt%s%s --help", name, list,
+                     *cmd ? " " : "", cmd);
+        return;
+    }
+    int near = zp_diag_nearest(name, names, n);
+    if (near >= 0) {
+        zp_cli_error(cmd, "unknown option '--%s'; did you mean '--%s'? (see zipopt%s%s --help)",
+                     name, names[near], *cmd ? " " : "", cmd);
+    } else {
+        zp_cli_error(cmd, "unknown option '--%s'; see zipopt%s%s --help", name, *cmd ? " " : "",
+                     cmd);
+    }
+}
+
+int zp_cli_opts_next(const char *cmd, int argc, char **argv, const struct option *opts) {
+    int c = getopt_long(argc, argv, ":h", opts, NULL);
+    if (c != '?' && c != ':') {
+        return c;
+    }
     const char *sp = *cmd ? " " : "";
-    if (arg[0] == '-' || *scene) {
-        fprintf(stderr, "zipopt%s%s: %s '%s'%s; see zipopt%s%s --help\n", sp, cmd,
-                arg[0] == '-' ? "unknown option or missing value" : "unexpected argument", arg,
-                arg[0] == '-' ? "" : " (one scene file only)", sp, cmd);
+    const char *arg = argv[optind - 1];
+    const struct option *o = opt_by_val(opts, optopt);
+    if (c == ':') {
+        zp_cli_error(cmd, "option '--%s' requires an argument; see zipopt%s%s --help",
+                     o ? o->name : arg + 2, sp, cmd);
+    } else if (o && !strncmp(arg, "--", 2)) {
+        zp_cli_error(cmd, "option '--%s' takes no value; see zipopt%s%s --help", o->name, sp, cmd);
+    } else if (optopt == 0 && !strncmp(arg, "--", 2)) {
+        bad_long(cmd, arg, opts);
+    } else {
+        zp_cli_error(cmd, "unknown option '-%c'; see zipopt%s%s --help", optopt, sp, cmd);
+    }
+    return '?';
+}
+
+int zp_cli_path_ok(const char *cmd, const char *opt, const char *path) {
+    size_t n = strlen(path);
+    if (n > ZP_CLI_PATH_MAX) {
+        zp_cli_error(cmd, "%s%sthe path is %zu characters long; at most %d are supported", opt,
+                     *opt ? ": " : "", n, ZP_CLI_PATH_MAX);
         return -1;
     }
-    *scene = arg;
+    return 0;
+}
+
+int zp_cli_scene_operand(const char *cmd, int argc, char **argv, const char **scene) {
+    const char *sp = *cmd ? " " : "";
+    if (optind < argc && zp_cli_path_ok(cmd, "the scene file", argv[optind])) {
+        return -1;
+    }
+    if (optind + 1 < argc) {
+        zp_cli_error(cmd, "unexpected argument '%s' (one scene file only); see zipopt%s%s --help",
+                     argv[optind + 1], sp, cmd);
+        return -1;
+    }
+    if (optind < argc) {
+        *scene = argv[optind];
+    }
+    return 0;
+}
+
+int zp_cli_whole(const char *cmd, const char *opt, const char *text, unsigned long lo,
+                 unsigned long hi, unsigned long *out) {
+    errno = 0;
+    unsigned long v = strtoul(text, NULL, 10);
+    int digits = *text && strspn(text, "0123456789") == strlen(text);
+    if (!digits || errno || v < lo || v > hi) {
+        zp_cli_error(cmd, "%s: '%s' is %s; expected a whole number from %lu to %lu", opt, text,
+                     digits ? "out of range" : "not a whole number", lo, hi);
+        return -1;
+    }
+    *out = v;
     return 0;
 }
 
@@ -44,40 +161,43 @@ void zp_cli_print_registries(FILE *f) {
 }
 
 void zp_cli_usage(FILE *f) {
-    fputs("usage:\n"
-          "  zipopt [SCENE.ini] [--out DIR] [--algorithm NAME] [--seed N] [--max-evals N]\n"
-          "         [--no-plot]\n"
-          "      Search for the fastest survivable schedule of drive forces (one per course\n"
-          "      section), verify it 100x tighter and write report.md, schedule.ini,\n"
-          "      summary.json, the best run's trajectory and figures to out/<scene name>/\n"
-          "      (or DIR). With no file: the built-in seed scene. See zipopt SCENE --help.\n"
-          "  zipopt simulate SCENE.ini [--force F1,F2,..] [--schedule FILE] [--json]\n"
-          "                  [--sample-times T1,T2,..] [--out DIR]\n"
-          "      Run one schedule through the simulator: --force or --schedule replace the\n"
-          "      scene's [drive] forces (N); --json prints the result as JSON; --sample-times\n"
-          "      also reports the state at those times (s). Writes trajectory.csv and\n"
-          "      summary.json; --plot [--frames-at ..] [--animate] also draws the run with\n"
-          "      gnuplot (course, energy, angles, loads, still frames, run.gif). See zipopt\n"
-          "      simulate --help.\n"
-          "  zipopt check SCENE.ini\n"
-          "      Validate a scene file and print its course (sections, derivatives, kinks),\n"
-          "      body, drive, solver and search settings. Writes nothing.\n"
-          "  zipopt tradeoff SCENE.ini [--levels P1,P2,..] [--out DIR]\n"
-          "      The robust search at each force error level (%, default 0,1,2,5,10): what\n"
-          "      robustness costs; writes tradeoff.csv, tradeoff.png and report.md.\n"
-          "  zipopt bench trade [SCENE.ini] [--repeats N] [--out DIR]\n"
-          "      Work-precision study of every method over rtol 1e-3..1e-12; writes\n"
-          "      out/bench/trade.csv, trade.gp and trade.png. See zipopt bench --help.\n"
-          "  zipopt landscape SCENE.ini [--force-range A:B:N] [--slice I,J [--range ..]]\n"
-          "                  [--force F1,..|--schedule FILE] [--out DIR]\n"
-          "      The survival landscape: finish time or death over a constant push, and over\n"
-          "      two sections' forces through a base schedule (run in parallel); writes\n"
-          "      landscape.csv/.png (and landscape_slice.*). See zipopt landscape --help.\n"
-          "  zipopt --help | --version\n"
+    fputs("Usage: zipopt [SCENE.ini] [OPTION]...\n"
+          "  or:  zipopt simulate SCENE.ini [OPTION]...\n"
+          "  or:  zipopt check SCENE.ini [--json]\n"
+          "  or:  zipopt landscape SCENE.ini [OPTION]...\n"
+          "  or:  zipopt tradeoff SCENE.ini [--levels P1,P2,..] [--out DIR]\n"
+          "  or:  zipopt bench trade [SCENE.ini] [OPTION]...\n"
+          "  or:  zipopt --help | --help-all | --version\n"
+          "Simulates a trolley on a zipline course carrying a hanging chain of links (the\n"
+          "spy) and searches for the fastest survivable schedule of drive forces.\n"
+          "\n"
+          "Commands:\n"
+          "  (none)      Search for the fastest survivable schedule of drive forces (one per\n"
+          "              course section), verify it 100x tighter and write report.md,\n"
+          "              schedule.ini, summary.json, the best run's trajectory and figures to\n"
+          "              out/<scene name>/ (or DIR). With no file: the built-in seed scene.\n"
+          "  simulate    Run one schedule through the simulator: --force or --schedule\n"
+          "              replace the scene's [drive] forces (N); --json prints the result as\n"
+          "              JSON. Writes trajectory.csv and summary.json; --plot also draws the\n"
+          "              run with gnuplot (course, energy, angles, loads, frames, run.gif).\n"
+          "  check       Validate a scene file and print its course (sections, derivatives,\n"
+          "              kinks), body, drive, solver and search settings. Writes nothing.\n"
+          "  landscape   The survival landscape: finish time or death over a constant push,\n"
+          "              and over two sections' forces through a base schedule (run in\n"
+          "              parallel); writes landscape.csv/.png (and landscape_slice.*).\n"
+          "  tradeoff    The robust search at each force error level (%, default\n"
+          "              0,1,2,5,10): what robustness costs; writes tradeoff.csv,\n"
+          "              tradeoff.png and report.md.\n"
+          "  bench       bench trade: work-precision study of every method over rtol\n"
+          "              1e-3..1e-12; writes out/bench/trade.csv, trade.gp and trade.png.\n"
+          "Each command's options: zipopt COMMAND --help (the search's: zipopt SCENE --help);\n"
+          "all of them: zipopt --help-all (the text of the man page zipopt(1)). Options take\n"
+          "--name VALUE or --name=VALUE, before or after the scene file; -- ends them.\n"
           "\n"
           "Exit status: 0 done (a spy that dies is a result, not an error); 2 bad input\n"
           "(command line or scene file, with FILE:LINE: [section] key: messages on stderr);\n"
-          "1 anything else. Scene files: see CONFIG.md; config/ holds examples.\n"
+          "1 anything else. Scene files: see CONFIG.md; config/ (installed: share/zipopt/\n"
+          "scenes/) holds examples.\n"
           "\n",
           f);
     zp_cli_print_registries(f);

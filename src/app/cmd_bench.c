@@ -145,6 +145,15 @@ static void usage(FILE *f) {
           f);
 }
 
+enum { O_OUT = ZP_OPT_FIRST, O_REPEATS };
+static const struct option options[] = {
+    {"help", no_argument, NULL, 'h'},
+    {"out", required_argument, NULL, O_OUT},
+    {"repeats", required_argument, NULL, O_REPEATS},
+    {NULL, 0, NULL, 0},
+};
+
+/* 1: --help was shown; -1: a mistake (reported) */
 static int parse_args(int argc, char **argv, trade_args *a) {
     *a = (trade_args){.out = "out/bench", .repeats = 5};
     if (argc < 2 || strcmp(argv[1], "trade")) {
@@ -152,31 +161,33 @@ static int parse_args(int argc, char **argv, trade_args *a) {
             usage(stdout);
             return 1;
         }
-        fputs("zipopt bench: expected a study name: trade; see zipopt bench --help\n", stderr);
+        zp_cli_error("bench", "expected a study name: trade; see zipopt bench --help");
         return -1;
     }
-    for (int i = 2; i < argc; i++) {
-        const char *o = argv[i];
-        int has_value = i + 1 < argc;
-        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
+    zp_cli_opts_begin();
+    for (int c; (c = zp_cli_opts_next("bench trade", argc - 1, argv + 1, options)) != -1;) {
+        unsigned long n;
+        switch (c) {
+        case 'h':
             usage(stdout);
             return 1;
-        } else if (!strcmp(o, "--out") && has_value) {
-            a->out = argv[++i];
-        } else if (!strcmp(o, "--repeats") && has_value) {
-            char *end;
-            long n = strtol(argv[++i], &end, 10);
-            if (*end || n < 1 || n > 64) {
-                fprintf(stderr, "zipopt bench trade: --repeats '%s': expected 1 to 64\n",
-                        argv[i]);
+        case O_OUT:
+            a->out = optarg;
+            break;
+        case O_REPEATS:
+            if (zp_cli_whole("bench trade", "--repeats", optarg, 1, 64, &n)) {
                 return -1;
             }
             a->repeats = (int)n;
-        } else if (zp_cli_scene_arg("bench trade", o, &a->scene)) {
+            break;
+        default:
             return -1;
         }
     }
-    return 0;
+    return zp_cli_scene_operand("bench trade", argc - 1, argv + 1, &a->scene) ||
+                   zp_cli_path_ok("bench trade", "--out", a->out)
+               ? -1
+               : 0;
 }
 
 /* the plot: error of the finish/death time against wall time, one panel per case, one line

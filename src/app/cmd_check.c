@@ -7,19 +7,21 @@
 #include "cli.h"
 #include "formulation.h"
 #include "method.h"
+#include "out_json.h"
 #include "scene_read.h"
 #include "setup.h"
 #include "sim.h"
 
 static void usage(FILE *f) {
-    fputs("usage: zipopt check SCENE.ini\n"
+    fputs("usage: zipopt check SCENE.ini [--json]\n"
           "Validates a scene file against every rule of CONFIG.md (all problems are listed on\n"
           "stderr as FILE:LINE: [section] key: what; expected, with exit status 2) and prints\n"
           "the scene: each course section with f(x) and f, f', f'' at its ends; each boundary\n"
           "between sections with its height, slope jump and whether it is a kink; the trolley\n"
           "and the body's links (length, mass, inertia, damping); the drive, solver and search\n"
           "settings; every key zipopt added with its value. Warns on stderr when a force lies\n"
-          "outside [min, max]. Writes no files.\n",
+          "outside [min, max]. Writes no files.\n"
+          "  --json   print the scene as one JSON object instead (keys: README)\n",
           f);
 }
 
@@ -31,6 +33,16 @@ static const char *method_doc(const char *name) {
 static const char *formulation_doc(const char *name) {
     int i = zp_formulation_find(name);
     return i < 0 ? "" : zp_formulation_get(i)->doc;
+}
+
+/* the model decides what counts as a kink; check only reports it */
+static int is_kink(const zp_model *m, int left) {
+    for (int i = 0; i < m->nkink; i++) {
+        if (m->kink[i].left == left) {
+            return 1;
+        }
+    }
+    return 0;
 }
 
 static void print_course(const zp_model *m) {
@@ -53,11 +65,7 @@ static void print_course(const zp_model *m) {
     for (int k = 1; k < m->nsec; k++) {
         double x = m->xb[k];
         zp_track l = zp_course_eval(m->course, k - 1, x), r = zp_course_eval(m->course, k, x);
-        /* the model decides what counts as a kink; check only reports it */
-        int kink = 0;
-        for (int i = 0; i < m->nkink; i++) {
-            kink |= m->kink[i].left == k - 1;
-        }
+        int kink = is_kink(m, k - 1);
         /* 10 digits: typed back, the height is within the continuity tolerance 1e-9 (1 + |y|) */
         printf("  x = %g m, y = %.10g m: slope %.6g -> %.6g (jump %+.6g, %.3g deg): %s\n", x, l.f,
                l.fp, r.fp, r.fp - l.fp, (atan(r.fp) - atan(l.fp)) * 180 / M_PI,
@@ -109,24 +117,99 @@ static void warn_forces(const zp_setup *st) {
     }
 }
 
+static const struct option options[] = {
+    {"help", no_argument, NULL, 'h'},
+    {"json", no_argument, NULL, ZP_OPT_FIRST},
+    {NULL, 0, NULL, 0},
+};
+
+static void json_list(const char *key, const double *v, int n, const char *sep) {
+    printf("\"%s\": [", key);
+    for (int i = 0; i < n; i++) {
+        printf("%s", i ? ", " : "");
+        zp_out_json_number(stdout, v[i]);
+    }
+    printf("]%s", sep);
+}
+
+static void json_num(const char *key, double v, const char *sep) {
+    printf("\"%s\": ", key);
+    zp_out_json_number(stdout, v);
+    printf("%s", sep);
+}
+
+static void json_str(const char *key, const char *v, const char *sep) {
+    printf("\"%s\": ", key);
+    zp_out_json_string(stdout, v);
+    printf("%s", sep);
+}
+
+/* --json: the scene as read (README "check --json"), one object on stdout */
+static void print_json(const zp_setup *st) {
+    const zp_scene *sc = &st->sc;
+    const zp_model *m = st->m;
+    printf("{");
+    json_str("scene", sc->name, ", ");
+    json_str("path", sc->path, ", ");
+    json_num("gravity", m->g, ", ");
+    printf("\"sections\": [");
+    for (int k = 0; k < m->nsec; k++) {
+        printf("%s{", k ? ", " : "");
+        json_num("x_start", m->xb[k], ", ");
+        json_num("x_end", m->xb[k + 1], ", ");
+        json_str("f", m->expr[k], "}");
+    }
+    printf("], \"boundaries\": [");
+    for (int k = 1; k < m->nsec; k++) {
+        zp_track l = zp_course_eval(m->course, k - 1, m->xb[k]);
+        zp_track r = zp_course_eval(m->course, k, m->xb[k]);
+        printf("%s{", k > 1 ? ", " : "");
+        json_num("x", m->xb[k], ", ");
+        json_num("y", l.f, ", ");
+        json_num("slope_left", l.fp, ", ");
+        json_num("slope_right", r.fp, ", ");
+        printf("\"kink\": %s}", is_kink(m, k - 1) ? "true" : "false");
+    }
+    printf("], ");
+    json_num("trolley_mass", m->m0, ", ");
+    json_num("death_angle", sc->death_angle, ", ");
+    json_list("lengths", m->len, m->nlink, ", ");
+    json_list("masses", m->mass, m->nlink, ", ");
+    json_list("inertias", m->inertia, m->nlink, ", ");
+    json_list("damping", m->damp, m->nlink, ", ");
+    json_str("drive", zp_drive_dir_name(m->drive), ", ");
+    json_list("forces", sc->forces, sc->nforce ? sc->nsec : 0, ", ");
+    json_num("force_min", sc->force_min, ", ");
+    json_num("force_max", sc->force_max, ", ");
+    json_str("method", sc->method, ", ");
+    json_str("formulation", sc->formulation, ", ");
+    json_num("rtol", sc->rtol, ", ");
+    json_num("atol", sc->atol, ", ");
+    json_num("t_max", sc->t_max, ", ");
+    json_num("output_dt", sc->output_dt, ", ");
+    json_num("margin", sc->margin, ", ");
+    printf("\"max_evals\": %ld, \"seed\": %lu}\n", sc->max_evals, sc->seed);
+}
+
 int zp_cmd_check(int argc, char **argv) {
     const char *path = NULL;
-    for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+    int json = 0;
+    zp_cli_opts_begin();
+    for (int c; (c = zp_cli_opts_next("check", argc, argv, options)) != -1;) {
+        if (c == 'h') {
             usage(stdout);
             return ZP_EXIT_OK;
         }
-        if (argv[i][0] == '-' || path) {
-            fprintf(stderr,
-                    "zipopt check: unexpected argument '%s'; expected one scene file "
-                    "(see zipopt check --help)\n",
-                    argv[i]);
+        if (c != ZP_OPT_FIRST) {
             return ZP_EXIT_USAGE;
         }
-        path = argv[i];
+        json = 1;
+    }
+    if (zp_cli_scene_operand("check", argc, argv, &path)) {
+        return ZP_EXIT_USAGE;
     }
     if (!path) {
-        fputs("zipopt check: a scene file is required; see zipopt check --help\n", stderr);
+        zp_cli_error("check", "a scene file is required; see zipopt check --help");
         return ZP_EXIT_USAGE;
     }
     /* judged exactly as every command judges it, registry names included */
@@ -135,7 +218,11 @@ int zp_cmd_check(int argc, char **argv) {
     if (zp_setup_load("check", path, &none, &st)) {
         return ZP_EXIT_USAGE;
     }
-    print_scene(&st);
+    if (json) {
+        print_json(&st);
+    } else {
+        print_scene(&st);
+    }
     warn_forces(&st);
     zp_setup_free(&st);
     return ZP_EXIT_OK;

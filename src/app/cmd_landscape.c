@@ -10,6 +10,7 @@
 #include "cli.h"
 #include "gnuplot.h"
 #include "landscape.h"
+#include "out_json.h"
 #include "setup.h"
 
 #define MAX_1D 100001 /* points of the constant-push sweep */
@@ -19,7 +20,7 @@ static void usage(FILE *f) {
     fputs(
         "usage: zipopt landscape SCENE.ini [--force-range A:B:N] [--slice I,J]\n"
         "                        [--range A:B:N[,C:D:M]] [--force F1,..|--schedule FILE]\n"
-        "                        [--out DIR]\n"
+        "                        [--out DIR] [--json]\n"
         "Runs many schedules in parallel (OpenMP; OMP_NUM_THREADS sets the threads) and\n"
         "draws the outcome over the forces:\n"
         "  landscape.csv, landscape.png   one constant push in every section, N points from\n"
@@ -33,6 +34,7 @@ static void usage(FILE *f) {
         "  --schedule FILE     the base schedule from a schedule file, e.g. the search's\n"
         "                      schedule.ini: the slice then passes through the best schedule\n"
         "  --out DIR           the output folder (default out/<scene name>/)\n"
+        "  --json              print the result as one JSON object (keys: README)\n"
         "Each image comes with its gnuplot script (.gp); the CSV files are its data. Prints\n"
         "the survival windows of the constant push on stdout.\n",
         f);
@@ -45,39 +47,67 @@ typedef struct range {
 
 typedef struct land_args {
     const char *scene, *schedule, *out, *force_text, *range1_text, *slice_text, *range2_text;
+    int json;
 } land_args;
 
+enum { O_FORCE_RANGE = ZP_OPT_FIRST, O_SLICE, O_RANGE, O_FORCE, O_SCHEDULE, O_OUT, O_JSON };
+static const struct option options[] = {
+    {"help", no_argument, NULL, 'h'},
+    {"force-range", required_argument, NULL, O_FORCE_RANGE},
+    {"slice", required_argument, NULL, O_SLICE},
+    {"range", required_argument, NULL, O_RANGE},
+    {"force", required_argument, NULL, O_FORCE},
+    {"schedule", required_argument, NULL, O_SCHEDULE},
+    {"out", required_argument, NULL, O_OUT},
+    {"json", no_argument, NULL, O_JSON},
+    {NULL, 0, NULL, 0},
+};
+
+/* 1: --help was shown; -1: a mistake (reported) */
 static int parse_args(int argc, char **argv, land_args *a) {
     memset(a, 0, sizeof *a);
-    for (int i = 1; i < argc; i++) {
-        const char *o = argv[i];
-        int has_value = i + 1 < argc;
-        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
+    zp_cli_opts_begin();
+    for (int c; (c = zp_cli_opts_next("landscape", argc, argv, options)) != -1;) {
+        switch (c) {
+        case 'h':
             usage(stdout);
-            exit(ZP_EXIT_OK);
-        } else if (!strcmp(o, "--force-range") && has_value) {
-            a->range1_text = argv[++i];
-        } else if (!strcmp(o, "--slice") && has_value) {
-            a->slice_text = argv[++i];
-        } else if (!strcmp(o, "--range") && has_value) {
-            a->range2_text = argv[++i];
-        } else if (!strcmp(o, "--force") && has_value) {
-            a->force_text = argv[++i];
-        } else if (!strcmp(o, "--schedule") && has_value) {
-            a->schedule = argv[++i];
-        } else if (!strcmp(o, "--out") && has_value) {
-            a->out = argv[++i];
-        } else if (zp_cli_scene_arg("landscape", o, &a->scene)) {
+            return 1;
+        case O_FORCE_RANGE:
+            a->range1_text = optarg;
+            break;
+        case O_SLICE:
+            a->slice_text = optarg;
+            break;
+        case O_RANGE:
+            a->range2_text = optarg;
+            break;
+        case O_FORCE:
+            a->force_text = optarg;
+            break;
+        case O_SCHEDULE:
+            a->schedule = optarg;
+            break;
+        case O_OUT:
+            a->out = optarg;
+            break;
+        case O_JSON:
+            a->json = 1;
+            break;
+        default:
             return -1;
         }
     }
+    if (zp_cli_scene_operand("landscape", argc, argv, &a->scene) ||
+        (a->out && zp_cli_path_ok("landscape", "--out", a->out)) ||
+        (a->schedule && zp_cli_path_ok("landscape", "--schedule", a->schedule))) {
+        return -1;
+    }
     if (!a->scene) {
-        fputs("zipopt landscape: a scene file is required; see zipopt landscape --help\n", stderr);
+        zp_cli_error("landscape", "a scene file is required; see zipopt landscape --help");
         return -1;
     }
     if (a->range2_text && !a->slice_text) {
-        fputs("zipopt landscape: --range: needs --slice I,J; see zipopt landscape --help\n",
-              stderr);
+        zp_cli_error("landscape", "--range: needs --slice I,J; see zipopt landscape --help");
         return -1;
     }
     return 0;
@@ -255,19 +285,39 @@ static void script_2d(FILE *f, const zp_scene *sc, int si, int sj, const range *
             right ? -1.5 : 1.5, upper ? -1.2 : 1.2);
 }
 
-/* the survival windows of the constant push, on stdout */
-static void print_windows(const range *r, const zp_landscape_point *p) {
-    int best = -1, nwin = 0;
-    printf("constant push from %g to %g N (%d runs): finishes for", r->a, r->b, r->n);
+static int finishes(const zp_landscape_point *p) {
+    return !p->failed && p->outcome == ZP_OUTCOME_FINISHED;
+}
+
+/* the survival windows are runs of consecutive finishing pushes: where one starts, ends */
+static int window_starts(const zp_landscape_point *p, int k) {
+    return finishes(&p[k]) && (k == 0 || !finishes(&p[k - 1]));
+}
+
+static int window_ends(const range *r, const zp_landscape_point *p, int k) {
+    return finishes(&p[k]) && (k == r->n - 1 || !finishes(&p[k + 1]));
+}
+
+/* the fastest finishing push, or -1 */
+static int fastest(const range *r, const zp_landscape_point *p) {
+    int best = -1;
     for (int k = 0; k < r->n; k++) {
-        int fin = !p[k].failed && p[k].outcome == ZP_OUTCOME_FINISHED;
-        if (fin && (best < 0 || p[k].time < p[best].time)) {
+        if (finishes(&p[k]) && (best < 0 || p[k].time < p[best].time)) {
             best = k;
         }
-        if (fin && (k == 0 || p[k - 1].failed || p[k - 1].outcome != ZP_OUTCOME_FINISHED)) {
+    }
+    return best;
+}
+
+/* the survival windows of the constant push, on stdout */
+static void print_windows(const range *r, const zp_landscape_point *p) {
+    int nwin = 0, best = fastest(r, p);
+    printf("constant push from %g to %g N (%d runs): finishes for", r->a, r->b, r->n);
+    for (int k = 0; k < r->n; k++) {
+        if (window_starts(p, k)) {
             printf("%s %g", nwin++ ? "," : "", at(r, k));
         }
-        if (fin && (k == r->n - 1 || p[k + 1].failed || p[k + 1].outcome != ZP_OUTCOME_FINISHED)) {
+        if (window_ends(r, p, k)) {
             printf("..%g N", at(r, k));
         }
     }
@@ -278,13 +328,47 @@ static void print_windows(const range *r, const zp_landscape_point *p) {
     }
 }
 
+/* --json: the run as one object on stdout (README "landscape --json") */
+static void print_json(const zp_scene *sc, const range *r, const zp_landscape_point *p, int si,
+                       int sj, int n2, double wall, const char *dir, int figures) {
+    printf("{\"scene\": ");
+    zp_out_json_string(stdout, sc->name);
+    printf(", \"force_from\": %.17g, \"force_to\": %.17g, \"points\": %d, \"windows\": [", r->a,
+           r->b, r->n);
+    for (int k = 0, nwin = 0; k < r->n; k++) {
+        if (window_starts(p, k)) {
+            printf("%s[%.17g, ", nwin++ ? ", " : "", at(r, k));
+        }
+        if (window_ends(r, p, k)) {
+            printf("%.17g]", at(r, k));
+        }
+    }
+    int best = fastest(r, p);
+    if (best < 0) {
+        printf("], \"fastest\": null");
+    } else {
+        printf("], \"fastest\": {\"force\": %.17g, \"time\": ", at(r, best));
+        zp_out_json_number(stdout, p[best].time);
+        printf("}");
+    }
+    if (n2) {
+        printf(", \"slice\": {\"sections\": [%d, %d], \"points\": %d}", si + 1, sj + 1, n2);
+    } else {
+        printf(", \"slice\": null");
+    }
+    printf(", \"runs\": %d, \"wall_s\": %.6g, \"out_dir\": ", r->n + n2, wall);
+    zp_out_json_string(stdout, dir);
+    printf(", \"figures\": %s}\n", figures ? "true" : "false");
+}
+
 int zp_cmd_landscape(int argc, char **argv) {
     land_args a;
-    if (parse_args(argc, argv, &a)) {
-        return ZP_EXIT_USAGE;
+    int pa = parse_args(argc, argv, &a);
+    if (pa) {
+        return pa > 0 ? ZP_EXIT_OK : ZP_EXIT_USAGE;
     }
     static zp_setup st; /* large: kept off the stack */
-    zp_overrides ov = {a.schedule, a.force_text, -1, 0};
+    zp_overrides ov = {.schedule = a.schedule, .force = a.force_text};
     if (zp_setup_load("landscape", a.scene, &ov, &st)) {
         return ZP_EXIT_USAGE;
     }
@@ -297,10 +381,10 @@ int zp_cmd_landscape(int argc, char **argv) {
     /* every option checked before any run */
     range r1 = {st.sched.lo[0], st.sched.hi[0], 201};
     if (a.range1_text && parse_range(a.range1_text, &r1, MAX_1D) != (int)strlen(a.range1_text)) {
-        fprintf(stderr,
-                "zipopt landscape: --force-range: '%s' is not A:B:N; expected forces "
-                "A < B (N) and 2 to %d points\n",
-                a.range1_text, MAX_1D);
+        zp_cli_error("landscape",
+                     "--force-range: '%s' is not A:B:N; expected forces A < B (N) and 2 to %d "
+                     "points",
+                     a.range1_text, MAX_1D);
         goto done;
     }
     int si = -1, sj = -1;
@@ -309,10 +393,9 @@ int zp_cmd_landscape(int argc, char **argv) {
         int used = 0;
         if (sscanf(a.slice_text, "%d,%d%n", &si, &sj, &used) != 2 || a.slice_text[used] || si < 1 ||
             sj < 1 || si > sc->nsec || sj > sc->nsec || si == sj) {
-            fprintf(stderr,
-                    "zipopt landscape: --slice: '%s' is not I,J; expected two different "
-                    "sections from 1 to %d\n",
-                    a.slice_text, sc->nsec);
+            zp_cli_error("landscape",
+                         "--slice: '%s' is not I,J; expected two different sections from 1 to %d",
+                         a.slice_text, sc->nsec);
             goto done;
         }
         si--;
@@ -327,10 +410,10 @@ int zp_cmd_landscape(int argc, char **argv) {
             used = more < 0 ? -1 : used + 1 + more;
         }
         if (used != (int)strlen(t)) {
-            fprintf(stderr,
-                    "zipopt landscape: --range: '%s' is not A:B:N or A:B:N,C:D:M; "
-                    "expected forces A < B (N) and 2 to %d points per axis\n",
-                    t, MAX_2D);
+            zp_cli_error("landscape",
+                         "--range: '%s' is not A:B:N or A:B:N,C:D:M; expected forces A < B (N) "
+                         "and 2 to %d points per axis",
+                         t, MAX_2D);
             goto done;
         }
     }
@@ -412,9 +495,14 @@ int zp_cmd_landscape(int argc, char **argv) {
         fprintf(stderr, "zipopt landscape: %s; no figures were written\n", err);
         goto done;
     }
-    print_windows(&r1, pt);
-    printf("%d runs in %.2f s; wrote landscape.csv%s to %s\n", n1 + n2, wall,
-           n2 ? ", landscape_slice.csv" : "", dir);
+    if (a.json) {
+        print_json(sc, &r1, pt, si, sj, n2, wall, dir, !missing);
+    } else {
+        print_windows(&r1, pt);
+        printf("%d runs in %.2f s; wrote landscape.csv%s to %s\n", n1 + n2, wall,
+               n2 ? ", landscape_slice.csv" : "", dir);
+    }
+    FILE *say = a.json ? stderr : stdout; /* stdout carries only the JSON object */
     if (missing) {
         fprintf(stderr,
                 "zipopt landscape: gnuplot is not installed (apt-get install gnuplot-nox): "
@@ -423,11 +511,12 @@ int zp_cmd_landscape(int argc, char **argv) {
                 dir);
         goto done;
     }
-    printf("figures: landscape.png%s\n", n2 ? ", landscape_slice.png" : "");
+    fprintf(say, "figures: landscape.png%s\n", n2 ? ", landscape_slice.png" : "");
     if (n2 && (base[si] < rx.a || base[si] > rx.b || base[sj] < ry.a || base[sj] > ry.b)) {
-        printf("note: the base schedule (F%d = %g, F%d = %g N) lies outside the slice and is not "
-               "marked\n",
-               si + 1, base[si], sj + 1, base[sj]);
+        fprintf(say,
+                "note: the base schedule (F%d = %g, F%d = %g N) lies outside the slice and is not "
+                "marked\n",
+                si + 1, base[si], sj + 1, base[sj]);
     }
     status = ZP_EXIT_OK;
 done:

@@ -1,5 +1,6 @@
 /* `zipopt [SCENE.ini] [--out DIR]`: the search for the fastest survivable schedule, its
    verification and the best-forcing report (CLI.md; issue 4). */
+#include <limits.h>
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
@@ -55,50 +56,69 @@ static void usage(FILE *f) {
 
 typedef struct search_args {
     const char *scene, *out, *algo;
-    long seed, max_evals; /* -1: from the scene */
+    int has_seed;
+    unsigned long seed, max_evals; /* max_evals 0: from the scene */
     int no_plot;
 } search_args;
 
-static int parse_long(const char *opt, const char *text, long *v) {
-    char *end;
-    *v = strtol(text, &end, 10);
-    if (end == text || *end || *v < 0) {
-        fprintf(stderr, "zipopt: %s '%s': expected a whole number >= 0\n", opt, text);
-        return -1;
-    }
-    return 0;
-}
+enum { O_OUT = ZP_OPT_FIRST, O_NO_PLOT, O_ALGORITHM, O_SEED, O_MAX_EVALS };
+static const struct option options[] = {
+    {"help", no_argument, NULL, 'h'},
+    {"out", required_argument, NULL, O_OUT},
+    {"no-plot", no_argument, NULL, O_NO_PLOT},
+    {"algorithm", required_argument, NULL, O_ALGORITHM},
+    {"seed", required_argument, NULL, O_SEED},
+    {"max-evals", required_argument, NULL, O_MAX_EVALS},
+    {NULL, 0, NULL, 0},
+};
 
+/* 1: --help was shown; -1: a mistake (reported) */
 static int parse_args(int argc, char **argv, search_args *a) {
-    *a = (search_args){.seed = -1, .max_evals = -1};
-    for (int i = 1; i < argc; i++) {
-        const char *o = argv[i];
-        int has_value = i + 1 < argc;
-        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
+    *a = (search_args){0};
+    zp_cli_opts_begin();
+    for (int c; (c = zp_cli_opts_next("", argc, argv, options)) != -1;) {
+        switch (c) {
+        case 'h':
             usage(stdout);
             return 1;
-        } else if (!strcmp(o, "--out") && has_value) {
-            a->out = argv[++i];
-        } else if (!strcmp(o, "--no-plot")) {
+        case O_OUT:
+            a->out = optarg;
+            break;
+        case O_NO_PLOT:
             a->no_plot = 1;
-        } else if (!strcmp(o, "--algorithm") && has_value) {
-            a->algo = argv[++i];
-        } else if (!strcmp(o, "--seed") && has_value) {
-            if (parse_long(o, argv[++i], &a->seed)) {
+            break;
+        case O_ALGORITHM:
+            a->algo = optarg;
+            break;
+        case O_SEED:
+            a->has_seed = 1;
+            if (zp_cli_whole("", "--seed", optarg, 0, ULONG_MAX, &a->seed)) {
                 return -1;
             }
-        } else if (!strcmp(o, "--max-evals") && has_value) {
-            if (parse_long(o, argv[++i], &a->max_evals) || a->max_evals < 1) {
-                fprintf(stderr, "zipopt: --max-evals: at least 1 simulation\n");
+            break;
+        case O_MAX_EVALS:
+            if (zp_cli_whole("", "--max-evals", optarg, 1, LONG_MAX, &a->max_evals)) {
                 return -1;
             }
-        } else if (zp_cli_scene_arg("", o, &a->scene)) {
+            break;
+        default:
             return -1;
         }
     }
+    if (zp_cli_scene_operand("", argc, argv, &a->scene) ||
+        (a->out && zp_cli_path_ok("", "--out", a->out))) {
+        return -1;
+    }
     if (a->algo && zp_search_algo_find(a->algo) < 0) {
-        fprintf(stderr, "zipopt: --algorithm '%s' is unknown; see zipopt --help for the list\n",
-                a->algo);
+        const char *names[64];
+        int n = 0;
+        for (; n < zp_search_algo_count() && n < 64; n++) {
+            names[n] = zp_search_algo_get(n)->name;
+        }
+        int near = zp_diag_nearest(a->algo, names, n);
+        zp_cli_error("", "--algorithm '%s' is unknown%s%s%s (the list: zipopt SCENE --help)",
+                     a->algo, near >= 0 ? "; did you mean '" : "", near >= 0 ? names[near] : "",
+                     near >= 0 ? "'?" : "");
         return -1;
     }
     return 0;
@@ -206,7 +226,7 @@ int zp_cmd_search(int argc, char **argv) {
         return pa > 0 ? ZP_EXIT_OK : ZP_EXIT_USAGE;
     }
     static zp_setup st; /* large: kept off the stack */
-    zp_overrides ov = {NULL, NULL, a.seed, a.max_evals};
+    zp_overrides ov = {.has_seed = a.has_seed, .seed = a.seed, .max_evals = (long)a.max_evals};
     if (zp_setup_load("", a.scene, &ov, &st)) {
         return ZP_EXIT_USAGE;
     }

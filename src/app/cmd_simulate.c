@@ -14,6 +14,7 @@
 #include "sim.h"
 
 #define MAX_SAMPLES 10000
+#define MAX_ANIM_FRAMES 20000 /* run.gif: 13 min at 25 fps */
 
 static void usage(FILE *f) {
     fputs("usage: zipopt simulate SCENE.ini [--force F1,F2,..] [--schedule FILE] [--json]\n"
@@ -51,43 +52,89 @@ typedef struct sim_args {
     const char *frames_text, *fps_text, *size_text, *speedup_text;
 } sim_args;
 
+enum {
+    O_JSON = ZP_OPT_FIRST,
+    O_FORCE,
+    O_SCHEDULE,
+    O_SAMPLES,
+    O_OUT,
+    O_PLOT,
+    O_ANIMATE,
+    O_FRAMES,
+    O_FPS,
+    O_SIZE,
+    O_SPEEDUP
+};
+static const struct option options[] = {
+    {"help", no_argument, NULL, 'h'},
+    {"json", no_argument, NULL, O_JSON},
+    {"force", required_argument, NULL, O_FORCE},
+    {"schedule", required_argument, NULL, O_SCHEDULE},
+    {"sample-times", required_argument, NULL, O_SAMPLES},
+    {"out", required_argument, NULL, O_OUT},
+    {"plot", no_argument, NULL, O_PLOT},
+    {"animate", no_argument, NULL, O_ANIMATE},
+    {"frames-at", required_argument, NULL, O_FRAMES},
+    {"fps", required_argument, NULL, O_FPS},
+    {"size", required_argument, NULL, O_SIZE},
+    {"speedup", required_argument, NULL, O_SPEEDUP},
+    {NULL, 0, NULL, 0},
+};
+
+/* 1: --help was shown; -1: a mistake (reported) */
 static int parse_args(int argc, char **argv, sim_args *a) {
     memset(a, 0, sizeof *a);
-    for (int i = 1; i < argc; i++) {
-        const char *o = argv[i];
-        int has_value = i + 1 < argc;
-        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
+    zp_cli_opts_begin();
+    for (int c; (c = zp_cli_opts_next("simulate", argc, argv, options)) != -1;) {
+        switch (c) {
+        case 'h':
             usage(stdout);
-            exit(ZP_EXIT_OK);
-        } else if (!strcmp(o, "--json")) {
+            return 1;
+        case O_JSON:
             a->json = 1;
-        } else if (!strcmp(o, "--force") && has_value) {
-            a->force_text = argv[++i];
-        } else if (!strcmp(o, "--schedule") && has_value) {
-            a->schedule = argv[++i];
-        } else if (!strcmp(o, "--sample-times") && has_value) {
-            a->sample_text = argv[++i];
-        } else if (!strcmp(o, "--out") && has_value) {
-            a->out = argv[++i];
-        } else if (!strcmp(o, "--plot")) {
+            break;
+        case O_FORCE:
+            a->force_text = optarg;
+            break;
+        case O_SCHEDULE:
+            a->schedule = optarg;
+            break;
+        case O_SAMPLES:
+            a->sample_text = optarg;
+            break;
+        case O_OUT:
+            a->out = optarg;
+            break;
+        case O_PLOT:
             a->plot = 1;
-        } else if (!strcmp(o, "--animate")) {
+            break;
+        case O_ANIMATE:
             a->plot = a->animate = 1;
-        } else if (!strcmp(o, "--frames-at") && has_value) {
+            break;
+        case O_FRAMES:
             a->plot = 1;
-            a->frames_text = argv[++i];
-        } else if (!strcmp(o, "--fps") && has_value) {
-            a->fps_text = argv[++i];
-        } else if (!strcmp(o, "--size") && has_value) {
-            a->size_text = argv[++i];
-        } else if (!strcmp(o, "--speedup") && has_value) {
-            a->speedup_text = argv[++i];
-        } else if (zp_cli_scene_arg("simulate", o, &a->scene)) {
+            a->frames_text = optarg;
+            break;
+        case O_FPS:
+            a->fps_text = optarg;
+            break;
+        case O_SIZE:
+            a->size_text = optarg;
+            break;
+        case O_SPEEDUP:
+            a->speedup_text = optarg;
+            break;
+        default:
             return -1;
         }
     }
+    if (zp_cli_scene_operand("simulate", argc, argv, &a->scene) ||
+        (a->out && zp_cli_path_ok("simulate", "--out", a->out)) ||
+        (a->schedule && zp_cli_path_ok("simulate", "--schedule", a->schedule))) {
+        return -1;
+    }
     if (!a->scene) {
-        fputs("zipopt simulate: a scene file is required; see zipopt simulate --help\n", stderr);
+        zp_cli_error("simulate", "a scene file is required; see zipopt simulate --help");
         return -1;
     }
     return 0;
@@ -203,10 +250,25 @@ static int plot_opts(const sim_args *a, const zp_setup *st, zp_plot_opts *po) {
         snprintf(expect, sizeof expect, "one number above 0 and at most 1000");
     }
     if (opt) {
-        fprintf(stderr, "zipopt simulate: %s: %s%s%s; nothing was written\n", opt,
-                *why ? why : "bad value", *why ? "; expected " : ", expected ", expect);
+        zp_cli_error("simulate", "%s: %s%s%s; nothing was written", opt, *why ? why : "bad value",
+                     *why ? "; expected " : ", expected ", expect);
         return -1;
     }
+    return 0;
+}
+
+/* run.gif's frame count, known once the run's length is: within MAX_ANIM_FRAMES or refused
+   (bad input: the options ask for too many) before anything is written */
+static int anim_fits(const zp_result *r, const zp_plot_opts *po) {
+    double frames = floor(r->time * po->fps / po->speedup) + 2;
+    if (!po->animate || frames <= MAX_ANIM_FRAMES) {
+        return 1;
+    }
+    zp_cli_error("simulate",
+                 "--animate: the run of %.3f s at --speedup %g and --fps %g needs %.3g frames; "
+                 "at most %d are drawn (use --speedup %.3g or more); nothing was written",
+                 r->time, po->speedup, po->fps, frames, MAX_ANIM_FRAMES,
+                 r->time * po->fps / (MAX_ANIM_FRAMES - 2));
     return 0;
 }
 
@@ -244,11 +306,12 @@ static int draw(const char *dir, const zp_model *m, zp_sim *s, const zp_result *
 
 int zp_cmd_simulate(int argc, char **argv) {
     sim_args a;
-    if (parse_args(argc, argv, &a)) {
-        return ZP_EXIT_USAGE;
+    int pa = parse_args(argc, argv, &a);
+    if (pa) {
+        return pa > 0 ? ZP_EXIT_OK : ZP_EXIT_USAGE;
     }
     static zp_setup st; /* large: kept off the stack */
-    zp_overrides ov = {a.schedule, a.force_text, -1, 0};
+    zp_overrides ov = {.schedule = a.schedule, .force = a.force_text};
     if (zp_setup_load("simulate", a.scene, &ov, &st)) {
         return ZP_EXIT_USAGE;
     }
@@ -270,8 +333,7 @@ int zp_cmd_simulate(int argc, char **argv) {
             }
         }
         if (nsample < 0) {
-            fprintf(stderr, "zipopt simulate: --sample-times: %s; expected times >= 0 in s\n",
-                    why);
+            zp_cli_error("simulate", "--sample-times: %s; expected times >= 0 in s", why);
             goto done;
         }
         qsort(samples, nsample, sizeof *samples, cmp_double);
@@ -293,6 +355,10 @@ int zp_cmd_simulate(int argc, char **argv) {
     zp_input in = {.sched = &st.sched, .sample_t = samples, .nsample = nsample};
     if (zp_sim_run(m, s, &in, &r)) {
         fprintf(stderr, "zipopt simulate: %s; nothing was written\n", r.message);
+        goto done;
+    }
+    if (!anim_fits(&r, &po)) {
+        status = ZP_EXIT_USAGE;
         goto done;
     }
     zp_estimate est;

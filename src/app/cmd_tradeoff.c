@@ -1,5 +1,6 @@
 /* `zipopt tradeoff SCENE.ini [--levels P1,P2,..]`: the robust search at each force_error level
    (the scene's other [robust] ranges as given): what robustness costs (CLI.md). */
+#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -159,19 +160,37 @@ static int parse_levels(const char *text, double *lv) {
     return m;
 }
 
+enum { O_LEVELS = ZP_OPT_FIRST, O_OUT };
+
+static const struct option options[] = {
+    {"help", no_argument, NULL, 'h'},
+    {"levels", required_argument, NULL, O_LEVELS},
+    {"out", required_argument, NULL, O_OUT},
+    {NULL, 0, NULL, 0},
+};
+
 int zp_cmd_tradeoff(int argc, char **argv) {
     const char *scene = NULL, *out = NULL, *levels = NULL;
-    for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+    zp_cli_opts_begin();
+    for (int c; (c = zp_cli_opts_next("tradeoff", argc, argv, options)) != -1;) {
+        if (c == 'h') {
             usage(stdout);
             return ZP_EXIT_OK;
-        } else if (!strcmp(argv[i], "--levels") && i + 1 < argc) {
-            levels = argv[++i];
-        } else if (!strcmp(argv[i], "--out") && i + 1 < argc) {
-            out = argv[++i];
-        } else if (zp_cli_scene_arg("tradeoff", argv[i], &scene)) {
+        } else if (c == O_LEVELS) {
+            levels = optarg;
+        } else if (c == O_OUT) {
+            out = optarg;
+        } else {
             return ZP_EXIT_USAGE;
         }
+    }
+    if (zp_cli_scene_operand("tradeoff", argc, argv, &scene) ||
+        (out && zp_cli_path_ok("tradeoff", "--out", out))) {
+        return ZP_EXIT_USAGE;
+    }
+    if (!scene) {
+        zp_cli_error("tradeoff", "a scene file is required; see zipopt tradeoff --help");
+        return ZP_EXIT_USAGE;
     }
     double lv[MAX_LEVELS];
     int n = parse_levels(levels, lv);

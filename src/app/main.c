@@ -2,8 +2,53 @@
 #include <gsl/gsl_errno.h>
 #include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "cli.h"
+
+static const struct {
+    const char *name;
+    int (*run)(int argc, char **argv);
+} commands[] = {
+    {"simulate", zp_cmd_simulate},
+    {"check", zp_cmd_check},
+    {"landscape", zp_cmd_landscape},
+    {"tradeoff", zp_cmd_tradeoff},
+    {"bench", zp_cmd_bench},
+};
+#define NCOMMAND ((int)(sizeof commands / sizeof commands[0]))
+
+/* a first word that is neither a command nor a file: a typo of a command, said as such,
+   rather than a scene file that cannot be read; 0 if word may be a scene file */
+static int unknown_command(const char *word) {
+    const char *names[NCOMMAND];
+    for (int i = 0; i < NCOMMAND; i++) {
+        names[i] = commands[i].name;
+    }
+    int near = zp_diag_nearest(word, names, NCOMMAND);
+    if (word[0] == '-' || access(word, F_OK) == 0 || near < 0) {
+        return 0;
+    }
+    zp_cli_error("", "unknown command '%s'; did you mean '%s'? (see zipopt --help)", word,
+                 names[near]);
+    return 1;
+}
+
+/* the overview, then every command's own --help: the text zipopt(1) is made from */
+static void usage_all(void) {
+    zp_cli_usage(stdout);
+    char prog[] = "zipopt", help[] = "--help";
+    char *args[] = {prog, help, NULL};
+    printf("\nThe search, zipopt [SCENE.ini]:\n\n");
+    zp_cmd_search(2, args);
+    for (int i = 0; i < NCOMMAND; i++) {
+        char name[16];
+        snprintf(name, sizeof name, "%s", commands[i].name);
+        args[0] = name;
+        printf("\nzipopt %s:\n\n", name);
+        commands[i].run(2, args);
+    }
+}
 
 int main(int argc, char **argv) {
     /* GSL's default handler aborts; every GSL call's status is checked instead */
@@ -12,24 +57,21 @@ int main(int argc, char **argv) {
         zp_cli_usage(stdout);
         return ZP_EXIT_OK;
     }
+    if (argc >= 2 && !strcmp(argv[1], "--help-all")) {
+        usage_all();
+        return ZP_EXIT_OK;
+    }
     if (argc >= 2 && !strcmp(argv[1], "--version")) {
         printf("zipopt %s\n", ZIPOPT_VERSION);
         return ZP_EXIT_OK;
     }
-    if (argc >= 2 && !strcmp(argv[1], "simulate")) {
-        return zp_cmd_simulate(argc - 1, argv + 1);
+    for (int i = 0; argc >= 2 && i < NCOMMAND; i++) {
+        if (!strcmp(argv[1], commands[i].name)) {
+            return commands[i].run(argc - 1, argv + 1);
+        }
     }
-    if (argc >= 2 && !strcmp(argv[1], "check")) {
-        return zp_cmd_check(argc - 1, argv + 1);
-    }
-    if (argc >= 2 && !strcmp(argv[1], "landscape")) {
-        return zp_cmd_landscape(argc - 1, argv + 1);
-    }
-    if (argc >= 2 && !strcmp(argv[1], "tradeoff")) {
-        return zp_cmd_tradeoff(argc - 1, argv + 1);
-    }
-    if (argc >= 2 && !strcmp(argv[1], "bench")) {
-        return zp_cmd_bench(argc - 1, argv + 1);
+    if (argc >= 2 && unknown_command(argv[1])) {
+        return ZP_EXIT_USAGE;
     }
     return zp_cmd_search(argc, argv);
 }

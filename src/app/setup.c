@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "cli.h"
 #include "scene_read.h"
 
 /* [optimize] method: the search's integrator, judged with the [solver] names */
@@ -39,7 +40,7 @@ static void overrides(const char *cmd, zp_setup *st, const zp_overrides *ov, zp_
             st->sched = zp_schedule_with(&st->sched, s.p);
         }
     }
-    st->seed = ov->seed >= 0 ? (unsigned long)ov->seed : sc->seed;
+    st->seed = ov->has_seed ? ov->seed : sc->seed;
     st->max_evals = ov->max_evals > 0 ? ov->max_evals : sc->max_evals;
 }
 
@@ -68,8 +69,7 @@ int zp_setup_load(const char *cmd, const char *path, const zp_overrides *ov, zp_
     if (n == 0 && st->m) {
         return 0;
     }
-    fprintf(stderr, "zipopt: %s: %d error%s; nothing was written\n", sc->path, n,
-            n == 1 ? "" : "s");
+    zp_cli_error("", "%s: %d error%s; nothing was written", sc->path, n, n == 1 ? "" : "s");
     zp_setup_free(st);
     return -1;
 }

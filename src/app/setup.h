@@ -10,11 +10,12 @@
 typedef struct zp_overrides {
     const char *schedule; /* --schedule FILE ([drive] forces), or NULL */
     const char *force;    /* --force F1,.. (N per section), or NULL; after the file */
-    long seed;            /* --seed, < 0: the scene's */
+    int has_seed;         /* --seed given: seed replaces the scene's */
+    unsigned long seed;   /* --seed, 0 to ULONG_MAX as [optimize] seed */
     long max_evals;       /* --max-evals, <= 0: the scene's */
 } zp_overrides;
 
-#define ZP_OVERRIDES_NONE ((zp_overrides){NULL, NULL, -1, 0})
+#define ZP_OVERRIDES_NONE ((zp_overrides){NULL, NULL, 0, 0, 0})
 
 typedef struct zp_setup {
     zp_scene sc;        /* the scene as read: names, lines and settings for messages */

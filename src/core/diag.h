@@ -27,7 +27,18 @@ void zp_diag_init(zp_diag *d);
 /* Adds "file:line: [section] key: <fmt>"; file/section/key may be NULL, line <= 0 omits it. */
 void zp_diag_add(zp_diag *d, const char *file, int line, const char *section, const char *key,
                  const char *fmt, ...) __attribute__((format(printf, 6, 7)));
+/* Prints every message, control bytes escaped (zp_diag_put_escaped). */
 void zp_diag_print(const zp_diag *d, FILE *f);
+/* Writes s with control bytes shown as \n, \t or \xNN, so user text (a file name, a value)
+   cannot break or forge a line of a message. */
+void zp_diag_put_escaped(FILE *f, const char *s);
 
+/* Edit distance with adjacent transpositions counting 1 (`lenghts` is 1 from `lengths`). */
+int zp_diag_edit_distance(const char *a, const char *b);
+/* Close enough to be a typo: about one slip per four letters of valid. */
+int zp_diag_is_near(const char *typed, const char *valid);
+/* The index of the name in names[0..n) nearest to typed if it is near (a typo), else -1:
+   for "did you mean" hints. */
+int zp_diag_nearest(const char *typed, const char *const *names, int n);
 
 #endif

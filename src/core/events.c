@@ -4,7 +4,9 @@
 
 #include <math.h>
 
-int zp_events_count(const zp_model *m) { return 2 + 2 * m->nlink; }
+int zp_events_count(const zp_model *m) {
+    return 2 + 2 * m->nlink;
+}
 
 void zp_events_directions(const zp_model *m, int *dir) {
     dir[ZP_ROOT_LEFT] = -1;
@@ -12,6 +14,12 @@ void zp_events_directions(const zp_model *m, int *dir) {
     for (int i = 0; i < m->nlink; i++) {
         dir[ZP_ROOT_DEATH + i] = -1;
         dir[ZP_ROOT_DEATH + m->nlink + i] = 0;
+    }
+}
+
+void zp_events_state_only(const zp_model *m, int *flag) {
+    for (int i = 0; i < zp_events_count(m); i++) {
+        flag[i] = i >= ZP_ROOT_DEATH + m->nlink;
     }
 }
 

@@ -20,6 +20,9 @@ typedef enum {
 int zp_events_count(const zp_model *m);
 /* Directions that matter: leaving through either end, |phi| rising through phi_max. */
 void zp_events_directions(const zp_model *m, int *dir);
+/* 1 for the roots whose time matters only through the state there (the extrema: phi is
+   stationary at w = 0), 0 for the others. */
+void zp_events_state_only(const zp_model *m, int *flag);
 void zp_events_eval(const zp_model *m, int sec, double x, const double *phi, const double *w,
                     double *g);
 /* What the roots found on section sec mean, in priority order death > finish > roll-back >

@@ -12,9 +12,14 @@
  *   R_j = -B_j sin th_j f'' x'^2 + sum_k C_jk sin(th_k - th_j) th_k'^2 - g B_j sin th_j
  *         - c_j w_j + c_{j+1} w_{j+1}
  * (w_j = th_j' - th_{j-1}' the joint rates; F the drive force vector). M is symmetric
- * positive definite: Cholesky (GSL). Loads come from the accelerations: the normal force from
+ * positive definite: Cholesky. Loads come from the accelerations: the normal force from
  * the whole system's momentum balance, the joint reactions from each link's, bottom up.
- * State: y = (x, th_1..N, x', th_1'..N', W_drive, W_damp). */
+ * State: y = (x, th_1..N, x', th_1'..N', W_drive, W_damp).
+ *
+ * Design note: the simulations take the fixed-size path (fast_rhs: arrays on the stack,
+ * unrolled per N, the velocity sums of R in O(N) from C_jk = l_j B_k (j < k), a Cholesky of
+ * M's lower triangle written out); the general path (GSL matrices and Cholesky) stays as
+ * zp_form_lagrange_general, the reference the tests hold the fast one to. */
 #include <gsl/gsl_linalg.h>
 #include <math.h>
 #include <stdlib.h>
@@ -26,7 +31,9 @@ typedef struct lagrange_work {
     gsl_vector *R, *acc;
 } lagrange_work;
 
-static int lagrange_nstate(const zp_model *m) { return 2 * (m->nlink + 1) + 2; }
+static int lagrange_nstate(const zp_model *m) {
+    return 2 * (m->nlink + 1) + 2;
+}
 
 static void lagrange_free(void *work) {
     lagrange_work *w = work;
@@ -68,8 +75,7 @@ static void lagrange_from_chain(const zp_model *m, const zp_chain *c, const doub
     y[2 * nq + 1] = wk[1];
 }
 
-static void lagrange_to_chain(const zp_model *m, const zp_track *tr, const double *y,
-                              zp_chain *c) {
+static void lagrange_to_chain(const zp_model *m, const zp_track *tr, const double *y, zp_chain *c) {
     int nq = m->nlink + 1;
     c->q[0] = y[0];
     c->q[1] = tr->f;
@@ -123,8 +129,8 @@ static void lagrange_loads(const zp_model *m, const zp_drive_now *dn, const doub
     }
 }
 
-static int lagrange_rhs(const zp_model *m, void *work, const zp_drive_now *dn, const double *y,
-                        double *ydot, zp_loads *loads) {
+static int lagrange_rhs_general(const zp_model *m, void *work, const zp_drive_now *dn,
+                                const double *y, double *ydot, zp_loads *loads) {
     lagrange_work *lw = work;
     int n = m->nlink, nq = n + 1;
     double fp = dn->tr.fp, fpp = dn->tr.fpp, xd = y[nq];
@@ -178,6 +184,126 @@ static int lagrange_rhs(const zp_model *m, void *work, const zp_drive_now *dn, c
     return 0;
 }
 
+/* M y = R for the SPD M of size nq (lower triangle read, overwritten by its Cholesky
+   factor); 0, or 1 when M is not positive definite */
+static inline int cholesky_solve(double M[ZP_MAX_LINKS + 1][ZP_MAX_LINKS + 1], const double *R,
+                                 double *yout, int nq) {
+    for (int j = 0; j < nq; j++) {
+        double d = M[j][j];
+        for (int k = 0; k < j; k++) {
+            d -= M[j][k] * M[j][k];
+        }
+        if (!(d > 0)) {
+            return 1;
+        }
+        M[j][j] = sqrt(d);
+        for (int i = j + 1; i < nq; i++) {
+            double v = M[i][j];
+            for (int k = 0; k < j; k++) {
+                v -= M[i][k] * M[j][k];
+            }
+            M[i][j] = v / M[j][j];
+        }
+    }
+    for (int i = 0; i < nq; i++) {
+        double v = R[i];
+        for (int k = 0; k < i; k++) {
+            v -= M[i][k] * yout[k];
+        }
+        yout[i] = v / M[i][i];
+    }
+    for (int i = nq - 1; i >= 0; i--) {
+        double v = yout[i];
+        for (int k = i + 1; k < nq; k++) {
+            v -= M[k][i] * yout[k];
+        }
+        yout[i] = v / M[i][i];
+    }
+    return 0;
+}
+
+/* the equations of motion for n links, n a constant where it is inlined */
+static inline int fast_rhs(const zp_model *m, const zp_drive_now *dn, const double *y, double *ydot,
+                           zp_loads *loads, int n) {
+    const int nq = n + 1;
+    double fp = dn->tr.fp, fpp = dn->tr.fpp, xd = y[nq];
+    double s[ZP_MAX_LINKS], c[ZP_MAX_LINKS], wd2[ZP_MAX_LINKS], wj[ZP_MAX_LINKS + 1];
+    for (int j = 0; j < n; j++) {
+        s[j] = sin(y[1 + j]);
+        c[j] = cos(y[1 + j]);
+        wd2[j] = y[nq + 1 + j] * y[nq + 1 + j];
+        wj[j] = y[nq + 1 + j] - (j ? y[nq + j] : 0);
+    }
+    wj[n] = 0;
+    /* suffix sums over k > j of B_k (s_k, c_k) th_k'^2, prefix sums over k < j of
+       l_k (s_k, c_k) th_k'^2: sum_k C_jk sin(th_k - th_j) th_k'^2 in O(N) */
+    double ps[ZP_MAX_LINKS + 1], pc[ZP_MAX_LINKS + 1];
+    ps[n] = pc[n] = 0;
+    for (int k = n - 1; k >= 0; k--) {
+        ps[k] = ps[k + 1] + m->B[k] * s[k] * wd2[k];
+        pc[k] = pc[k + 1] + m->B[k] * c[k] * wd2[k];
+    }
+    double M[ZP_MAX_LINKS + 1][ZP_MAX_LINKS + 1], R[ZP_MAX_LINKS + 1], qdd[ZP_MAX_LINKS + 1];
+    double acc_n = fpp * xd * xd + m->g; /* normal acceleration terms shared by every row */
+    M[0][0] = m->mtot * (1 + fp * fp);
+    R[0] = -m->mtot * fp * acc_n + dn->fx + dn->fy * fp;
+    double us = 0, uc = 0, pdamp = 0;
+    for (int j = 0; j < n; j++) {
+        M[1 + j][0] = m->B[j] * (c[j] + fp * s[j]);
+        R[0] += m->B[j] * (s[j] - fp * c[j]) * wd2[j];
+        for (int k = 0; k <= j; k++) {
+            M[1 + j][1 + k] = m->C[j][k] * (c[j] * c[k] + s[j] * s[k]);
+        }
+        double above = m->B[j] * (c[j] * us - s[j] * uc);
+        double below = m->len[j] * (c[j] * ps[j + 1] - s[j] * pc[j + 1]);
+        R[1 + j] = -m->B[j] * s[j] * acc_n - m->damp[j] * wj[j] +
+                   (j + 1 < n ? m->damp[j + 1] * wj[j + 1] : 0) + above + below;
+        us += m->len[j] * s[j] * wd2[j];
+        uc += m->len[j] * c[j] * wd2[j];
+        pdamp += m->damp[j] * wj[j] * wj[j];
+    }
+    if (!isfinite(R[0]) || !isfinite(pdamp) || cholesky_solve(M, R, qdd, nq)) {
+        return 1;
+    }
+    for (int i = 0; i < nq; i++) {
+        ydot[i] = y[nq + i];
+        ydot[nq + i] = qdd[i];
+        if (!isfinite(qdd[i])) {
+            return 1;
+        }
+    }
+    ydot[2 * nq] = (dn->fx + dn->fy * fp) * xd;
+    ydot[2 * nq + 1] = pdamp;
+    if (loads) {
+        lagrange_loads(m, dn, y, qdd, loads);
+    }
+    return 0;
+}
+
+#define FAST_RHS(N)                                                                                \
+    static int fast_rhs##N(const zp_model *m, const zp_drive_now *dn, const double *y,             \
+                           double *ydot, zp_loads *loads) {                                        \
+        return fast_rhs(m, dn, y, ydot, loads, N);                                                 \
+    }
+FAST_RHS(1)
+FAST_RHS(2)
+FAST_RHS(3)
+FAST_RHS(4)
+FAST_RHS(5)
+FAST_RHS(6)
+FAST_RHS(7)
+FAST_RHS(8)
+
+static int lagrange_rhs(const zp_model *m, void *work, const zp_drive_now *dn, const double *y,
+                        double *ydot, zp_loads *loads) {
+    static int (*const by_n[ZP_MAX_LINKS + 1])(const zp_model *, const zp_drive_now *,
+                                               const double *, double *, zp_loads *) = {
+        NULL,      fast_rhs1, fast_rhs2, fast_rhs3, fast_rhs4,
+        fast_rhs5, fast_rhs6, fast_rhs7, fast_rhs8};
+    (void)work;
+    return by_n[m->nlink](m, dn, y, ydot, loads);
+}
+
 const zp_formulation zp_form_lagrange = {
     .name = "lagrange",
     .doc = "Euler-Lagrange in minimal coordinates (x, theta_1..N), y = f(x) substituted",
@@ -188,5 +314,18 @@ const zp_formulation zp_form_lagrange = {
     .to_chain = lagrange_to_chain,
     .relative = lagrange_relative,
     .rhs = lagrange_rhs,
+    .constraint_residual = NULL,
+};
+
+const zp_formulation zp_form_lagrange_general = {
+    .name = "lagrange-general",
+    .doc = "lagrange with GSL matrices and Cholesky, any N: the reference for the fixed-size path",
+    .nstate = lagrange_nstate,
+    .create = lagrange_create,
+    .free = lagrange_free,
+    .from_chain = lagrange_from_chain,
+    .to_chain = lagrange_to_chain,
+    .relative = lagrange_relative,
+    .rhs = lagrange_rhs_general,
     .constraint_residual = NULL,
 };

@@ -51,6 +51,10 @@ typedef enum {
     ZP_FORM_COUNT
 } zp_form_id;
 
+/* Not in the registry: lagrange's general path (GSL), which the tests hold the fixed-size
+   path of "lagrange" to. */
+extern const zp_formulation zp_form_lagrange_general;
+
 const zp_formulation *zp_formulation_get(int id);
 int zp_formulation_find(const char *name); /* -1 if unknown */
 

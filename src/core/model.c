@@ -100,11 +100,7 @@ static int check_course(zp_model *m, const zp_scene *sc, zp_diag *d) {
 }
 
 zp_course *zp_model_course(const zp_model *m, zp_course_err *e) {
-    const char *exprs[ZP_MAX_SECTIONS];
-    for (int k = 0; k < m->nsec; k++) {
-        exprs[k] = m->expr[k];
-    }
-    return zp_course_create(m->nsec, exprs, e);
+    return zp_course_for_thread(m->course, e);
 }
 
 zp_model *zp_model_build(const zp_scene *sc, zp_diag *d) {
@@ -121,7 +117,11 @@ zp_model *zp_model_build(const zp_scene *sc, zp_diag *d) {
         memcpy(m->expr[k], sc->expr[k], ZP_EXPR_MAX);
     }
     zp_course_err ce;
-    m->course = zp_model_course(m, &ce);
+    const char *exprs[ZP_MAX_SECTIONS];
+    for (int k = 0; k < m->nsec; k++) {
+        exprs[k] = m->expr[k];
+    }
+    m->course = zp_course_create(m->nsec, exprs, &ce);
     if (!m->course) {
         /* the line of the failing section's key */
         int k = ce.section;

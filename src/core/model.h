@@ -47,8 +47,8 @@ zp_model *zp_model_build(const zp_scene *sc, zp_diag *d);
 void zp_model_free(zp_model *m);
 /* Recomputes mtot, B and C from m0, len, half, mass and inertia (after changing them). */
 void zp_model_derive(zp_model *m);
-/* A new set of course evaluators for m's sections, owned by the caller (one per thread);
-   NULL with why in e. */
+/* A course for one simulating thread (zp_course_for_thread: compiled code shared by all),
+   owned by the caller; NULL with why in e. */
 zp_course *zp_model_course(const zp_model *m, zp_course_err *e);
 
 #endif

@@ -25,8 +25,11 @@ int zp_text_number(const char *text, double *out) {
     }
     char *end;
     double v = strtod(text, &end);
-    if (*end || !isfinite(v)) {
+    if (*end) {
         return -1;
+    }
+    if (!isfinite(v)) {
+        return -2;
     }
     *out = v;
     return 0;
@@ -53,8 +56,10 @@ int zp_text_items(const char *text, double *out, int max, char *why, size_t whyl
             }
             return -1;
         }
-        if (zp_text_number(buf, &v)) {
-            snprintf(why, whylen, "item %d `%s` is not a number", n + 1, buf);
+        int bad_number = zp_text_number(buf, &v);
+        if (bad_number) {
+            snprintf(why, whylen, "item %d `%s` is %s", n + 1, buf,
+                     bad_number == -2 ? "out of range (beyond 1.8e308)" : "not a number");
             return -1;
         }
         if (n < max) {

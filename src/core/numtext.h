@@ -7,8 +7,8 @@
 
 /* Strips leading and trailing white space in place. */
 void zp_text_trim(char *s);
-/* A finite decimal number taking the whole text (no hex, inf, nan or trailing junk): 0, or
-   -1. */
+/* A finite decimal number taking the whole text (no hex, inf, nan or trailing junk): 0; -1 if
+   it is not one, -2 if it is beyond the largest double (1e400). */
 int zp_text_number(const char *text, double *out);
 /* "a, b, c": returns how many items the list has (storing at most max in out), or -1 with why
    on an empty or bad item. */

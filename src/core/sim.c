@@ -135,7 +135,9 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
     s->cross = malloc(sizeof *s->cross * ZP_MAX_CROSSINGS);
     int dir[2 + 2 * ZP_MAX_LINKS];
     zp_events_directions(m, dir);
-    zp_method_opts mo = {o->rtol, o->atol, o->max_steps};
+    int state_only[2 + 2 * ZP_MAX_LINKS];
+    zp_events_state_only(m, state_only);
+    zp_method_opts mo = {o->rtol, o->atol, o->max_steps, state_only};
     s->mwork = s->meth->create(s->n, s->nroot, dir, zp_sim_rhs, sim_root, s, &mo);
     if (o->peaks) {
         s->brent = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);

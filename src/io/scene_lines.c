@@ -72,38 +72,6 @@ static int find_section(const char *name) {
     return -1;
 }
 
-/* edit distance with adjacent transpositions counting 1, so `lenghts` is 1 from `lengths` */
-static int edit_distance(const char *a, const char *b) {
-    enum { N = 40 };
-    size_t na = strlen(a), nb = strlen(b);
-    if (na >= N || nb >= N) {
-        return N;
-    }
-    int dp[N + 1][N + 1];
-    for (size_t i = 0; i <= na; i++) {
-        for (size_t j = 0; j <= nb; j++) {
-            if (i == 0 || j == 0) {
-                dp[i][j] = (int)(i + j);
-                continue;
-            }
-            int best = dp[i - 1][j - 1] + (a[i - 1] != b[j - 1]);
-            best = dp[i - 1][j] + 1 < best ? dp[i - 1][j] + 1 : best;
-            best = dp[i][j - 1] + 1 < best ? dp[i][j - 1] + 1 : best;
-            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] &&
-                dp[i - 2][j - 2] + 1 < best) {
-                best = dp[i - 2][j - 2] + 1;
-            }
-            dp[i][j] = best;
-        }
-    }
-    return dp[na][nb];
-}
-
-/* close enough to be a typo: about one slip per four letters */
-static int is_near(const char *typed, const char *valid) {
-    return edit_distance(typed, valid) <= 1 + (int)strlen(valid) / 4;
-}
-
 void zp_scene_bad(parse_ctx *c, int line, const char *sec, const char *key, const char *fmt, ...) {
     if (c->nmsg == MSG_MAX) {
         c->nmore++;
@@ -144,7 +112,7 @@ static void unknown_section(parse_ctx *c, const char *name) {
         return;
     }
     for (int s = 0; s < S_COUNT; s++) {
-        if (is_near(name, zp_scene_sec_names[s])) {
+        if (zp_diag_is_near(name, zp_scene_sec_names[s])) {
             zp_scene_bad(c, c->line, NULL, NULL, "unknown section [%s]; did you mean [%s]?", name,
                          zp_scene_sec_names[s]);
             return;
@@ -172,8 +140,8 @@ static void unknown_key(parse_ctx *c, int s, const char *name) {
     }
     int best = -1, best_d = 0;
     for (int k = 0; k < K_COUNT; k++) {
-        if (zp_scene_keys[k].sec == s && is_near(name, zp_scene_keys[k].name)) {
-            int dk = edit_distance(name, zp_scene_keys[k].name);
+        if (zp_scene_keys[k].sec == s && zp_diag_is_near(name, zp_scene_keys[k].name)) {
+            int dk = zp_diag_edit_distance(name, zp_scene_keys[k].name);
             if (best < 0 || dk < best_d) {
                 best = k;
                 best_d = dk;

@@ -55,9 +55,11 @@ int zp_scene_get_number(parse_ctx *c, int k, zp_range r, double *out) {
         return 0;
     }
     double v;
-    if (zp_text_number(c->val[k], &v)) {
+    int bad_number = zp_text_number(c->val[k], &v);
+    if (bad_number) {
         if (c->val[k][0]) {
-            zp_scene_bad_key(c, k, "`%s` is not a number", c->val[k]);
+            zp_scene_bad_key(c, k, "`%s` is %s", c->val[k],
+                             bad_number == -2 ? "out of range (beyond 1.8e308)" : "not a number");
         } else {
             zp_scene_bad_key(c, k, "no value");
         }

@@ -11,6 +11,10 @@ typedef int (*zp_root_fn)(double t, const double *y, double *g, void *user);
 typedef struct zp_method_opts {
     double rtol, atol;
     long max_steps; /* per advance call; the simulator also bounds the run */
+    /* NULL, or per root 1 where only the state at the root is wanted, not its time to the
+       integration's resolution (g is the rate of what is recorded, which is stationary
+       there): a method that lands its roots by a step may skip refining such a time */
+    const int *root_state_only;
 } zp_method_opts;
 
 /* What one advance did. */

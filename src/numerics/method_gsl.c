@@ -22,7 +22,8 @@
 
 typedef struct gsl_work {
     int n, nroot;
-    int *dir; /* owned, nroot: +1/-1 only that direction of crossing, 0 both */
+    int *dir;        /* owned, nroot: +1/-1 only that direction of crossing, 0 both */
+    int *state_only; /* owned, nroot: 1 where one landing step suffices (no Newton on t) */
     zp_rhs_fn rhs;
     zp_root_fn root;
     void *user; /* borrowed, handed to rhs and root */
@@ -30,8 +31,8 @@ typedef struct gsl_work {
     gsl_odeiv2_driver *run;  /* owned: step, control and evolve of the integration */
     gsl_odeiv2_driver *land; /* owned: a second stepper of the same type for root states */
     gsl_root_fsolver *brent; /* owned */
-    double t_stop, h; /* s: end of the run, next step size */
-    double rtol;      /* the requested relative tolerance: how well a root's time need be known */
+    double t_stop, h;        /* s: end of the run, next step size */
+    double rtol, atol; /* the requested tolerances (rtol: how well a root's time need be known) */
     long steps, evals;
     /* the last step [t0, t1] with states and (when computed) rates at both ends */
     double t0, t1;
@@ -40,10 +41,10 @@ typedef struct gsl_work {
     /* roots are searched in (tlo, t1]: glo = g at tlo, g1 = g at t1 */
     int pending; /* the step's end has not been reported yet */
     double tlo;
-    double *glo, *g1, *gtmp;  /* owned, nroot */
-    double *ytmp, *yerr; /* owned, n: scratch */
-    double *fj;          /* owned, 2n: the Jacobian's base and perturbed rates */
-    int iroot;                /* component Brent is working on */
+    double *glo, *g1, *gtmp; /* owned, nroot */
+    double *ytmp, *yerr;     /* owned, n: scratch */
+    double *fj;              /* owned, 2n: the Jacobian's base and perturbed rates */
+    int iroot;               /* component Brent is working on */
 } gsl_work;
 
 /* the rhs as GSL sees it: >0 (non-finite rates) makes GSL retry with a smaller step */
@@ -90,6 +91,7 @@ static void gsl_free_work(void *work) {
         gsl_root_fsolver_free(w->brent);
     }
     free(w->dir);
+    free(w->state_only);
     free(w->y0);
     free(w->y1);
     free(w->f0);
@@ -117,11 +119,13 @@ static void *gsl_create(const gsl_odeiv2_step_type *type, int n, int nroot, cons
     w->sys = (gsl_odeiv2_system){g_rhs, g_jac, (size_t)n, w};
     /* the driver's initial step is irrelevant: reset sets h */
     w->rtol = o->rtol;
+    w->atol = o->atol;
     w->run = gsl_odeiv2_driver_alloc_y_new(&w->sys, type, 1e-6, o->atol, o->rtol);
     w->land = gsl_odeiv2_driver_alloc_y_new(&w->sys, type, 1e-6, o->atol, o->rtol);
     w->brent = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
     size_t nr = nroot > 0 ? nroot : 1;
     w->dir = calloc(nr, sizeof *w->dir);
+    w->state_only = calloc(nr, sizeof *w->state_only);
     w->glo = calloc(nr, sizeof *w->glo);
     w->g1 = calloc(nr, sizeof *w->g1);
     w->gtmp = calloc(nr, sizeof *w->gtmp);
@@ -132,13 +136,14 @@ static void *gsl_create(const gsl_odeiv2_step_type *type, int n, int nroot, cons
     w->ytmp = calloc(n, sizeof(double));
     w->yerr = calloc(n, sizeof(double));
     w->fj = calloc(2 * (size_t)n, sizeof(double));
-    if (!w->run || !w->land || !w->brent || !w->dir || !w->glo || !w->g1 || !w->gtmp ||
-        !w->y0 || !w->y1 || !w->f0 || !w->f1 || !w->ytmp || !w->yerr || !w->fj) {
+    if (!w->run || !w->land || !w->brent || !w->dir || !w->state_only || !w->glo || !w->g1 ||
+        !w->gtmp || !w->y0 || !w->y1 || !w->f0 || !w->f1 || !w->ytmp || !w->yerr || !w->fj) {
         gsl_free_work(w);
         return NULL;
     }
-    for (int i = 0; i < nroot && rootdir; i++) {
-        w->dir[i] = rootdir[i];
+    for (int i = 0; i < nroot; i++) {
+        w->dir[i] = rootdir ? rootdir[i] : 0;
+        w->state_only[i] = o->root_state_only ? o->root_state_only[i] : 0;
     }
     return w;
 }
@@ -148,9 +153,42 @@ static void *rk8pd_create(int n, int nroot, const int *rootdir, zp_rhs_fn rhs, z
     return gsl_create(gsl_odeiv2_step_rk8pd, n, nroot, rootdir, rhs, root, user, o);
 }
 
-static void *rk4imp_create(int n, int nroot, const int *rootdir, zp_rhs_fn rhs,
-                           zp_root_fn root, void *user, const zp_method_opts *o) {
+static void *rk4imp_create(int n, int nroot, const int *rootdir, zp_rhs_fn rhs, zp_root_fn root,
+                           void *user, const zp_method_opts *o) {
     return gsl_create(gsl_odeiv2_step_rk4imp, n, nroot, rootdir, rhs, root, user, o);
+}
+
+/* the first step of a run or restart, from the rates at two points (Hairer, Norsett and
+   Wanner, Solving ODEs I, II.4): sized so the method's leading error term is about the
+   tolerance; 1e-6 s when the rates fail. Two rhs evaluations against the handful of
+   rejected-free doublings from a tiny step it replaces. */
+static double first_step(gsl_work *w, double t0, const double *y0) {
+    double d0 = 0, d1 = 0, d2 = 0, *f0 = w->fj, *f1 = w->fj + w->n;
+    if (g_rhs(t0, y0, f0, w)) {
+        return 1e-6;
+    }
+    for (int i = 0; i < w->n; i++) {
+        double sc = w->atol + w->rtol * fabs(y0[i]);
+        d0 += (y0[i] / sc) * (y0[i] / sc);
+        d1 += (f0[i] / sc) * (f0[i] / sc);
+    }
+    double h0 = d0 < 1e-10 || d1 < 1e-10 ? 1e-6 : 0.01 * sqrt(d0 / d1);
+    for (int i = 0; i < w->n; i++) {
+        w->ytmp[i] = y0[i] + h0 * f0[i];
+    }
+    if (g_rhs(t0 + h0, w->ytmp, f1, w)) {
+        return 1e-6;
+    }
+    for (int i = 0; i < w->n; i++) {
+        double sc = w->atol + w->rtol * fabs(y0[i]);
+        d2 += ((f1[i] - f0[i]) / sc) * ((f1[i] - f0[i]) / sc);
+    }
+    d1 = sqrt(d1 / w->n);
+    d2 = sqrt(d2 / w->n) / h0;
+    int order = (int)gsl_odeiv2_step_order(w->run->s);
+    double h1 =
+        fmax(d1, d2) <= 1e-15 ? fmax(1e-6, h0 * 1e-3) : pow(0.01 / fmax(d1, d2), 1.0 / (order + 1));
+    return fmin(100 * h0, h1);
 }
 
 static int gsl_reset(void *work, double t0, const double *y0, double t_stop) {
@@ -162,8 +200,7 @@ static int gsl_reset(void *work, double t0, const double *y0, double t_stop) {
     w->have_f0 = w->have_f1 = 0;
     w->pending = 0;
     w->steps = w->evals = 0;
-    /* a first step small against any time scale of the run; the controller grows it */
-    w->h = 1e-6;
+    w->h = first_step(w, t0, y0);
     if (gsl_odeiv2_driver_reset(w->run) || gsl_odeiv2_driver_reset(w->land)) {
         return 1;
     }
@@ -251,8 +288,8 @@ static int bracket_root(gsl_work *w, int i, double *lo, double *hi) {
 /* y at time t by one GSL step from the step's start; falls back to the interpolant */
 static void land(gsl_work *w, double t, double *y) {
     memcpy(y, w->y0, sizeof(double) * w->n);
-    if (t > w->t0 && gsl_odeiv2_step_apply(w->land->s, w->t0, t - w->t0, y, w->yerr, w->f0,
-                                            NULL, &w->sys) == GSL_SUCCESS) {
+    if (t > w->t0 && gsl_odeiv2_step_apply(w->land->s, w->t0, t - w->t0, y, w->yerr, w->f0, NULL,
+                                           &w->sys) == GSL_SUCCESS) {
         return;
     }
     hermite(w, t, y);
@@ -290,8 +327,14 @@ static int find_root(gsl_work *w, double *t, double *y, int *roots) {
             w->glo[i] = 0; /* masked until the step's end: the root is consumed */
         }
     }
-    /* land the state, then Newton steps on the time with the interpolant's slope */
+    /* land the state, then Newton steps on the time with the interpolant's slope, unless
+       only the state is wanted: the time from the interpolant is O(h^4) off, which moves a
+       stationary quantity by O(h^8) */
     land(w, tr, y);
+    *t = tr;
+    if (w->state_only[best]) {
+        return 1;
+    }
     w->iroot = best;
     double eps = 1e-7 * (w->t1 - w->t0);
     double ta = fmax(tr - eps, w->t0), tb = fmin(tr + eps, w->t1);
@@ -311,8 +354,7 @@ static int find_root(gsl_work *w, double *t, double *y, int *roots) {
     return 1;
 }
 
-static zp_adv gsl_advance(void *work, double *t, double *y, int *roots, char *err,
-                          size_t errlen) {
+static zp_adv gsl_advance(void *work, double *t, double *y, int *roots, char *err, size_t errlen) {
     gsl_work *w = work;
     if (!w->pending) {
         /* a new step from the end of the last one */
@@ -322,8 +364,8 @@ static zp_adv gsl_advance(void *work, double *t, double *y, int *roots, char *er
         w->have_f1 = 0;
         w->t0 = w->tlo = w->t1;
         double tt = w->t0;
-        int st = gsl_odeiv2_evolve_apply(w->run->e, w->run->c, w->run->s, &w->sys, &tt,
-                                         w->t_stop, &w->h, w->y1);
+        int st = gsl_odeiv2_evolve_apply(w->run->e, w->run->c, w->run->s, &w->sys, &tt, w->t_stop,
+                                         &w->h, w->y1);
         if (st != GSL_SUCCESS) {
             memcpy(w->y1, w->y0, sizeof(double) * w->n);
             *t = w->t0;
@@ -334,6 +376,13 @@ static zp_adv gsl_advance(void *work, double *t, double *y, int *roots, char *er
         }
         w->t1 = tt;
         w->steps++;
+        /* the step's rates at both ends, when the stepper computed them anyway */
+        const gsl_odeiv2_step_type *type = w->run->s->type;
+        if (type->can_use_dydt_in && type->gives_exact_dydt_out) {
+            memcpy(w->f0, w->run->e->dydt_in, sizeof(double) * w->n);
+            memcpy(w->f1, w->run->e->dydt_out, sizeof(double) * w->n);
+            w->have_f0 = w->have_f1 = 1;
+        }
         w->pending = 1;
         if (w->nroot > 0 && w->root(w->t1, w->y1, w->g1, w->user)) {
             snprintf(err, errlen, "the root functions failed at t = %.9g s", w->t1);
