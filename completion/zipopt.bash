@@ -14,7 +14,7 @@ _zipopt() {
     local cmd='' study='' i
     for ((i = 1; i < COMP_CWORD; i++)); do
         case ${COMP_WORDS[i]} in
-        simulate | check | landscape | bench) [[ -z $cmd ]] && cmd=${COMP_WORDS[i]} ;;
+        simulate | check | landscape | sweep | bench) [[ -z $cmd ]] && cmd=${COMP_WORDS[i]} ;;
         trade) [[ $cmd == bench ]] && study=trade ;;
         esac
     done
@@ -36,7 +36,11 @@ _zipopt() {
         _zipopt_add < <(compgen -W "$algos" -- "$cur")
         return
         ;;
-    --force | --seed | --max-evals | --sample-times | --frames-at | --fps | --size | \
+    --run)
+        _zipopt_add < <(compgen -W "search simulate" -- "$cur")
+        return
+        ;;
+    --force | --vary | --seed | --max-evals | --sample-times | --frames-at | --fps | --size | \
         --speedup | --force-range | --slice | --range | --repeats)
         return # a value the user types
         ;;
@@ -47,6 +51,7 @@ _zipopt() {
                     --fps --size --speedup --help" ;;
     check) opts="--json --help" ;;
     landscape) opts="--force-range --slice --range --force --schedule --out --json --help" ;;
+    sweep) opts="--vary --run --out --resume --json --help" ;;
     bench) opts="--repeats --out --help" ;;
     *) opts="--out --algorithm --seed --max-evals --no-plot --help --help-all --version" ;;
     esac
@@ -58,7 +63,7 @@ _zipopt() {
         _zipopt_add < <(compgen -f -X '!*.ini' -- "$cur")
         _zipopt_add < <(compgen -d -- "$cur")
         if [[ -z $cmd && $COMP_CWORD == 1 ]]; then
-            _zipopt_add < <(compgen -W "simulate check landscape bench" -- "$cur")
+            _zipopt_add < <(compgen -W "simulate check landscape sweep bench" -- "$cur")
         fi
     fi
 }

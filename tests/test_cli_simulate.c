@@ -59,6 +59,20 @@ int main(void) {
     snprintf(path, sizeof path, "%s/a/summary.json", dir);
     CHECK(tu_exists(path));
 
+    /* samples in text mode, and a time after the end said to be not reached (text, JSON) */
+    snprintf(cmd, sizeof cmd, "%s simulate %s/config/seed.ini --sample-times 100,2.5 --out %s/a",
+             ZP_EXE, ZP_SOURCE_DIR, dir);
+    CHECK(run(cmd) == 0);
+    CHECK(strstr(out, "sample t = 2.5 s: x = ") != NULL);
+    CHECK(strstr(out, "sample t = 100 s: not reached") != NULL);
+    snprintf(cmd, sizeof cmd,
+             "%s simulate %s/config/seed.ini --sample-times 100,2.5 --json --out %s/a | "
+             "python3 -c 'import json,sys; d=json.load(sys.stdin); "
+             "print(len(d[\"samples\"]), d[\"samples_not_reached\"])'",
+             ZP_EXE, ZP_SOURCE_DIR, dir);
+    CHECK(run(cmd) == 0);
+    CHECK(!strcmp(out, "1 [100]\n"));
+
     /* a schedule file overrides [drive] forces: 10 N finishes where the seed's 100 N dies */
     snprintf(path, sizeof path, "%s/sched.ini", dir);
     FILE *f = fopen(path, "w");

@@ -126,6 +126,22 @@ static int run(const char *env, const char *args) {
     return st != -1 && WIFEXITED(st) ? WEXITSTATUS(st) : -1;
 }
 
+/* zp_plot_run in a transaction of its own on dir: committed when it succeeds, else aborted */
+static zp_status plot_into(const char *dir, const zp_model *m, const zp_sim *s,
+                           const zp_result *r, const zp_plot_opts *o, zp_plot_info *info,
+                           char *e, size_t elen) {
+    zp_tx t;
+    if (zp_tx_begin(&t, dir, NULL, e, elen)) {
+        return ZP_ERR_IO;
+    }
+    zp_status st = zp_plot_run(&t, m, s, r, o, info, e, elen);
+    if (st) {
+        zp_tx_abort(&t);
+        return st;
+    }
+    return zp_tx_commit(&t, e, elen);
+}
+
 static zp_model *seed(zp_scene *sc) {
     char path[1024];
     snprintf(path, sizeof path, "%s/config/seed.ini", ZP_SOURCE_DIR);
@@ -255,7 +271,7 @@ static void test_figures(void) {
     char dir[1024], e[2048];
     snprintf(dir, sizeof dir, "%s/figs", tmp);
     zp_plot_info info;
-    CHECK(zp_plot_run(dir, m, s, &r, &po, &info, e, sizeof e) == ZP_OK);
+    CHECK(plot_into(dir, m, s, &r, &po, &info, e, sizeof e) == ZP_OK);
     CHECK(!info.no_gnuplot);
     CHECK(info.nframe == 4 && info.nskipped == 0);
     /* the animation: every speedup/fps seconds of the run, plus its last instant */
@@ -318,7 +334,7 @@ static void test_figures(void) {
     setenv("PATH", fake, 1);
     snprintf(dir, sizeof dir, "%s/figs_fail", tmp);
     po.animate = 0;
-    CHECK(zp_plot_run(dir, m, s, &r, &po, &info, e, sizeof e) == ZP_ERR_IO);
+    CHECK(plot_into(dir, m, s, &r, &po, &info, e, sizeof e) == ZP_ERR_IO);
     CHECK(strstr(e, "no such terminal") != NULL);
     setenv("PATH", saved, 1);
     free(saved);
@@ -328,7 +344,7 @@ static void test_figures(void) {
     zp_plot_opts late = po;
     CHECK(zp_plot_parse_frames(m, "t=1,1000", &late, why, sizeof why) == 0);
     snprintf(dir, sizeof dir, "%s/figs_late", tmp);
-    CHECK(zp_plot_run(dir, m, s, &r, &late, &info, e, sizeof e) == ZP_OK);
+    CHECK(plot_into(dir, m, s, &r, &late, &info, e, sizeof e) == ZP_OK);
     CHECK(info.nframe == 1 && info.nskipped == 1);
     CHECK(exists(dir, "frame_t1.png") && !exists(dir, "frame_t1000.png"));
     zp_sim_free(s);
@@ -353,7 +369,7 @@ static void test_frame_geometry(void) {
     CHECK(zp_plot_parse_frames(m, "x=20", &po, why, sizeof why) == 0);
     snprintf(dir, sizeof dir, "%s/figs20", tmp);
     zp_plot_info info;
-    CHECK(zp_plot_run(dir, m, s, &r, &po, &info, e, sizeof e) == ZP_OK);
+    CHECK(plot_into(dir, m, s, &r, &po, &info, e, sizeof e) == ZP_OK);
     check_frame_data(dir, m, 20);
     check_png(dir, "frame_x20.png", 640, 640);
     zp_sim_free(s);
@@ -439,6 +455,10 @@ static void test_landscape(void) {
              "--range 5:30:6 --out '%s'",
              scene, dir);
     CHECK(run("ZIPOPT_TEST=1", args) == 0);
+    /* the windows: runs of consecutive finishing points, a lone point as a point */
+    char *said = slurp(tmp, "stdout");
+    CHECK(said && strstr(said, "finishes at 10 N; 20, 25 N\n") != NULL);
+    free(said);
     check_png(dir, "landscape.png", 0, 0);
     check_png(dir, "landscape_slice.png", 0, 0);
     char *csv = slurp(dir, "landscape.csv");

@@ -114,4 +114,28 @@ static inline int tu_exists(const char *path) {
     return stat(path, &sb) == 0;
 }
 
+/* The file at path into buf (at most n - 1 bytes, NUL added); its length, or -1 if absent. */
+static inline long tu_slurp(const char *path, char *buf, size_t n) {
+    FILE *f = fopen(path, "r");
+    size_t k = f ? fread(buf, 1, n - 1, f) : 0;
+    buf[k] = '\0';
+    if (f) {
+        fclose(f);
+    }
+    return f ? (long)k : -1;
+}
+
+/* Whole lines (newlines) in the file at path: 0 if absent. */
+static inline int tu_count_lines(const char *path) {
+    FILE *f = fopen(path, "r");
+    int n = 0;
+    for (int c; f && (c = getc(f)) != EOF;) {
+        n += c == '\n';
+    }
+    if (f) {
+        fclose(f);
+    }
+    return n;
+}
+
 #endif

@@ -139,12 +139,24 @@ int zp_cli_whole(const char *cmd, const char *opt, const char *text, unsigned lo
     return 0;
 }
 
-void zp_cli_out_dir(const char *out, const zp_scene *sc, char *dir, size_t cap) {
-    if (out) {
-        snprintf(dir, cap, "%s", out);
-    } else {
-        snprintf(dir, cap, "out/%s", sc->name);
+int zp_cli_out_begin(zp_tx *t, const char *cmd, const char *folder, const char *out,
+                     const zp_scene *sc) {
+    char sub[2 * ZP_NAME_MAX], err[1400];
+    snprintf(sub, sizeof sub, "%s/%s", sc->name, folder);
+    if (zp_tx_begin(t, out ? out : "out", out ? NULL : sub, err, sizeof err)) {
+        fprintf(stderr, "zipopt%s%s: %s; nothing was written\n", *cmd ? " " : "", cmd, err);
+        return -1;
     }
+    return 0;
+}
+
+int zp_cli_out_commit(zp_tx *t, const char *cmd) {
+    char err[1400];
+    if (zp_tx_commit(t, err, sizeof err)) {
+        fprintf(stderr, "zipopt%s%s: %s; nothing was written\n", *cmd ? " " : "", cmd, err);
+        return -1;
+    }
+    return 0;
 }
 
 void zp_cli_print_registries(FILE *f) {
@@ -166,6 +178,7 @@ void zp_cli_usage(FILE *f) {
           "  or:  zipopt check SCENE.ini [--json]\n"
           "  or:  zipopt landscape SCENE.ini [OPTION]...\n"
           "  or:  zipopt tradeoff SCENE.ini [--levels P1,P2,..] [--out DIR]\n"
+          "  or:  zipopt sweep SCENE.ini --vary SECTION.KEY=A:B:N [OPTION]...\n"
           "  or:  zipopt bench trade [SCENE.ini] [OPTION]...\n"
           "  or:  zipopt --help | --help-all | --version\n"
           "Simulates a trolley on a zipline course carrying a hanging chain of links (the\n"
@@ -175,7 +188,7 @@ void zp_cli_usage(FILE *f) {
           "  (none)      Search for the fastest survivable schedule of drive forces (one per\n"
           "              course section), verify it 100x tighter and write report.md,\n"
           "              schedule.ini, summary.json, the best run's trajectory and figures to\n"
-          "              out/<scene name>/ (or DIR). With no file: the built-in seed scene.\n"
+          "              out/<scene name>/search/ (or DIR). With no file: the built-in seed scene.\n"
           "  simulate    Run one schedule through the simulator: --force or --schedule\n"
           "              replace the scene's [drive] forces (N); --json prints the result as\n"
           "              JSON. Writes trajectory.csv and summary.json; --plot also draws the\n"
@@ -188,8 +201,12 @@ void zp_cli_usage(FILE *f) {
           "  tradeoff    The robust search at each force error level (%, default\n"
           "              0,1,2,5,10): what robustness costs; writes tradeoff.csv,\n"
           "              tradeoff.png and report.md.\n"
+          "  sweep       A design study: the search (or one run) at every point of a grid of\n"
+          "              scene values; sweep.csv, sweep.png, summary.json in\n"
+          "              out/<scene name>/sweep/. Under `mpirun -np N` the points are spread\n"
+          "              over the ranks.\n"
           "  bench       bench trade: work-precision study of every method over rtol\n"
-          "              1e-3..1e-12; writes out/bench/trade.csv, trade.gp and trade.png.\n"
+          "              1e-3..1e-12; writes out/<scene name>/bench/trade.*.\n"
           "Each command's options: zipopt COMMAND --help (the search's: zipopt SCENE --help);\n"
           "all of them: zipopt --help-all (the text of the man page zipopt(1)). Options take\n"
           "--name VALUE or --name=VALUE, before or after the scene file; -- ends them.\n"

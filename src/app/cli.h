@@ -6,6 +6,7 @@
 #include <getopt.h>
 #include <stdio.h>
 
+#include "out_file.h"
 #include "scene.h"
 
 enum { ZP_EXIT_OK = 0, ZP_EXIT_FAIL = 1, ZP_EXIT_USAGE = 2, ZP_EXIT_NONE = 3 };
@@ -40,8 +41,14 @@ int zp_cli_path_ok(const char *cmd, const char *opt, const char *path);
    of range, or not a whole number). */
 int zp_cli_whole(const char *cmd, const char *opt, const char *text, unsigned long lo,
                  unsigned long hi, unsigned long *out);
-/* The output folder: --out DIR if given, else out/<scene name> (CLI.md "Files"). */
-void zp_cli_out_dir(const char *out, const zp_scene *sc, char *dir, size_t cap);
+/* Begins the command's one transaction (out_file.h) in --out DIR itself when out is given,
+   else in out/<scene name>/<folder> (CLI.md "Files"); says why on stderr for `zipopt <cmd>`
+   and returns -1 on failure. */
+int zp_cli_out_begin(zp_tx *t, const char *cmd, const char *folder, const char *out,
+                     const zp_scene *sc);
+/* Commits t (then t->dir and t->written say what was written), or says why and "nothing was
+   written" on stderr for `zipopt <cmd>`. 0 or -1. */
+int zp_cli_out_commit(zp_tx *t, const char *cmd);
 /* The registries' names and docs, for --help. */
 void zp_cli_print_registries(FILE *f);
 void zp_cli_usage(FILE *f);
@@ -52,5 +59,6 @@ int zp_cmd_landscape(int argc, char **argv);
 int zp_cmd_search(int argc, char **argv);
 int zp_cmd_bench(int argc, char **argv);
 int zp_cmd_tradeoff(int argc, char **argv);
+int zp_cmd_sweep(int argc, char **argv);
 
 #endif

@@ -1,14 +1,14 @@
 /* `zipopt bench trade [SCENE]`: the work-precision study (docs/trade.md). Every method over a
    tolerance sweep on three cases of one scene; the error of what users read against a
    reference run by two methods that agree, against wall time and rhs evaluations; a CSV, a
-   gnuplot script and its log-log plot in out/bench/. */
+   gnuplot script and its log-log plot in out/<scene name>/bench/. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
-#include "out_file.h"
+#include "gnuplot.h"
 #include "setup.h"
 #include "sim.h"
 
@@ -139,9 +139,9 @@ static void usage(FILE *f) {
           "100 N with joint damping 1e4 N m s/rad (stiff). Errors of the finish/death time,\n"
           "kink impulses, largest joint angles and final x/speed against a reference at rtol\n"
           "1e-13 by two methods that agree; cost as the median wall time of up to N runs\n"
-          "(default 5) and rhs evaluations. Writes trade.csv, trade.gp and trade.png to DIR\n"
-          "(default out/bench) and prints the fastest method and tolerance reaching a finish\n"
-          "or death time error of 1e-3, 1e-6 and 1e-9 s.\n",
+          "(default 5) and rhs evaluations. Writes trade.csv, trade.gp and trade.png in DIR\n"
+          "(default out/<scene name>/bench/) and prints the fastest method and tolerance\n"
+          "reaching a finish or death time error of 1e-3, 1e-6 and 1e-9 s.\n",
           f);
 }
 
@@ -155,7 +155,7 @@ static const struct option options[] = {
 
 /* 1: --help was shown; -1: a mistake (reported) */
 static int parse_args(int argc, char **argv, trade_args *a) {
-    *a = (trade_args){.out = "out/bench", .repeats = 5};
+    *a = (trade_args){.repeats = 5};
     if (argc < 2 || strcmp(argv[1], "trade")) {
         if (argc >= 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
             usage(stdout);
@@ -246,13 +246,15 @@ int zp_cmd_bench(int argc, char **argv) {
     for (int t = 0; t < NTOL; t++) {
         tols[t] = pow(10, -3 - t);
     }
-    zp_out_set set;
-    zp_out_set_init(&set);
-    char err[1200] = "";
-    FILE *csv = zp_out_set_open(&set, a.out, "trade.csv", err, sizeof err);
-    FILE *gp = csv ? zp_out_set_open(&set, a.out, "trade.gp", err, sizeof err) : NULL;
+    zp_tx set;
+    if (zp_cli_out_begin(&set, "bench trade", "bench", a.out, &base.sc)) {
+        return ZP_EXIT_FAIL;
+    }
+    char err[1400] = "";
+    FILE *csv = zp_tx_open(&set, "trade.csv", err, sizeof err);
+    FILE *gp = csv ? zp_tx_open(&set, "trade.gp", err, sizeof err) : NULL;
     if (!gp) {
-        zp_out_set_abort(&set);
+        zp_tx_abort(&set);
         fprintf(stderr, "zipopt bench trade: %s; nothing was written\n", err);
         return ZP_EXIT_FAIL;
     }
@@ -278,7 +280,7 @@ int zp_cmd_bench(int argc, char **argv) {
         if (!m || zp_sim_opts_from_scene(&sc, &o, &d)) {
             zp_diag_print(&d, stderr);
             zp_model_free(m);
-            zp_out_set_abort(&set);
+            zp_tx_abort(&set);
             return ZP_EXIT_FAIL;
         }
         o.output_dt = 0;   /* integration and events only, as the search runs */
@@ -300,7 +302,7 @@ int zp_cmd_bench(int argc, char **argv) {
             fprintf(stderr, "zipopt bench trade: %s: the reference runs disagree on the "
                             "outcome; nothing was written\n", tc->name);
             zp_model_free(m);
-            zp_out_set_abort(&set);
+            zp_tx_abort(&set);
             return ZP_EXIT_FAIL;
         }
         for (int k = 0; k < ZP_METHOD_COUNT; k++) {
@@ -322,8 +324,14 @@ int zp_cmd_bench(int argc, char **argv) {
         zp_model_free(m);
     }
     write_gnuplot(gp);
-    if (zp_out_set_commit(&set, err, sizeof err)) {
+    const char *script = "trade.gp";
+    int missing;
+    if (zp_gnuplot_run(&set, &script, 1, &missing, err, sizeof err)) {
+        zp_tx_abort(&set);
         fprintf(stderr, "zipopt bench trade: %s; nothing was written\n", err);
+        return ZP_EXIT_FAIL;
+    }
+    if (zp_cli_out_commit(&set, "bench trade")) {
         return ZP_EXIT_FAIL;
     }
 
@@ -378,10 +386,7 @@ int zp_cmd_bench(int argc, char **argv) {
             fputs(c < NCASE ? ";" : "\n", stdout);
         }
     }
-    char cmd[1300];
-    snprintf(cmd, sizeof cmd, "cd '%s' && gnuplot trade.gp", a.out);
-    int plotted = strchr(a.out, '\'') == NULL && system(cmd) == 0;
-    printf("\nwrote %s/trade.csv and %s/trade.gp%s\n", a.out, a.out,
-           plotted ? " and trade.png" : " (gnuplot failed: no plot; install gnuplot-nox)");
+    printf("\nwrote in %s: %s%s\n", set.dir, set.written,
+           missing ? " (gnuplot is not installed: no plot; apt-get install gnuplot-nox)" : "");
     return ZP_EXIT_OK;
 }

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "fig_landscape.h"
 #include "gnuplot.h"
 #include "landscape.h"
 #include "out_json.h"
@@ -33,17 +34,14 @@ static void usage(FILE *f) {
         "  --force F1,..       the base schedule (default: the scene's [drive] forces)\n"
         "  --schedule FILE     the base schedule from a schedule file, e.g. the search's\n"
         "                      schedule.ini: the slice then passes through the best schedule\n"
-        "  --out DIR           the output folder (default out/<scene name>/)\n"
+        "  --out DIR           the output folder (default out/<scene name>/landscape/)\n"
         "  --json              print the result as one JSON object (keys: README)\n"
         "Each image comes with its gnuplot script (.gp); the CSV files are its data. Prints\n"
         "the survival windows of the constant push on stdout.\n",
         f);
 }
 
-typedef struct range {
-    double a, b; /* N */
-    int n;       /* points, a and b included */
-} range;
+typedef zp_fig_axis range;
 
 typedef struct land_args {
     const char *scene, *schedule, *out, *force_text, *range1_text, *slice_text, *range2_text;
@@ -172,117 +170,19 @@ static void write_point(FILE *f, const zp_landscape_point *p, int kept) {
 static const char *result_header =
     "outcome,stall_reason,time,x,died_link,max_rel_angle_deg,kept";
 
-/* user text (scene name, file name) for a gnuplot string: quotes and backslashes become
-   backquotes, so no name can end the string early */
-static const char *gp_safe(const char *in, char *out, size_t n) {
-    size_t k = 0;
-    for (; in[k] && k + 1 < n; k++) {
-        out[k] = in[k] == '\'' || in[k] == '"' || in[k] == '\\' ? '`' : in[k];
+/* one window, points i..j: listed as the points it is, since pushes between two sampled
+   points were never run */
+static void print_window(const range *r, int i, int j, int first) {
+    printf("%s %g", first ? "" : ";", at(r, i));
+    if (j == i + 1) {
+        printf(", %g", at(r, j));
+    } else if (j > i + 1) {
+        printf(", %g, .., %g", at(r, i + 1), at(r, j));
     }
-    out[k] = '\0';
-    return out;
-}
-
-/* the gnuplot head both figures share */
-static void head(FILE *f, const char *name, int w, int h) {
-    fprintf(f,
-            "# %s.png (zipopt landscape); %s.csv is its data. Run `gnuplot %s.gp` here to "
-            "redraw.\n"
-            "set terminal pngcairo size %d,%d noenhanced font 'DejaVu Sans,11' linewidth 1.3\n"
-            "set output '%s.png'\n"
-            "set encoding utf8\n"
-            "set datafile separator comma\n"
-            "set border lc rgb '#555555'\n"
-            "set grid lc rgb '#e6e6e6' lt 1 lw 0.8\n",
-            name, name, name, w, h, name);
-}
-
-static void script_1d(FILE *f, const zp_scene *sc, const range *r) {
-    double step = (r->b - r->a) / (r->n - 1);
-    char name[ZP_NAME_MAX];
-    head(f, "landscape", 1100, 640);
-    fprintf(f,
-            "set multiplot title 'Survival landscape of %s: one constant push in every section'\n"
-            "set lmargin 12\nset rmargin 4\n"
-            "set xrange [%g:%g]\n"
-            "# top: finish time and time of death\n"
-            "set origin 0, 0.25\nset size 1, 0.7\nset bmargin 0\nset format x ''\n"
-            "set ylabel 'time (s)'\n"
-            "set key inside right top opaque box lc rgb '#cccccc'\n"
-            "plot 'landscape.csv' using 'force':(strcol('outcome') eq 'finished' ? "
-            "column('time') : NaN) with linespoints pt 7 ps 0.6 lw 2 lc rgb '#2ca02c' "
-            "title 'finished: finish time', \\\n"
-            "     '' using 'force':(strcol('outcome') eq 'died' ? column('time') : NaN) "
-            "with points pt 2 ps 0.8 lw 1.5 lc rgb '#d62728' title 'died: time of death'\n"
-            "# bottom: the outcome of each push as a strip\n"
-            "set origin 0, 0\nset size 1, 0.25\nset tmargin 0\nset bmargin 5.5\n"
-            "set format x '%%g'\nset xlabel 'constant push F (N), the same in every section'\n"
-            "set ylabel 'outcome'\nset yrange [0:1]\nunset ytics\nunset grid\n"
-            "set style fill solid 1 noborder\n"
-            "set key outside below horizontal\n"
-            "plot 'landscape.csv' using 'force':(strcol('outcome') eq 'finished' ? 1 : NaN):"
-            "(%g) with boxes lc rgb '#2ca02c' title 'finished', \\\n"
-            "     '' using 'force':(strcol('outcome') eq 'died' ? 1 : NaN):(%g) with boxes "
-            "lc rgb '#d62728' title 'died', \\\n"
-            "     '' using 'force':(strcol('outcome') eq 'stalled' ? 1 : NaN):(%g) with boxes "
-            "lc rgb '#aaaaaa' title 'stalled', \\\n"
-            "     '' using 'force':(strcol('outcome') eq 'failed' ? 1 : NaN):(%g) with boxes "
-            "lc rgb 'black' title 'integrator failed'\n"
-            "unset multiplot\n",
-            gp_safe(sc->name, name, sizeof name), r->a - step / 2, r->b + step / 2, 1.05 * step,
-            1.05 * step, 1.05 * step, 1.05 * step);
-}
-
-static void script_2d(FILE *f, const zp_scene *sc, int si, int sj, const range *r1, const range *r2,
-                      const double *base, const char *base_name) {
-    double dx = (r1->b - r1->a) / (r1->n - 1), dy = (r2->b - r2->a) / (r2->n - 1);
-    char name[1024];
-    head(f, "landscape_slice", 900, 760);
-    fprintf(f,
-            "set title 'Survival landscape of %s: forces of sections %d and %d, the others at "
-            "the base schedule'\n"
-            "set xlabel 'F%d, section %d (N)'\nset ylabel 'F%d, section %d (N)'\n"
-            "set xrange [%g:%g]\nset yrange [%g:%g]\n"
-            "set size square\n"
-            "set cblabel 'finish time (s)'\n"
-            "set palette defined (0 '#fde725', 1 '#5ec962', 2 '#21918c', 3 '#3b528b', "
-            "4 '#440154')\n"
-            "set style fill solid 1 noborder\n"
-            "set key outside below horizontal\n"
-            "set bmargin 6\n"
-            "unset grid\n",
-            gp_safe(sc->name, name, sizeof name), si + 1, sj + 1, si + 1, si + 1, sj + 1, sj + 1,
-            r1->a - dx / 2, r1->b + dx / 2, r2->a - dy / 2, r2->b + dy / 2);
-    /* the base schedule's label on the side with more room */
-    int right = base[si] > 0.5 * (r1->a + r1->b), upper = base[sj] > 0.5 * (r2->a + r2->b);
-    fputs("set style textbox opaque\n", f);
-    fprintf(f, "$base << EOD\n%.9g,%.9g,\"%s (", base[si], base[sj],
-            gp_safe(base_name, name, sizeof name));
-    for (int k = 0; k < sc->nsec; k++) {
-        fprintf(f, "%s%g", k ? ", " : "", base[k]);
+    printf(" N");
+    if (j > i + 1) {
+        printf(" (%d points)", j - i + 1);
     }
-    fprintf(f,
-            ") N\"\nEOD\n"
-            "plot 'landscape_slice.csv' using 'f%d':'f%d':(column('kept') == 1 ? "
-            "column('time') : NaN) with image notitle, \\\n"
-            "     '' using 'f%d':'f%d':(%g):(strcol('outcome') eq 'finished' && "
-            "column('kept') == 0 ? %g : NaN) with boxxyerror lc rgb '#f4a582' "
-            "title 'finished, margin or a limit broken', \\\n"
-            "     '' using 'f%d':'f%d':(%g):(strcol('outcome') eq 'died' ? %g : NaN) "
-            "with boxxyerror lc rgb '#8c2d2d' title 'died', \\\n"
-            "     '' using 'f%d':'f%d':(%g):(strcol('outcome') eq 'stalled' ? %g : NaN) "
-            "with boxxyerror lc rgb '#bbbbbb' title 'stalled', \\\n"
-            "     '' using 'f%d':'f%d':(%g):(strcol('outcome') eq 'failed' ? %g : NaN) "
-            "with boxxyerror lc rgb 'black' title 'integrator failed', \\\n"
-            "     $base using 1:2 with points pt 3 ps 3 lw 3 lc rgb 'white' notitle, \\\n"
-            "     $base using 1:2 with points pt 3 ps 2.4 lw 1.5 lc rgb 'black' "
-            "title 'base schedule', \\\n"
-            "     $base using 1:2:3 with labels %s offset %g, %g tc rgb 'black' boxed "
-            "font ',10' notitle\n",
-            si + 1, sj + 1, si + 1, sj + 1, 0.51 * dx, 0.51 * dy, si + 1, sj + 1, 0.51 * dx,
-            0.51 * dy, si + 1, sj + 1, 0.51 * dx,
-            0.51 * dy, si + 1, sj + 1, 0.51 * dx, 0.51 * dy, right ? "right" : "left",
-            right ? -1.5 : 1.5, upper ? -1.2 : 1.2);
 }
 
 static int finishes(const zp_landscape_point *p) {
@@ -309,16 +209,16 @@ static int fastest(const range *r, const zp_landscape_point *p) {
     return best;
 }
 
-/* the survival windows of the constant push, on stdout */
+/* the survival windows of the constant push on stdout: runs of consecutive sampled pushes
+   that finish, each listed as the points it is */
 static void print_windows(const range *r, const zp_landscape_point *p) {
-    int nwin = 0, best = fastest(r, p);
-    printf("constant push from %g to %g N (%d runs): finishes for", r->a, r->b, r->n);
+    int nwin = 0, start = 0, best = fastest(r, p);
+    printf("constant push from %g to %g N (%d runs, every %g N): finishes at", r->a, r->b, r->n,
+           (r->b - r->a) / (r->n - 1));
     for (int k = 0; k < r->n; k++) {
-        if (window_starts(p, k)) {
-            printf("%s %g", nwin++ ? "," : "", at(r, k));
-        }
+        start = window_starts(p, k) ? k : start;
         if (window_ends(r, p, k)) {
-            printf("..%g N", at(r, k));
+            print_window(r, start, k, !nwin++);
         }
     }
     if (best < 0) {
@@ -422,7 +322,6 @@ int zp_cmd_landscape(int argc, char **argv) {
     zp_limits lim;
     zp_limits_from_scene(sc, &lim);
     o.peaks = zp_limits_need_peaks(&lim);
-    double limit = st.limit;
 
     /* the schedules: the constant pushes, then the slice */
     status = ZP_EXIT_FAIL;
@@ -456,51 +355,53 @@ int zp_cmd_landscape(int argc, char **argv) {
     double wall = since(&pr.start);
 
     /* the files, all or nothing */
-    char dir[1024], err[1200];
-    zp_cli_out_dir(a.out, sc, dir, sizeof dir);
-    zp_gnuplot g;
-    if (zp_gnuplot_begin(&g, dir, err, sizeof err)) {
-        fprintf(stderr, "zipopt landscape: %s; nothing was written\n", err);
+    char err[1400];
+    zp_tx t;
+    if (zp_cli_out_begin(&t, "landscape", "landscape", a.out, sc)) {
         goto done;
     }
-    FILE *csv = zp_gnuplot_open(&g, "landscape.csv", 0, err, sizeof err);
-    FILE *gp = csv ? zp_gnuplot_open(&g, "landscape.gp", 1, err, sizeof err) : NULL;
-    FILE *csv2 = gp && n2 ? zp_gnuplot_open(&g, "landscape_slice.csv", 0, err, sizeof err) : gp;
-    FILE *gp2 = csv2 && n2 ? zp_gnuplot_open(&g, "landscape_slice.gp", 1, err, sizeof err) : csv2;
+    FILE *csv = zp_tx_open(&t, "landscape.csv", err, sizeof err);
+    FILE *gp = csv ? zp_tx_open(&t, "landscape.gp", err, sizeof err) : NULL;
+    FILE *csv2 = gp && n2 ? zp_tx_open(&t, "landscape_slice.csv", err, sizeof err) : gp;
+    FILE *gp2 = csv2 && n2 ? zp_tx_open(&t, "landscape_slice.gp", err, sizeof err) : csv2;
     if (!gp2) {
-        zp_gnuplot_abort(&g);
+        zp_tx_abort(&t);
         fprintf(stderr, "zipopt landscape: %s; nothing was written\n", err);
         goto done;
     }
     fprintf(csv, "force,%s\n", result_header);
     for (int k = 0; k < n1; k++) {
         fprintf(csv, "%.9g", at(&r1, k));
-        write_point(csv, &pt[k], keeps(&pt[k], limit, &lim));
+        write_point(csv, &pt[k], keeps(&pt[k], st.limit, &lim));
     }
-    script_1d(gp, sc, &r1);
+    zp_fig_landscape_1d(gp, sc->name, &r1);
     if (n2) {
         fprintf(csv2, "f%d,f%d,%s\n", si + 1, sj + 1, result_header);
         for (int k = 0; k < n2; k++) {
             const double *f = force + (size_t)(n1 + k) * ns;
             fprintf(csv2, "%.9g,%.9g", f[si], f[sj]);
-            write_point(csv2, &pt[n1 + k], keeps(&pt[n1 + k], limit, &lim));
+            write_point(csv2, &pt[n1 + k], keeps(&pt[n1 + k], st.limit, &lim));
         }
-        script_2d(gp2, sc, si, sj, &rx, &ry, base,
-                  a.schedule     ? a.schedule
-                  : a.force_text ? "--force"
-                                 : "[drive] forces");
+        zp_fig_landscape_2d(gp2, sc->name, sc->nsec, si, sj, &rx, &ry, base,
+                            a.schedule     ? a.schedule
+                            : a.force_text ? "--force"
+                                           : "[drive] forces");
     }
+    const char *scripts[] = {"landscape.gp", "landscape_slice.gp"};
     int missing;
-    if (zp_gnuplot_finish(&g, &missing, err, sizeof err)) {
-        fprintf(stderr, "zipopt landscape: %s; no figures were written\n", err);
+    if (zp_gnuplot_run(&t, scripts, n2 ? 2 : 1, &missing, err, sizeof err)) {
+        zp_tx_abort(&t);
+        fprintf(stderr, "zipopt landscape: %s; nothing was written\n", err);
+        goto done;
+    }
+    if (zp_cli_out_commit(&t, "landscape")) {
         goto done;
     }
     if (a.json) {
-        print_json(sc, &r1, pt, si, sj, n2, wall, dir, !missing);
+        print_json(sc, &r1, pt, si, sj, n2, wall, t.dir, !missing);
     } else {
         print_windows(&r1, pt);
-        printf("%d runs in %.2f s; wrote landscape.csv%s to %s\n", n1 + n2, wall,
-               n2 ? ", landscape_slice.csv" : "", dir);
+        printf("%d runs in %.2f s; wrote in %s: %s\n", n1 + n2, wall, t.dir, t.written);
     }
     FILE *say = a.json ? stderr : stdout; /* stdout carries only the JSON object */
     if (missing) {
@@ -508,7 +409,7 @@ int zp_cmd_landscape(int argc, char **argv) {
                 "zipopt landscape: gnuplot is not installed (apt-get install gnuplot-nox): "
                 "no images were drawn; the data and the .gp scripts are in %s, run "
                 "`gnuplot landscape.gp` there once it is\n",
-                dir);
+                t.dir);
         goto done;
     }
     fprintf(say, "figures: landscape.png%s\n", n2 ? ", landscape_slice.png" : "");

@@ -2,7 +2,6 @@
    verification and the best-forcing report (CLI.md; issue 4). */
 #include <limits.h>
 #include <math.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,13 +20,9 @@
 #define STUDY_FORCE 100 /* N per section: the original study's push */
 #define NROBUST 200     /* robustness runs per perturbation level */
 
+/* set by the first Ctrl-C (the transaction's handler): the search stops cleanly; a second
+   one ends the run leaving nothing */
 static volatile sig_atomic_t interrupted;
-
-/* the first Ctrl-C stops the search cleanly; SA_RESETHAND lets a second one kill */
-static void on_sigint(int sig) {
-    (void)sig;
-    interrupted = 1;
-}
 
 static void usage(FILE *f) {
     fputs("usage: zipopt [SCENE.ini] [--out DIR] [--algorithm NAME] [--seed N] [--max-evals N]\n"
@@ -38,7 +33,8 @@ static void usage(FILE *f) {
           "scene. Verifies the best schedule at a 100x tighter tolerance, measures its\n"
           "robustness to +/-2 % and +/-5 % changes of the forces, and writes report.md,\n"
           "schedule.ini, summary.json, trajectory.csv and the best run's figures (course,\n"
-          "energy, angles, loads: PNG with their gnuplot scripts) to out/<scene name>/ (or DIR).\n"
+          "energy, angles, loads: PNG with their gnuplot scripts) to out/<scene name>/search/\n"
+          "(or DIR itself), all or nothing.\n"
           "While it runs, the best so far is kept in DIR/checkpoint.ini; Ctrl-C stops the\n"
           "search and writes the best so far, marked interrupted.\n"
           "  --out DIR         output folder\n"
@@ -127,25 +123,29 @@ static int parse_args(int argc, char **argv, search_args *a) {
 typedef struct progress_ctx {
     const zp_scene *sc;
     const zp_schedule *shape; /* the kind and bounds the search's parameters fill */
-    char checkpoint_dir[1024];
+    zp_tx *tx;
+    const zp_search_progress *p; /* the improvement being checkpointed */
     int tty;      /* stderr is a terminal: show the progress line */
     int shown;    /* a progress line is on screen */
 } progress_ctx;
+
+static void write_checkpoint(FILE *f, void *user) {
+    const progress_ctx *c = user;
+    char note[160];
+    snprintf(note, sizeof note, "search checkpoint: best so far, finish %.6f s after %ld "
+             "simulations", c->p->time, c->p->evals);
+    zp_schedule best = zp_schedule_with(c->shape, c->p->force);
+    zp_report_write_schedule(f, c->sc, &best, note);
+}
 
 /* the progress line, and the checkpoint of every improvement so a killed run loses nothing */
 static void on_progress(void *user, const zp_search_progress *p, int improved) {
     progress_ctx *c = user;
     if (improved) {
-        zp_out_set set;
-        zp_out_set_init(&set);
-        char err[1200], note[160];
-        FILE *f = zp_out_set_open(&set, c->checkpoint_dir, "checkpoint.ini", err, sizeof err);
-        if (f) {
-            snprintf(note, sizeof note, "search checkpoint: best so far, finish %.6f s after %ld "
-                     "simulations", p->time, p->evals);
-            zp_schedule best = zp_schedule_with(c->shape, p->force);
-            zp_report_write_schedule(f, c->sc, &best, note);
-            zp_out_set_commit(&set, err, sizeof err);
+        char err[1400];
+        c->p = p;
+        if (zp_tx_checkpoint(c->tx, "checkpoint.ini", write_checkpoint, c, err, sizeof err)) {
+            fprintf(stderr, "%szipopt: %s\n", c->shown ? "\n" : "", err);
         }
     }
     if (c->tty) {
@@ -156,19 +156,16 @@ static void on_progress(void *user, const zp_search_progress *p, int improved) {
     }
 }
 
-/* report.md, schedule.ini, summary.json and trajectory.csv: all or none */
-static int write_outputs(const zp_report *r, zp_sim *best_sim) {
-    zp_out_set set;
-    zp_out_set_init(&set);
-    char err[1200] = "", note[200];
-    FILE *md = zp_out_set_open(&set, r->out_dir, "report.md", err, sizeof err);
-    FILE *ini = md ? zp_out_set_open(&set, r->out_dir, "schedule.ini", err, sizeof err) : NULL;
-    FILE *js = ini ? zp_out_set_open(&set, r->out_dir, "summary.json", err, sizeof err) : NULL;
-    FILE *csv = js ? zp_out_set_open(&set, r->out_dir, "trajectory.csv", err, sizeof err) : NULL;
+/* report.md, schedule.ini, summary.json and trajectory.csv into the transaction */
+static int write_outputs(zp_tx *t, const zp_report *r, zp_sim *best_sim) {
+    char err[1400] = "", note[200];
+    FILE *md = zp_tx_open(t, "report.md", err, sizeof err);
+    FILE *ini = md ? zp_tx_open(t, "schedule.ini", err, sizeof err) : NULL;
+    FILE *js = ini ? zp_tx_open(t, "summary.json", err, sizeof err) : NULL;
+    FILE *csv = js ? zp_tx_open(t, "trajectory.csv", err, sizeof err) : NULL;
     if (!csv) {
-        zp_out_set_abort(&set);
         fprintf(stderr, "zipopt: %s; nothing was written\n", err);
-        return ZP_EXIT_FAIL;
+        return -1;
     }
     zp_report_write_md(md, r);
     snprintf(note, sizeof note, "%s of the search%s: %s, %.6f s; rerun with zipopt "
@@ -182,11 +179,30 @@ static int write_outputs(const zp_report *r, zp_sim *best_sim) {
     int nrows;
     const zp_row *rows = zp_sim_rows(best_sim, &nrows);
     zp_out_csv_trajectory(csv, r->m, rows, nrows);
-    if (zp_out_set_commit(&set, err, sizeof err)) {
-        fprintf(stderr, "zipopt: %s; nothing was written\n", err);
-        return ZP_EXIT_FAIL;
+    return 0;
+}
+
+/* the best run's figures into the transaction: 1 drawn, 0 data and scripts only (no
+   gnuplot), -1 failed (said on stderr) */
+static int figures(zp_tx *t, const zp_model *m, const zp_scene *sc, const zp_schedule *shape,
+                   const zp_search_result *res, const zp_verify *v, const zp_sim *best_sim) {
+    zp_plot_opts po;
+    zp_plot_opts_default(&po);
+    po.margin = sc->margin * M_PI / 180;
+    zp_schedule best = zp_schedule_with(shape, res->force);
+    po.sched = &best;
+    zp_plot_info info;
+    char err[1400];
+    if (zp_plot_run(t, m, best_sim, v->run, &po, &info, err, sizeof err)) {
+        fprintf(stderr, "zipopt: figures: %s; nothing was written\n", err);
+        return -1;
     }
-    return ZP_EXIT_OK;
+    if (info.no_gnuplot) {
+        fputs("zipopt: gnuplot is not installed (apt-get install gnuplot-nox): writing the "
+              "figures' data and scripts, not the images\n",
+              stderr);
+    }
+    return !info.no_gnuplot;
 }
 
 static void print_summary(const zp_report *r) {
@@ -216,7 +232,6 @@ static void print_summary(const zp_report *r) {
                r->set->n, r->rinfo->added, c->samples, c->survived, c->margin_kept,
                c->limits_kept, c->lower_95);
     }
-    printf("wrote %s/report.md, schedule.ini, summary.json, trajectory.csv\n", r->out_dir);
 }
 
 int zp_cmd_search(int argc, char **argv) {
@@ -232,25 +247,26 @@ int zp_cmd_search(int argc, char **argv) {
     }
     const zp_model *m = st.m;
     const zp_scene *sc = &st.sc;
-    char dir[1024];
-    zp_cli_out_dir(a.out, sc, dir, sizeof dir);
+    zp_tx tx;
+    if (zp_cli_out_begin(&tx, "", "search", a.out, sc)) {
+        zp_setup_free(&st);
+        return ZP_EXIT_FAIL;
+    }
+    zp_tx_soft_interrupt(&tx, &interrupted);
 
     zp_sim_opts fast;
     static zp_robust_problem pb; /* large: kept off the stack */
     if (zp_robust_setup(&pb, sc, m, st.limit, &st.sched, &st.sim, &st.search, &fast)) {
         fputs("zipopt: out of memory building the scenarios; nothing was written\n", stderr);
         zp_robust_problem_free(&pb);
+        zp_tx_abort(&tx);
         zp_setup_free(&st);
         return ZP_EXIT_FAIL;
     }
-    progress_ctx pc = {.sc = sc, .shape = &st.sched, .tty = isatty(STDERR_FILENO)};
-    snprintf(pc.checkpoint_dir, sizeof pc.checkpoint_dir, "%s", dir);
+    progress_ctx pc = {.sc = sc, .shape = &st.sched, .tx = &tx, .tty = isatty(STDERR_FILENO)};
     zp_search_opts o = {.algo = a.algo ? zp_search_algo_find(a.algo) : 0,
                         .max_evals = st.max_evals, .seed = st.seed, .stop = &interrupted,
                         .progress = on_progress, .user = &pc};
-    struct sigaction sa = {.sa_handler = on_sigint, .sa_flags = SA_RESETHAND}, old;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, &old);
     static zp_search_result res;
     char err[512] = "";
     zp_status rc = zp_robust_solve(&pb, sc, &st.sim, &fast, st.sched.lo[0], st.sched.hi[0], &o,
@@ -290,50 +306,35 @@ int zp_cmd_search(int argc, char **argv) {
                 STUDY_FORCE, study_sim ? study.message : "out of memory");
         goto done;
     }
-    /* the figures first, so that the report links only those that exist */
-    int figures = 0;
-    if (!a.no_plot) {
-        zp_plot_opts po;
-        zp_plot_opts_default(&po);
-        po.margin = sc->margin * M_PI / 180;
-        zp_schedule best = zp_schedule_with(&st.sched, res.force);
-        po.sched = &best;
-        zp_plot_info info;
-        if (zp_plot_run(dir, m, best_sim, v.run, &po, &info, err, sizeof err)) {
-            fprintf(stderr, "zipopt: figures: %s; nothing was written\n", err);
-            goto done;
-        }
-        figures = !info.no_gnuplot;
-        if (info.no_gnuplot) {
-            fputs("zipopt: gnuplot is not installed (apt-get install gnuplot-nox): wrote the "
-                  "figures' data and scripts, not the images\n",
-                  stderr);
-        }
-    }
+    /* the figures first, so that the report links only those drawn */
+    int drawn = a.no_plot ? 0 : figures(&tx, m, sc, &st.sched, &res, &v, best_sim);
     int robust = pb.robust;
     zp_report r = {sc, m, &res, &v, best_sim, &study, STUDY_FORCE,
                    zp_search_algo_get(o.algo)->name, zp_method_get(st.sim.method)->name, a.scene,
-                   dir, figures, &fast, &solver, &st.sched, st.seed, st.max_evals,
+                   tx.dir, drawn > 0, &fast, &solver, &st.sched, st.seed, st.max_evals,
                    .lim = &pb.ob.lim, .box = robust ? &pb.box : NULL,
                    .set = robust ? &pb.set : NULL, .rinfo = robust ? &pb.info : NULL,
                    .check = robust ? &pb.check : NULL};
-    status = write_outputs(&r, best_sim);
-    if (status == ZP_EXIT_OK) {
-        char cp[1100];
-        snprintf(cp, sizeof cp, "%s/checkpoint.ini", dir);
-        remove(cp); /* superseded by schedule.ini */
-        print_summary(&r);
-        if (res.interrupted) {
-            fputs("zipopt: interrupted; wrote the best schedule found so far\n", stderr);
-            status = ZP_EXIT_FAIL;
-        } else if (!res.found) {
-            fputs("zipopt: no schedule keeps the margin, the [limits] and the [robust] "
-                  "scenarios; wrote the closest candidate, marked as such\n", stderr);
-            status = ZP_EXIT_NONE;
-        }
+    if (drawn < 0 || write_outputs(&tx, &r, best_sim) || zp_cli_out_commit(&tx, "")) {
+        goto done;
+    }
+    print_summary(&r);
+    printf("wrote in %s: %s\n", tx.dir, tx.written);
+    status = ZP_EXIT_OK;
+    if (res.interrupted) {
+        fputs("zipopt: interrupted; wrote the best schedule found so far\n", stderr);
+        status = ZP_EXIT_FAIL;
+    } else if (interrupted) {
+        fputs("zipopt: interrupted after the search had finished; the files are complete\n",
+              stderr);
+        status = ZP_EXIT_FAIL;
+    } else if (!res.found) {
+        fputs("zipopt: no schedule keeps the margin, the [limits] and the [robust] "
+              "scenarios; wrote the closest candidate, marked as such\n", stderr);
+        status = ZP_EXIT_NONE;
     }
 done:
-    sigaction(SIGINT, &old, NULL);
+    zp_tx_abort(&tx); /* nothing of the run remains unless it was committed */
     zp_verify_free(&v);
     zp_sim_free(best_sim);
     zp_sim_free(study_sim);

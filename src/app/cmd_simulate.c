@@ -28,8 +28,8 @@ static void usage(FILE *f) {
           "  --schedule FILE     a schedule file ([drive] forces) laid over the scene\n"
           "  --json              print the result as one JSON object (keys: README, CLI.md)\n"
           "  --sample-times T,.. also report the state at these times (s)\n"
-          "  --out DIR           write trajectory.csv and summary.json to DIR\n"
-          "                      (default out/<scene name>/)\n"
+          "  --out DIR           write trajectory.csv and summary.json in DIR itself\n"
+          "                      (default out/<scene name>/simulate/)\n"
           "  --plot              also draw the run with gnuplot into the same folder:\n"
           "                      course.png (course, sections, kinks, every centre-of-mass\n"
           "                      path), energy.png, angles.png (death angle and search\n"
@@ -195,28 +195,38 @@ static void print_estimate(const zp_result *r, const zp_estimate *e) {
     }
 }
 
-/* trajectory.csv and summary.json, both or neither */
-static int write_files(const char *dir, const zp_model *m, zp_sim *s, const zp_result *r,
+/* trajectory.csv and summary.json into the command's transaction */
+static int write_files(zp_tx *t, const zp_model *m, zp_sim *s, const zp_result *r,
                        const zp_run_meta *meta) {
-    zp_out_set set;
-    zp_out_set_init(&set);
-    char err[1200] = "";
-    FILE *csv = zp_out_set_open(&set, dir, "trajectory.csv", err, sizeof err);
-    FILE *js = csv ? zp_out_set_open(&set, dir, "summary.json", err, sizeof err) : NULL;
+    char err[1400] = "";
+    FILE *csv = zp_tx_open(t, "trajectory.csv", err, sizeof err);
+    FILE *js = csv ? zp_tx_open(t, "summary.json", err, sizeof err) : NULL;
     if (!js) {
-        zp_out_set_abort(&set);
         fprintf(stderr, "zipopt simulate: %s; nothing was written\n", err);
-        return ZP_EXIT_FAIL;
+        return -1;
     }
     int nrows;
     const zp_row *rows = zp_sim_rows(s, &nrows);
     zp_out_csv_trajectory(csv, m, rows, nrows);
     zp_out_json_result(js, m, r, s, meta);
-    if (zp_out_set_commit(&set, err, sizeof err)) {
-        fprintf(stderr, "zipopt simulate: %s; nothing was written\n", err);
-        return ZP_EXIT_FAIL;
+    return 0;
+}
+
+/* the state at each reached --sample-times value, and the times never reached */
+static void print_samples(const zp_model *m, const zp_row *smp, int nsmp, const zp_run_meta *meta,
+                          double t_end) {
+    for (int k = 0; k < nsmp; k++) {
+        printf("sample t = %g s: x = %.6f m, y = %.6f m, section %d, theta (deg):", smp[k].t,
+               smp[k].c.q[0], smp[k].c.q[1], smp[k].sec + 1);
+        for (int i = 0; i < m->nlink; i++) {
+            printf(" %.3f", smp[k].c.q[2 + i] * 180.0 / M_PI);
+        }
+        printf(", normal force %.3f N\n", smp[k].loads.normal);
     }
-    return ZP_EXIT_OK;
+    for (int k = 0; k < meta->nunreached; k++) {
+        printf("sample t = %g s: not reached (the run ended at %.9f s)\n", meta->unreached[k],
+               t_end);
+    }
 }
 
 /* the --plot options, checked before the run; 0, or -1 with the message printed */
@@ -272,21 +282,26 @@ static int anim_fits(const zp_result *r, const zp_plot_opts *po) {
     return 0;
 }
 
-/* the figures of the run; says what was made (on stderr when stdout carries JSON) */
-static int draw(const char *dir, const zp_model *m, zp_sim *s, const zp_result *r,
-                const zp_plot_opts *po, FILE *say) {
-    zp_plot_info info;
-    char err[1200];
-    if (zp_plot_run(dir, m, s, r, po, &info, err, sizeof err)) {
-        fprintf(stderr, "zipopt simulate: %s; no figures were written\n", err);
-        return ZP_EXIT_FAIL;
+/* the figures of the run into the transaction; 0, or -1 with why on stderr */
+static int draw(zp_tx *t, const zp_model *m, zp_sim *s, const zp_result *r,
+                const zp_plot_opts *po, zp_plot_info *info) {
+    char err[1400];
+    if (zp_plot_run(t, m, s, r, po, info, err, sizeof err)) {
+        fprintf(stderr, "zipopt simulate: figures: %s; nothing was written\n", err);
+        return -1;
     }
-    if (info.nskipped) {
+    if (info->nskipped) {
         fprintf(stderr, "zipopt simulate: %d of the still frames asked for lie beyond the end of "
                         "the run (t = %.2f s, x = %.2f m) and were not drawn\n",
-                info.nskipped, r->time, r->x);
+                info->nskipped, r->time, r->x);
     }
-    if (info.no_gnuplot) {
+    return 0;
+}
+
+/* what the figures came to, once committed */
+static int say_figures(const char *dir, const zp_plot_opts *po, const zp_plot_info *info,
+                       FILE *say) {
+    if (info->no_gnuplot) {
         fprintf(stderr, "zipopt simulate: gnuplot is not installed (apt-get install gnuplot-nox): "
                         "no images were drawn; the plot data and the .gp scripts are in %s, run "
                         "`gnuplot course.gp` (and the other scripts) there once it is\n",
@@ -294,11 +309,11 @@ static int draw(const char *dir, const zp_model *m, zp_sim *s, const zp_result *
         return ZP_EXIT_FAIL;
     }
     fprintf(say, "figures in %s: course.png (and .svg) energy.png angles.png loads.png", dir);
-    if (info.nframe) {
-        fprintf(say, ", %d still frame%s", info.nframe, info.nframe == 1 ? "" : "s");
+    if (info->nframe) {
+        fprintf(say, ", %d still frame%s", info->nframe, info->nframe == 1 ? "" : "s");
     }
     if (po->animate) {
-        fprintf(say, ", run.gif (%d frames)%s", info.anim_frames, info.mp4 ? ", run.mp4" : "");
+        fprintf(say, ", run.gif (%d frames)%s", info->anim_frames, info->mp4 ? ", run.mp4" : "");
     }
     fprintf(say, "\n");
     return ZP_EXIT_OK;
@@ -361,27 +376,33 @@ int zp_cmd_simulate(int argc, char **argv) {
         status = ZP_EXIT_USAGE;
         goto done;
     }
+    int nsmp;
+    const zp_row *smp = zp_sim_samples(s, &nsmp);
     zp_estimate est;
     zp_estimate_run(m, &o, &in, &r, &est);
     zp_run_meta meta = {st.sc.name, zp_method_get(o.method)->name,
                         zp_formulation_get(o.formulation)->name, o.rtol, o.atol, &st.sched, &est,
-                        &lim};
-    char dir[1024];
-    zp_cli_out_dir(a.out, &st.sc, dir, sizeof dir);
-    status = write_files(dir, m, s, &r, &meta);
-    if (status == ZP_EXIT_OK) {
-        if (a.json) {
-            zp_out_json_result(stdout, m, &r, s, &meta);
-        } else {
-            print_text(m, &r);
-            print_limits(m, &r, &lim);
-            print_estimate(&r, &est);
-            printf("wrote %s/trajectory.csv and %s/summary.json\n", dir, dir);
-        }
+                        samples + nsmp, nsample - nsmp, &lim};
+    zp_tx t;
+    zp_plot_info info;
+    if (zp_cli_out_begin(&t, "simulate", "simulate", a.out, &st.sc)) {
+        goto done;
     }
-    if (status == ZP_EXIT_OK && a.plot) {
-        status = draw(dir, m, s, &r, &po, a.json ? stderr : stdout);
+    if (write_files(&t, m, s, &r, &meta) || (a.plot && draw(&t, m, s, &r, &po, &info)) ||
+        zp_cli_out_commit(&t, "simulate")) {
+        zp_tx_abort(&t);
+        goto done;
     }
+    if (a.json) {
+        zp_out_json_result(stdout, m, &r, s, &meta);
+    } else {
+        print_text(m, &r);
+        print_limits(m, &r, &lim);
+        print_samples(m, smp, nsmp, &meta, r.time);
+        print_estimate(&r, &est);
+    }
+    fprintf(a.json ? stderr : stdout, "wrote in %s: %s\n", t.dir, t.written);
+    status = a.plot ? say_figures(t.dir, &po, &info, a.json ? stderr : stdout) : ZP_EXIT_OK;
 done:
     free(samples);
     zp_sim_free(s);

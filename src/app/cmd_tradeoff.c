@@ -210,28 +210,29 @@ int zp_cmd_tradeoff(int argc, char **argv) {
         fprintf(stderr, "tradeoff: +/-%g %%: %s %.4f s\n", lv[i], L[i].found ? "" : "(none)",
                 L[i].time);
     }
-    char dir[1024], base[1024];
-    zp_cli_out_dir(out, sc, base, sizeof base);
-    snprintf(dir, sizeof dir, out ? "%s" : "%s/tradeoff", base);
-    zp_gnuplot g;
-    if (zp_gnuplot_begin(&g, dir, err, sizeof err)) {
-        fprintf(stderr, "zipopt tradeoff: %s; nothing was written\n", err);
+    zp_tx t;
+    if (zp_cli_out_begin(&t, "tradeoff", "tradeoff", out, sc)) {
         goto done;
     }
-    FILE *csv = zp_gnuplot_open(&g, "tradeoff.csv", 0, err, sizeof err);
-    FILE *gp = csv ? zp_gnuplot_open(&g, "tradeoff.gp", 1, err, sizeof err) : NULL;
-    FILE *md = gp ? zp_gnuplot_open(&g, "report.md", 0, err, sizeof err) : NULL;
+    FILE *csv = zp_tx_open(&t, "tradeoff.csv", err, sizeof err);
+    FILE *gp = csv ? zp_tx_open(&t, "tradeoff.gp", err, sizeof err) : NULL;
+    FILE *md = gp ? zp_tx_open(&t, "report.md", err, sizeof err) : NULL;
     int missing = 0;
     if (!md) {
-        zp_gnuplot_abort(&g);
+        zp_tx_abort(&t);
         fprintf(stderr, "zipopt tradeoff: %s; nothing was written\n", err);
         goto done;
     }
     write_csv(csv, L, n, su.m->nsec);
     write_plot(gp);
     write_md(md, sc, L, n);
-    if (zp_gnuplot_finish(&g, &missing, err, sizeof err)) {
-        fprintf(stderr, "zipopt tradeoff: %s\n", err);
+    const char *scripts[] = {"tradeoff.gp"};
+    if (zp_gnuplot_run(&t, scripts, 1, &missing, err, sizeof err)) {
+        zp_tx_abort(&t);
+        fprintf(stderr, "zipopt tradeoff: %s; nothing was written\n", err);
+        goto done;
+    }
+    if (zp_cli_out_commit(&t, "tradeoff")) {
         goto done;
     }
     for (int i = 1; i < n; i++) {
@@ -239,7 +240,7 @@ int zp_cmd_tradeoff(int argc, char **argv) {
                L[i].time - L[0].time, 100 * (L[i].time - L[0].time) / L[0].time,
                L[i].found ? "" : ", NOT found");
     }
-    printf("wrote %s/tradeoff.csv, tradeoff.png, report.md%s\n", dir,
+    printf("wrote in %s: %s%s\n", t.dir, t.written,
            missing ? " (no gnuplot: tradeoff.gp without its image)" : "");
     status = ZP_EXIT_OK;
 done:

@@ -14,6 +14,7 @@ static const struct {
     {"check", zp_cmd_check},
     {"landscape", zp_cmd_landscape},
     {"tradeoff", zp_cmd_tradeoff},
+    {"sweep", zp_cmd_sweep},
     {"bench", zp_cmd_bench},
 };
 #define NCOMMAND ((int)(sizeof commands / sizeof commands[0]))

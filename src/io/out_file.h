@@ -1,29 +1,70 @@
-/* Output files written whole or not at all: each goes to a hidden temporary name beside its
-   target and is renamed only when every file of the command has been written. */
+/* One write-aside transaction per command (CLI.md "Files"): every file of the run is made in a
+   private hidden folder inside the output folder and moved into place as a set, under a lock
+   on the output folder; on a failure or a signal nothing of the run remains. */
 #ifndef ZP_OUT_FILE_H
 #define ZP_OUT_FILE_H
 
+#include <signal.h>
 #include <stdio.h>
+#include <sys/types.h>
 
 #include "diag.h"
 
-#define ZP_OUT_MAX_FILES 16
+#define ZP_TX_MAX_OPEN 32  /* files open at once */
+#define ZP_TX_MAX_DIRS 32  /* folders one transaction may create */
+#define ZP_TX_MAX_CHILD 16 /* helper processes (gnuplot) at once */
 
-typedef struct zp_out_set {
-    int n;
-    char final[ZP_OUT_MAX_FILES][1024];
-    char tmp[ZP_OUT_MAX_FILES][1100];
-    FILE *f[ZP_OUT_MAX_FILES];
-} zp_out_set;
+typedef struct zp_tx {
+    char dir[1024];    /* the output folder, for messages */
+    char tmp_name[32]; /* the private folder's name inside it */
+    int dirfd, tmpfd;  /* -1 when closed */
+    int ndir;          /* folders this transaction created, outermost first */
+    int dir_parent[ZP_TX_MAX_DIRS];
+    char dir_name[ZP_TX_MAX_DIRS][256];
+    int nopen;
+    FILE *f[ZP_TX_MAX_OPEN];
+    char fname[ZP_TX_MAX_OPEN][256];
+    volatile pid_t child[ZP_TX_MAX_CHILD]; /* 0: free slot */
+    volatile sig_atomic_t *soft_stop;      /* set by the first SIGINT instead of ending the run */
+    char ck_name[64]; /* the checkpoint this run put in place, if ck_ino != 0 */
+    dev_t ck_dev;
+    ino_t ck_ino;
+    char written[4096]; /* after a commit: the names moved into place, comma-separated */
+} zp_tx;
 
-void zp_out_set_init(zp_out_set *o);
-/* Creates dir and its parents (like mkdir -p); 0, or -1 with errno set. */
-int zp_out_make_dirs(const char *dir);
-/* Creates dir (and its parents) and opens dir/name aside; NULL with a message on failure. */
-FILE *zp_out_set_open(zp_out_set *o, const char *dir, const char *name, char *err, size_t errlen);
-/* Closes and renames every file; on any failure removes them all and reports the first. */
-zp_status zp_out_set_commit(zp_out_set *o, char *err, size_t errlen);
-/* Closes and removes every temporary file: nothing is written. */
-void zp_out_set_abort(zp_out_set *o);
+/* Opens (creating it like mkdir -p) base, following links as the user named it, then the
+   plain folder names of sub ("a/b", may be NULL) below it, never following a link there;
+   makes the private folder and arms the signal handler (SIGINT, SIGTERM, SIGHUP, SIGQUIT:
+   clean up, then die of the signal). ZP_ERR_IO with why in err, nothing left behind. */
+zp_status zp_tx_begin(zp_tx *t, const char *base, const char *sub, char *err, size_t errlen);
+/* With stop set, the first SIGINT only sets *stop (the command then finishes and commits);
+   the next one ends the run like SIGTERM. */
+void zp_tx_soft_interrupt(zp_tx *t, volatile sig_atomic_t *stop);
+/* Creates name (a plain file name) in the private folder, exclusively; NULL with why. For
+   tests, ZIPOPT_TEST_FULL=N makes the Nth file opened in the process go to /dev/full, so its
+   writes fail as on a full disk. */
+FILE *zp_tx_open(zp_tx *t, const char *name, char *err, size_t errlen);
+/* Closes every open file, checking each was written whole; 0, or -1 with why. */
+int zp_tx_flush(zp_tx *t, char *err, size_t errlen);
+/* The private folder's descriptor, where helper processes work. */
+int zp_tx_workdir(const zp_tx *t);
+/* Registers a running helper process (killed if the run is ended by a signal); 0 when full. */
+int zp_tx_add_child(zp_tx *t, pid_t pid);
+void zp_tx_drop_child(zp_tx *t, pid_t pid);
+/* Blocks the signals the transaction handles (block = 1) or lets them in again (0). */
+void zp_tx_block_signals(int block);
+/* Writes a file straight into the output folder (made aside, renamed under the lock), for a
+   checkpoint kept while the run goes on; removed by the commit or the abort when it is still
+   the one this run wrote. 0, or -1 with why. */
+int zp_tx_checkpoint(zp_tx *t, const char *name, void (*write)(FILE *f, void *user), void *user,
+                     char *err, size_t errlen);
+/* Moves every visible regular file of the private folder into the output folder, as a set:
+   when one move fails the earlier ones are undone. Then removes the private folder and
+   disarms the handler. ZP_OK with t->written set, or ZP_ERR_IO with why; either way the
+   transaction is over. */
+zp_status zp_tx_commit(zp_tx *t, char *err, size_t errlen);
+/* Ends the transaction leaving nothing of it: the private folder, the checkpoint, and the
+   folders it created when they are empty. Safe to call when it has ended already. */
+void zp_tx_abort(zp_tx *t);
 
 #endif

@@ -16,6 +16,8 @@ typedef struct zp_run_meta {
     double rtol, atol;
     const zp_schedule *sched; /* borrowed: the drive schedule that ran */
     const zp_estimate *estimate; /* borrowed; NULL: no error estimate was made */
+    const double *unreached;     /* s: asked sample times after the end of the run */
+    int nunreached;
     const zp_limits *lim;        /* borrowed; NULL: no [limits] (each reached value still shown) */
 } zp_run_meta;
 

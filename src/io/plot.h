@@ -4,6 +4,7 @@
 #ifndef ZP_PLOT_H
 #define ZP_PLOT_H
 
+#include "out_file.h"
 #include "sim.h"
 
 #define ZP_PLOT_MAX_FRAMES 64
@@ -41,12 +42,12 @@ int zp_plot_parse_frames(const zp_model *m, const char *text, zp_plot_opts *o, c
 int zp_plot_parse_size(const char *text, zp_plot_opts *o, char *why, size_t whylen);
 
 /* Draws the last run of s (its trajectory rows and kink crossings; r: its result, for the
-   death)
-   into dir: course.png, energy.png, angles.png, loads.png, frame_x<X>.png / frame_t<T>.png
-   and run.gif as o asks, each with its .gp script, and the plot_*.dat data they read; all or
-   nothing. ZP_OK with info filled (also when gnuplot is missing: info->no_gnuplot), or
-   ZP_ERR_IO with why in err and nothing written. Single-threaded: it evaluates m->course. */
-zp_status zp_plot_run(const char *dir, const zp_model *m, const zp_sim *s, const zp_result *r,
+   death) into the transaction t: course.png, energy.png, angles.png, loads.png,
+   frame_x<X>.png / frame_t<T>.png and run.gif as o asks, each with its .gp script, and the
+   plot_*.dat data they read. ZP_OK with info filled (also when gnuplot is missing:
+   info->no_gnuplot), or ZP_ERR_IO with why in err: the caller then aborts t.
+   Single-threaded: it evaluates m->course. */
+zp_status zp_plot_run(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_result *r,
                       const zp_plot_opts *o, zp_plot_info *info, char *err, size_t errlen);
 
 #endif

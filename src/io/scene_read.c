@@ -15,7 +15,9 @@ static void set_defaults(zp_scene *sc, const char *path) {
     snprintf(sc->path, sizeof sc->path, "%s", path);
     /* the name is the file's stem: no folders, no extension */
     const char *base = strrchr(path, '/') ? strrchr(path, '/') + 1 : path;
-    snprintf(sc->name, sizeof sc->name, "%s", base);
+    if (snprintf(sc->name, sizeof sc->name, "%s", base) >= (int)sizeof sc->name) {
+        sc->name[0] = '\0'; /* too long: no name, rather than a shortened one */
+    }
     char *dot = strrchr(sc->name, '.');
     if (dot && dot != sc->name) {
         *dot = '\0';

@@ -8,17 +8,37 @@
 #include "numtext.h"
 #include "scene_parse.h"
 
-/* the name becomes a folder under out/, so it may not climb or nest */
+/* a name that is one folder: letters, digits, `.`, `_`, `-`, no leading dot, not empty */
+static int plain_name(const char *name) {
+    return name[0] && name[0] != '.' &&
+           strspn(name, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789._-") ==
+               strlen(name);
+}
+
+/* text for a message, control bytes shown as `?` (static buffer: one use per message) */
+static const char *shown(const char *text) {
+    static char buf[256];
+    size_t k = 0;
+    for (; text[k] && k + 1 < sizeof buf; k++) {
+        buf[k] = (unsigned char)text[k] < 0x20 || text[k] == 0x7f ? '?' : text[k];
+    }
+    buf[k] = '\0';
+    return buf;
+}
+
+/* the name becomes a folder under out/, so it may not climb or nest; the default, the file's
+   stem, obeys the same rule */
 void zp_scene_read_scene(parse_ctx *c, zp_scene *sc) {
     char name[ZP_NAME_MAX];
-    if (zp_scene_get_text(c, K_NAME, name, sizeof name) > 0) {
-        if (name[0] == '.' ||
-            strspn(name, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789._-") !=
-                strlen(name)) {
-            zp_scene_bad_key(c, K_NAME, "`%s` is not a plain folder name", name);
-        } else {
-            strcpy(sc->name, name);
-        }
+    int given = zp_scene_get_text(c, K_NAME, name, sizeof name);
+    if (given > 0 && !plain_name(name)) {
+        zp_scene_bad_key(c, K_NAME, "`%s` is not a plain folder name", shown(name));
+    } else if (given > 0) {
+        strcpy(sc->name, name);
+    } else if (!given && !plain_name(sc->name)) {
+        zp_scene_bad(c, 0, "scene", "name",
+                     "missing, and the file's name `%s` gives no plain folder name; expected %s",
+                     shown(c->file), zp_scene_keys[K_NAME].expect);
     }
     zp_scene_get_number(c, K_GRAVITY, R_NONNEG, &sc->gravity);
 }

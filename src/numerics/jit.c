@@ -217,6 +217,15 @@ static unsigned long long pool_hash(unsigned long long h, const zp_expr *e, int 
     return h;
 }
 
+/* 1 when path is a real (not linked) file of the given type, owned by this user and writable
+   by nobody else: loading code runs its constructors, so a cache anyone else could plant a file
+   in is not used */
+static int private_to_us(const char *path, mode_t type) {
+    struct stat st;
+    return lstat(path, &st) == 0 && (st.st_mode & S_IFMT) == type && st.st_uid == geteuid() &&
+           (st.st_mode & (S_IWGRP | S_IWOTH)) == 0;
+}
+
 /* the cache file for this pool in path (empty when there is no cache directory), and the
    check value in key */
 static void cache_names(const zp_expr *e, int nfn, int nout, const int *roots, char *path,
@@ -242,7 +251,7 @@ static void cache_names(const zp_expr *e, int nfn, int nout, const int *roots, c
         *slash = '\0';
         mkdir(parent, 0700);
     }
-    if (mkdir(dir, 0700) == 0 || errno == EEXIST) {
+    if ((mkdir(dir, 0700) == 0 || errno == EEXIST) && private_to_us(dir, S_IFDIR)) {
         snprintf(path, pathlen, "%s/course-%016llx.so", dir, h1);
     }
 }
@@ -269,7 +278,8 @@ static void *result_get(void *r, const char *name) {
 
 /* a loaded cache file whose key matches; 0 on success */
 static int load_cached(zp_jit *j, const char *path, const char *key, int nfn) {
-    void *dl = path[0] ? dlopen(path, RTLD_NOW | RTLD_LOCAL) : NULL;
+    void *dl = path[0] && private_to_us(path, S_IFREG) ? dlopen(path, RTLD_NOW | RTLD_LOCAL)
+                                                        : NULL;
     const char *const *stored = dl ? dlsym(dl, "zp_expr_key") : NULL;
     if (!stored || strcmp(*stored, key) || resolve(j, nfn, dlsym, dl)) {
         if (dl) {

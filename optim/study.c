@@ -1,0 +1,153 @@
+/* One point of a design study (study.h): the scene's model, then the search with its answer
+   re-run at the scene's tolerance, or one simulation; everything reduced to a row. */
+#include "study.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "search.h"
+#include "verify.h"
+
+#define DEG (180.0 / M_PI)
+#define ACTIVE_DEG 0.01 /* deg: a margin this close to [optimize] margin is the binding limit */
+#define ACTIVE_REL 1e-9 /* a force this close (relative to the range) to a bound lies on it */
+
+static const char *const kind_names[ZP_STUDY_KIND_COUNT] = {"search", "simulate"};
+
+const char *zp_study_kind_name(zp_study_kind k) {
+    return kind_names[k];
+}
+
+int zp_study_kind_find(const char *name) {
+    for (int k = 0; k < ZP_STUDY_KIND_COUNT; k++) {
+        if (!strcmp(name, kind_names[k])) {
+            return k;
+        }
+    }
+    return -1;
+}
+
+static void fail(zp_study_row *row, const char *why) {
+    row->failed = 1;
+    snprintf(row->message, sizeof row->message, "%.*s", (int)sizeof row->message - 1, why);
+}
+
+/* outcome, time and margin of the answer's run r; the limit that decides the row */
+static void fill(const zp_scene *sc, const zp_model *m, const zp_schedule *sh, const zp_result *r,
+                 zp_study_row *row) {
+    double angle = 0;
+    for (int i = 0; i < m->nlink; i++) {
+        angle = fmax(angle, r->max_rel_angle[i]);
+    }
+    row->outcome = r->outcome;
+    row->time = r->time;
+    row->margin = sc->death_angle - angle * DEG;
+    if (!row->found) {
+        snprintf(row->limit, sizeof row->limit, "%s",
+                 r->outcome == ZP_OUTCOME_DIED      ? "death"
+                 : r->outcome == ZP_OUTCOME_STALLED ? "t_max"
+                                                    : "margin");
+        return;
+    }
+    int at_max = 0, at_min = 0;
+    for (int k = 0; k < row->np; k++) {
+        double eps = ACTIVE_REL * fmax(sh->hi[k] - sh->lo[k], 1);
+        at_max |= row->force[k] >= sh->hi[k] - eps;
+        at_min |= row->force[k] <= sh->lo[k] + eps;
+    }
+    snprintf(row->limit, sizeof row->limit, "%s%s%s%s%s",
+             row->margin - sc->margin < ACTIVE_DEG ? "margin" : "",
+             row->margin - sc->margin < ACTIVE_DEG && at_max ? "+" : "", at_max ? "drive.max" : "",
+             (row->margin - sc->margin < ACTIVE_DEG || at_max) && at_min ? "+" : "",
+             at_min ? "drive.min" : "");
+    if (!row->limit[0]) {
+        snprintf(row->limit, sizeof row->limit, "none");
+    }
+}
+
+static void run_search(const zp_scene *sc, const zp_model *m, const zp_objective *ob,
+                       const zp_sim_opts *so, zp_study_row *row) {
+    /* the search's runs as `zipopt SCENE.ini` makes them: no trajectory, no load peaks, the
+       [optimize] integrator and tolerance */
+    zp_sim_opts fast = *so;
+    fast.track_loads = 0;
+    fast.output_dt = 0;
+    fast.method = zp_method_find(sc->search_method);
+    fast.rtol = sc->search_rtol;
+    fast.atol = sc->search_rtol / 100;
+    zp_search_opts o = {.max_evals = sc->max_evals, .seed = sc->seed};
+    zp_search_result *res = malloc(sizeof *res);
+    char err[512] = "";
+    if (!res) {
+        fail(row, "out of memory for the search");
+        return;
+    }
+    if (zp_search_run(ob, &fast, ob->shape->lo[0], ob->shape->hi[0], &o, res, err, sizeof err)) {
+        fail(row, err);
+        free(res);
+        return;
+    }
+    row->found = res->found;
+    row->evals = res->evals;
+    memcpy(row->force, res->force, sizeof *row->force * (size_t)row->np);
+    zp_verify v;
+    zp_sim *best = NULL;
+    if (zp_verify_run(ob, so, res->force, sc->seed, 0, 0, &best, &v, err, sizeof err)) {
+        fail(row, err);
+    } else {
+        row->verified = v.agree;
+        fill(sc, m, ob->shape, v.run, row);
+    }
+    zp_verify_free(&v);
+    zp_sim_free(best);
+    free(res);
+}
+
+static void run_simulate(const zp_scene *sc, const zp_model *m, const zp_objective *ob,
+                         const zp_sim_opts *so, zp_study_row *row) {
+    zp_result *r = malloc(sizeof *r); /* large: off the stack */
+    zp_sim *s = zp_sim_create(m, so);
+    if (!s || !r) {
+        fail(row, "out of memory for the simulator");
+    } else {
+        memcpy(row->force, ob->shape->p, sizeof *row->force * (size_t)row->np);
+        zp_eval e;
+        zp_objective_eval(ob, s, ob->shape->p, &e, r);
+        row->evals = 1;
+        if (e.failed) {
+            fail(row, r->message);
+        } else {
+            row->found = zp_objective_feasible(&e);
+            fill(sc, m, ob->shape, r, row);
+        }
+    }
+    zp_sim_free(s);
+    free(r);
+}
+
+void zp_study_run(const zp_scene *sc, zp_study_kind kind, zp_study_row *row) {
+    memset(row, 0, sizeof *row);
+    zp_schedule sched = zp_schedule_of_scene(sc);
+    row->np = sched.np;
+    zp_diag d;
+    zp_diag_init(&d);
+    zp_model *m = zp_model_build(sc, &d);
+    zp_sim_opts so;
+    if (!m || zp_sim_opts_from_scene(sc, &so, &d)) {
+        fail(row, d.n ? d.text[0] : "the scene does not build");
+        zp_model_free(m);
+        return;
+    }
+    so.output_dt = 0; /* outcomes only: output requests never change the integrator's steps */
+    /* the limit exactly as the search command sets it, so a point equals `zipopt SCENE` */
+    zp_objective ob = {.m = m, .limit = m->phi_max - sc->margin * M_PI / 180, .t_max = so.t_max,
+                       .shape = &sched};
+    if (kind == ZP_STUDY_SEARCH) {
+        run_search(sc, m, &ob, &so, row);
+    } else {
+        run_simulate(sc, m, &ob, &so, row);
+    }
+    zp_model_free(m);
+}

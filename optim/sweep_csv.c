@@ -1,0 +1,233 @@
+/* sweep.csv rows and the checkpoint (sweep_csv.h): numbers in the fewest digits that read back
+   exactly, so a row read from the checkpoint writes out as the same line. */
+#include "sweep_csv.h"
+
+#include <errno.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "out_file.h"
+
+#define NFIXED 8 /* result columns before the forces: status .. evals */
+
+void zp_sweep_csv_header(FILE *f, const zp_sweep *s, int np) {
+    fputs("point", f);
+    for (int v = 0; v < s->nvary; v++) {
+        char col[64];
+        zp_sweep_column(&s->vary[v], col, sizeof col);
+        fprintf(f, ",%s", col);
+    }
+    fputs(",status,found,outcome,time_s,margin_deg,limit,verified,evals", f);
+    for (int k = 1; k <= np; k++) {
+        fprintf(f, ",F%d_N", k);
+    }
+    fputs(",message\n", f);
+}
+
+static void put_num(FILE *f, double x) {
+    char buf[32];
+    zp_sweep_format(x, buf, sizeof buf);
+    fprintf(f, ",%s", buf);
+}
+
+void zp_sweep_csv_row(FILE *f, const zp_sweep *s, int p, const zp_study_row *r) {
+    fprintf(f, "%d", p);
+    for (int v = 0; v < s->nvary; v++) {
+        put_num(f, zp_sweep_value(s, v, p));
+    }
+    if (r->failed) {
+        fputs(",failed,,,,,,,", f);
+        for (int k = 0; k < r->np; k++) {
+            fputc(',', f);
+        }
+    } else {
+        fprintf(f, ",ok,%d,%s", r->found, zp_sim_outcome_name(r->outcome));
+        put_num(f, r->time);
+        put_num(f, r->margin);
+        fprintf(f, ",%s,%d,%ld", r->limit, r->verified, r->evals);
+        for (int k = 0; k < r->np; k++) {
+            put_num(f, r->force[k]);
+        }
+    }
+    /* the message without the characters that would break the CSV line */
+    fputc(',', f);
+    for (const char *c = r->message; *c; c++) {
+        fputc(*c == ',' ? ';' : *c == '"' ? '\'' : *c == '\n' || *c == '\r' ? ' ' : *c, f);
+    }
+    fputc('\n', f);
+}
+
+static int num_field(const char *t, double *x) {
+    char *end;
+    *x = strtod(t, &end);
+    return end == t || *end ? -1 : 0;
+}
+
+/* the result fields of a row that did not fail: status .. evals, then the forces */
+static int parse_result(char **fld, int np, zp_study_row *r) {
+    char *end;
+    r->found = fld[1][0] == '1' && !fld[1][1];
+    r->outcome = ZP_OUTCOME_COUNT;
+    for (int o = 0; o < ZP_OUTCOME_COUNT; o++) {
+        if (!strcmp(fld[2], zp_sim_outcome_name((zp_outcome)o))) {
+            r->outcome = (zp_outcome)o;
+        }
+    }
+    snprintf(r->limit, sizeof r->limit, "%s", fld[5]);
+    r->verified = fld[6][0] == '1' && !fld[6][1];
+    r->evals = strtol(fld[7], &end, 10);
+    int bad = r->outcome == ZP_OUTCOME_COUNT || num_field(fld[3], &r->time) ||
+              num_field(fld[4], &r->margin) || *end || !fld[7][0];
+    for (int k = 0; k < np && !bad; k++) {
+        bad = num_field(fld[NFIXED + k], &r->force[k]);
+    }
+    return bad ? -1 : 0;
+}
+
+int zp_sweep_csv_parse(const char *line, const zp_sweep *s, int np, int *p, zp_study_row *r) {
+    enum { MAXF = 1 + ZP_SWEEP_MAX_VARY + NFIXED + ZP_SCHED_MAX_PARAMS + 1 };
+    char buf[8192], *fld[MAXF];
+    int n = 0;
+    snprintf(buf, sizeof buf, "%s", line);
+    for (char *c = buf; n < MAXF; c++) {
+        fld[n++] = c;
+        c += strcspn(c, ",");
+        if (!*c) {
+            break;
+        }
+        *c = '\0';
+    }
+    memset(r, 0, sizeof *r);
+    r->np = np;
+    char *end;
+    long pl = strtol(fld[0], &end, 10);
+    if (n != 1 + s->nvary + NFIXED + np + 1 || end == fld[0] || *end || pl < 0 ||
+        pl >= s->npoint) {
+        return -1;
+    }
+    *p = (int)pl;
+    for (int v = 0; v < s->nvary; v++) {
+        double x;
+        if (num_field(fld[1 + v], &x) || x != zp_sweep_value(s, v, *p)) {
+            return -1;
+        }
+    }
+    char **res = fld + 1 + s->nvary;
+    snprintf(r->message, sizeof r->message, "%s", fld[n - 1]);
+    if (!strcmp(res[0], "failed")) {
+        r->failed = 1;
+        return 0;
+    }
+    return strcmp(res[0], "ok") ? -1 : parse_result(res, np, r);
+}
+
+/* the checkpoint's first two lines: what study it belongs to, then the CSV header */
+static char *study_head(const zp_sweep *s, const char *base, int np) {
+    uint64_t h = 0xcbf29ce484222325ULL; /* FNV-1a of the scene text */
+    for (const unsigned char *c = (const unsigned char *)base; *c; c++) {
+        h = (h ^ *c) * 0x100000001b3ULL;
+    }
+    char *text = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&text, &len);
+    if (!f) {
+        return NULL;
+    }
+    fprintf(f, "# zipopt sweep checkpoint: run=%s scene=%016llx np=%d vary=",
+            zp_study_kind_name(s->kind), (unsigned long long)h, np);
+    for (int v = 0; v < s->nvary; v++) {
+        fprintf(f, "%s%s", v ? " " : "", s->vary[v].text);
+    }
+    fputc('\n', f);
+    zp_sweep_csv_header(f, s, np);
+    fclose(f);
+    return text;
+}
+
+/* the whole rows of an old checkpoint into rows/done; returns the length of the good part,
+   or -1 when it belongs to another study */
+static long read_rows(const char *old, const char *head, const zp_sweep *s, int np,
+                      zp_study_row *rows, unsigned char *done, int *ndone) {
+    size_t hl = strlen(head);
+    if (strncmp(old, head, hl)) {
+        /* cut short while its head was written: nothing to keep; else another study's */
+        return strncmp(old, head, strlen(old)) ? -1 : 0;
+    }
+    size_t pos = hl;
+    char line[8192];
+    for (;;) {
+        size_t len = strcspn(old + pos, "\n");
+        int p;
+        zp_study_row r;
+        if (!old[pos + len] || len >= sizeof line) {
+            break; /* the last line, torn by a kill */
+        }
+        snprintf(line, sizeof line, "%.*s", (int)len, old + pos);
+        if (zp_sweep_csv_parse(line, s, np, &p, &r)) {
+            break;
+        }
+        *ndone += !done[p];
+        done[p] = 1;
+        rows[p] = r;
+        pos += len + 1;
+    }
+    return (long)pos;
+}
+
+zp_status zp_sweep_checkpoint_open(zp_sweep_checkpoint *c, const char *dir, const zp_sweep *s,
+                                   const char *base, int np, int resume, zp_study_row *rows,
+                                   unsigned char *done, int *ndone, char *err, size_t errlen) {
+    c->f = NULL;
+    *ndone = 0;
+    snprintf(c->path, sizeof c->path, "%s/checkpoint.csv", dir);
+    char *head = study_head(s, base, np), *old = NULL;
+    size_t len = 0;
+    long keep = -2;
+    if (head && resume && (old = zp_sweep_read_file(c->path, &len)) != NULL) {
+        keep = strlen(old) == len ? read_rows(old, head, s, np, rows, done, ndone) : -1;
+    }
+    free(old);
+    if (keep == -1) {
+        snprintf(err, errlen,
+                 "%s belongs to another study (its scene, --vary or --run differ); "
+                 "run without --resume to start afresh",
+                 c->path);
+        free(head);
+        return ZP_ERR_INPUT;
+    }
+    if (!head || zp_out_make_dirs(dir) || (keep > 0 && truncate(c->path, keep)) ||
+        !(c->f = fopen(c->path, keep > 0 ? "a" : "w"))) {
+        snprintf(err, errlen, "%s: %s", c->path, head ? strerror(errno) : "out of memory");
+        free(head);
+        return ZP_ERR_IO;
+    }
+    if (keep <= 0) {
+        fputs(head, c->f);
+    }
+    free(head);
+    if (fflush(c->f)) {
+        snprintf(err, errlen, "%s: %s", c->path, strerror(errno));
+        fclose(c->f);
+        c->f = NULL;
+        return ZP_ERR_IO;
+    }
+    return ZP_OK;
+}
+
+int zp_sweep_checkpoint_add(zp_sweep_checkpoint *c, const zp_sweep *s, int p,
+                            const zp_study_row *r) {
+    zp_sweep_csv_row(c->f, s, p, r);
+    return fflush(c->f) || fsync(fileno(c->f)) ? -1 : 0;
+}
+
+void zp_sweep_checkpoint_close(zp_sweep_checkpoint *c, int remove_file) {
+    if (c->f) {
+        fclose(c->f);
+        c->f = NULL;
+    }
+    if (remove_file) {
+        remove(c->path);
+    }
+}

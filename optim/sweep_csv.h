@@ -1,0 +1,38 @@
+/* A design study's rows as CSV (sweep.csv) and its checkpoint: the same lines, appended and
+   flushed as points finish, read back by --resume to the same bits. */
+#ifndef ZP_SWEEP_CSV_H
+#define ZP_SWEEP_CSV_H
+
+#include <stdio.h>
+
+#include "sweep.h"
+
+/* The header line: point, the varied columns, then the result columns (F1..Fnsec last but
+   one, message last). */
+void zp_sweep_csv_header(FILE *f, const zp_sweep *s, int np);
+/* Point p's line. */
+void zp_sweep_csv_row(FILE *f, const zp_sweep *s, int p, const zp_study_row *r);
+/* Reads a line written by zp_sweep_csv_row (without its newline) into *p and r; -1 when it is
+   not one of s's points with np parameters. */
+int zp_sweep_csv_parse(const char *line, const zp_sweep *s, int np, int *p, zp_study_row *r);
+
+typedef struct zp_sweep_checkpoint {
+    FILE *f; /* owned, open for appending */
+    char path[1100];
+} zp_sweep_checkpoint;
+
+/* Opens DIR/checkpoint.csv for the study s of scene text base. With resume, the rows a
+   checkpoint of the same study (same scene text, --vary and --run) holds go to rows[p] with
+   done[p] = 1 (*ndone counts them), a torn last line is cut, and new rows follow; a checkpoint
+   of another study is ZP_ERR_INPUT. Without resume (or with no checkpoint) it starts afresh.
+   ZP_ERR_IO with why in err. */
+zp_status zp_sweep_checkpoint_open(zp_sweep_checkpoint *c, const char *dir, const zp_sweep *s,
+                                   const char *base, int np, int resume, zp_study_row *rows,
+                                   unsigned char *done, int *ndone, char *err, size_t errlen);
+/* Appends point p's row and pushes it to the disk; 0, or -1 when it could not be written. */
+int zp_sweep_checkpoint_add(zp_sweep_checkpoint *c, const zp_sweep *s, int p,
+                            const zp_study_row *r);
+/* Closes the file; remove = 1 also deletes it (the study's outputs hold every row). */
+void zp_sweep_checkpoint_close(zp_sweep_checkpoint *c, int remove_file);
+
+#endif

@@ -1,0 +1,387 @@
+/* `zipopt sweep`: a design study over a grid of scene values (CLI.md). Under mpirun the points
+   are spread over the ranks; rank 0 checkpoints each row as it comes and writes the outputs. */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "cli.h"
+#include "gnuplot.h"
+#include "mpi_queue.h"
+#include "scene_read.h"
+#include "sweep_csv.h"
+#include "sweep_out.h"
+
+#define MAX_ARGS_VARY                                                                              \
+    16 /* --vary options kept for checking; more than ZP_SWEEP_MAX_VARY is an error */
+
+static void usage(FILE *f) {
+    fputs("usage: zipopt sweep SCENE.ini --vary SECTION.KEY=A:B:N [--vary ..]\n"
+          "                    [--run search|simulate] [--out DIR] [--resume] [--json]\n"
+          "A design study: the scene at every point of the grid of the varied keys (N values\n"
+          "from A to B for each --vary, the first varying fastest; up to 4 keys). A list key\n"
+          "(body.masses, body.lengths, body.damping, drive.forces, ..) is scaled as a whole:\n"
+          "A and B are factors, e.g. body.masses=0.8:1.2:5. Every point is checked by every\n"
+          "rule of the scene file before anything runs. At each point:\n"
+          "  --run search      the search for the fastest schedule that keeps the limits,\n"
+          "                    its answer re-run at the scene's tolerance (default)\n"
+          "  --run simulate    one run of the scene's [drive] forces\n"
+          "Writes sweep.csv (one row per point: the varied values, found, outcome, finish\n"
+          "time, margin, the binding limit, forces; a failed point says why and the study goes\n"
+          "on), sweep.png with its gnuplot script (a line for one key, a heat map for two,\n"
+          "points without a schedule marked) and summary.json to out/<scene name>/sweep/ (or\n"
+          "DIR), and prints the summary. Each finished row is appended to checkpoint.csv there\n"
+          "at once; after Ctrl-C or a killed job, --resume skips every finished point.\n"
+          "  --json            print summary.json on stdout instead of the text\n"
+          "Under `mpirun -np N zipopt sweep ..` the points go to the N ranks by a work queue\n"
+          "(each rank with its OpenMP threads); the results are the same bits as without.\n",
+          f);
+}
+
+typedef struct sweep_args {
+    const char *scene, *out, *run;
+    int resume, json, nvary;
+    const char *vary[MAX_ARGS_VARY];
+} sweep_args;
+
+enum { O_VARY = ZP_OPT_FIRST, O_RUN, O_OUT, O_RESUME, O_JSON };
+static const struct option options[] = {
+    {"help", no_argument, NULL, 'h'},
+    {"vary", required_argument, NULL, O_VARY},
+    {"run", required_argument, NULL, O_RUN},
+    {"out", required_argument, NULL, O_OUT},
+    {"resume", no_argument, NULL, O_RESUME},
+    {"json", no_argument, NULL, O_JSON},
+    {NULL, 0, NULL, 0},
+};
+
+/* 0, 1 (--help shown) or -1 (reported) */
+static int parse_args(int argc, char **argv, sweep_args *a) {
+    memset(a, 0, sizeof *a);
+    a->run = "search";
+    zp_cli_opts_begin();
+    for (int c; (c = zp_cli_opts_next("sweep", argc, argv, options)) != -1;) {
+        switch (c) {
+        case 'h':
+            usage(stdout);
+            return 1;
+        case O_VARY:
+            if (a->nvary < MAX_ARGS_VARY) {
+                a->vary[a->nvary] = optarg;
+            }
+            a->nvary++;
+            break;
+        case O_RUN:
+            a->run = optarg;
+            break;
+        case O_OUT:
+            a->out = optarg;
+            break;
+        case O_RESUME:
+            a->resume = 1;
+            break;
+        case O_JSON:
+            a->json = 1;
+            break;
+        default:
+            return -1;
+        }
+    }
+    if (zp_cli_scene_operand("sweep", argc, argv, &a->scene) ||
+        (a->out && zp_cli_path_ok("sweep", "--out", a->out))) {
+        return -1;
+    }
+    const char *miss = !a->scene ? "a scene file" : !a->nvary ? "at least one --vary" : NULL;
+    if (miss) {
+        zp_cli_error("sweep", "%s is required; see zipopt sweep --help", miss);
+        return -1;
+    }
+    return 0;
+}
+
+/* The study as it runs; rows, done and the checkpoint live on rank 0 only. */
+typedef struct study {
+    const zp_sweep *s;
+    const char *base, *path; /* the scene text and its file name */
+    char name[ZP_NAME_MAX];  /* the scene's name */
+    int np; /* parameters of the schedule */
+    zp_scene *sc;        /* owned: scratch for the point being computed */
+    zp_study_row *rows;  /* owned, npoint */
+    unsigned char *done; /* owned, npoint */
+    int ndone, nresumed;
+    zp_sweep_checkpoint cp;
+    int cp_failed; /* a row could not be appended to the checkpoint */
+    int tty;
+    struct timespec start;
+} study;
+
+static double since(const struct timespec *a) {
+    struct timespec now;
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    return (double)(now.tv_sec - a->tv_sec) + 1e-9 * (double)(now.tv_nsec - a->tv_nsec);
+}
+
+/* point p's scene into st->sc; 0, or -1 with the reason in d */
+static int point_scene(study *st, int p, zp_diag *d) {
+    char why[256];
+    char *text = zp_sweep_point_text(st->s, st->base, p, why, sizeof why);
+    if (!text) {
+        zp_diag_add(d, st->path, 0, NULL, NULL, "%s", why);
+        return -1;
+    }
+    zp_status rc = zp_scene_load_string(text, st->path, st->sc, d);
+    free(text);
+    return rc == ZP_OK ? 0 : -1;
+}
+
+static void work(void *user, int p, void *result) {
+    study *st = user;
+    zp_study_row *row = result;
+    zp_diag d;
+    zp_diag_init(&d);
+    if (point_scene(st, p, &d)) {
+        memset(row, 0, sizeof *row);
+        row->failed = 1;
+        row->np = st->np;
+        snprintf(row->message, sizeof row->message, "%.*s", (int)sizeof row->message - 1,
+                 d.n ? d.text[0] : "bad scene");
+        return;
+    }
+    zp_study_run(st->sc, st->s->kind, row);
+}
+
+static void done(void *user, int p, const void *result) {
+    study *st = user;
+    st->rows[p] = *(const zp_study_row *)result;
+    st->ndone += !st->done[p];
+    st->done[p] = 1;
+    if (!st->cp_failed && zp_sweep_checkpoint_add(&st->cp, st->s, p, &st->rows[p])) {
+        st->cp_failed = 1;
+        fprintf(stderr,
+                "\nzipopt sweep: cannot append to %s; the study goes on, but a rerun "
+                "would start afresh\n",
+                st->cp.path);
+    }
+    if (st->tty) {
+        fprintf(stderr, "\rzipopt sweep: %d/%d points, %.1f s   ", st->ndone, st->s->npoint,
+                since(&st->start));
+    }
+}
+
+/* every point checked by every rule of the scene file before anything runs; 0 or -1 */
+static int check_points(study *st) {
+    for (int p = 0; p < st->s->npoint; p++) {
+        zp_diag d;
+        zp_diag_init(&d);
+        zp_model *m = NULL;
+        zp_sim_opts so;
+        if (point_scene(st, p, &d) == 0 && (m = zp_model_build(st->sc, &d)) != NULL) {
+            zp_sim_opts_from_scene(st->sc, &so, &d);
+        }
+        zp_model_free(m);
+        if (d.n || d.dropped) {
+            char at[512];
+            zp_sweep_describe(st->s, p, at, sizeof at);
+            fprintf(stderr, "zipopt sweep: the scene at point %d (%s) is not valid:\n", p, at);
+            zp_diag_print(&d, stderr);
+            fputs("zipopt sweep: nothing was written\n", stderr);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+/* sweep.csv, summary.json and the figure: all or none */
+static int write_outputs(const char *dir, const zp_sweep_out *o, const char *summary,
+                         int *no_gnuplot) {
+    char err[1300];
+    zp_gnuplot g;
+    if (zp_gnuplot_begin(&g, dir, err, sizeof err)) {
+        fprintf(stderr, "zipopt sweep: %s; nothing was written\n", err);
+        return -1;
+    }
+    FILE *csv = zp_gnuplot_open(&g, "sweep.csv", 0, err, sizeof err);
+    FILE *js = csv ? zp_gnuplot_open(&g, "summary.json", 0, err, sizeof err) : NULL;
+    FILE *gp =
+        js && zp_sweep_out_has_figure(o) ? zp_gnuplot_open(&g, "sweep.gp", 1, err, sizeof err) : js;
+    if (!gp) {
+        zp_gnuplot_abort(&g);
+        fprintf(stderr, "zipopt sweep: %s; nothing was written\n", err);
+        return -1;
+    }
+    zp_sweep_csv_header(csv, o->s, o->np);
+    for (int p = 0; p < o->s->npoint; p++) {
+        zp_sweep_csv_row(csv, o->s, p, &o->rows[p]);
+    }
+    zp_sweep_out_json(js, o, summary);
+    if (zp_sweep_out_has_figure(o)) {
+        zp_sweep_out_script(gp, o);
+    }
+    if (zp_gnuplot_finish(&g, no_gnuplot, err, sizeof err)) {
+        fprintf(stderr, "zipopt sweep: %s; nothing was written\n", err);
+        return -1;
+    }
+    return 0;
+}
+
+/* rank 0, once every point is done: the files, then the summary on stdout */
+static int finish(study *st, const sweep_args *a, const char *dir, int ranks) {
+    zp_sweep_out o = {st->s, st->rows, st->name, st->np};
+    char summary[4096];
+    zp_sweep_out_summary(&o, summary, sizeof summary);
+    int no_gnuplot = 0;
+    if (write_outputs(dir, &o, summary, &no_gnuplot)) {
+        fprintf(stderr, "zipopt sweep: the finished rows stay in %s; rerun with --resume\n",
+                st->cp.path);
+        return ZP_EXIT_FAIL;
+    }
+    zp_sweep_checkpoint_close(&st->cp, 1); /* sweep.csv holds every row */
+    if (a->json) {
+        zp_sweep_out_json(stdout, &o, summary);
+    } else {
+        printf("%s\n%d points (%d from the checkpoint) in %.2f s on %d rank%s; wrote %s/sweep.csv, "
+               "summary.json%s\n",
+               summary, st->s->npoint, st->nresumed, since(&st->start), ranks,
+               ranks == 1 ? "" : "s", dir,
+               !zp_sweep_out_has_figure(&o) ? " (no figure for more than two keys)"
+               : no_gnuplot                 ? ", sweep.gp (gnuplot is not installed: no image)"
+                                            : ", sweep.png");
+    }
+    return ZP_EXIT_OK;
+}
+
+/* the scene, the grid and every point checked; 0, or the exit status */
+static int prepare(const sweep_args *a, zp_sweep *s, study *st, char **base) {
+    size_t len;
+    *base = zp_sweep_read_file(a->scene, &len);
+    if (!*base) {
+        fprintf(stderr, "zipopt sweep: cannot read %s: %s; nothing was written\n", a->scene,
+                strerror(errno));
+        return ZP_EXIT_USAGE;
+    }
+    st->base = *base;
+    st->path = a->scene;
+    zp_diag d;
+    zp_diag_init(&d);
+    zp_model *m = NULL;
+    if (zp_scene_load_string(*base, a->scene, st->sc, &d) == ZP_OK) {
+        m = zp_model_build(st->sc, &d);
+    }
+    zp_diag_print(&d, stderr);
+    zp_model_free(m);
+    if (!m) {
+        fprintf(stderr, "zipopt sweep: %s is not a valid scene; nothing was written\n", a->scene);
+        return ZP_EXIT_USAGE;
+    }
+    snprintf(st->name, sizeof st->name, "%s", st->sc->name);
+    st->np = zp_schedule_of_scene(st->sc).np;
+    int kind = zp_study_kind_find(a->run);
+    if (kind < 0) {
+        fprintf(stderr, "zipopt sweep: --run '%s': expected search or simulate\n", a->run);
+        return ZP_EXIT_USAGE;
+    }
+    s->kind = (zp_study_kind)kind;
+    for (int i = 0; i < a->nvary; i++) {
+        char why[1200];
+        zp_sweep_vary v;
+        if (i >= MAX_ARGS_VARY || zp_sweep_vary_parse(a->vary[i], &v, why, sizeof why) ||
+            zp_sweep_add(s, &v, why, sizeof why)) {
+            fprintf(stderr, "zipopt sweep: --vary %s: %s; nothing was written\n",
+                    i < MAX_ARGS_VARY ? a->vary[i] : "", i < MAX_ARGS_VARY ? why : "too many");
+            return ZP_EXIT_USAGE;
+        }
+    }
+    st->s = s;
+    return check_points(st) ? ZP_EXIT_USAGE : 0;
+}
+
+/* rank 0: the checkpoint (resumed or fresh) and the points left to do; 0 or the exit status */
+static int open_study(study *st, const sweep_args *a, const char *dir, int **todo, int *ntodo) {
+    int n = st->s->npoint;
+    st->rows = calloc((size_t)n, sizeof *st->rows);
+    st->done = calloc((size_t)n, 1);
+    *todo = malloc(sizeof **todo * (size_t)n);
+    if (!st->rows || !st->done || !*todo) {
+        fputs("zipopt sweep: out of memory; nothing was written\n", stderr);
+        return ZP_EXIT_FAIL;
+    }
+    char err[1300];
+    zp_status rc = zp_sweep_checkpoint_open(&st->cp, dir, st->s, st->base, st->np, a->resume,
+                                            st->rows, st->done, &st->ndone, err, sizeof err);
+    if (rc) {
+        fprintf(stderr, "zipopt sweep: %s; nothing was written\n", err);
+        return rc == ZP_ERR_INPUT ? ZP_EXIT_USAGE : ZP_EXIT_FAIL;
+    }
+    st->nresumed = st->ndone;
+    *ntodo = 0;
+    for (int p = 0; p < n; p++) {
+        if (!st->done[p]) {
+            (*todo)[(*ntodo)++] = p;
+        }
+    }
+    return 0;
+}
+
+static int sweep(int argc, char **argv, int rank) {
+    sweep_args a;
+    int pa = parse_args(argc, argv, &a);
+    if (pa) {
+        return pa > 0 ? ZP_EXIT_OK : ZP_EXIT_USAGE;
+    }
+    zp_sweep s = {0};
+    study st = {.tty = rank == 0 && isatty(STDERR_FILENO)};
+    clock_gettime(CLOCK_MONOTONIC, &st.start);
+    char *base = NULL;
+    int *todo = NULL, ntodo = 0;
+    st.sc = malloc(sizeof *st.sc);
+    int status = st.sc ? prepare(&a, &s, &st, &base) : ZP_EXIT_FAIL;
+    if (status) {
+        goto done; /* every rank saw the same input and stops here alike */
+    }
+    char dir[1024];
+    if (a.out) {
+        snprintf(dir, sizeof dir, "%s", a.out);
+    } else {
+        snprintf(dir, sizeof dir, "out/%s/sweep", st.name);
+    }
+    /* rank 0 alone keeps the rows; when it cannot start, the others are sent home at once */
+    status = rank == 0 ? open_study(&st, &a, dir, &todo, &ntodo) : 0;
+    char err[256];
+    if (zp_mpi_queue_run(todo, status ? 0 : ntodo, sizeof(zp_study_row), work, done, &st, err,
+                         sizeof err)) {
+        fprintf(stderr, "zipopt sweep: %s\n", err);
+        status = ZP_EXIT_FAIL;
+    }
+    if (st.tty && ntodo) {
+        fputc('\n', stderr);
+    }
+    if (rank == 0 && !status) {
+        status = finish(&st, &a, dir, zp_mpi_queue_size());
+    }
+    zp_sweep_checkpoint_close(&st.cp, 0);
+done:
+    free(base);
+    free(todo);
+    free(st.rows);
+    free(st.done);
+    free(st.sc);
+    return status;
+}
+
+int zp_cmd_sweep(int argc, char **argv) {
+    char err[256];
+    if (zp_mpi_queue_start(err, sizeof err)) {
+        fprintf(stderr, "zipopt sweep: %s\n", err);
+        return ZP_EXIT_FAIL;
+    }
+    int rank = zp_mpi_queue_rank();
+    if (rank != 0) { /* rank 0 speaks for the study */
+        freopen("/dev/null", "w", stdout);
+        freopen("/dev/null", "w", stderr);
+    }
+    int status = sweep(argc, argv, rank);
+    zp_mpi_queue_end();
+    return status;
+}

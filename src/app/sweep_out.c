@@ -1,0 +1,217 @@
+/* The study's summary sentence, figure script and summary.json (sweep_out.h). */
+#include "sweep_out.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "out_json.h"
+
+typedef struct tally {
+    int found, infeasible, failed;
+    int fastest, slowest; /* points, -1 when nothing was found */
+    double tmin, tmax;    /* s, over the points found */
+} tally;
+
+static tally count(const zp_sweep_out *o) {
+    tally t = {.fastest = -1, .slowest = -1};
+    for (int p = 0; p < o->s->npoint; p++) {
+        const zp_study_row *r = &o->rows[p];
+        t.failed += r->failed;
+        t.infeasible += !r->failed && !r->found;
+        if (!r->failed && r->found) {
+            t.found++;
+            if (t.fastest < 0 || r->time < t.tmin) {
+                t.fastest = p;
+                t.tmin = r->time;
+            }
+            if (t.slowest < 0 || r->time > t.tmax) {
+                t.slowest = p;
+                t.tmax = r->time;
+            }
+        }
+    }
+    return t;
+}
+
+#define ADD(...)                                                                                   \
+    do {                                                                                           \
+        if (len < cap) {                                                                           \
+            len += (size_t)snprintf(out + len, cap - len, __VA_ARGS__);                            \
+        }                                                                                          \
+    } while (0)
+
+void zp_sweep_out_summary(const zp_sweep_out *o, char *out, size_t cap) {
+    const zp_sweep *s = o->s;
+    tally t = count(o);
+    size_t len = 0;
+    char at[512];
+    ADD("%s over ", o->scene);
+    for (int v = 0; v < s->nvary; v++) {
+        const zp_sweep_vary *va = &s->vary[v];
+        const char *x = va->kind == ZP_VARY_SCALE ? "x" : "";
+        ADD("%s%s.%s %s%g to %s%g", v ? " by " : "", va->section, va->key, x, va->a, x, va->b);
+    }
+    ADD(" (%d point%s): %s at %d of them", s->npoint, s->npoint == 1 ? "" : "s",
+        s->kind == ZP_STUDY_SEARCH ? "a schedule keeps the limits"
+                                   : "the scene's schedule finishes with the margin kept",
+        t.found);
+    if (t.found) {
+        zp_sweep_describe(s, t.fastest, at, sizeof at);
+        ADD("; fastest %.4f s at %s", t.tmin, at);
+        if (t.tmax > t.tmin) {
+            zp_sweep_describe(s, t.slowest, at, sizeof at);
+            ADD(", slowest %.4f s at %s", t.tmax, at);
+        }
+    }
+    if (t.infeasible) {
+        ADD("; none at %d point%s", t.infeasible, t.infeasible == 1 ? "" : "s");
+        for (int p = 0, shown = 0; p < s->npoint && t.infeasible <= 3; p++) {
+            if (!o->rows[p].failed && !o->rows[p].found) {
+                zp_sweep_describe(s, p, at, sizeof at);
+                ADD("%s%s", shown++ ? "; " : " (", at);
+            }
+        }
+        ADD("%s", t.infeasible <= 3 ? ")" : "");
+    }
+    if (t.failed) {
+        ADD("; %d failed (the message column of sweep.csv says why)", t.failed);
+    }
+    ADD(".");
+}
+
+int zp_sweep_out_has_figure(const zp_sweep_out *o) {
+    return o->s->nvary <= 2;
+}
+
+/* half a grid step of vary v (a tenth of the value, or 0.5, for a single value) */
+static double half_step(const zp_sweep_vary *v) {
+    if (v->n > 1 && v->b > v->a) {
+        return 0.5 * (v->b - v->a) / (v->n - 1);
+    }
+    return fabs(v->a) > 0 ? 0.1 * fabs(v->a) : 0.5;
+}
+
+static void axis(FILE *f, const char *ax, const zp_sweep_vary *v) {
+    double h = half_step(v);
+    fprintf(f, "set %slabel '[%s] %s%s'\nset %srange [%.9g:%.9g]\n", ax, v->section, v->key,
+            v->kind == ZP_VARY_SCALE ? " (factor on the values in the scene)" : "", ax, v->a - h,
+            v->b + h);
+}
+
+static void script_line(FILE *f, const zp_sweep_out *o, const char *col, const tally *t) {
+    double span = fmax(t->tmax - t->tmin, fmax(0.02 * fabs(t->tmax), 1e-3));
+    double lo = t->found ? t->tmin - 0.2 * span : 0, hi = t->found ? t->tmax + 0.1 * span : 1;
+    double mark = t->found ? t->tmin - 0.12 * span : 0.5; /* where unfound points are marked */
+    axis(f, "x", &o->s->vary[0]);
+    fprintf(f,
+            "set ylabel 'finish time (s)'\nset yrange [%.9g:%.9g]\n"
+            "set key outside below horizontal\n"
+            "plot 'sweep.csv' using '%s':(strcol('found') eq '1' ? column('time_s') : NaN) "
+            "with linespoints pt 7 ps 0.8 lw 2 lc rgb '#2ca02c' title '%s', \\\n"
+            "     '' using '%s':(strcol('status') eq 'ok' && strcol('found') eq '0' ? %.9g : NaN) "
+            "with points pt 2 ps 1.6 lw 2 lc rgb '#d62728' title '%s', \\\n"
+            "     '' using '%s':(strcol('status') eq 'failed' ? %.9g : NaN) "
+            "with points pt 8 ps 1.6 lw 2 lc rgb 'black' title 'failed'\n",
+            lo, hi, col,
+            o->s->kind == ZP_STUDY_SEARCH ? "fastest schedule that keeps the limits"
+                                          : "the [drive] forces",
+            col, mark,
+            o->s->kind == ZP_STUDY_SEARCH ? "no schedule keeps the limits"
+                                          : "does not finish with the margin kept",
+            col, mark);
+}
+
+static void script_heat(FILE *f, const zp_sweep_out *o, const char *c1, const char *c2) {
+    double dx = half_step(&o->s->vary[0]), dy = half_step(&o->s->vary[1]);
+    axis(f, "x", &o->s->vary[0]);
+    axis(f, "y", &o->s->vary[1]);
+    fprintf(f,
+            "set cblabel 'finish time (s)'\n"
+            "set palette defined (0 '#fde725', 1 '#5ec962', 2 '#21918c', 3 '#3b528b', "
+            "4 '#440154')\n"
+            "set style fill solid 1 noborder\n"
+            "set key outside below horizontal\nunset grid\n"
+            "plot 'sweep.csv' using '%s':'%s':(%.9g):(%.9g):(strcol('found') eq '1' ? "
+            "column('time_s') : NaN) with boxxyerror lc palette notitle, \\\n"
+            "     '' using (strcol('status') eq 'ok' && strcol('found') eq '0' ? column('%s') : "
+            "NaN):'%s':(%.9g):(%.9g) with boxxyerror lc rgb '#8c2d2d' title '%s', \\\n"
+            "     '' using (strcol('status') eq 'failed' ? column('%s') : NaN):'%s':(%.9g):(%.9g) "
+            "with boxxyerror lc rgb 'black' title 'failed'\n",
+            c1, c2, dx, dy, c1, c2, dx, dy,
+            o->s->kind == ZP_STUDY_SEARCH ? "no schedule keeps the limits"
+                                          : "does not finish with the margin kept",
+            c1, c2, dx, dy);
+}
+
+void zp_sweep_out_script(FILE *f, const zp_sweep_out *o) {
+    tally t = count(o);
+    char c1[64], c2[64], name[128];
+    size_t k = 0;
+    for (; o->scene[k] && k + 1 < sizeof name; k++) { /* nothing in a name ends the string */
+        name[k] = o->scene[k] == '\'' || o->scene[k] == '\\' ? '`' : o->scene[k];
+    }
+    name[k] = '\0';
+    zp_sweep_column(&o->s->vary[0], c1, sizeof c1);
+    fprintf(f,
+            "# sweep.png (zipopt sweep); sweep.csv is its data. Run `gnuplot sweep.gp` here to "
+            "redraw.\n"
+            "set terminal pngcairo size 1000,700 noenhanced font 'DejaVu Sans,11' linewidth 1.3\n"
+            "set output 'sweep.png'\nset encoding utf8\nset datafile separator comma\n"
+            "set border lc rgb '#555555'\nset grid lc rgb '#e6e6e6' lt 1 lw 0.8\n"
+            "set title 'Design study of %s: %s'\n",
+            name,
+            o->s->kind == ZP_STUDY_SEARCH ? "finish time of the fastest schedule that keeps "
+                                            "the limits"
+                                          : "finish time of the [drive] forces");
+    if (o->s->nvary == 1) {
+        script_line(f, o, c1, &t);
+    } else {
+        zp_sweep_column(&o->s->vary[1], c2, sizeof c2);
+        script_heat(f, o, c1, c2);
+    }
+}
+
+static void point_json(FILE *f, const zp_sweep_out *o, int p) {
+    if (p < 0) {
+        fputs("null", f);
+        return;
+    }
+    fprintf(f, "{\"point\": %d, \"time\": ", p);
+    zp_out_json_number(f, o->rows[p].time);
+    fputs(", \"values\": [", f);
+    for (int v = 0; v < o->s->nvary; v++) {
+        fputs(v ? ", " : "", f);
+        zp_out_json_number(f, zp_sweep_value(o->s, v, p));
+    }
+    fputs("], \"forces\": [", f);
+    for (int k = 0; k < o->np; k++) {
+        fputs(k ? ", " : "", f);
+        zp_out_json_number(f, o->rows[p].force[k]);
+    }
+    fputs("]}", f);
+}
+
+void zp_sweep_out_json(FILE *f, const zp_sweep_out *o, const char *summary) {
+    tally t = count(o);
+    fputs("{\n  \"scene\": ", f);
+    zp_out_json_string(f, o->scene);
+    fprintf(f, ",\n  \"run\": \"%s\",\n  \"points\": %d,\n  \"vary\": [",
+            zp_study_kind_name(o->s->kind), o->s->npoint);
+    for (int v = 0; v < o->s->nvary; v++) {
+        const zp_sweep_vary *va = &o->s->vary[v];
+        fprintf(f, "%s{\"key\": \"%s.%s\", \"factor\": %s, \"from\": ", v ? ", " : "", va->section,
+                va->key, va->kind == ZP_VARY_SCALE ? "true" : "false");
+        zp_out_json_number(f, va->a);
+        fputs(", \"to\": ", f);
+        zp_out_json_number(f, va->b);
+        fprintf(f, ", \"values\": %d}", va->n);
+    }
+    fprintf(f, "],\n  \"found\": %d,\n  \"infeasible\": %d,\n  \"failed\": %d,\n  \"fastest\": ",
+            t.found, t.infeasible, t.failed);
+    point_json(f, o, t.fastest);
+    fputs(",\n  \"slowest\": ", f);
+    point_json(f, o, t.slowest);
+    fputs(",\n  \"summary\": ", f);
+    zp_out_json_string(f, summary);
+    fputs("\n}\n", f);
+}

@@ -1,0 +1,143 @@
+/* The study's grid (sweep.c) and rows (sweep_csv.c): --vary checks, grid values that end
+   exactly at B, each point's scene text read back by the scene reader with the value set (and
+   every other key untouched), list keys scaled item by item, and rows that read back from the
+   CSV to the same line. Independent expectations: the reader's own parse of hand-written
+   values, and products computed here. */
+#include <string.h>
+
+#include "check.h"
+#include "scene_read.h"
+#include "sweep_csv.h"
+
+static const char *base = "; a scene with comments\n"
+                          "[scene]\nname = t\n[course]\nx_start = 0\nsection = 20 : -x/10 + 10\n"
+                          "[trolley]\nmass = 30   ; kg\n"
+                          "[body]\nlengths = 1, 2\nmasses = 5, 3 # kg\ndamping = 2\n"
+                          "[drive]\nforces = 100\n";
+
+static zp_sweep grid(const char *v1, const char *v2) {
+    zp_sweep s = {0};
+    char why[512];
+    zp_sweep_vary v;
+    CHECK(zp_sweep_vary_parse(v1, &v, why, sizeof why) == 0 &&
+          zp_sweep_add(&s, &v, why, sizeof why) == 0);
+    if (v2) {
+        CHECK(zp_sweep_vary_parse(v2, &v, why, sizeof why) == 0 &&
+              zp_sweep_add(&s, &v, why, sizeof why) == 0);
+    }
+    return s;
+}
+
+static int load(const char *text, zp_scene *sc) {
+    zp_diag d;
+    zp_diag_init(&d);
+    int rc = zp_scene_load_string(text, "t.ini", sc, &d);
+    zp_diag_print(&d, stderr);
+    return rc;
+}
+
+static void bad_vary(const char *text, const char *says) {
+    zp_sweep_vary v;
+    char why[1024] = "";
+    CHECK(zp_sweep_vary_parse(text, &v, why, sizeof why) == -1);
+    if (!strstr(why, says)) {
+        fprintf(stderr, "--vary %s: '%s' does not say '%s'\n", text, why, says);
+        CHECK(0);
+    }
+}
+
+int main(void) {
+    bad_vary("body.mass=1:2:3", "unknown key body.mass");
+    bad_vary("bodi.masses=1:2:3", "unknown key");
+    bad_vary("body.masses=2:1:3", "expected A <= B");
+    bad_vary("body.masses=1:2:0", "N = 0");
+    bad_vary("drive.direction=1:2:3", "not a number");
+    bad_vary("body.masses", "not SECTION.KEY=A:B:N");
+    bad_vary("body.masses=1:2", "not A:B:N");
+    bad_vary("body.masses=1:x:2", "A and B must be numbers");
+    bad_vary("optimize.seed=1:2:3", "whole numbers");
+
+    /* the grid: first key fastest, the ends exactly A and B */
+    zp_sweep s = grid("trolley.mass=0.1:0.7:7", "body.masses=0.8:1.2:3");
+    CHECK(s.npoint == 21);
+    CHECK(zp_sweep_value(&s, 0, 6) == 0.7 && zp_sweep_value(&s, 0, 7) == 0.1);
+    CHECK(zp_sweep_value(&s, 1, 6) == 0.8 && zp_sweep_value(&s, 1, 7) == 1.0);
+    CHECK(zp_sweep_value(&s, 1, 20) == 1.2);
+    char why[512];
+    zp_sweep_vary v;
+    CHECK(zp_sweep_vary_parse("trolley.mass=1:2:2", &v, why, sizeof why) == 0);
+    CHECK(zp_sweep_add(&s, &v, why, sizeof why) == -1 && strstr(why, "twice"));
+
+    /* each point's text through the reader: the value set, the rest as in base */
+    static zp_scene sc0, sc;
+    CHECK(load(base, &sc0) == ZP_OK);
+    for (int p = 0; p < s.npoint; p++) {
+        char *t = zp_sweep_point_text(&s, base, p, why, sizeof why);
+        CHECK(t && load(t, &sc) == ZP_OK);
+        double f = zp_sweep_value(&s, 1, p);
+        CHECK(sc.trolley_mass == zp_sweep_value(&s, 0, p));
+        CHECK(sc.nlink == 2 && sc.masses[0] == 5 * f && sc.masses[1] == 3 * f);
+        CHECK(sc.lengths[1] == 2 && sc.damping[0] == 2 && sc.forces[0] == 100);
+        CHECK(strstr(t, "; a scene with comments") != NULL);
+        free(t);
+    }
+    /* a key the scene lacks joins its section; a section the scene lacks is added */
+    s = grid("body.death_angle=90:90:1", "solver.t_max=33:33:1");
+    char *t = zp_sweep_point_text(&s, base, 0, why, sizeof why);
+    CHECK(t && load(t, &sc) == ZP_OK && sc.death_angle == 90 && sc.t_max == 33);
+    CHECK(sc.masses[0] == 5 && sc.trolley_mass == 30);
+    free(t);
+    /* a list key that is absent has nothing to scale */
+    s = grid("drive.forces=1:2:2", NULL);
+    t = zp_sweep_point_text(&s, "[drive]\nmin = 0\n", 0, why, sizeof why);
+    CHECK(t == NULL && strstr(why, "nothing to scale"));
+
+    /* numbers in the fewest digits that read back exactly */
+    const double xs[] = {
+        100, 0.1, 1.0 / 3, 1e-300, -2.5e17, 123456789.123456789, 0, 9.045888853521665};
+    for (int i = 0; i < (int)(sizeof xs / sizeof xs[0]); i++) {
+        char buf[32];
+        zp_sweep_format(xs[i], buf, sizeof buf);
+        CHECK(strtod(buf, NULL) == xs[i]);
+    }
+    char buf[32];
+    zp_sweep_format(100, buf, sizeof buf);
+    CHECK(!strcmp(buf, "100"));
+
+    /* a row written, read back and written again: the same line */
+    s = grid("trolley.mass=10:20:3", NULL);
+    zp_study_row r = {.found = 1,
+                      .outcome = ZP_OUTCOME_FINISHED,
+                      .time = 1.0 / 3,
+                      .margin = 10.000000000000002,
+                      .verified = 1,
+                      .evals = 1234,
+                      .np = 2,
+                      .force = {0.1, 500},
+                      .limit = "margin+drive.max"},
+                 back;
+    char *l1 = NULL, *l2 = NULL;
+    size_t n1, n2;
+    for (int failed = 0; failed <= 1; failed++) {
+        r.failed = failed;
+        snprintf(r.message, sizeof r.message, "%s", failed ? "t = 3, x = 4: \"no\" progress" : "");
+        FILE *f = open_memstream(&l1, &n1);
+        zp_sweep_csv_row(f, &s, 1, &r);
+        fclose(f);
+        l1[strcspn(l1, "\n")] = '\0';
+        int p = -1;
+        CHECK(zp_sweep_csv_parse(l1, &s, 2, &p, &back) == 0 && p == 1);
+        CHECK(back.failed == failed);
+        CHECK(failed || (back.time == r.time && back.margin == r.margin && back.force[0] == 0.1 &&
+                         back.evals == 1234 && !strcmp(back.limit, r.limit)));
+        f = open_memstream(&l2, &n2);
+        zp_sweep_csv_row(f, &s, p, &back);
+        fclose(f);
+        l2[strcspn(l2, "\n")] = '\0';
+        CHECK(!strcmp(l1, l2));
+        CHECK(zp_sweep_csv_parse(l1, &s, 3, &p, &back) == -1); /* another study's width */
+        free(l1);
+        free(l2);
+    }
+    return CHECK_DONE();
+}
