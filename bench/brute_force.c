@@ -1,6 +1,7 @@
-/* A brute-force reference for the search (issue 4): uniform random schedules over the scene's
-   [drive] box, on every core, for a fixed wall time; the fastest that finishes with the margin
-   kept. Same integrator as the search's runs ([optimize] method, rtol).
+/* A brute-force reference for the search: uniform random schedules over the scene's [drive]
+   box through the per-thread simulator pool, in batches, for a fixed wall time; the fastest
+   that finishes with the margin kept (the search's own objective and constraint). Same
+   integrator as the search's runs ([optimize] method, rtol).
    Usage: brute_force SCENE.ini SECONDS [SEED] */
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_rng.h>
@@ -9,7 +10,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "pool.h"
 #include "setup.h"
+
+#define BATCH 512 /* schedules drawn, then run in parallel */
 
 int main(int argc, char **argv) {
     if (argc < 3) {
@@ -24,60 +28,53 @@ int main(int argc, char **argv) {
     if (zp_setup_load("brute_force", argv[1], &none, &st)) {
         return 2;
     }
-    const zp_model *m = st.m;
-    const zp_sim_opts o = st.search;
     const zp_schedule *box = &st.sched; /* [drive] min, max */
-    double limit = st.limit;
-    int nt = omp_get_max_threads();
-    zp_sim **sims = malloc(sizeof *sims * nt);
-    for (int i = 0; i < nt; i++) {
-        sims[i] = zp_sim_create(m, &o); /* serially: libmatheval is not thread-safe */
+    int np = box->np;
+    zp_objective ob = {.m = st.m, .limit = st.limit, .t_max = st.search.t_max, .shape = box};
+    zp_pool *pool = zp_pool_create(st.m, &st.search, 0);
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    double *f = malloc(sizeof *f * BATCH * np);
+    zp_eval *e = malloc(sizeof *e * BATCH);
+    if (!pool || !rng || !f || !e) {
+        fputs("brute_force: out of memory\n", stderr);
+        return 1;
     }
-    double best_t = INFINITY, best_f[ZP_MAX_SECTIONS] = {0};
+    gsl_rng_set(rng, seed);
+    double best_t = INFINITY, best_f[ZP_SCHED_MAX_PARAMS] = {0};
     long total = 0, feasible = 0;
     double t0 = omp_get_wtime();
-#pragma omp parallel reduction(+ : total, feasible)
-    {
-        int id = omp_get_thread_num();
-        gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-        gsl_rng_set(rng, seed * 1000 + id);
-        zp_result res;
-        zp_result *r = &res;
-        zp_schedule sched = *box;
-        double *f = sched.p;
-        zp_input in = {.sched = &sched};
-        while (omp_get_wtime() - t0 < seconds) {
-            for (int k = 0; k < sched.np; k++) {
-                f[k] = box->lo[k] + (box->hi[k] - box->lo[k]) * gsl_rng_uniform(rng);
-            }
+    while (omp_get_wtime() - t0 < seconds) {
+        for (int i = 0; i < BATCH * np; i++) {
+            int k = i % np;
+            f[i] = box->lo[k] + (box->hi[k] - box->lo[k]) * gsl_rng_uniform(rng);
+        }
+        zp_pool_eval(pool, &ob, BATCH, f, e, NULL, NULL);
+        for (int i = 0; i < BATCH; i++) {
             total++;
-            if (zp_sim_run(m, sims[id], &in, r) || r->outcome != ZP_OUTCOME_FINISHED) {
-                continue;
-            }
-            int ok = 1;
-            for (int i = 0; i < m->nlink; i++) {
-                ok &= r->max_rel_angle[i] <= limit;
-            }
-            if (!ok) {
+            if (!zp_objective_feasible(&e[i])) {
                 continue;
             }
             feasible++;
-#pragma omp critical
-            if (r->time < best_t) {
-                best_t = r->time;
-                for (int k = 0; k < m->nsec; k++) {
-                    best_f[k] = f[k];
+            if (e[i].time < best_t) {
+                best_t = e[i].time;
+                for (int k = 0; k < np; k++) {
+                    best_f[k] = f[(size_t)i * np + k];
                 }
             }
         }
-        gsl_rng_free(rng);
     }
+    double wall = omp_get_wtime() - t0;
     printf("brute force: %ld schedules in %.0f s on %d threads (%.0f/s), %ld finish with the "
-           "margin\nbest: %.6f s at", total, omp_get_wtime() - t0, nt,
-           total / (omp_get_wtime() - t0), feasible, best_t);
-    for (int k = 0; k < m->nsec; k++) {
+           "margin\nbest: %.6f s at",
+           total, wall, zp_pool_threads(pool), total / wall, feasible, best_t);
+    for (int k = 0; k < np; k++) {
         printf(" %.4f", best_f[k]);
     }
-    printf(" N\n");
+    printf("\n");
+    zp_pool_free(pool);
+    gsl_rng_free(rng);
+    free(f);
+    free(e);
+    zp_setup_free(&st);
     return 0;
 }

@@ -40,7 +40,7 @@ _zipopt() {
         _zipopt_add < <(compgen -W "search simulate" -- "$cur")
         return
         ;;
-    --force | --vary | --seed | --max-evals | --sample-times | --frames-at | --fps | --size | \
+    --force | --vary | --seed | --max-evals | --max-time | --sample-times | --frames-at | --fps | --size | \
         --speedup | --force-range | --slice | --range | --repeats)
         return # a value the user types
         ;;
@@ -53,7 +53,7 @@ _zipopt() {
     landscape) opts="--force-range --slice --range --force --schedule --out --json --help" ;;
     sweep) opts="--vary --run --out --resume --json --help" ;;
     bench) opts="--repeats --out --help" ;;
-    *) opts="--out --algorithm --seed --max-evals --no-plot --help --help-all --version" ;;
+    *) opts="--out --algorithm --seed --max-evals --max-time --no-plot --help --help-all --version" ;;
     esac
     if [[ $cur == -* ]]; then
         _zipopt_add < <(compgen -W "$opts" -- "$cur")

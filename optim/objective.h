@@ -33,6 +33,10 @@ typedef struct zp_objective {
                                 that survives the nominal scene is held to each scenario */
 } zp_objective;
 
+/* How many parameters the search varies: ob->shape's, or one force per section. */
+static inline int zp_objective_nparams(const zp_objective *ob) {
+    return ob->shape ? ob->shape->np : ob->m->nsec;
+}
 /* The schedule the search's parameters p stand for (ob->shape with p). */
 zp_schedule zp_objective_schedule(const zp_objective *ob, const double *p);
 /* Runs the schedule of parameters p on the workspace s and scores it: in the nominal scene,

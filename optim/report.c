@@ -1,139 +1,198 @@
-/* report.md, schedule.ini and summary.json of the search (issue 4 item 5; CLI.md "Files").
-   Angles in degrees, speeds in m/s and km/h, everything else SI. */
+/* report.md of the search (CLI.md "Files"), one function per section. Angles in degrees,
+   speeds in m/s and km/h, everything else SI. */
 #include "report.h"
 
 #include <math.h>
 
-#include "out_json.h"
-
 #define DEG (180.0 / M_PI)
 #define KMH 3.6
-#define BRAKE_KMH 10     /* zip-line practice: arriving faster than this needs a brake */
-#define ACTIVE_KMH 24    /* ... and active brakes stop riders up to about this */
-
-void zp_report_write_schedule(FILE *f, const zp_scene *sc, const zp_schedule *sched,
-                              const char *comment) {
-    char text[ZP_SCHED_MAX_PARAMS * 26];
-    zp_schedule_format(sched, text, sizeof text);
-    fprintf(f, "; %s\n; scene: %s\n[drive]\nforces = %s\n", comment, sc->name, text);
-}
-
-static double largest_angle(const zp_model *m, const zp_result *r) {
-    double a = 0;
-    for (int i = 0; i < m->nlink; i++) {
-        a = fmax(a, r->max_rel_angle[i]);
-    }
-    return a;
-}
+#define BRAKE_KMH 10  /* zip-line practice: arriving faster than this needs a brake */
+#define ACTIVE_KMH 24 /* ... and active brakes stop riders up to about this */
 
 static const char *rerun_scene(const zp_report *r) {
     return r->scene_arg ? r->scene_arg : "config/seed.ini";
 }
 
-static void json_robust(FILE *f, const zp_verify *v) {
-    if (!v->robust_done) {
-        fputs("null", f);
-        return;
-    }
-    fputs("{\"levels\": [", f);
-    for (int i = 0; i < ZP_VERIFY_LEVELS; i++) {
-        const zp_robust *rb = &v->rob[i];
-        fprintf(f, "{\"level\": %g, \"runs\": %d, \"survived\": %d, \"margin_kept\": %d}%s",
-                rb->level, rb->n, rb->survived, rb->kept, i + 1 < ZP_VERIFY_LEVELS ? ", " : "");
-    }
-    fputs("], \"smallest_kill\": ", f);
-    if (v->kill_found) {
-        fprintf(f, "{\"relative\": %.6g, \"section\": ", v->kill);
-        if (v->kill_section) {
-            fprintf(f, "%d}", v->kill_section);
-        } else {
-            fputs("null}", f);
-        }
+void zp_report_convergence(char *buf, size_t n, const zp_search_result *s) {
+    int k = 0;
+    if (!s->found) {
+        k = snprintf(buf, n, "no survivable schedule was found in %d rounds", s->nrounds);
+    } else if (s->nstarts == 0) {
+        k = snprintf(buf, n, "the scan found this schedule; no local polish ran");
     } else {
-        fputs("null", f);
+        k = snprintf(buf, n,
+                     "%d of %d polishes reached this schedule (within %g %% of its "
+                     "time); they ended at %d distinct survivable schedule%s",
+                     s->nreached, s->nstarts, 100 * ZP_SEARCH_REACH, s->nbasins,
+                     s->nbasins == 1 ? "" : "s");
     }
-    fputc('}', f);
-}
-
-/* the robust search's key (CLI.md): its scenarios, and the answer on fresh ones */
-static void json_scenarios(FILE *f, const zp_report *r) {
-    const zp_robust_check *c = r->check;
-    fprintf(f, ",\n  \"robust\": {\"scenarios\": %d, \"corners\": %d, \"added\": %d, "
-               "\"rounds\": %d, \"worst_margin_deg\": ",
-            r->set->n, r->set->ncorner, r->rinfo->added, r->rinfo->rounds);
-    /* the smallest margin seen: on the fresh scenarios or the adversary's worst */
-    zp_out_json_number(f, fmin(c->worst_margin_deg, r->rinfo->worst.margin_deg));
-    fprintf(f, ", \"scenario_runs\": %ld, \"verify\": {\"samples\": %d, \"survived\": %d, "
-               "\"margin_kept\": %d, \"limits_kept\": %d, \"all_kept\": %d, \"lower_95\": ",
-            r->set->runs, c->samples, c->survived, c->margin_kept, c->limits_kept, c->all_kept);
-    zp_out_json_number(f, c->lower_95);
-    fputs("}}", f);
-}
-
-void zp_report_write_json(FILE *f, const zp_report *r) {
-    const zp_search_result *s = r->res;
-    const zp_result *run = r->v->run;
-    const zp_model *m = r->m;
-    fputs("{\n  \"scene\": ", f);
-    zp_out_json_string(f, r->sc->name);
-    fputs(",\n  \"forces\": [", f);
-    for (int k = 0; k < m->nsec; k++) {
-        zp_out_json_number(f, s->force[k]);
-        fputs(k + 1 < m->nsec ? ", " : "]", f);
-    }
-    fprintf(f, ",\n  \"found\": %s,\n  \"outcome\": \"%s\",\n  \"time\": ", s->found ? "true" : "false",
-            zp_sim_outcome_name(run->outcome));
-    zp_out_json_number(f, run->time);
-    fputs(",\n  \"time_error\": ", f);
-    zp_out_json_number(f, fabs(run->time - r->v->tight->time));
-    fputs(",\n  \"margin_deg\": ", f);
-    zp_out_json_number(f, (m->phi_max - largest_angle(m, run)) * DEG);
-    fputs(",\n  \"max_rel_angle\": [", f);
-    for (int i = 0; i < m->nlink; i++) {
-        zp_out_json_number(f, run->max_rel_angle[i] * DEG);
-        fputs(i + 1 < m->nlink ? ", " : "]", f);
-    }
-    fprintf(f, ",\n  \"verified\": %s,\n  \"arrival_speed\": ", r->v->agree ? "true" : "false");
-    zp_out_json_number(f, run->v);
-    fputs(",\n  \"peak_speed\": ", f);
-    zp_out_json_number(f, run->max_speed);
-    fprintf(f, ",\n  \"evaluations\": %ld,\n  \"wall_s\": ", s->evals);
-    zp_out_json_number(f, s->wall_s);
-    fprintf(f, ",\n  \"algorithm\": \"%s\",\n  \"seed\": %lu,\n  \"interrupted\": %s", r->algo,
-            r->seed, s->interrupted ? "true" : "false");
-    fputs(",\n  \"baseline\": ", f);
-    if (s->base_found) {
-        fputs("{\"force\": ", f);
-        zp_out_json_number(f, s->base_force);
-        fputs(", \"time\": ", f);
-        zp_out_json_number(f, s->base.time);
-        fputc('}', f);
+    const char *tail;
+    if (s->converged) {
+        tail = "; the last round found nothing better: a larger budget is unlikely to help";
+    } else if (s->budget_out) {
+        tail = "; the budget ran out before the search converged: a larger budget "
+               "(--max-evals) may help";
+    } else if (s->timed_out) {
+        tail = "; --max-time ran out before the search converged: more time may help";
+    } else if (s->interrupted) {
+        tail = "; interrupted before the search converged";
     } else {
-        fputs("null", f);
+        tail = "; the rounds ran out before the search converged";
     }
-    fputs(",\n  \"study\": {\"force\": ", f);
-    zp_out_json_number(f, r->study_force);
-    fprintf(f, ", \"outcome\": \"%s\", \"time\": ", zp_sim_outcome_name(r->study->outcome));
-    zp_out_json_number(f, r->study->time);
-    fputs("},\n  \"robustness\": ", f);
-    json_robust(f, r->v);
-    fputs(",\n  \"limits\": ", f);
-    zp_out_json_limits(f, m, run, r->lim);
-    if (r->box) {
-        json_scenarios(f, r);
+    if (k >= 0 && (size_t)k < n) {
+        snprintf(buf + k, n - k, "%s", tail);
     }
-    fputs(",\n  \"history\": [", f);
-    for (int i = 0; i < s->nhist; i++) {
-        fprintf(f, "[%ld, ", s->hist[i].evals);
-        zp_out_json_number(f, s->hist[i].time);
-        fputs(i + 1 < s->nhist ? "], " : "]", f);
-    }
-    fputs("]\n}\n", f);
 }
 
 static void md_gain(FILE *f, const char *what, double t_best, double t_other) {
     fprintf(f, "- over %s: %.3f s faster (%.1f %%)\n", what, t_other - t_best,
             100 * (t_other - t_best) / t_other);
+}
+
+static void md_head(FILE *f, const zp_report *r) {
+    const zp_search_result *s = r->res;
+    fprintf(f, "# Best forcing: %s\n\n", r->sc->name);
+    if (s->interrupted) {
+        fputs("**Interrupted**: the search was stopped before its end; this is the best found "
+              "so far.\n\n",
+              f);
+    }
+    if (!s->found) {
+        fputs("**No survivable schedule was found** within the budget: below is the schedule "
+              "that came closest.\n\n",
+              f);
+    }
+}
+
+static void md_schedule(FILE *f, const zp_report *r) {
+    const zp_model *m = r->m;
+    fputs("## Schedule\n\n| section | x from (m) | x to (m) | force (N) |\n|---|---|---|---|\n", f);
+    for (int k = 0; k < m->nsec; k++) {
+        fprintf(f, "| %d | %g | %g | %.4f |\n", k + 1, m->xb[k], m->xb[k + 1], r->res->force[k]);
+    }
+    fprintf(f, "\nDrive: %s; bounds [%g, %g] N.\n\n", zp_drive_dir_name(m->drive),
+            r->shape->lo[0], r->shape->hi[0]);
+}
+
+static void md_result(FILE *f, const zp_report *r) {
+    const zp_verify *v = r->v;
+    const zp_result *run = v->run;
+    fputs("## Result\n\n", f);
+    double err = fabs(run->time - v->tight->time);
+    if (run->outcome == ZP_OUTCOME_FINISHED) {
+        fprintf(f,
+                "Finish time: **%.4f s** (error estimate %.1e s: the same run at a %gx "
+                "tighter tolerance finishes at %.6f s).\n",
+                run->time, err, ZP_ESTIMATE_FACTOR, v->tight->time);
+    } else {
+        fprintf(f, "Outcome: **%s** at t = %.4f s, x = %.2f m.\n",
+                zp_sim_outcome_name(run->outcome), run->time, run->x);
+    }
+    fprintf(f, "Verification at rtol %.0e, atol %.0e: ", v->rtol, v->atol);
+    if (v->agree) {
+        fprintf(f, "same outcome, finish times agree within %g s, margin kept.\n\n", ZP_VERIFY_DT);
+    } else {
+        fputs("**does not agree** (outcome, finish time or margin differ).\n\n", f);
+    }
+}
+
+static void md_margins(FILE *f, const zp_report *r) {
+    const zp_scene *sc = r->sc;
+    fprintf(f,
+            "## Margin per joint\n\nDeath at %g deg; the search keeps %g deg below it "
+            "(limit %g deg).\n\n| joint | largest relative angle (deg) | margin (deg) |\n"
+            "|---|---|---|\n",
+            sc->death_angle, sc->margin, sc->death_angle - sc->margin);
+    for (int i = 0; i < r->m->nlink; i++) {
+        double a = r->v->run->max_rel_angle[i] * DEG;
+        fprintf(f, "| %d | %.3f | %.3f |\n", i + 1, a, sc->death_angle - a);
+    }
+}
+
+static void md_gains(FILE *f, const zp_report *r) {
+    const zp_search_result *s = r->res;
+    const zp_result *run = r->v->run, *study = r->study;
+    int fin = run->outcome == ZP_OUTCOME_FINISHED;
+    fputs("\n## Gain\n\n", f);
+    if (fin && s->base_found) {
+        char what[128];
+        snprintf(what, sizeof what, "the best constant push (%.3f N, %.4f s)", s->base_force,
+                 s->base.time);
+        md_gain(f, what, run->time, s->base.time);
+    } else if (fin) {
+        fputs("- over the best constant push: missing (no constant push the search ran kept the "
+              "margin)\n",
+              f);
+    }
+    if (fin && study->outcome == ZP_OUTCOME_FINISHED) {
+        char what[128];
+        snprintf(what, sizeof what, "the study's %g N (%.4f s)", r->study_force, study->time);
+        md_gain(f, what, run->time, study->time);
+    } else {
+        fprintf(f, "- the study's %g N everywhere does not finish: %s at t = %.3f s, x = %.2f m",
+                r->study_force, zp_sim_outcome_name(study->outcome), study->time, study->x);
+        if (study->died_link) {
+            fprintf(f, " (joint of link %d looped)", study->died_link);
+        }
+        fputs("\n", f);
+    }
+}
+
+static void md_speeds(FILE *f, const zp_result *run) {
+    fputs("\n## Speeds\n\n", f);
+    fprintf(f, "- arrival: %.2f m/s = %.1f km/h\n- peak: %.2f m/s = %.1f km/h\n\n", run->v,
+            run->v * KMH, run->max_speed, run->max_speed * KMH);
+    double arr = run->v * KMH;
+    if (arr > ACTIVE_KMH) {
+        fprintf(f,
+                "Arrival above %d km/h: faster than active zip-line brakes stop (about %d "
+                "km/h); this schedule needs a longer run-out or a braking section.\n\n",
+                ACTIVE_KMH, ACTIVE_KMH);
+    } else if (arr > BRAKE_KMH) {
+        fprintf(f,
+                "Arrival above %d km/h: zip-line practice calls for a brake (active brakes "
+                "stop up to about %d km/h).\n\n",
+                BRAKE_KMH, ACTIVE_KMH);
+    } else {
+        fprintf(f, "Arrival at or below %d km/h: no brake needed by zip-line practice.\n\n",
+                BRAKE_KMH);
+    }
+}
+
+static void md_kinks(FILE *f, const zp_report *r) {
+    fputs("## Kink impulses\n\n", f);
+    int n;
+    const zp_crossing *cross = zp_sim_crossings(r->best, &n);
+    if (n == 0) {
+        fputs("No kinks crossed.\n", f);
+        return;
+    }
+    fputs("| t (s) | x (m) | sections | impulse (N s) | energy lost (J) |\n"
+          "|---|---|---|---|---|\n",
+          f);
+    for (int i = 0; i < n; i++) {
+        const zp_crossing *c = &cross[i];
+        fprintf(f, "| %.4f | %g | %d -> %d | %.3f | %.2f |\n", c->t, c->x, c->from + 1, c->to + 1,
+                c->impulse, c->energy_lost);
+    }
+}
+
+/* design loads of the best run, sampled at every step (MODEL.md sign conventions) */
+static void md_loads(FILE *f, const zp_report *r) {
+    const zp_load_peaks *pk = &r->v->run->peaks;
+    fputs("\n## Loads\n\n| joint | peak reaction (N) | link | peak felt acceleration (g) |\n"
+          "|---|---|---|---|\n",
+          f);
+    for (int i = 0; i < r->m->nlink; i++) {
+        fprintf(f, "| %d | %.1f | %d | %.2f |\n", i + 1, pk->joint[i], i + 1, pk->acc_g[i]);
+    }
+    fprintf(f,
+            "\nNormal force of the course on the trolley: %.1f N to %.1f N%s. Felt "
+            "acceleration is |a - g| at a link's centre of mass (1 g hanging at rest).\n",
+            pk->normal_min, pk->normal_max,
+            pk->normal_min < 0 ? " (negative: the trolley pulls on the course, which must "
+                                 "hold it from above too)"
+                               : "");
 }
 
 /* each [limits] value of the best run against its limit */
@@ -210,137 +269,20 @@ static void md_survivable(FILE *f, const zp_report *r) {
     }
 }
 
-void zp_report_write_md(FILE *f, const zp_report *r) {
+static void md_search(FILE *f, const zp_report *r) {
     const zp_search_result *s = r->res;
-    const zp_verify *v = r->v;
-    const zp_result *run = v->run;
-    const zp_model *m = r->m;
-    const zp_scene *sc = r->sc;
-    int fin = run->outcome == ZP_OUTCOME_FINISHED;
-
-    fprintf(f, "# Best forcing: %s\n\n", sc->name);
-    if (s->interrupted) {
-        fputs("**Interrupted**: the search was stopped before its end; this is the best found "
-              "so far.\n\n", f);
-    }
-    if (!s->found) {
-        fputs("**No survivable schedule was found** within the budget: below is the schedule "
-              "that came closest.\n\n", f);
-    }
-
-    fputs("## Schedule\n\n| section | x from (m) | x to (m) | force (N) |\n|---|---|---|---|\n", f);
-    for (int k = 0; k < m->nsec; k++) {
-        fprintf(f, "| %d | %g | %g | %.4f |\n", k + 1, m->xb[k], m->xb[k + 1], s->force[k]);
-    }
-    fprintf(f, "\nDrive: %s; bounds [%g, %g] N.\n\n", zp_drive_dir_name(m->drive),
-            r->shape->lo[0], r->shape->hi[0]);
-
-    fputs("## Result\n\n", f);
-    double err = fabs(run->time - v->tight->time);
-    if (fin) {
-        fprintf(f, "Finish time: **%.4f s** (error estimate %.1e s: the same run at a %gx "
-                   "tighter tolerance finishes at %.6f s).\n",
-                run->time, err, ZP_ESTIMATE_FACTOR, v->tight->time);
-    } else {
-        fprintf(f, "Outcome: **%s** at t = %.4f s, x = %.2f m.\n", zp_sim_outcome_name(run->outcome),
-                run->time, run->x);
-    }
-    fprintf(f, "Verification at rtol %.0e, atol %.0e: ", v->rtol, v->atol);
-    if (v->agree) {
-        fprintf(f, "same outcome, finish times agree within %g s, margin kept.\n\n", ZP_VERIFY_DT);
-    } else {
-        fputs("**does not agree** (outcome, finish time or margin differ).\n\n", f);
-    }
-
-    fprintf(f, "## Margin per joint\n\nDeath at %g deg; the search keeps %g deg below it "
-               "(limit %g deg).\n\n| joint | largest relative angle (deg) | margin (deg) |\n"
-               "|---|---|---|\n", sc->death_angle, sc->margin, sc->death_angle - sc->margin);
-    for (int i = 0; i < m->nlink; i++) {
-        double a = run->max_rel_angle[i] * DEG;
-        fprintf(f, "| %d | %.3f | %.3f |\n", i + 1, a, sc->death_angle - a);
-    }
-
-    fputs("\n## Gain\n\n", f);
-    if (fin && s->base_found) {
-        char what[128];
-        snprintf(what, sizeof what, "the best constant push (%.3f N, %.4f s)", s->base_force,
-                 s->base.time);
-        md_gain(f, what, run->time, s->base.time);
-    } else if (fin) {
-        fputs("- no constant push within the bounds survives with the margin\n", f);
-    }
-    if (fin && r->study->outcome == ZP_OUTCOME_FINISHED) {
-        char what[128];
-        snprintf(what, sizeof what, "the study's %g N (%.4f s)", r->study_force, r->study->time);
-        md_gain(f, what, run->time, r->study->time);
-    } else {
-        fprintf(f, "- the study's %g N everywhere does not finish: %s at t = %.3f s, x = %.2f m",
-                r->study_force, zp_sim_outcome_name(r->study->outcome), r->study->time,
-                r->study->x);
-        if (r->study->died_link) {
-            fprintf(f, " (joint of link %d looped)", r->study->died_link);
-        }
-        fputs("\n", f);
-    }
-
-    fputs("\n## Speeds\n\n", f);
-    fprintf(f, "- arrival: %.2f m/s = %.1f km/h\n- peak: %.2f m/s = %.1f km/h\n\n", run->v,
-            run->v * KMH, run->max_speed, run->max_speed * KMH);
-    double arr = run->v * KMH;
-    if (arr > ACTIVE_KMH) {
-        fprintf(f, "Arrival above %d km/h: faster than active zip-line brakes stop (about %d "
-                   "km/h); this schedule needs a longer run-out or a braking section.\n\n",
-                ACTIVE_KMH, ACTIVE_KMH);
-    } else if (arr > BRAKE_KMH) {
-        fprintf(f, "Arrival above %d km/h: zip-line practice calls for a brake (active brakes "
-                   "stop up to about %d km/h).\n\n", BRAKE_KMH, ACTIVE_KMH);
-    } else {
-        fprintf(f, "Arrival at or below %d km/h: no brake needed by zip-line practice.\n\n",
-                BRAKE_KMH);
-    }
-
-    fputs("## Kink impulses\n\n", f);
-    if (run->ncross == 0) {
-        fputs("No kinks crossed.\n", f);
-    } else {
-        fputs("| t (s) | x (m) | sections | impulse (N s) | energy lost (J) |\n"
-              "|---|---|---|---|---|\n", f);
-        int n;
-        const zp_crossing *cross = zp_sim_crossings(r->best, &n);
-        for (int i = 0; i < n; i++) {
-            const zp_crossing *c = &cross[i];
-            fprintf(f, "| %.4f | %g | %d -> %d | %.3f | %.2f |\n", c->t, c->x, c->from + 1,
-                    c->to + 1, c->impulse, c->energy_lost);
-        }
-    }
-
-    /* design loads of the best run, sampled at every step (MODEL.md sign conventions) */
-    const zp_load_peaks *pk = &run->peaks;
-    fputs("\n## Loads\n\n| joint | peak reaction (N) | link | peak felt acceleration (g) |\n"
-          "|---|---|---|---|\n", f);
-    for (int i = 0; i < r->m->nlink; i++) {
-        fprintf(f, "| %d | %.1f | %d | %.2f |\n", i + 1, pk->joint[i], i + 1, pk->acc_g[i]);
-    }
-    fprintf(f, "\nNormal force of the course on the trolley: %.1f N to %.1f N%s. Felt "
-               "acceleration is |a - g| at a link's centre of mass (1 g hanging at rest).\n",
-            pk->normal_min, pk->normal_max,
-            pk->normal_min < 0 ? " (negative: the trolley pulls on the course, which must "
-                                 "hold it from above too)" : "");
-
-    md_limits(f, r);
-    if (r->box) {
-        md_survivable(f, r);
-    }
-
     fputs("\n## Search\n\n", f);
     fprintf(f, "- algorithm: %s, seed %lu, budget %ld simulations\n", r->algo, r->seed,
             r->max_evals);
-    fprintf(f, "- simulations: %ld (%ld survived with the margin, %ld gave the integrator up) "
-               "from %d local starts\n", s->evals, s->nfeasible, s->nfailed, s->nstarts);
-    fprintf(f, "- wall time: %.2f s on %d threads (%.0f simulations/s)\n", s->wall_s,
-            s->nthreads, s->evals / fmax(s->wall_s, 1e-9));
-    fprintf(f, "- integrators: the search's runs %s at rtol %g, atol %g ([optimize]); the best\n"
-               "  schedule rerun with %s at rtol %g, atol %g ([solver]) and verified %gx tighter\n",
+    fprintf(f,
+            "- simulations: %ld (%ld survived with the margin, %ld gave the integrator up) "
+            "in %d rounds of scan and polish, %d local polishes\n",
+            s->evals, s->nfeasible, s->nfailed, s->nrounds, s->nstarts);
+    fprintf(f, "- wall time: %.2f s on %d threads (%.0f simulations/s)\n", s->wall_s, s->nthreads,
+            s->evals / fmax(s->wall_s, 1e-9));
+    fprintf(f,
+            "- integrators: the search's runs %s at rtol %g, atol %g ([optimize]); the best\n"
+            "  schedule rerun with %s at rtol %g, atol %g ([solver]) and verified %gx tighter\n",
             zp_method_get(r->search->method)->name, r->search->rtol, r->search->atol, r->method,
             r->solver->rtol, r->solver->atol, ZP_ESTIMATE_FACTOR);
     if (s->nhist > 0) {
@@ -351,30 +293,44 @@ void zp_report_write_md(FILE *f, const zp_report *r) {
         }
         fprintf(f, " %ld: %.4f s\n", s->hist[s->nhist - 1].evals, s->hist[s->nhist - 1].time);
     }
+    char sentence[512];
+    zp_report_convergence(sentence, sizeof sentence, s);
+    fprintf(f, "\n### Convergence\n\n%c%s.\n",
+            sentence[0] >= 'a' && sentence[0] <= 'z' ? sentence[0] - 'a' + 'A' : sentence[0],
+            sentence + 1);
+}
 
+static void md_robustness(FILE *f, const zp_verify *v) {
     fputs("\n## Robustness\n\n", f);
     if (!v->robust_done) {
         fputs("Not measured (the search was interrupted).\n", f);
-    } else {
-        fputs("Every force scaled by 1 + p u, u uniform in [-1, 1] (seeded):\n\n"
-              "| p | runs | finished alive | margin kept |\n|---|---|---|---|\n", f);
-        for (int i = 0; i < ZP_VERIFY_LEVELS; i++) {
-            const zp_robust *rb = &v->rob[i];
-            fprintf(f, "| %g %% | %d | %.1f %% | %.1f %% |\n", 100 * rb->level, rb->n,
-                    100.0 * rb->survived / rb->n, 100.0 * rb->kept / rb->n);
-        }
-        if (!v->kill_found) {
-            fprintf(f, "\nNo change of up to %g %% killed the spy.\n",
-                    100 * v->rob[ZP_VERIFY_LEVELS - 1].level);
-        } else if (v->kill_section) {
-            fprintf(f, "\nSmallest change found that kills: %.3f %% of the force in section "
-                       "%d alone.\n", 100 * v->kill, v->kill_section);
-        } else {
-            fprintf(f, "\nSmallest change found that kills: %.3f %% (largest part of a random "
-                       "change of all forces).\n", 100 * v->kill);
-        }
+        return;
     }
+    fputs("Every force scaled by 1 + p u, u uniform in [-1, 1] (seeded):\n\n"
+          "| p | runs | finished alive | margin kept |\n|---|---|---|---|\n",
+          f);
+    for (int i = 0; i < ZP_VERIFY_LEVELS; i++) {
+        const zp_robust *rb = &v->rob[i];
+        fprintf(f, "| %g %% | %d | %.1f %% | %.1f %% |\n", 100 * rb->level, rb->n,
+                100.0 * rb->survived / rb->n, 100.0 * rb->kept / rb->n);
+    }
+    if (!v->kill_found) {
+        fprintf(f, "\nNo change of up to %g %% killed the spy.\n",
+                100 * v->rob[ZP_VERIFY_LEVELS - 1].level);
+    } else if (v->kill_section) {
+        fprintf(f,
+                "\nSmallest change found that kills: %.3f %% of the force in section "
+                "%d alone.\n",
+                100 * v->kill, v->kill_section);
+    } else {
+        fprintf(f,
+                "\nSmallest change found that kills: %.3f %% (largest part of a random "
+                "change of all forces).\n",
+                100 * v->kill);
+    }
+}
 
+static void md_figures_rerun(FILE *f, const zp_report *r) {
     if (r->figures) {
         fputs("\n## Figures\n\n"
               "The best run: the course with every centre-of-mass path, the energy account, the\n"
@@ -383,7 +339,26 @@ void zp_report_write_md(FILE *f, const zp_report *r) {
               "![joint angles](angles.png)\n\n![loads](loads.png)\n",
               f);
     }
-    fprintf(f, "\n## Rerun\n\n```\nzipopt %s --out %s          # this search\n"
-               "zipopt simulate %s --schedule %s/schedule.ini   # this schedule\n```\n",
+    fprintf(f,
+            "\n## Rerun\n\n```\nzipopt %s --out %s          # this search\n"
+            "zipopt simulate %s --schedule %s/schedule.ini   # this schedule\n```\n",
             rerun_scene(r), r->out_dir, rerun_scene(r), r->out_dir);
+}
+
+void zp_report_write_md(FILE *f, const zp_report *r) {
+    md_head(f, r);
+    md_schedule(f, r);
+    md_result(f, r);
+    md_margins(f, r);
+    md_gains(f, r);
+    md_speeds(f, r->v->run);
+    md_kinks(f, r);
+    md_loads(f, r);
+    md_limits(f, r);
+    if (r->box) {
+        md_survivable(f, r);
+    }
+    md_search(f, r);
+    md_robustness(f, r->v);
+    md_figures_rerun(f, r);
 }

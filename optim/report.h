@@ -1,5 +1,5 @@
-/* The search's outputs (issue 4 item 5): report.md, schedule.ini and summary.json for the
-   best run. Writers only: every number comes in through zp_report. */
+/* The search's outputs: report.md (report.c), summary.json (summary.c), schedule.ini and
+   checkpoint.ini (checkpoint.c). Writers only: every number comes in through zp_report. */
 #ifndef ZP_REPORT_H
 #define ZP_REPORT_H
 
@@ -38,6 +38,9 @@ typedef struct zp_report {
 void zp_report_write_schedule(FILE *f, const zp_scene *sc, const zp_schedule *sched,
                               const char *comment);
 void zp_report_write_json(FILE *f, const zp_report *r);
+/* The plain sentence on convergence: how many polishes reached the best, and whether a larger
+   budget is likely to help. */
+void zp_report_convergence(char *buf, size_t n, const zp_search_result *s);
 void zp_report_write_md(FILE *f, const zp_report *r);
 
 #endif

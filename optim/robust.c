@@ -348,9 +348,9 @@ out:
     gsl_rng_free(rng);
 }
 
-zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts *so, double lo,
-                           double hi, const zp_search_opts *o, int max_rounds,
-                           zp_search_result *res, zp_robust_info *info, char *err,
+zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
+                           const double *lo, const double *hi, const zp_search_opts *o,
+                           int max_rounds, zp_search_result *res, zp_robust_info *info, char *err,
                            size_t errlen) {
     memset(info, 0, sizeof *info);
     info->worst.cons = NAN; /* no adversary yet */
@@ -448,8 +448,9 @@ zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_mod
 }
 
 zp_status zp_robust_solve(zp_robust_problem *p, const zp_scene *sc, const zp_sim_opts *so,
-                          const zp_sim_opts *fast, double lo, double hi, const zp_search_opts *o,
-                          zp_search_result *res, char *err, size_t errlen) {
+                          const zp_sim_opts *fast, const double *lo, const double *hi,
+                          const zp_search_opts *o, zp_search_result *res, char *err,
+                          size_t errlen) {
     zp_status st = zp_robust_search(&p->ob, &p->box, fast, lo, hi, o,
                                     p->robust ? ZP_ROBUST_ROUNDS : 1, res, &p->info, err,
                                     errlen);

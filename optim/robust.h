@@ -81,12 +81,12 @@ typedef struct zp_robust_info {
 /* The robust search: ob (with ob->set built) searched as zp_search_run does; then, while the
    answer exists and the adversary finds a scenario of b that breaks it, that scenario joins
    the set and the search reruns (at most max_rounds searches). */
-zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts *so, double lo,
-                           double hi, const zp_search_opts *o, int max_rounds,
-                           zp_search_result *res, zp_robust_info *info, char *err,
+zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
+                           const double *lo, const double *hi, const zp_search_opts *o,
+                           int max_rounds, zp_search_result *res, zp_robust_info *info, char *err,
                            size_t errlen);
-/* The schedule of parameters p checked on n fresh scenarios of b with workspaces from so (the caller passes the
-   tighter verification tolerance); nthreads 0: OpenMP's default. Scenario i is the point of
+/* The schedule of parameters p checked on n fresh scenarios of b with workspaces from so (the
+   caller passes the tighter verification tolerance); nthreads 0: OpenMP's default. Scenario i is the point of
    coordinates 2 U - 1, U the next b->d uniforms of gsl_rng_mt19937 seeded with
    seed ^ ZP_ROBUST_STREAM_VERIFY (a stream apart from the set's and the adversary's). */
 zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
@@ -111,12 +111,13 @@ typedef struct zp_robust_problem {
 zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_model *m,
                           double limit, const zp_schedule *shape, const zp_sim_opts *so,
                           const zp_sim_opts *search, zp_sim_opts *fast);
-/* The (robust) search over [lo, hi] with the adversary, then, unless interrupted, the answer
-   verified on sc->verify_samples fresh scenarios at so's tolerance made tighter as
-   zp_estimate_tighter does. */
+/* The (robust) search over the box [lo[k], hi[k]] (one per parameter) with the adversary,
+   then, unless interrupted, the answer verified on sc->verify_samples fresh scenarios at so's
+   tolerance made tighter as zp_estimate_tighter does. */
 zp_status zp_robust_solve(zp_robust_problem *p, const zp_scene *sc, const zp_sim_opts *so,
-                          const zp_sim_opts *fast, double lo, double hi, const zp_search_opts *o,
-                          zp_search_result *res, char *err, size_t errlen);
+                          const zp_sim_opts *fast, const double *lo, const double *hi,
+                          const zp_search_opts *o, zp_search_result *res, char *err,
+                          size_t errlen);
 void zp_robust_problem_free(zp_robust_problem *p);
 
 /* The one-sided 95 % Clopper-Pearson lower bound of a probability with k successes in n. */

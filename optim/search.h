@@ -1,5 +1,5 @@
-/* The search (issue 4 items 2, 3, 6): the fastest survivable schedule of per-section forces
-   within [drive] min, max, by a global phase and a local polish from several starts. */
+/* The search: the fastest survivable schedule of parameters within bounds, in rounds of a
+   scan that extends in order and local polishes, so a larger budget never gives a worse answer. */
 #ifndef ZP_SEARCH_H
 #define ZP_SEARCH_H
 
@@ -7,7 +7,9 @@
 
 #include "objective.h"
 
-#define ZP_SEARCH_HIST 256 /* improvements kept in the history */
+#define ZP_SEARCH_HIST 256   /* improvements kept in the history */
+#define ZP_SEARCH_REACH 1e-4 /* a polish ending this close (relative time) reached the best */
+#define ZP_SEARCH_CONV 1e-6  /* a round improving the best less than this (relative) converged */
 
 /* The strategies the search offers: a global phase, then a local polish. */
 typedef struct zp_search_algo {
@@ -23,16 +25,20 @@ int zp_search_algo_find(const char *name); /* -1 if unknown */
 
 /* Best so far, as the progress display and the checkpoint see it. */
 typedef struct zp_search_progress {
-    long evals;        /* simulations so far */
-    double wall_s;     /* s since the search began */
-    int found;         /* a survivable schedule is known */
-    double time;       /* s, its finish time */
+    const char *phase;   /* "scan" or "polish" */
+    int round;           /* 0-based round of scan and polish */
+    long evals;          /* simulations so far */
+    long budget;         /* simulations the search may spend */
+    double wall_s;       /* s since the search began */
+    int found;           /* a survivable schedule is known */
+    double time;         /* s, its finish time */
     const double *force; /* borrowed, N per section: the best so far */
 } zp_search_progress;
 
 typedef struct zp_search_opts {
     int algo;           /* zp_search_algo index */
     long max_evals;     /* simulations the search may spend */
+    double max_time;    /* s of wall time the search may spend, 0: no limit (not reproducible) */
     unsigned long seed; /* same seed, same answer, bit for bit */
     int nthreads;       /* workspaces = OpenMP threads; 0: OpenMP's default */
     volatile sig_atomic_t *stop; /* borrowed, may be NULL: nonzero stops the search */
@@ -47,26 +53,39 @@ typedef struct zp_search_hist {
 } zp_search_hist;
 
 typedef struct zp_search_result {
-    int found;                       /* a survivable schedule was found */
-    double force[ZP_MAX_SECTIONS];   /* N, the best schedule (or the best-scoring one) */
+    int found;                     /* a survivable schedule was found */
+    double force[ZP_SCHED_MAX_PARAMS]; /* the best parameters (N per section) or closest */
     zp_eval best;
-    int base_found;                  /* a survivable constant push was found */
-    double base_force;               /* N, the best constant push */
+    int base_found;    /* a survivable constant push was found */
+    double base_force; /* N, the best constant push */
     zp_eval base;
-    long evals;                      /* simulations spent */
-    long nfeasible, nfailed;         /* runs that survived, runs the integrator gave up on */
-    int nthreads, nstarts;           /* workspaces used, local polishes run */
+    long evals;              /* simulations spent */
+    long nfeasible, nfailed; /* runs that survived, runs the integrator gave up on */
+    int nthreads, nstarts;   /* workspaces used, local polishes run */
     double wall_s;
-    int interrupted;                 /* stopped by opts.stop before the end */
+    int interrupted; /* stopped by opts.stop before the end */
+    /* convergence evidence */
+    int nrounds;      /* rounds of scan and polish completed */
+    int nbasins;      /* distinct survivable schedules the polishes ended at */
+    int nreached;     /* polishes that ended within ZP_SEARCH_REACH of the best time */
+    int converged;    /* a completed round after the first improved the best by < ZP_SEARCH_CONV */
+    int budget_out;   /* max_evals ran out before convergence */
+    int timed_out;    /* max_time ran out before convergence */
+    double last_gain; /* relative improvement of the best in the last completed round */
     int nhist;
     zp_search_hist hist[ZP_SEARCH_HIST];
 } zp_search_result;
 
-/* Searches [lo, hi]^nsec (N) for the fastest schedule that keeps ob's limit. Creates one
-   workspace per thread from (m, so) before any parallel work. ZP_OK, or ZP_ERR_NOMEM /
-   ZP_ERR_INPUT (an NLopt setup failure) with why in err. */
-zp_status zp_search_run(const zp_objective *ob, const zp_sim_opts *so, double lo, double hi,
-                        const zp_search_opts *o, zp_search_result *res, char *err,
+/* The default budget for n parameters: ZP_SCENE_EVALS_PER_SECTION simulations each. */
+long zp_search_default_budget(int n);
+
+/* Searches the box [lo[k], hi[k]] (one per section, N) for the fastest schedule that keeps
+   ob's limit. Creates one workspace per thread from (m, so) before any parallel work. Every
+   simulation a smaller max_evals would run is also run with a larger one (same seed), so the
+   best is never worse; the answer does not depend on the number of threads. ZP_OK, or
+   ZP_ERR_NOMEM / ZP_ERR_INPUT (an NLopt setup failure) with why in err. */
+zp_status zp_search_run(const zp_objective *ob, const zp_sim_opts *so, const double *lo,
+                        const double *hi, const zp_search_opts *o, zp_search_result *res, char *err,
                         size_t errlen);
 
 #endif

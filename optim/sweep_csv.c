@@ -3,6 +3,7 @@
 #include "sweep_csv.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -176,16 +177,50 @@ static long read_rows(const char *old, const char *head, const zp_sweep *s, int 
     return (long)pos;
 }
 
-zp_status zp_sweep_checkpoint_open(zp_sweep_checkpoint *c, const char *dir, const zp_sweep *s,
-                                   const char *base, int np, int resume, zp_study_row *rows,
-                                   unsigned char *done, int *ndone, char *err, size_t errlen) {
+/* the whole of the open file fd as a string (caller frees), its length in *len; NULL if it
+   cannot be read */
+static char *read_fd(int fd, size_t *len) {
+    size_t cap = 4096, n = 0;
+    char *text = malloc(cap);
+    for (ssize_t got; text; n += (size_t)got) {
+        if (n + 1 == cap) {
+            char *grown = realloc(text, cap *= 2);
+            if (!grown) {
+                free(text);
+                return NULL;
+            }
+            text = grown;
+        }
+        got = read(fd, text + n, cap - 1 - n);
+        if (got < 0) {
+            free(text);
+            return NULL;
+        }
+        if (got == 0) {
+            text[n] = '\0';
+            *len = n;
+            return text;
+        }
+    }
+    return NULL;
+}
+
+zp_status zp_sweep_checkpoint_open(zp_sweep_checkpoint *c, int dirfd, const char *dir,
+                                   const zp_sweep *s, const char *base, int np, int resume,
+                                   zp_study_row *rows, unsigned char *done, int *ndone, char *err,
+                                   size_t errlen) {
     c->f = NULL;
+    c->dirfd = -1;
     *ndone = 0;
     snprintf(c->path, sizeof c->path, "%s/checkpoint.csv", dir);
     char *head = study_head(s, base, np), *old = NULL;
+    /* never through a link planted at the name: the file is opened in the folder itself */
+    int fd = head ? openat(dirfd, "checkpoint.csv", O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC,
+                           0644)
+                  : -1;
     size_t len = 0;
     long keep = -2;
-    if (head && resume && (old = zp_sweep_read_file(c->path, &len)) != NULL) {
+    if (fd >= 0 && resume && (old = read_fd(fd, &len)) != NULL && len > 0) {
         keep = strlen(old) == len ? read_rows(old, head, s, np, rows, done, ndone) : -1;
     }
     free(old);
@@ -195,12 +230,16 @@ zp_status zp_sweep_checkpoint_open(zp_sweep_checkpoint *c, const char *dir, cons
                  "run without --resume to start afresh",
                  c->path);
         free(head);
+        close(fd);
         return ZP_ERR_INPUT;
     }
-    if (!head || zp_out_make_dirs(dir) || (keep > 0 && truncate(c->path, keep)) ||
-        !(c->f = fopen(c->path, keep > 0 ? "a" : "w"))) {
+    if (fd < 0 || ftruncate(fd, keep > 0 ? keep : 0) || lseek(fd, 0, SEEK_END) < 0 ||
+        (c->dirfd = fcntl(dirfd, F_DUPFD_CLOEXEC, 0)) < 0 || !(c->f = fdopen(fd, "a"))) {
         snprintf(err, errlen, "%s: %s", c->path, head ? strerror(errno) : "out of memory");
         free(head);
+        if (fd >= 0) {
+            close(fd);
+        }
         return ZP_ERR_IO;
     }
     if (keep <= 0) {
@@ -227,7 +266,11 @@ void zp_sweep_checkpoint_close(zp_sweep_checkpoint *c, int remove_file) {
         fclose(c->f);
         c->f = NULL;
     }
-    if (remove_file) {
-        remove(c->path);
+    if (c->dirfd >= 0) {
+        if (remove_file) {
+            unlinkat(c->dirfd, "checkpoint.csv", 0);
+        }
+        close(c->dirfd);
+        c->dirfd = -1;
     }
 }

@@ -17,18 +17,21 @@ void zp_sweep_csv_row(FILE *f, const zp_sweep *s, int p, const zp_study_row *r);
 int zp_sweep_csv_parse(const char *line, const zp_sweep *s, int np, int *p, zp_study_row *r);
 
 typedef struct zp_sweep_checkpoint {
-    FILE *f; /* owned, open for appending */
-    char path[1100];
+    FILE *f;   /* owned, open for appending */
+    int dirfd; /* owned (a duplicate): the output folder, where the file lives */
+    char path[1100]; /* for messages */
 } zp_sweep_checkpoint;
 
-/* Opens DIR/checkpoint.csv for the study s of scene text base. With resume, the rows a
+/* Opens checkpoint.csv in the output folder dirfd (named dir in messages), never through a
+   link, for the study s of scene text base. With resume, the rows a
    checkpoint of the same study (same scene text, --vary and --run) holds go to rows[p] with
    done[p] = 1 (*ndone counts them), a torn last line is cut, and new rows follow; a checkpoint
    of another study is ZP_ERR_INPUT. Without resume (or with no checkpoint) it starts afresh.
    ZP_ERR_IO with why in err. */
-zp_status zp_sweep_checkpoint_open(zp_sweep_checkpoint *c, const char *dir, const zp_sweep *s,
-                                   const char *base, int np, int resume, zp_study_row *rows,
-                                   unsigned char *done, int *ndone, char *err, size_t errlen);
+zp_status zp_sweep_checkpoint_open(zp_sweep_checkpoint *c, int dirfd, const char *dir,
+                                   const zp_sweep *s, const char *base, int np, int resume,
+                                   zp_study_row *rows, unsigned char *done, int *ndone, char *err,
+                                   size_t errlen);
 /* Appends point p's row and pushes it to the disk; 0, or -1 when it could not be written. */
 int zp_sweep_checkpoint_add(zp_sweep_checkpoint *c, const zp_sweep *s, int p,
                             const zp_study_row *r);

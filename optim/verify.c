@@ -3,9 +3,8 @@
    smallest change that kills. */
 #include "verify.h"
 
+#include <gsl/gsl_rng.h>
 #include <math.h>
-#include <omp.h>
-#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -13,14 +12,9 @@
 
 static const double levels[ZP_VERIFY_LEVELS] = {0.02, 0.05};
 
-static uint64_t splitmix(uint64_t *s) {
-    uint64_t z = (*s += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
+static int died(const zp_eval *e) {
+    return e->failed || e->outcome == ZP_OUTCOME_DIED;
 }
-
-static int died(const zp_eval *e) { return e->failed || e->outcome == ZP_OUTCOME_DIED; }
 
 /* one force changed by the relative amount s: does the spy die? */
 static int kills(const zp_objective *ob, zp_sim *s, zp_result *r, const double *force, int k,
@@ -35,8 +29,7 @@ static int kills(const zp_objective *ob, zp_sim *s, zp_result *r, const double *
 
 /* the smallest change of force k, either way, that kills (bisection), or 0 when none within
    the largest level */
-static double kill_of(const zp_objective *ob, zp_sim *s, zp_result *r, const double *force,
-                      int k) {
+static double kill_of(const zp_objective *ob, zp_sim *s, zp_result *r, const double *force, int k) {
     double best = 0;
     for (int sign = -1; sign <= 1; sign += 2) {
         double top = levels[ZP_VERIFY_LEVELS - 1];
@@ -57,6 +50,101 @@ static double kill_of(const zp_objective *ob, zp_sim *s, zp_result *r, const dou
     return best;
 }
 
+/* the robustness runs: ntot perturbed schedules, then one bisection per force */
+typedef struct robust_batch {
+    const zp_objective *ob;
+    const double *force;
+    int ntot;
+    double *pf;   /* owned, ntot x nsec: the perturbed forces */
+    zp_eval *pe;  /* owned, ntot */
+    double *kill; /* owned, nsec */
+} robust_batch;
+
+static void robust_job(void *user, int i, zp_sim *s, zp_result *r) {
+    robust_batch *b = user;
+    int nsec = b->ob->m->nsec;
+    if (i < b->ntot) {
+        zp_objective_eval(b->ob, s, b->pf + (size_t)i * nsec, &b->pe[i], r);
+    } else {
+        b->kill[i - b->ntot] = kill_of(b->ob, s, r, b->force, i - b->ntot);
+    }
+}
+
+/* the tally of the robustness runs, in order: survivors per level and the smallest kill */
+static void tally(zp_verify *v, const robust_batch *b, int nrobust) {
+    int nsec = b->ob->m->nsec;
+    const double *force = b->force;
+    for (int i = 0; i < b->ntot; i++) {
+        const zp_eval *e = &b->pe[i];
+        zp_robust *rb = &v->rob[i / nrobust];
+        rb->level = levels[i / nrobust];
+        rb->n++;
+        rb->survived += e->outcome == ZP_OUTCOME_FINISHED && !e->failed;
+        rb->kept += zp_objective_feasible(e);
+        if (died(e)) {
+            /* the size of this mixed change: its largest relative part */
+            double size = 0;
+            for (int k = 0; k < nsec; k++) {
+                if (force[k] != 0) {
+                    size = fmax(size, fabs(b->pf[(size_t)i * nsec + k] / force[k] - 1));
+                }
+            }
+            if (!v->kill_found || size < v->kill) {
+                v->kill_found = 1;
+                v->kill = size;
+                v->kill_section = 0;
+            }
+        }
+    }
+    for (int k = 0; k < nsec; k++) {
+        if (b->kill[k] > 0 && (!v->kill_found || b->kill[k] < v->kill)) {
+            v->kill_found = 1;
+            v->kill = b->kill[k];
+            v->kill_section = k + 1;
+        }
+    }
+    v->robust_done = 1;
+}
+
+/* seeded perturbations drawn up front, run in parallel, counted in order */
+static zp_status robustness(const zp_objective *ob, const zp_sim_opts *so, const double *force,
+                            unsigned long seed, int nrobust, int nthreads, zp_verify *v,
+                            zp_pool_done progress, void *user, char *err, size_t errlen) {
+    int nsec = ob->m->nsec, ntot = ZP_VERIFY_LEVELS * nrobust;
+    zp_sim_opts fast = *so;
+    fast.output_dt = 0;
+    fast.track_loads = 0;
+    robust_batch b = {ob,
+                      force,
+                      ntot,
+                      malloc(sizeof *b.pf * ntot * nsec),
+                      malloc(sizeof *b.pe * ntot),
+                      calloc(nsec, sizeof *b.kill)};
+    zp_pool *pool = zp_pool_create(ob->m, &fast, nthreads);
+    gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
+    zp_status ret = b.pf && b.pe && b.kill && pool && g ? ZP_OK : ZP_ERR_NOMEM;
+    if (ret == ZP_OK) {
+        gsl_rng_set(g, seed);
+        for (int i = 0; i < ntot; i++) {
+            for (int k = 0; k < nsec; k++) {
+                double u = 2 * gsl_rng_uniform(g) - 1;
+                b.pf[(size_t)i * nsec + k] = force[k] * (1 + levels[i / nrobust] * u);
+            }
+        }
+        /* the perturbed runs, then force by force the bisection for the smallest deadly change */
+        zp_pool_map(pool, ntot + nsec, robust_job, &b, progress, user);
+        tally(v, &b, nrobust);
+    } else {
+        snprintf(err, errlen, "out of memory for the robustness runs");
+    }
+    gsl_rng_free(g);
+    zp_pool_free(pool);
+    free(b.pf);
+    free(b.pe);
+    free(b.kill);
+    return ret;
+}
+
 void zp_verify_free(zp_verify *v) {
     free(v->run);
     free(v->tight);
@@ -65,9 +153,8 @@ void zp_verify_free(zp_verify *v) {
 
 zp_status zp_verify_run(const zp_objective *ob, const zp_sim_opts *so, const double *force,
                         unsigned long seed, int nrobust, int nthreads, zp_sim **sim_out,
-                        zp_verify *v, char *err, size_t errlen) {
+                        zp_verify *v, zp_pool_done progress, void *user, char *err, size_t errlen) {
     const zp_model *m = ob->m;
-    int nsec = m->nsec;
     memset(v, 0, sizeof *v);
     *sim_out = NULL;
     zp_sim_opts to = zp_estimate_tighter(so);
@@ -98,89 +185,7 @@ zp_status zp_verify_run(const zp_objective *ob, const zp_sim_opts *so, const dou
     }
     v->agree = v->run->outcome == v->tight->outcome &&
                fabs(v->run->time - v->tight->time) <= ZP_VERIFY_DT && angle <= ob->limit;
-    if (nrobust <= 0) {
-        return ZP_OK;
-    }
-
-    /* robustness: seeded perturbations drawn up front, run in parallel, counted in order */
-    zp_sim_opts fast = *so;
-    fast.output_dt = 0;
-    fast.track_loads = 0;
-    int nw = nthreads > 0 ? nthreads : omp_get_max_threads();
-    int ntot = ZP_VERIFY_LEVELS * nrobust;
-    double *pf = malloc(sizeof *pf * ntot * nsec);
-    zp_eval *pe = malloc(sizeof *pe * ntot);
-    double *kill = calloc(nsec, sizeof *kill);
-    zp_sim **ws = calloc(nw, sizeof *ws);
-    zp_result **wr = calloc(nw, sizeof *wr);
-    zp_status ret = pf && pe && kill && ws && wr ? ZP_OK : ZP_ERR_NOMEM;
-    for (int i = 0; ret == ZP_OK && i < nw; i++) {
-        ws[i] = zp_sim_create(m, &fast);
-        wr[i] = malloc(sizeof *wr[i]);
-        ret = ws[i] && wr[i] ? ZP_OK : ZP_ERR_NOMEM;
-    }
-    if (ret != ZP_OK) {
-        snprintf(err, errlen, "out of memory for the robustness runs");
-        goto done;
-    }
-    uint64_t rng = seed;
-    for (int i = 0; i < ntot; i++) {
-        double level = levels[i / nrobust];
-        for (int k = 0; k < nsec; k++) {
-            double u = 2 * ((splitmix(&rng) >> 11) * 0x1.0p-53) - 1;
-            pf[(size_t)i * nsec + k] = force[k] * (1 + level * u);
-        }
-    }
-#pragma omp parallel num_threads(nw)
-    {
-        int t = omp_get_thread_num();
-#pragma omp for schedule(dynamic, 4) nowait
-        for (int i = 0; i < ntot; i++) {
-            zp_objective_eval(ob, ws[t], pf + (size_t)i * nsec, &pe[i], wr[t]);
-        }
-#pragma omp for schedule(dynamic, 1)
-        for (int k = 0; k < nsec; k++) {
-            kill[k] = kill_of(ob, ws[t], wr[t], force, k);
-        }
-    }
-    for (int i = 0; i < ntot; i++) {
-        zp_robust *rb = &v->rob[i / nrobust];
-        rb->level = levels[i / nrobust];
-        rb->n++;
-        rb->survived += pe[i].outcome == ZP_OUTCOME_FINISHED && !pe[i].failed;
-        rb->kept += zp_objective_feasible(&pe[i]);
-        if (died(&pe[i])) {
-            /* the size of this mixed change: its largest relative part */
-            double size = 0;
-            for (int k = 0; k < nsec; k++) {
-                if (force[k] != 0) {
-                    size = fmax(size, fabs(pf[(size_t)i * nsec + k] / force[k] - 1));
-                }
-            }
-            if (!v->kill_found || size < v->kill) {
-                v->kill_found = 1;
-                v->kill = size;
-                v->kill_section = 0;
-            }
-        }
-    }
-    for (int k = 0; k < nsec; k++) {
-        if (kill[k] > 0 && (!v->kill_found || kill[k] < v->kill)) {
-            v->kill_found = 1;
-            v->kill = kill[k];
-            v->kill_section = k + 1;
-        }
-    }
-    v->robust_done = 1;
-done:
-    for (int i = 0; ws && i < nw; i++) {
-        zp_sim_free(ws[i]);
-        free(wr[i]);
-    }
-    free(pf);
-    free(pe);
-    free(kill);
-    free(ws);
-    free(wr);
-    return ret;
+    return nrobust > 0
+               ? robustness(ob, so, force, seed, nrobust, nthreads, v, progress, user, err, errlen)
+               : ZP_OK;
 }

@@ -6,15 +6,15 @@
 #include <signal.h>
 
 #include "estimate.h"
-#include "objective.h"
+#include "pool.h"
 
 #define ZP_VERIFY_LEVELS 2 /* perturbation levels: +/-2 % and +/-5 % */
 
 typedef struct zp_robust {
-    double level;  /* 1: every force scaled by 1 + level * u, u uniform in [-1, 1] */
-    int n;         /* runs */
-    int survived;  /* runs that finished alive */
-    int kept;      /* runs that finished with the margin kept */
+    double level; /* 1: every force scaled by 1 + level * u, u uniform in [-1, 1] */
+    int n;        /* runs */
+    int survived; /* runs that finished alive */
+    int kept;     /* runs that finished with the margin kept */
 } zp_robust;
 
 typedef struct zp_verify {
@@ -29,13 +29,13 @@ typedef struct zp_verify {
     int kill_section; /* 1-based section whose change alone kills at `kill`, 0: a random mix */
 } zp_verify;
 
-
 /* Checks force (N per section) with fresh workspaces from so; trajectory rows of v->run stay
-   in *sim_out (owned by the caller, freed with zp_sim_free). robust = 0 skips robustness.
-   Returns ZP_OK, or ZP_ERR_NUMERIC / ZP_ERR_NOMEM with why in err. */
+   in *sim_out (owned by the caller, freed with zp_sim_free). nrobust = 0 skips robustness;
+   progress(user, done, total) after each robustness job (may be NULL). Returns ZP_OK, or
+   ZP_ERR_NUMERIC / ZP_ERR_NOMEM with why in err. */
 zp_status zp_verify_run(const zp_objective *ob, const zp_sim_opts *so, const double *force,
                         unsigned long seed, int nrobust, int nthreads, zp_sim **sim_out,
-                        zp_verify *v, char *err, size_t errlen);
+                        zp_verify *v, zp_pool_done progress, void *user, char *err, size_t errlen);
 void zp_verify_free(zp_verify *v);
 
 #endif

@@ -36,17 +36,24 @@ static void slurp(const char *path, char *buf, size_t n) {
     }
 }
 
+static void put(const char *path, const char *text) {
+    FILE *f = fopen(path, "w");
+    CHECK(f != NULL);
+    if (f) {
+        fputs(text, f);
+        fclose(f);
+    }
+}
+
 int main(void) {
     char dir[] = "/tmp/zp_cli_searchXXXXXX", cmd[4096], path[2048];
     static char json[65536];
     CHECK(mkdtemp(dir) != NULL);
     snprintf(path, sizeof path, "%s/bare.ini", dir);
-    FILE *f = fopen(path, "w");
-    fputs("[scene]\nname = bare\n[course]\nx_start = 0\nsection = 20 : -x/10 + 10\n"
+    put(path, "[scene]\nname = bare\n[course]\nx_start = 0\nsection = 20 : -x/10 + 10\n"
           "section = 40 : -x/5 + 12\n[trolley]\nmass = 30\n"
           "[body]\nlengths = 1\nmasses = 5\ndamping = 2\ndeath_angle = 60\n"
-          "[drive]\nmin = 0\nmax = 300\n[optimize]\nmargin = 10\nmax_evals = 250\n", f);
-    fclose(f);
+          "[drive]\nmin = 0\nmax = 300\n[optimize]\nmargin = 10\nmax_evals = 250\n");
 
     /* the search writes its four files */
     snprintf(cmd, sizeof cmd, "%s %s --out %s/a 2>&1", ZP_EXE, path, dir);
@@ -126,6 +133,37 @@ int main(void) {
     CHECK(run(cmd) == 2);
     snprintf(cmd, sizeof cmd, "%s/d", dir);
     CHECK(!tu_exists(cmd));
+
+    /* --max-time bounds the search's wall time and says that it ran out (the seed's search
+       takes seconds) */
+    snprintf(cmd, sizeof cmd,
+             "%s %s/config/seed.ini --out %s/f --no-plot --max-evals 100000000 --max-time 0.2",
+             ZP_EXE, ZP_SOURCE_DIR, dir);
+    CHECK(run(cmd) == 0);
+    snprintf(cmd, sizeof cmd, "%s/f/summary.json", dir);
+    slurp(cmd, json, sizeof json);
+    CHECK(strstr(json, "\"time_ran_out\": true") != NULL);
+    CHECK(json_num(json, "wall_s") < 3);
+    snprintf(cmd, sizeof cmd, "%s %s --out %s/g --max-time 0 2>&1", ZP_EXE, path, dir);
+    CHECK(run(cmd) == 2);
+
+    /* no schedule can keep a 2 deg limit on a kinked course: exit 3, said on the first line,
+       the closest candidate still written and marked, the missing baseline said missing */
+    snprintf(path, sizeof path, "%s/none.ini", dir);
+    put(path, "[scene]\nname = none\n[course]\nx_start = 0\nsection = 20 : -x/10 + 10\n"
+          "section = 40 : -x/5 + 12\n[trolley]\nmass = 30\n[body]\nlengths = 1\nmasses = 5\n"
+          "damping = 2\ndeath_angle = 12\n[drive]\nmin = 0\nmax = 300\n[optimize]\n"
+          "margin = 10\nmax_evals = 60\n");
+    snprintf(cmd, sizeof cmd, "%s %s --out %s/e --no-plot 2>/dev/null", ZP_EXE, path, dir);
+    CHECK(run(cmd) == 3);
+    CHECK(!strncmp(out, "no schedule keeps the margin", 28));
+    CHECK(!strstr(out, "0.000 N") && !strstr(out, "inf"));
+    snprintf(cmd, sizeof cmd, "%s/e/report.md", dir);
+    slurp(cmd, report, sizeof report);
+    CHECK(strstr(report, "No survivable schedule was found") && !strstr(report, "inf %"));
+    snprintf(cmd, sizeof cmd, "%s/e/summary.json", dir);
+    slurp(cmd, json, sizeof json);
+    CHECK(strstr(json, "\"found\": false") && strstr(json, "\"baseline\": null"));
 
     snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
     CHECK(system(cmd) == 0);

@@ -9,6 +9,7 @@
 #include "method.h"
 #include "out_json.h"
 #include "scene_read.h"
+#include "search.h"
 #include "setup.h"
 #include "sim.h"
 
@@ -98,8 +99,9 @@ static void print_scene(const zp_setup *st) {
            sc->formulation, formulation_doc(sc->formulation));
     printf("        rtol %g, atol %g, t_max %g s, output_dt %g s\n", sc->rtol, sc->atol, sc->t_max,
            sc->output_dt);
-    printf("optimize: margin %g deg, max_evals %ld, seed %lu\n", sc->margin, sc->max_evals,
-           sc->seed);
+    printf("optimize: margin %g deg, max_evals %ld%s, seed %lu\n", sc->margin,
+           sc->line_max_evals ? sc->max_evals : zp_search_default_budget(sc->nsec),
+           sc->line_max_evals ? "" : " (the search's default)", sc->seed);
     printf("added by zipopt (keys the file does not give, with the values taken):\n");
     zp_scene_print_added(sc, stdout, "  ");
 }

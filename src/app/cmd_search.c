@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "cli.h"
@@ -26,7 +27,7 @@ static volatile sig_atomic_t interrupted;
 
 static void usage(FILE *f) {
     fputs("usage: zipopt [SCENE.ini] [--out DIR] [--algorithm NAME] [--seed N] [--max-evals N]\n"
-          "              [--no-plot]\n"
+          "              [--max-time S] [--no-plot]\n"
           "Searches for the fastest schedule of drive forces, one per course section within\n"
           "[drive] min, max, that brings the spy to the end alive with every relative joint\n"
           "angle at least [optimize] margin below death_angle. With no file: the built-in seed\n"
@@ -40,7 +41,10 @@ static void usage(FILE *f) {
           "  --out DIR         output folder\n"
           "  --algorithm NAME  the search strategy (below; default scan-cobyla)\n"
           "  --seed N          overrides [optimize] seed\n"
-          "  --max-evals N     overrides [optimize] max_evals (simulations)\n"
+          "  --max-evals N     overrides [optimize] max_evals (simulations; default 5000 per\n"
+          "                    section)\n"
+          "  --max-time S      stops the search after S seconds of wall time, keeping the best\n"
+          "                    so far (then the answer depends on the machine's speed)\n"
           "  --no-plot         skip the figures\n"
           "strategies:\n",
           f);
@@ -54,10 +58,11 @@ typedef struct search_args {
     const char *scene, *out, *algo;
     int has_seed;
     unsigned long seed, max_evals; /* max_evals 0: from the scene */
+    double max_time;               /* s, 0: no limit */
     int no_plot;
 } search_args;
 
-enum { O_OUT = ZP_OPT_FIRST, O_NO_PLOT, O_ALGORITHM, O_SEED, O_MAX_EVALS };
+enum { O_OUT = ZP_OPT_FIRST, O_NO_PLOT, O_ALGORITHM, O_SEED, O_MAX_EVALS, O_MAX_TIME };
 static const struct option options[] = {
     {"help", no_argument, NULL, 'h'},
     {"out", required_argument, NULL, O_OUT},
@@ -65,8 +70,20 @@ static const struct option options[] = {
     {"algorithm", required_argument, NULL, O_ALGORITHM},
     {"seed", required_argument, NULL, O_SEED},
     {"max-evals", required_argument, NULL, O_MAX_EVALS},
+    {"max-time", required_argument, NULL, O_MAX_TIME},
     {NULL, 0, NULL, 0},
 };
+
+/* seconds > 0 for opt; -1 (reported) otherwise */
+static int parse_seconds(const char *opt, const char *text, double *v) {
+    char *end;
+    *v = strtod(text, &end);
+    if (end == text || *end || !(*v > 0) || !isfinite(*v)) {
+        fprintf(stderr, "zipopt: %s '%s': expected seconds > 0\n", opt, text);
+        return -1;
+    }
+    return 0;
+}
 
 /* 1: --help was shown; -1: a mistake (reported) */
 static int parse_args(int argc, char **argv, search_args *a) {
@@ -94,6 +111,11 @@ static int parse_args(int argc, char **argv, search_args *a) {
             break;
         case O_MAX_EVALS:
             if (zp_cli_whole("", "--max-evals", optarg, 1, LONG_MAX, &a->max_evals)) {
+                return -1;
+            }
+            break;
+        case O_MAX_TIME:
+            if (parse_seconds("--max-time", optarg, &a->max_time)) {
                 return -1;
             }
             break;
@@ -127,7 +149,18 @@ typedef struct progress_ctx {
     const zp_search_progress *p; /* the improvement being checkpointed */
     int tty;      /* stderr is a terminal: show the progress line */
     int shown;    /* a progress line is on screen */
+    struct timespec t0; /* start of the current phase */
+    double last;  /* s into it at the last line shown */
 } progress_ctx;
+
+static void phase_start(progress_ctx *c, const char *what) {
+    clock_gettime(CLOCK_MONOTONIC, &c->t0);
+    c->last = 0;
+    if (c->tty) {
+        fprintf(stderr, "%s%s", c->shown ? "\n" : "", what);
+        c->shown = 1;
+    }
+}
 
 static void write_checkpoint(FILE *f, void *user) {
     const progress_ctx *c = user;
@@ -149,9 +182,26 @@ static void on_progress(void *user, const zp_search_progress *p, int improved) {
         }
     }
     if (c->tty) {
-        fprintf(stderr, "\rsearch: %ld simulations, %.0f/s, best %s%.4f s   ", p->evals,
-                p->evals / fmax(p->wall_s, 1e-9), p->found ? "" : "(none survives) ",
-                p->found ? p->time : 0.0);
+        /* the budget left at the rate so far: an upper bound, as a round may converge first */
+        double rate = p->evals / fmax(p->wall_s, 1e-9);
+        fprintf(stderr, "\rsearch round %d, %s: %ld of %ld simulations, %.0f/s, best %s%.4f s, "
+                "at most %.0f s left   ", p->round + 1, p->phase, p->evals, p->budget, rate,
+                p->found ? "" : "(none survives) ", p->found ? p->time : 0.0,
+                (p->budget - p->evals) / fmax(rate, 1e-9));
+        c->shown = 1;
+    }
+}
+
+/* the verification's progress line: its robustness runs done, and the time left at that pace */
+static void on_verify(void *user, int done, int total) {
+    progress_ctx *c = user;
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    double el = (t.tv_sec - c->t0.tv_sec) + 1e-9 * (t.tv_nsec - c->t0.tv_nsec);
+    if (c->tty && (done == total || el - c->last >= 0.25)) {
+        c->last = el;
+        fprintf(stderr, "\rrobustness: %d of %d runs and bisections, about %.0f s left   ", done,
+                total, el / done * (total - done));
         c->shown = 1;
     }
 }
@@ -208,6 +258,12 @@ static int figures(zp_tx *t, const zp_model *m, const zp_scene *sc, const zp_sch
 static void print_summary(const zp_report *r) {
     const zp_search_result *s = r->res;
     const zp_result *run = r->v->run;
+    if (!s->found) {
+        printf("no schedule keeps the margin%s: none of %ld simulations survived with it; the "
+               "closest candidate is written, marked as such\n",
+               r->box || zp_limits_any(r->lim) ? ", the [limits] and the [robust] scenarios" : "",
+               s->evals);
+    }
     printf("%sbest schedule (N):", s->interrupted ? "interrupted; " : "");
     for (int k = 0; k < r->m->nsec; k++) {
         printf(" %.4f", s->force[k]);
@@ -222,6 +278,8 @@ static void print_summary(const zp_report *r) {
            r->v->agree ? ", verified" : ", NOT verified at the tighter tolerance");
     if (s->base_found) {
         printf("best constant push: %.3f N, %.4f s\n", s->base_force, s->base.time);
+    } else {
+        printf("best constant push: none found that keeps the margin\n");
     }
     printf("search: %s, %ld simulations in %.2f s on %d threads\n", r->algo, s->evals,
            s->wall_s, s->nthreads);
@@ -232,6 +290,9 @@ static void print_summary(const zp_report *r) {
                r->set->n, r->rinfo->added, c->samples, c->survived, c->margin_kept,
                c->limits_kept, c->lower_95);
     }
+    char conv[512];
+    zp_report_convergence(conv, sizeof conv, s);
+    printf("convergence: %s\n", conv);
 }
 
 int zp_cmd_search(int argc, char **argv) {
@@ -265,15 +326,12 @@ int zp_cmd_search(int argc, char **argv) {
     }
     progress_ctx pc = {.sc = sc, .shape = &st.sched, .tx = &tx, .tty = isatty(STDERR_FILENO)};
     zp_search_opts o = {.algo = a.algo ? zp_search_algo_find(a.algo) : 0,
-                        .max_evals = st.max_evals, .seed = st.seed, .stop = &interrupted,
-                        .progress = on_progress, .user = &pc};
+                        .max_evals = st.max_evals, .max_time = a.max_time, .seed = st.seed,
+                        .stop = &interrupted, .progress = on_progress, .user = &pc};
     static zp_search_result res;
     char err[512] = "";
-    zp_status rc = zp_robust_solve(&pb, sc, &st.sim, &fast, st.sched.lo[0], st.sched.hi[0], &o,
-                                   &res, err, sizeof err);
-    if (pc.shown) {
-        fputc('\n', stderr);
-    }
+    zp_status rc = zp_robust_solve(&pb, sc, &st.sim, &fast, st.sched.lo, st.sched.hi, &o, &res,
+                                   err, sizeof err);
     int status = ZP_EXIT_FAIL;
     zp_sim *best_sim = NULL, *study_sim = NULL;
     zp_verify v = {0};
@@ -287,8 +345,13 @@ int zp_cmd_search(int argc, char **argv) {
     ob.set = NULL;
     zp_sim_opts solver = st.sim;
     solver.peaks = fast.peaks;
+    phase_start(&pc, "verification: the best schedule with [solver] and 100x tighter");
     rc = zp_verify_run(&ob, &solver, res.force, st.seed, res.interrupted ? 0 : NROBUST, 0,
-                       &best_sim, &v, err, sizeof err);
+                       &best_sim, &v, on_verify, &pc, err, sizeof err);
+    if (pc.shown) {
+        fputc('\n', stderr);
+        pc.shown = 0;
+    }
     if (rc) {
         fprintf(stderr, "zipopt: %s; nothing was written\n", err);
         goto done;
@@ -307,6 +370,10 @@ int zp_cmd_search(int argc, char **argv) {
         goto done;
     }
     /* the figures first, so that the report links only those drawn */
+    if (!a.no_plot) {
+        phase_start(&pc, "figures: drawing the best run with gnuplot\n");
+        pc.shown = 0;
+    }
     int drawn = a.no_plot ? 0 : figures(&tx, m, sc, &st.sched, &res, &v, best_sim);
     int robust = pb.robust;
     zp_report r = {sc, m, &res, &v, best_sim, &study, STUDY_FORCE,
@@ -324,14 +391,12 @@ int zp_cmd_search(int argc, char **argv) {
     if (res.interrupted) {
         fputs("zipopt: interrupted; wrote the best schedule found so far\n", stderr);
         status = ZP_EXIT_FAIL;
+    } else if (!res.found) {
+        status = ZP_EXIT_NONE; /* the closest candidate is written, marked */
     } else if (interrupted) {
         fputs("zipopt: interrupted after the search had finished; the files are complete\n",
               stderr);
         status = ZP_EXIT_FAIL;
-    } else if (!res.found) {
-        fputs("zipopt: no schedule keeps the margin, the [limits] and the [robust] "
-              "scenarios; wrote the closest candidate, marked as such\n", stderr);
-        status = ZP_EXIT_NONE;
     }
 done:
     zp_tx_abort(&tx); /* nothing of the run remains unless it was committed */

@@ -193,21 +193,16 @@ static int check_points(study *st) {
     return 0;
 }
 
-/* sweep.csv, summary.json and the figure: all or none */
-static int write_outputs(const char *dir, const zp_sweep_out *o, const char *summary,
+/* sweep.csv, summary.json and the figure into the transaction t, committed as a set */
+static int write_outputs(zp_tx *t, const zp_sweep_out *o, const char *summary,
                          int *no_gnuplot) {
     char err[1300];
-    zp_gnuplot g;
-    if (zp_gnuplot_begin(&g, dir, err, sizeof err)) {
-        fprintf(stderr, "zipopt sweep: %s; nothing was written\n", err);
-        return -1;
-    }
-    FILE *csv = zp_gnuplot_open(&g, "sweep.csv", 0, err, sizeof err);
-    FILE *js = csv ? zp_gnuplot_open(&g, "summary.json", 0, err, sizeof err) : NULL;
-    FILE *gp =
-        js && zp_sweep_out_has_figure(o) ? zp_gnuplot_open(&g, "sweep.gp", 1, err, sizeof err) : js;
+    int fig = zp_sweep_out_has_figure(o);
+    FILE *csv = zp_tx_open(t, "sweep.csv", err, sizeof err);
+    FILE *js = csv ? zp_tx_open(t, "summary.json", err, sizeof err) : NULL;
+    FILE *gp = js && fig ? zp_tx_open(t, "sweep.gp", err, sizeof err) : js;
     if (!gp) {
-        zp_gnuplot_abort(&g);
+        zp_tx_abort(t);
         fprintf(stderr, "zipopt sweep: %s; nothing was written\n", err);
         return -1;
     }
@@ -216,23 +211,26 @@ static int write_outputs(const char *dir, const zp_sweep_out *o, const char *sum
         zp_sweep_csv_row(csv, o->s, p, &o->rows[p]);
     }
     zp_sweep_out_json(js, o, summary);
-    if (zp_sweep_out_has_figure(o)) {
+    if (fig) {
         zp_sweep_out_script(gp, o);
     }
-    if (zp_gnuplot_finish(&g, no_gnuplot, err, sizeof err)) {
+    const char *scripts[] = {"sweep.gp"};
+    *no_gnuplot = 0;
+    if (zp_gnuplot_run(t, scripts, fig, no_gnuplot, err, sizeof err)) {
+        zp_tx_abort(t);
         fprintf(stderr, "zipopt sweep: %s; nothing was written\n", err);
         return -1;
     }
-    return 0;
+    return zp_cli_out_commit(t, "sweep");
 }
 
 /* rank 0, once every point is done: the files, then the summary on stdout */
-static int finish(study *st, const sweep_args *a, const char *dir, int ranks) {
+static int finish(study *st, const sweep_args *a, zp_tx *t, int ranks) {
     zp_sweep_out o = {st->s, st->rows, st->name, st->np};
     char summary[4096];
     zp_sweep_out_summary(&o, summary, sizeof summary);
     int no_gnuplot = 0;
-    if (write_outputs(dir, &o, summary, &no_gnuplot)) {
+    if (write_outputs(t, &o, summary, &no_gnuplot)) {
         fprintf(stderr, "zipopt sweep: the finished rows stay in %s; rerun with --resume\n",
                 st->cp.path);
         return ZP_EXIT_FAIL;
@@ -244,7 +242,7 @@ static int finish(study *st, const sweep_args *a, const char *dir, int ranks) {
         printf("%s\n%d points (%d from the checkpoint) in %.2f s on %d rank%s; wrote %s/sweep.csv, "
                "summary.json%s\n",
                summary, st->s->npoint, st->nresumed, since(&st->start), ranks,
-               ranks == 1 ? "" : "s", dir,
+               ranks == 1 ? "" : "s", t->dir,
                !zp_sweep_out_has_figure(&o) ? " (no figure for more than two keys)"
                : no_gnuplot                 ? ", sweep.gp (gnuplot is not installed: no image)"
                                             : ", sweep.png");
@@ -298,7 +296,7 @@ static int prepare(const sweep_args *a, zp_sweep *s, study *st, char **base) {
 }
 
 /* rank 0: the checkpoint (resumed or fresh) and the points left to do; 0 or the exit status */
-static int open_study(study *st, const sweep_args *a, const char *dir, int **todo, int *ntodo) {
+static int open_study(study *st, const sweep_args *a, zp_tx *t, int **todo, int *ntodo) {
     int n = st->s->npoint;
     st->rows = calloc((size_t)n, sizeof *st->rows);
     st->done = calloc((size_t)n, 1);
@@ -308,8 +306,12 @@ static int open_study(study *st, const sweep_args *a, const char *dir, int **tod
         return ZP_EXIT_FAIL;
     }
     char err[1300];
-    zp_status rc = zp_sweep_checkpoint_open(&st->cp, dir, st->s, st->base, st->np, a->resume,
-                                            st->rows, st->done, &st->ndone, err, sizeof err);
+    if (zp_cli_out_begin(t, "sweep", "sweep", a->out, st->sc)) {
+        return ZP_EXIT_FAIL;
+    }
+    zp_status rc = zp_sweep_checkpoint_open(&st->cp, t->dirfd, t->dir, st->s, st->base, st->np,
+                                            a->resume, st->rows, st->done, &st->ndone, err,
+                                            sizeof err);
     if (rc) {
         fprintf(stderr, "zipopt sweep: %s; nothing was written\n", err);
         return rc == ZP_ERR_INPUT ? ZP_EXIT_USAGE : ZP_EXIT_FAIL;
@@ -331,7 +333,7 @@ static int sweep(int argc, char **argv, int rank) {
         return pa > 0 ? ZP_EXIT_OK : ZP_EXIT_USAGE;
     }
     zp_sweep s = {0};
-    study st = {.tty = rank == 0 && isatty(STDERR_FILENO)};
+    study st = {.tty = rank == 0 && isatty(STDERR_FILENO), .cp = {.dirfd = -1}};
     clock_gettime(CLOCK_MONOTONIC, &st.start);
     char *base = NULL;
     int *todo = NULL, ntodo = 0;
@@ -340,14 +342,10 @@ static int sweep(int argc, char **argv, int rank) {
     if (status) {
         goto done; /* every rank saw the same input and stops here alike */
     }
-    char dir[1024];
-    if (a.out) {
-        snprintf(dir, sizeof dir, "%s", a.out);
-    } else {
-        snprintf(dir, sizeof dir, "out/%s/sweep", st.name);
-    }
-    /* rank 0 alone keeps the rows; when it cannot start, the others are sent home at once */
-    status = rank == 0 ? open_study(&st, &a, dir, &todo, &ntodo) : 0;
+    /* rank 0 alone keeps the rows and writes (its transaction: the output folder, the
+       checkpoint in it); when it cannot start, the others are sent home at once */
+    zp_tx t = {.dirfd = -1, .tmpfd = -1};
+    status = rank == 0 ? open_study(&st, &a, &t, &todo, &ntodo) : 0;
     char err[256];
     if (zp_mpi_queue_run(todo, status ? 0 : ntodo, sizeof(zp_study_row), work, done, &st, err,
                          sizeof err)) {
@@ -358,9 +356,10 @@ static int sweep(int argc, char **argv, int rank) {
         fputc('\n', stderr);
     }
     if (rank == 0 && !status) {
-        status = finish(&st, &a, dir, zp_mpi_queue_size());
+        status = finish(&st, &a, &t, zp_mpi_queue_size());
     }
     zp_sweep_checkpoint_close(&st.cp, 0);
+    zp_tx_abort(&t); /* ended already when committed; the checkpoint is not the transaction's */
 done:
     free(base);
     free(todo);

@@ -2,6 +2,8 @@
    so a user fixes a file in one round, registry names included. */
 #include "setup.h"
 
+#include "search.h"
+
 #include <math.h>
 #include <stdio.h>
 
@@ -41,7 +43,9 @@ static void overrides(const char *cmd, zp_setup *st, const zp_overrides *ov, zp_
         }
     }
     st->seed = ov->has_seed ? ov->seed : sc->seed;
-    st->max_evals = ov->max_evals > 0 ? ov->max_evals : sc->max_evals;
+    st->max_evals = ov->max_evals > 0   ? ov->max_evals
+                    : sc->line_max_evals ? sc->max_evals
+                                         : zp_search_default_budget(sc->nsec);
 }
 
 int zp_setup_load(const char *cmd, const char *path, const zp_overrides *ov, zp_setup *st) {

@@ -11,6 +11,7 @@
 #define ZP_MAX_SECTIONS 64
 #define ZP_EXPR_MAX 256
 #define ZP_NAME_MAX 128
+#define ZP_SCENE_EVALS_PER_SECTION 5000 /* the search's default budget, per section */
 #define ZP_MAX_DRIVE_PARAMS (4 * ZP_MAX_SECTIONS) /* parameters of a drive schedule */
 
 /* Bounds the reader holds [solver] to (CONFIG.md), each also as text for its messages.
@@ -100,6 +101,7 @@ typedef struct zp_scene {
 
     /* lines of keys that later stages judge (0 if absent), for their messages */
     int line_forces, line_method, line_formulation, line_search_method, line_kink_radius;
+    int line_max_evals; /* 0: max_evals not given: ZP_SCENE_EVALS_PER_SECTION per section */
 } zp_scene;
 
 #endif

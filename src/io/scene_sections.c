@@ -225,6 +225,7 @@ void zp_scene_read_optimize(parse_ctx *c, zp_scene *sc) {
     zp_scene_get_number(c, K_MARGIN, R_NONNEG, &sc->margin);
     if (zp_scene_get_whole(c, K_MAX_EVALS, 1, LONG_MAX, &u) > 0) {
         sc->max_evals = (long)u;
+        sc->line_max_evals = c->key_line[K_MAX_EVALS];
     }
     if (zp_scene_get_whole(c, K_SEED, 0, ULONG_MAX, &u) > 0) {
         sc->seed = u;

@@ -77,7 +77,8 @@ static void other_text(const zp_scene *sc, int k, char *out, size_t cap) {
         snprintf(out, cap, "%s", sc->search_method);
         break;
     case K_MAX_EVALS:
-        snprintf(out, cap, "%ld", sc->max_evals);
+        snprintf(out, cap, "%ld (the search's default: %d per section)",
+                 ZP_SCENE_EVALS_PER_SECTION * (long)sc->nsec, ZP_SCENE_EVALS_PER_SECTION);
         break;
     case K_SEED:
         snprintf(out, cap, "%lu", sc->seed);

@@ -1,0 +1,138 @@
+/* summary.json of the search (CLI.md "The search's summary.json"): the answer, its
+   verification, the baseline, robustness and the evidence of convergence. */
+#include <math.h>
+
+#include "out_json.h"
+#include "report.h"
+
+#define DEG (180.0 / M_PI)
+
+static double largest_angle(const zp_model *m, const zp_result *r) {
+    double a = 0;
+    for (int i = 0; i < m->nlink; i++) {
+        a = fmax(a, r->max_rel_angle[i]);
+    }
+    return a;
+}
+
+static void json_convergence(FILE *f, const zp_search_result *s) {
+    char sentence[512];
+    zp_report_convergence(sentence, sizeof sentence, s);
+    fprintf(f,
+            "{\"rounds\": %d, \"polishes\": %d, \"basins\": %d, \"reached_best\": %d, "
+            "\"converged\": %s, \"budget_ran_out\": %s, \"time_ran_out\": %s, "
+            "\"search_time\": ",
+            s->nrounds, s->nstarts, s->nbasins, s->nreached, s->converged ? "true" : "false",
+            s->budget_out ? "true" : "false", s->timed_out ? "true" : "false");
+    if (s->found) {
+        zp_out_json_number(f, s->best.time);
+    } else {
+        fputs("null", f);
+    }
+    fputs(", \"sentence\": ", f);
+    zp_out_json_string(f, sentence);
+    fputc('}', f);
+}
+
+static void json_robust(FILE *f, const zp_verify *v) {
+    if (!v->robust_done) {
+        fputs("null", f);
+        return;
+    }
+    fputs("{\"levels\": [", f);
+    for (int i = 0; i < ZP_VERIFY_LEVELS; i++) {
+        const zp_robust *rb = &v->rob[i];
+        fprintf(f, "{\"level\": %g, \"runs\": %d, \"survived\": %d, \"margin_kept\": %d}%s",
+                rb->level, rb->n, rb->survived, rb->kept, i + 1 < ZP_VERIFY_LEVELS ? ", " : "");
+    }
+    fputs("], \"smallest_kill\": ", f);
+    if (v->kill_found) {
+        fprintf(f, "{\"relative\": %.6g, \"section\": ", v->kill);
+        if (v->kill_section) {
+            fprintf(f, "%d}", v->kill_section);
+        } else {
+            fputs("null}", f);
+        }
+    } else {
+        fputs("null", f);
+    }
+    fputc('}', f);
+}
+
+/* the robust search's key (CLI.md): its scenarios, and the answer on fresh ones */
+static void json_scenarios(FILE *f, const zp_report *r) {
+    const zp_robust_check *c = r->check;
+    fprintf(f, ",\n  \"robust\": {\"scenarios\": %d, \"corners\": %d, \"added\": %d, "
+               "\"rounds\": %d, \"worst_margin_deg\": ",
+            r->set->n, r->set->ncorner, r->rinfo->added, r->rinfo->rounds);
+    /* the smallest margin seen: on the fresh scenarios or the adversary's worst */
+    zp_out_json_number(f, fmin(c->worst_margin_deg, r->rinfo->worst.margin_deg));
+    fprintf(f, ", \"scenario_runs\": %ld, \"verify\": {\"samples\": %d, \"survived\": %d, "
+               "\"margin_kept\": %d, \"limits_kept\": %d, \"all_kept\": %d, \"lower_95\": ",
+            r->set->runs, c->samples, c->survived, c->margin_kept, c->limits_kept, c->all_kept);
+    zp_out_json_number(f, c->lower_95);
+    fputs("}}", f);
+}
+
+void zp_report_write_json(FILE *f, const zp_report *r) {
+    const zp_search_result *s = r->res;
+    const zp_result *run = r->v->run;
+    const zp_model *m = r->m;
+    fputs("{\n  \"scene\": ", f);
+    zp_out_json_string(f, r->sc->name);
+    fputs(",\n  \"forces\": [", f);
+    for (int k = 0; k < m->nsec; k++) {
+        zp_out_json_number(f, s->force[k]);
+        fputs(k + 1 < m->nsec ? ", " : "]", f);
+    }
+    fprintf(f, ",\n  \"found\": %s,\n  \"outcome\": \"%s\",\n  \"time\": ",
+            s->found ? "true" : "false", zp_sim_outcome_name(run->outcome));
+    zp_out_json_number(f, run->time);
+    fputs(",\n  \"time_error\": ", f);
+    zp_out_json_number(f, fabs(run->time - r->v->tight->time));
+    fputs(",\n  \"margin_deg\": ", f);
+    zp_out_json_number(f, (m->phi_max - largest_angle(m, run)) * DEG);
+    fputs(",\n  \"max_rel_angle\": [", f);
+    for (int i = 0; i < m->nlink; i++) {
+        zp_out_json_number(f, run->max_rel_angle[i] * DEG);
+        fputs(i + 1 < m->nlink ? ", " : "]", f);
+    }
+    fprintf(f, ",\n  \"verified\": %s,\n  \"arrival_speed\": ", r->v->agree ? "true" : "false");
+    zp_out_json_number(f, run->v);
+    fputs(",\n  \"peak_speed\": ", f);
+    zp_out_json_number(f, run->max_speed);
+    fprintf(f, ",\n  \"evaluations\": %ld,\n  \"wall_s\": ", s->evals);
+    zp_out_json_number(f, s->wall_s);
+    fprintf(f, ",\n  \"algorithm\": \"%s\",\n  \"seed\": %lu,\n  \"interrupted\": %s", r->algo,
+            r->seed, s->interrupted ? "true" : "false");
+    fputs(",\n  \"baseline\": ", f);
+    if (s->base_found) {
+        fputs("{\"force\": ", f);
+        zp_out_json_number(f, s->base_force);
+        fputs(", \"time\": ", f);
+        zp_out_json_number(f, s->base.time);
+        fputc('}', f);
+    } else {
+        fputs("null", f);
+    }
+    fputs(",\n  \"study\": {\"force\": ", f);
+    zp_out_json_number(f, r->study_force);
+    fprintf(f, ", \"outcome\": \"%s\", \"time\": ", zp_sim_outcome_name(r->study->outcome));
+    zp_out_json_number(f, r->study->time);
+    fputs("},\n  \"robustness\": ", f);
+    json_robust(f, r->v);
+    fputs(",\n  \"limits\": ", f);
+    zp_out_json_limits(f, m, run, r->lim);
+    if (r->box) {
+        json_scenarios(f, r);
+    }
+    fputs(",\n  \"convergence\": ", f);
+    json_convergence(f, s);
+    fputs(",\n  \"history\": [", f);
+    for (int i = 0; i < s->nhist; i++) {
+        fprintf(f, "[%ld, ", s->hist[i].evals);
+        zp_out_json_number(f, s->hist[i].time);
+        fputs(i + 1 < s->nhist ? "], " : "]", f);
+    }
+    fputs("]\n}\n", f);
+}
