@@ -4,6 +4,7 @@
 
 #include <stdio.h>
 
+#include "accuracy.h"
 #include "estimate.h"
 #include "sim.h"
 
@@ -17,6 +18,7 @@ typedef struct zp_run_meta {
     const zp_estimate *estimate; /* borrowed; NULL: no error estimate was made */
     const double *unreached;     /* s: asked sample times after the end of the run */
     int nunreached;
+    const zp_accuracy *accuracy; /* borrowed; NULL: no accuracy was requested */
 } zp_run_meta;
 
 /* A number that round-trips, or null if it is not finite. */
