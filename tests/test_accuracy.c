@@ -103,25 +103,24 @@ static void pick(void) {
 }
 
 /* a scene of 8 lines before its [solver] */
-#define HEAD "[course]\nx_start = 0\nsection = 10 : 0\n[trolley]\nmass = 1\n[body]\nlengths = 1\nmasses = 1\n"
+#define HEAD                                                                                       \
+    "[course]\nx_start = 0\nsection = 10 : 0\n[trolley]\nmass = 1\n[body]\nlengths = 1\nmasses = " \
+    "1\n"
 
 /* the reader: accuracy beside rtol names both lines; out of range is refused */
 static void reader(void) {
     static zp_scene sc;
     zp_diag d;
     zp_diag_init(&d);
-    const char *both = HEAD
-                       "[solver]\nrtol = 1e-8\naccuracy = 1e-6\n";
+    const char *both = HEAD "[solver]\nrtol = 1e-8\naccuracy = 1e-6\n";
     CHECK(zp_scene_load_string(both, "t.ini", &sc, &d) != ZP_OK);
     CHECK(d.n >= 1 && strstr(d.text[0], "t.ini:11:") && strstr(d.text[0], "rtol on line 10"));
     zp_diag_init(&d);
-    const char *out = HEAD
-                      "[solver]\naccuracy = 1\n";
+    const char *out = HEAD "[solver]\naccuracy = 1\n";
     CHECK(zp_scene_load_string(out, "t.ini", &sc, &d) != ZP_OK);
     CHECK(d.n >= 1 && strstr(d.text[0], "accuracy") && strstr(d.text[0], "out of range"));
     zp_diag_init(&d);
-    const char *good = HEAD
-                       "[solver]\naccuracy = 1e-6\n";
+    const char *good = HEAD "[solver]\naccuracy = 1e-6\n";
     CHECK(zp_scene_load_string(good, "t.ini", &sc, &d) == ZP_OK && sc.accuracy == 1e-6);
 }
 
