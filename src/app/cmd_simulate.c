@@ -353,6 +353,7 @@ int zp_cmd_simulate(int argc, char **argv) {
     }
     zp_result r;
     zp_input in = {.sched = &st.sched, .sample_t = samples, .nsample = nsample};
+    zp_plot_frames_input(&po, &in);
     if (zp_sim_run(m, s, &in, &r)) {
         fprintf(stderr, "zipopt simulate: %s; nothing was written\n", r.message);
         goto done;
