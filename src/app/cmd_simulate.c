@@ -145,6 +145,18 @@ static int cmp_double(const void *a, const void *b) {
     return (x > y) - (x < y);
 }
 
+/* each [limits] value set: reached against the limit */
+static void print_limits(const zp_model *m, const zp_result *r, const zp_limits *lim) {
+    double v[ZP_LIMIT_COUNT];
+    zp_limits_reached(m, r, v);
+    for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
+        if (lim->max[i] > 0) {
+            printf("limit %s: reached %.4g %s of %g (%s)\n", zp_limit_name(i), v[i],
+                   zp_limit_unit(i), lim->max[i], v[i] <= lim->max[i] ? "kept" : "BROKEN");
+        }
+    }
+}
+
 static void print_text(const zp_model *m, const zp_result *r) {
     printf("outcome: %s", zp_sim_outcome_name(r->outcome));
     if (r->outcome == ZP_OUTCOME_DIED) {
@@ -319,7 +331,7 @@ int zp_cmd_simulate(int argc, char **argv) {
         return ZP_EXIT_USAGE;
     }
     const zp_model *m = st.m;
-    const zp_sim_opts o = st.sim;
+    zp_sim_opts o = st.sim;
     int status = ZP_EXIT_USAGE;
     zp_sim *s = NULL;
     double *samples = NULL;
@@ -346,6 +358,9 @@ int zp_cmd_simulate(int argc, char **argv) {
         goto done;
     }
     status = ZP_EXIT_FAIL;
+    zp_limits lim;
+    zp_limits_from_scene(&st.sc, &lim);
+    o.peaks = zp_limits_need_peaks(&lim);
     s = zp_sim_create(m, &o);
     if (!s) {
         fputs("zipopt simulate: cannot create the simulator (out of memory)\n", stderr);
@@ -368,7 +383,7 @@ int zp_cmd_simulate(int argc, char **argv) {
     zp_estimate_run(m, &o, &in, &r, &est);
     zp_run_meta meta = {st.sc.name, zp_method_get(o.method)->name,
                         zp_formulation_get(o.formulation)->name, o.rtol, o.atol, &st.sched, &est,
-                        samples + nsmp, nsample - nsmp};
+                        samples + nsmp, nsample - nsmp, &lim};
     zp_tx t;
     zp_plot_info info;
     if (zp_cli_out_begin(&t, "simulate", "simulate", a.out, &st.sc)) {
@@ -383,6 +398,7 @@ int zp_cmd_simulate(int argc, char **argv) {
         zp_out_json_result(stdout, m, &r, s, &meta);
     } else {
         print_text(m, &r);
+        print_limits(m, &r, &lim);
         print_samples(m, smp, nsmp, &meta, r.time);
         print_estimate(&r, &est);
     }

@@ -13,6 +13,7 @@ static const struct {
     {"simulate", zp_cmd_simulate},
     {"check", zp_cmd_check},
     {"landscape", zp_cmd_landscape},
+    {"tradeoff", zp_cmd_tradeoff},
     {"sweep", zp_cmd_sweep},
     {"bench", zp_cmd_bench},
 };

@@ -45,6 +45,8 @@ typedef struct zp_model {
    and finds the kinks. Returns NULL and fills d on bad input. */
 zp_model *zp_model_build(const zp_scene *sc, zp_diag *d);
 void zp_model_free(zp_model *m);
+/* Recomputes mtot, B and C from m0, len, half, mass and inertia (after changing them). */
+void zp_model_derive(zp_model *m);
 /* A course for one simulating thread (zp_course_for_thread: compiled code shared by all),
    owned by the caller; NULL with why in e. */
 zp_course *zp_model_course(const zp_model *m, zp_course_err *e);

@@ -2,6 +2,8 @@
    kink impulse and restart the integrator; fills zp_result. Formulation- and method-agnostic. */
 #include "sim.h"
 
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_min.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,6 +19,9 @@
 #define ZP_ZENO_RUN 4
 /* an output time this close (s) to an event shows the state after the event */
 #define ZP_EVENT_TIME_EPS 1e-9
+/* a load peak inside a step is located to this share of its time (Brent's method) */
+#define ZP_PEAK_RTOL 1e-10
+#define ZP_PEAK_ITER 60
 
 struct zp_sim {
     const zp_model *m; /* borrowed */
@@ -32,6 +37,7 @@ struct zp_sim {
 
     /* the run under way */
     const zp_schedule *sched; /* borrowed */
+    const double *scale;      /* borrowed, per section, NULL: 1 (zp_input.force_scale) */
     double breaks[ZP_SCHED_MAX_BREAKS]; /* s, where the force jumps in time */
     int nbreak;
     int sec;
@@ -45,12 +51,16 @@ struct zp_sim {
     zp_load_peaks peaks; /* so far; every evaluation of the loads updates them */
     zp_crossing *cross;  /* owned, ZP_MAX_CROSSINGS */
     int ncross;          /* kept in cross (the result counts all) */
+    gsl_min_fminimizer *brent; /* owned when o.peaks */
 };
 
 /* course and drive at time t and the trolley's x on the current section */
 static zp_drive_now drive_now(const zp_sim *s, double t, double x) {
     zp_drive_now dn = {zp_course_eval(s->course, s->sec, x), 0, 0};
     double F = zp_schedule_force(s->sched, t, x, s->sec);
+    if (s->scale) {
+        F *= s->scale[s->sec];
+    }
     if (s->m->drive == ZP_DRIVE_TANGENT) {
         double norm = sqrt(1 + dn.tr.fp * dn.tr.fp);
         dn.fx = F / norm;
@@ -97,6 +107,9 @@ void zp_sim_free(zp_sim *s) {
     free(s->samples);
     free(s->frames);
     free(s->cross);
+    if (s->brent) {
+        gsl_min_fminimizer_free(s->brent);
+    }
     free(s);
 }
 
@@ -129,12 +142,15 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
     zp_events_state_only(m, state_only);
     zp_method_opts mo = {o->rtol, o->atol, o->max_steps, state_only};
     s->mwork = s->meth->create(s->n, s->nroot, dir, zp_sim_rhs, sim_root, s, &mo);
+    if (o->peaks) {
+        s->brent = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
+    }
     if (o->output_dt > 0) {
         s->cap_rows = (int)fmin(o->t_max / o->output_dt + 2, ZP_MAX_ROWS + 2);
         s->rows = malloc(sizeof *s->rows * s->cap_rows);
     }
     if (!s->course || !s->fwork || !s->y || !s->ydot || !s->yout || !s->roots || !s->cross ||
-        !s->mwork || (o->output_dt > 0 && !s->rows)) {
+        !s->mwork || (o->output_dt > 0 && !s->rows) || (o->peaks && !s->brent)) {
         zp_sim_free(s);
         return NULL;
     }
@@ -173,6 +189,83 @@ static zp_row row_of(zp_sim *s, double t, const double *y) {
         p->acc_g[i] = fmax(p->acc_g[i], acc_g[i]);
     }
     return r;
+}
+
+/* the largest felt acceleration (g) and joint force (N) over the links at state y; the peaks
+   take them in as a side effect */
+static void load_levels(zp_sim *s, double t, const double *y, double lv[2]) {
+    zp_row r = row_of(s, t, y);
+    double load[2][ZP_MAX_LINKS]; /* acceleration, joint force */
+    zp_row_loads(s->m, &r.loads, load[1], load[0]);
+    for (int q = 0; q < 2; q++) {
+        lv[q] = 0;
+        for (int i = 0; i < s->m->nlink; i++) {
+            lv[q] = fmax(lv[q], load[q][i]);
+        }
+        lv[q] = isfinite(lv[q]) ? lv[q] : 0;
+    }
+}
+
+typedef struct level_fn {
+    zp_sim *s;
+    int which; /* 0: felt acceleration, 1: joint force */
+} level_fn;
+
+/* minus one load level at time t inside the last step, from the dense output */
+static double minus_level(double t, void *p) {
+    level_fn *L = p;
+    double lv[2] = {0, 0};
+    if (L->s->meth->interpolate(L->s->mwork, t, L->s->yout) == 0) {
+        load_levels(L->s, t, L->s->yout, lv);
+    }
+    return -lv[L->which];
+}
+
+/* a maximum of level q inside the step [a, b] (f: minus the level at a, at guess and at b,
+   the guess below both ends), refined by Brent's method; every evaluation feeds the peaks */
+static void brent_peak(zp_sim *s, int q, double a, double fa, double guess, double fg, double b,
+                       double fb) {
+    level_fn L = {s, q};
+    gsl_function F = {minus_level, &L};
+    if (gsl_min_fminimizer_set_with_values(s->brent, &F, guess, fg, a, fa, b, fb)) {
+        return;
+    }
+    for (int it = 0; it < ZP_PEAK_ITER; it++) {
+        if (gsl_min_fminimizer_iterate(s->brent)) {
+            return;
+        }
+        double lo = gsl_min_fminimizer_x_lower(s->brent), hi = gsl_min_fminimizer_x_upper(s->brent);
+        if (gsl_min_test_interval(lo, hi, 0, ZP_PEAK_RTOL) == GSL_SUCCESS) {
+            return;
+        }
+    }
+}
+
+/* the load peaks of the step [a, b] just taken (levels la, lb at its ends): the midpoint, and
+   the top of the parabola through the three, bracket a maximum inside for Brent's method */
+static void step_peaks(zp_sim *s, double a, double b, const double la[2], const double lb[2]) {
+    double m = 0.5 * (a + b), lm[2];
+    if (!(b > a) || s->meth->interpolate(s->mwork, m, s->yout)) {
+        return;
+    }
+    load_levels(s, m, s->yout, lm);
+    for (int q = 0; q < 2; q++) {
+        double guess = m, top = lm[q];
+        if (!(top > la[q] && top > lb[q])) {
+            double d1 = (m - a) * (lm[q] - lb[q]), d2 = (m - b) * (lm[q] - la[q]);
+            double v = d1 - d2 != 0 ? m - 0.5 * ((m - a) * d1 - (m - b) * d2) / (d1 - d2) : a;
+            if (!(v > a && v < b)) {
+                continue;
+            }
+            level_fn L = {s, q};
+            guess = v;
+            top = -minus_level(v, &L);
+            if (!(top > la[q] && top > lb[q])) {
+                continue;
+            }
+        }
+        brent_peak(s, q, a, -la[q], guess, -top, b, -lb[q]);
+    }
 }
 
 /* which way the trolley leaves x: its velocity, or from rest its acceleration */
@@ -326,9 +419,11 @@ static int cross_kink(zp_sim *s, double t, zp_result *r, int to) {
     c.q[0] = b;
     c.q[1] = entered.f;
     zp_impulse imp;
+    double v_in[2] = {c.v[0], c.v[1]};
     if (zp_impulse_apply(m, entered.fp, &c, &imp)) {
         return -1;
     }
+    s->peaks.kink_dv = fmax(s->peaks.kink_dv, hypot(c.v[0] - v_in[0], c.v[1] - v_in[1]));
     double wk[2] = {s->y[s->n - 2], s->y[s->n - 1]};
     s->form->from_chain(m, &c, wk, s->y);
     s->e_impulse += imp.energy_lost;
@@ -418,6 +513,10 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
         return fail(s, r, t, "the integrator could not start");
     }
+    double ta = t, la[2] = {0, 0}; /* the last step's start and load levels there (o.peaks) */
+    if (s->o.peaks) {
+        load_levels(s, t, s->y, la);
+    }
     for (;;) {
         char err[256] = "";
         zp_adv adv = s->meth->advance(s->mwork, &t, s->y, s->roots, err, sizeof err);
@@ -437,6 +536,13 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
         }
         track_extremes(s, t, s->y, r);
         frames_at_x_in_step(s, in, t, &oc);
+        if (s->o.peaks) {
+            double lb[2];
+            load_levels(s, t, s->y, lb);
+            step_peaks(s, ta, t, la, lb);
+            ta = t;
+            memcpy(la, lb, sizeof la);
+        }
         if (adv != ZP_ADV_ROOT) {
             emit_outputs(s, in, t, 1, &oc);
             /* a boundary passed without a root (one masked at a restart) is crossed here */
@@ -491,6 +597,9 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
         if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
             return fail(s, r, t, "the integrator could not restart after the kink");
         }
+        if (s->o.peaks) {
+            load_levels(s, t, s->y, la);
+        }
     }
 }
 
@@ -498,7 +607,9 @@ zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     struct timespec t0, t1;
     clock_gettime(CLOCK_MONOTONIC, &t0);
     memset(r, 0, sizeof *r);
+    s->m = m;
     s->sched = in->sched;
+    s->scale = in->force_scale;
     s->nbreak = zp_schedule_breaks(in->sched, s->breaks, ZP_SCHED_MAX_BREAKS);
     s->sec = 0;
     s->e_impulse = 0;
