@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "prep.h"
+#include "robust.h"
 #include "search.h"
 
 /* the stop flag is handed to the search as its sig_atomic_t flag */
@@ -377,11 +378,26 @@ static void on_progress(void *user, const zp_search_progress *p, int improved) {
     }
 }
 
-/* the search over the scene's bounds, through optim's one entry point */
+/* the search over the scene's bounds, as the command runs it: held to the scene's [limits]
+   and [robust] scenarios when it has them, the answer verified on fresh scenarios */
 static zp_status search(const zp_setup *st, const zp_search_opts *o, zp_search_result *res,
                         char *err, size_t errlen) {
-    zp_objective ob = {st->m, st->limit, st->sim.t_max, &st->sched};
-    return zp_search_run(&ob, &st->search, st->sched.lo, st->sched.hi, o, res, err, errlen);
+    zp_robust_problem *pb = calloc(1, sizeof *pb); /* large: kept off the stack */
+    zp_sim_opts fast;
+    if (!pb || zp_robust_setup(pb, &st->sc, st->m, st->limit, &st->sched, &st->sim,
+                               &st->search, &fast)) {
+        snprintf(err, errlen, "out of memory building the scenarios");
+        if (pb) {
+            zp_robust_problem_free(pb);
+        }
+        free(pb);
+        return ZP_ERR_NOMEM;
+    }
+    zp_status rc = zp_robust_solve(pb, &st->sc, &st->sim, &fast, st->sched.lo, st->sched.hi, o,
+                                   res, err, errlen);
+    zp_robust_problem_free(pb);
+    free(pb);
+    return rc;
 }
 
 static void search_numbers(const zp_search_result *r, double *v) {
