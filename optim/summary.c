@@ -59,6 +59,19 @@ static void json_robust(FILE *f, const zp_verify *v) {
     fputc('}', f);
 }
 
+/* [solver] accuracy: what the answer's run met; the search checks, simulate also tightens */
+static void json_accuracy(FILE *f, const zp_report *r) {
+    double met = fabs(r->v->run->time - r->v->tight->time);
+    fputs(",\n  \"accuracy\": {\"requested\": ", f);
+    zp_out_json_number(f, r->sc->accuracy);
+    fputs(", \"met\": ", f);
+    zp_out_json_number(f, met);
+    fprintf(f, ", \"ok\": %s, \"method\": \"%s\", \"rtol\": ",
+            met <= r->sc->accuracy ? "true" : "false", r->method);
+    zp_out_json_number(f, r->solver->rtol);
+    fputc('}', f);
+}
+
 /* the robust search's key (CLI.md): its scenarios, and the answer on fresh ones */
 static void json_scenarios(FILE *f, const zp_report *r) {
     const zp_robust_check *c = r->check;
@@ -90,6 +103,9 @@ void zp_report_write_json(FILE *f, const zp_report *r) {
     zp_out_json_number(f, run->time);
     fputs(",\n  \"time_error\": ", f);
     zp_out_json_number(f, fabs(run->time - r->v->tight->time));
+    if (r->sc->accuracy > 0) {
+        json_accuracy(f, r);
+    }
     fputs(",\n  \"margin_deg\": ", f);
     zp_out_json_number(f, (m->phi_max - largest_angle(m, run)) * DEG);
     fputs(",\n  \"max_rel_angle\": [", f);

@@ -319,6 +319,32 @@ static int say_figures(const char *dir, const zp_plot_opts *po, const zp_plot_in
     return ZP_EXIT_OK;
 }
 
+/* the answer's run and its error estimate; with [solver] accuracy, tightened until it is met */
+static zp_status run_answer(const zp_model *m, double accuracy, zp_sim_opts *o,
+                            const zp_input *in, zp_sim **s, zp_result *r, zp_estimate *e,
+                            zp_accuracy *a) {
+    if (accuracy > 0) {
+        return zp_accuracy_run(m, o, in, accuracy, s, r, e, a);
+    }
+    *s = zp_sim_create(m, o);
+    if (!*s) {
+        snprintf(r->message, sizeof r->message, "cannot create the simulator (out of memory)");
+        return ZP_ERR_NOMEM;
+    }
+    zp_status st = zp_sim_run(m, *s, in, r);
+    if (st == ZP_OK) {
+        zp_estimate_run(m, o, in, r, e);
+    }
+    return st;
+}
+
+/* what a request for accuracy met, and what it cost */
+static void print_accuracy(const zp_accuracy *a) {
+    printf("accuracy: %.2g s requested, %.2g s met%s (%s at rtol %.0e, %d rerun%s)\n",
+           a->requested, a->met, a->ok ? "" : " - NOT MET", zp_method_get(a->method)->name,
+           a->rtol, a->reruns, a->reruns == 1 ? "" : "s");
+}
+
 int zp_cmd_simulate(int argc, char **argv) {
     sim_args a;
     int pa = parse_args(argc, argv, &a);
@@ -361,15 +387,12 @@ int zp_cmd_simulate(int argc, char **argv) {
     zp_limits lim;
     zp_limits_from_scene(&st.sc, &lim);
     o.peaks = zp_limits_need_peaks(&lim);
-    s = zp_sim_create(m, &o);
-    if (!s) {
-        fputs("zipopt simulate: cannot create the simulator (out of memory)\n", stderr);
-        goto done;
-    }
     zp_result r;
+    zp_estimate est;
+    zp_accuracy acc;
     zp_input in = {.sched = &st.sched, .sample_t = samples, .nsample = nsample};
     zp_plot_frames_input(&po, &in);
-    if (zp_sim_run(m, s, &in, &r)) {
+    if (run_answer(m, st.sc.accuracy, &o, &in, &s, &r, &est, &acc)) {
         fprintf(stderr, "zipopt simulate: %s; nothing was written\n", r.message);
         goto done;
     }
@@ -379,11 +402,10 @@ int zp_cmd_simulate(int argc, char **argv) {
     }
     int nsmp;
     const zp_row *smp = zp_sim_samples(s, &nsmp);
-    zp_estimate est;
-    zp_estimate_run(m, &o, &in, &r, &est);
     zp_run_meta meta = {st.sc.name, zp_method_get(o.method)->name,
                         zp_formulation_get(o.formulation)->name, o.rtol, o.atol, &st.sched, &est,
-                        samples + nsmp, nsample - nsmp, &lim};
+                        samples + nsmp, nsample - nsmp, &lim,
+                        st.sc.accuracy > 0 ? &acc : NULL};
     zp_tx t;
     zp_plot_info info;
     if (zp_cli_out_begin(&t, "simulate", "simulate", a.out, &st.sc)) {
@@ -401,6 +423,9 @@ int zp_cmd_simulate(int argc, char **argv) {
         print_limits(m, &r, &lim);
         print_samples(m, smp, nsmp, &meta, r.time);
         print_estimate(&r, &est);
+        if (meta.accuracy) {
+            print_accuracy(&acc);
+        }
     }
     fprintf(a.json ? stderr : stdout, "wrote in %s: %s\n", t.dir, t.written);
     status = a.plot ? say_figures(t.dir, &po, &info, a.json ? stderr : stdout) : ZP_EXIT_OK;

@@ -9,6 +9,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "accuracy.h"
 #include "events.h"
 #include "impulse.h"
 
@@ -666,6 +667,10 @@ zp_status zp_sim_opts_from_scene(const zp_scene *sc, zp_sim_opts *o, zp_diag *d)
         zp_diag_add(d, sc->path, sc->line_formulation, "solver", "formulation",
                     "unknown formulation '%s'; expected one of those listed by zipopt --help",
                     sc->formulation);
+    }
+    if (sc->accuracy > 0 && o->method >= 0) {
+        /* a method given beside accuracy restricts the pick to it */
+        zp_accuracy_pick(sc->accuracy, sc->line_method ? o->method : -1, zp_accuracy_stiff(sc), o);
     }
     return o->method < 0 || o->formulation < 0 ? ZP_ERR_INPUT : ZP_OK;
 }

@@ -102,6 +102,16 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
         key_num(f, "time_error_rtol", e->rtol, ", ");
         fprintf(f, "\"sensitive\": %s,\n", !e->ok ? "null" : e->sensitive ? "true" : "false");
     }
+    if (meta->accuracy) {
+        const zp_accuracy *a = meta->accuracy;
+        fputs("  \"accuracy\": {", f);
+        key_num(f, "requested", a->requested, ", ");
+        key_num(f, "met", a->met, ", ");
+        fprintf(f, "\"ok\": %s, \"method\": \"%s\", ", a->ok ? "true" : "false",
+                zp_method_get(a->method)->name);
+        key_num(f, "rtol", a->rtol, ", ");
+        fprintf(f, "\"reruns\": %d},\n", a->reruns);
+    }
     if (r->died_link) {
         fprintf(f, "  \"died_link\": %d,\n", r->died_link);
     } else {

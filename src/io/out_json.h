@@ -4,6 +4,7 @@
 
 #include <stdio.h>
 
+#include "accuracy.h"
 #include "estimate.h"
 #include "scenario.h"
 #include "sim.h"
@@ -19,6 +20,7 @@ typedef struct zp_run_meta {
     const double *unreached;     /* s: asked sample times after the end of the run */
     int nunreached;
     const zp_limits *lim;        /* borrowed; NULL: no [limits] (each reached value still shown) */
+    const zp_accuracy *accuracy; /* borrowed; NULL: no accuracy was requested */
 } zp_run_meta;
 
 /* A number that round-trips, or null if it is not finite. */
