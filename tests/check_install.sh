@@ -43,14 +43,14 @@ offers() {
 }
 
 got=$(offers zipopt "")
-for c in simulate check landscape sweep bench; do
+for c in simulate check landscape tradeoff sweep bench; do
     case $got in *" $c "*) ;; *) fail "zipopt <TAB> does not offer $c: $got" ;; esac
 done
 [ "$(offers zipopt sim)" = " simulate " ] || fail "zipopt sim<TAB>: $(offers zipopt sim)"
 [ "$(offers zipopt bench "")" = " trade " ] || fail "zipopt bench <TAB>: $(offers zipopt bench "")"
 
 # every option a command's --help names is offered and is in the man page
-for cmd in simulate check landscape sweep "bench trade" x.ini; do
+for cmd in simulate check landscape tradeoff sweep "bench trade" x.ini; do
     # shellcheck disable=SC2086 # cmd is one or two words (x.ini: the search)
     for o in $("$exe" $cmd --help | grep -o -- '--[a-z][a-z-]*' | sort -u); do
         # shellcheck disable=SC2086

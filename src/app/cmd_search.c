@@ -27,7 +27,7 @@ static volatile sig_atomic_t interrupted;
 
 static void usage(FILE *f) {
     fputs("usage: zipopt [SCENE.ini] [--out DIR] [--algorithm NAME] [--seed N] [--max-evals N]\n"
-          "              [--max-time S] [--no-plot]\n"
+          "              [--max-time S] [--no-plot] [--json]\n"
           "Searches for the fastest schedule of drive forces, one per course section within\n"
           "[drive] min, max, that brings the spy to the end alive with every relative joint\n"
           "angle at least [optimize] margin below death_angle. With no file: the built-in seed\n"
@@ -46,6 +46,8 @@ static void usage(FILE *f) {
           "  --max-time S      stops the search after S seconds of wall time, keeping the best\n"
           "                    so far (then the answer depends on the machine's speed)\n"
           "  --no-plot         skip the figures\n"
+          "  --json            print summary.json's object on stdout instead of the text\n"
+          "                    summary (keys: README, CLI.md)\n"
           "strategies:\n",
           f);
     for (int i = 0; i < zp_search_algo_count(); i++) {
@@ -59,12 +61,13 @@ typedef struct search_args {
     int has_seed;
     unsigned long seed, max_evals; /* max_evals 0: from the scene */
     double max_time;               /* s, 0: no limit */
-    int no_plot;
+    int no_plot, json;
 } search_args;
 
-enum { O_OUT = ZP_OPT_FIRST, O_NO_PLOT, O_ALGORITHM, O_SEED, O_MAX_EVALS, O_MAX_TIME };
+enum { O_OUT = ZP_OPT_FIRST, O_NO_PLOT, O_ALGORITHM, O_SEED, O_MAX_EVALS, O_MAX_TIME, O_JSON };
 static const struct option options[] = {
     {"help", no_argument, NULL, 'h'},
+    {"json", no_argument, NULL, O_JSON},
     {"out", required_argument, NULL, O_OUT},
     {"no-plot", no_argument, NULL, O_NO_PLOT},
     {"algorithm", required_argument, NULL, O_ALGORITHM},
@@ -99,6 +102,9 @@ static int parse_args(int argc, char **argv, search_args *a) {
             break;
         case O_NO_PLOT:
             a->no_plot = 1;
+            break;
+        case O_JSON:
+            a->json = 1;
             break;
         case O_ALGORITHM:
             a->algo = optarg;
@@ -385,8 +391,12 @@ int zp_cmd_search(int argc, char **argv) {
     if (drawn < 0 || write_outputs(&tx, &r, best_sim) || zp_cli_out_commit(&tx, "")) {
         goto done;
     }
-    print_summary(&r);
-    printf("wrote in %s: %s\n", tx.dir, tx.written);
+    if (a.json) {
+        zp_report_write_json(stdout, &r); /* summary.json's object */
+    } else {
+        print_summary(&r);
+    }
+    fprintf(a.json ? stderr : stdout, "wrote in %s: %s\n", tx.dir, tx.written);
     status = ZP_EXIT_OK;
     if (res.interrupted) {
         fputs("zipopt: interrupted; wrote the best schedule found so far\n", stderr);

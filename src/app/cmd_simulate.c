@@ -391,6 +391,7 @@ int zp_cmd_simulate(int argc, char **argv) {
     zp_estimate est;
     zp_accuracy acc;
     zp_input in = {.sched = &st.sched, .sample_t = samples, .nsample = nsample};
+    zp_plot_frames_input(&po, &in);
     if (run_answer(m, st.sc.accuracy, &o, &in, &s, &r, &est, &acc)) {
         fprintf(stderr, "zipopt simulate: %s; nothing was written\n", r.message);
         goto done;

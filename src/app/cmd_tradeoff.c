@@ -8,6 +8,7 @@
 
 #include "cli.h"
 #include "gnuplot.h"
+#include "out_json.h"
 #include "robust.h"
 #include "setup.h"
 
@@ -15,13 +16,14 @@
 #define KMH 3.6
 
 static void usage(FILE *f) {
-    fputs("usage: zipopt tradeoff SCENE.ini [--levels P1,P2,..] [--out DIR]\n"
+    fputs("usage: zipopt tradeoff SCENE.ini [--levels P1,P2,..] [--json] [--out DIR]\n"
           "Runs the robust search (zipopt SCENE.ini) at each force error level P (%, each\n"
           "section's force off by up to +/-P %; the scene's other [robust] ranges and [limits]\n"
           "as given) and writes tradeoff.csv, tradeoff.png (finish time and arrival speed\n"
           "against the level, the nominal optimum marked) and report.md (what each level\n"
           "costs against the nominal optimum) to out/<scene name>/tradeoff/ (or DIR).\n"
           "  --levels P1,..  force error levels in % (default 0,1,2,5,10), each in [0, 100)\n"
+          "  --json          print the levels as one JSON object (keys: README)\n"
           "  --out DIR       output folder\n",
           f);
 }
@@ -35,6 +37,40 @@ typedef struct level_out {
     int scenarios;
     zp_robust_check check;
 } level_out;
+
+/* "key": number, then sep */
+static void json_num(FILE *f, const char *key, double v, const char *sep) {
+    fprintf(f, "\"%s\": ", key);
+    zp_out_json_number(f, v);
+    fputs(sep, f);
+}
+
+/* the levels as one JSON object, the CSV's columns by name */
+static void write_json(FILE *f, const zp_scene *sc, const level_out *L, int n, int nsec) {
+    fputs("{\n  \"scene\": ", f);
+    zp_out_json_string(f, sc->name);
+    fputs(",\n  \"levels\": [", f);
+    for (int i = 0; i < n; i++) {
+        fprintf(f, "%s\n    {", i ? "," : "");
+        json_num(f, "force_error_pct", L[i].p, ", ");
+        fprintf(f, "\"found\": %s, ", L[i].found ? "true" : "false");
+        json_num(f, "time", L[i].time, ", ");
+        json_num(f, "cost", L[i].time - L[0].time, ", ");
+        json_num(f, "cost_pct", 100 * (L[i].time - L[0].time) / L[0].time, ", ");
+        json_num(f, "arrival_kmh", L[i].arrival, ", ");
+        fputs("\"forces\": [", f);
+        for (int k = 0; k < nsec; k++) {
+            zp_out_json_number(f, L[i].force[k]);
+            fputs(k + 1 < nsec ? ", " : "], ", f);
+        }
+        fprintf(f, "\"scenarios\": %d, \"verify\": {\"samples\": %d, \"survived\": %d, "
+                   "\"margin_kept\": %d, \"all_kept\": %d, ",
+                L[i].scenarios, L[i].check.samples, L[i].check.survived, L[i].check.margin_kept,
+                L[i].check.all_kept);
+        json_num(f, "lower_95", L[i].check.lower_95, "}}");
+    }
+    fputs("\n  ]\n}\n", f);
+}
 
 /* the robust answer at force error p; its arrival speed from one nominal run */
 static zp_status solve_level(const zp_setup *su, double p, level_out *out, char *err,
@@ -160,17 +196,19 @@ static int parse_levels(const char *text, double *lv) {
     return m;
 }
 
-enum { O_LEVELS = ZP_OPT_FIRST, O_OUT };
+enum { O_LEVELS = ZP_OPT_FIRST, O_OUT, O_JSON };
 
 static const struct option options[] = {
     {"help", no_argument, NULL, 'h'},
     {"levels", required_argument, NULL, O_LEVELS},
     {"out", required_argument, NULL, O_OUT},
+    {"json", no_argument, NULL, O_JSON},
     {NULL, 0, NULL, 0},
 };
 
 int zp_cmd_tradeoff(int argc, char **argv) {
     const char *scene = NULL, *out = NULL, *levels = NULL;
+    int json = 0;
     zp_cli_opts_begin();
     for (int c; (c = zp_cli_opts_next("tradeoff", argc, argv, options)) != -1;) {
         if (c == 'h') {
@@ -180,6 +218,8 @@ int zp_cmd_tradeoff(int argc, char **argv) {
             levels = optarg;
         } else if (c == O_OUT) {
             out = optarg;
+        } else if (c == O_JSON) {
+            json = 1;
         } else {
             return ZP_EXIT_USAGE;
         }
@@ -235,12 +275,15 @@ int zp_cmd_tradeoff(int argc, char **argv) {
     if (zp_cli_out_commit(&t, "tradeoff")) {
         goto done;
     }
-    for (int i = 1; i < n; i++) {
+    for (int i = 1; i < n && !json; i++) {
         printf("robust to +/-%g %%: %.4f s, costs %.3f s (%.1f %%)%s\n", L[i].p, L[i].time,
                L[i].time - L[0].time, 100 * (L[i].time - L[0].time) / L[0].time,
                L[i].found ? "" : ", NOT found");
     }
-    printf("wrote in %s: %s%s\n", t.dir, t.written,
+    if (json) {
+        write_json(stdout, sc, L, n, su.m->nsec);
+    }
+    fprintf(json ? stderr : stdout, "wrote in %s: %s%s\n", t.dir, t.written,
            missing ? " (no gnuplot: tradeoff.gp without its image)" : "");
     status = ZP_EXIT_OK;
 done:

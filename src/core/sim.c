@@ -47,6 +47,8 @@ struct zp_sim {
     int nrows, cap_rows;
     zp_row *samples; /* owned, cap_samples */
     int nsamples, cap_samples;
+    zp_row *frames; /* owned, cap_frames */
+    int nframes, cap_frames;
     zp_load_peaks peaks; /* so far; every evaluation of the loads updates them */
     zp_crossing *cross;  /* owned, ZP_MAX_CROSSINGS */
     int ncross;          /* kept in cross (the result counts all) */
@@ -104,6 +106,7 @@ void zp_sim_free(zp_sim *s) {
     free(s->roots);
     free(s->rows);
     free(s->samples);
+    free(s->frames);
     free(s->cross);
     if (s->brent) {
         gsl_min_fminimizer_free(s->brent);
@@ -162,7 +165,8 @@ static zp_chain chain_of(const zp_sim *s, const double *y) {
     return c;
 }
 
-static zp_row row_of(zp_sim *s, double t, const double *y) {
+/* the row at (t, y), touching nothing of the run */
+static zp_row row_at(zp_sim *s, double t, const double *y) {
     zp_drive_now dn = drive_now(s, t, y[0]); /* its course point serves the chain too */
     zp_row r = {.t = t, .sec = s->sec};
     s->form->to_chain(s->m, &dn.tr, y, &r.c);
@@ -170,6 +174,12 @@ static zp_row row_of(zp_sim *s, double t, const double *y) {
     r.w_damp = y[s->n - 1];
     r.e_impulse = s->e_impulse;
     s->form->rhs(s->m, s->fwork, &dn, y, s->ydot, &r.loads);
+    return r;
+}
+
+/* the row at (t, y), its loads counted in the run's peaks */
+static zp_row row_of(zp_sim *s, double t, const double *y) {
+    zp_row r = row_at(s, t, y);
     zp_load_peaks *p = &s->peaks;
     p->normal_min = fmin(p->normal_min, r.loads.normal);
     p->normal_max = fmax(p->normal_max, r.loads.normal);
@@ -266,48 +276,112 @@ static int departure(zp_sim *s, double t, const double *y) {
     return (v > 0) - (v < 0);
 }
 
-/* the next output time (row or sample), or INFINITY */
-static double next_output(const zp_sim *s, const zp_input *in, double next_row, int next_sample) {
-    double t = s->rows && s->nrows < s->cap_rows ? next_row : INFINITY;
-    return next_sample < in->nsample ? fmin(t, in->sample_t[next_sample]) : t;
+/* where the outputs of a run stand: the next row's time, the next sample and frame */
+typedef struct out_cursor {
+    double next_row; /* s */
+    int next_sample, next_frame;
+    double t_prev; /* s: where the last step (or restart) ended */
+} out_cursor;
+
+/* the next frame time, or INFINITY (none left, or frames at x) */
+static double next_frame_t(const zp_input *in, const out_cursor *oc) {
+    return !in->frame_at_x && oc->next_frame < in->nframe ? in->frame_at[oc->next_frame]
+                                                          : INFINITY;
 }
 
-static int push_sample(zp_sim *s, zp_row r) {
-    if (s->nsamples == s->cap_samples) {
-        int cap = s->cap_samples ? 2 * s->cap_samples : 16;
-        zp_row *grown = realloc(s->samples, sizeof *grown * cap);
+/* the next output time (row, sample or frame), or INFINITY */
+static double next_output(const zp_sim *s, const zp_input *in, const out_cursor *oc) {
+    double t = s->rows && s->nrows < s->cap_rows ? oc->next_row : INFINITY;
+    t = fmin(t, next_frame_t(in, oc));
+    return oc->next_sample < in->nsample ? fmin(t, in->sample_t[oc->next_sample]) : t;
+}
+
+/* r appended to the growing list *v (n used, cap allocated); -1 out of memory */
+static int push_row(zp_row **v, int *n, int *cap, zp_row r) {
+    if (*n == *cap) {
+        int grown_cap = *cap ? 2 * *cap : 16;
+        zp_row *grown = realloc(*v, sizeof *grown * grown_cap);
         if (!grown) {
             return -1;
         }
-        s->samples = grown;
-        s->cap_samples = cap;
+        *v = grown;
+        *cap = grown_cap;
     }
-    s->samples[s->nsamples++] = r;
+    (*v)[(*n)++] = r;
     return 0;
 }
 
-/* rows of the output grid and samples due by time t_upto. dense: take each from the
+/* rows of the output grid, samples and frames due by time t_upto. dense: take each from the
    integrator's dense output at its own time; else all show the current state s->y (at an
    event, within ZP_EVENT_TIME_EPS of it) */
 static void emit_outputs(zp_sim *s, const zp_input *in, double t_upto, int dense,
-                         double *next_row, int *next_sample) {
-    for (double to; (to = next_output(s, in, *next_row, *next_sample)) <= t_upto;) {
+                         out_cursor *oc) {
+    for (double to; (to = next_output(s, in, oc)) <= t_upto;) {
         const double *y = s->y;
         if (dense && s->meth->interpolate(s->mwork, to, s->yout) == 0) {
             y = s->yout;
         }
-        zp_row r = row_of(s, to, y);
-        if (s->rows && s->nrows < s->cap_rows && *next_row == to) {
-            s->rows[s->nrows++] = r;
-            *next_row = s->nrows * s->o.output_dt;
-        }
-        if (*next_sample < in->nsample && in->sample_t[*next_sample] == to) {
-            if (push_sample(s, r)) {
+        if (next_frame_t(in, oc) == to) {
+            /* before the row of the run: a frame leaves the load peaks alone */
+            if (push_row(&s->frames, &s->nframes, &s->cap_frames, row_at(s, to, y))) {
                 return;
             }
-            ++*next_sample;
+            oc->next_frame++;
+        }
+        int row = s->rows && s->nrows < s->cap_rows && oc->next_row == to;
+        int sample = oc->next_sample < in->nsample && in->sample_t[oc->next_sample] == to;
+        if (!row && !sample) {
+            continue;
+        }
+        zp_row r = row_of(s, to, y);
+        if (row) {
+            s->rows[s->nrows++] = r;
+            oc->next_row = s->nrows * s->o.output_dt;
+        }
+        if (sample) {
+            if (push_row(&s->samples, &s->nsamples, &s->cap_samples, r)) {
+                return;
+            }
+            oc->next_sample++;
         }
     }
+}
+
+/* frames at x the trolley has reached by the step that ended at (t, s->y): each where the
+   dense output first crosses it, those at or past the section's right end left to the kink
+   (shown after its impulse) or the finish */
+static void frames_at_x_in_step(zp_sim *s, const zp_input *in, double t, out_cursor *oc) {
+    double x = s->y[0], x_right = s->m->xb[s->sec + 1]; /* crossed by now, not past the kink */
+    for (; in->frame_at_x && oc->next_frame < in->nframe; oc->next_frame++) {
+        double at = in->frame_at[oc->next_frame], tc;
+        if (!(at <= x && at < x_right)) {
+            break;
+        }
+        const double *y = s->yout;
+        if (zp_method_dense_crossing(s->meth, s->mwork, 0, at, oc->t_prev, t, &tc, s->yout)) {
+            y = tc == t ? s->y : NULL; /* the interpolant misses it: the nearer end */
+        }
+        if (!y && s->meth->interpolate(s->mwork, tc, s->yout) == 0) {
+            y = s->yout;
+        }
+        if (!y || push_row(&s->frames, &s->nframes, &s->cap_frames, row_at(s, tc, y))) {
+            return;
+        }
+    }
+    oc->t_prev = t;
+}
+
+/* frames at x up to `reached` (the start, a kink just crossed, the finish line; a root's x
+   may fall short of it by the root's tolerance): they show the state s->y at t */
+static void frames_at_x_here(zp_sim *s, const zp_input *in, double t, double reached,
+                             out_cursor *oc) {
+    for (; in->frame_at_x && oc->next_frame < in->nframe; oc->next_frame++) {
+        if (!(in->frame_at[oc->next_frame] <= reached) ||
+            push_row(&s->frames, &s->nframes, &s->cap_frames, row_at(s, t, s->y))) {
+            break;
+        }
+    }
+    oc->t_prev = t;
 }
 
 static void track_extremes(zp_sim *s, double t, const double *y, zp_result *r) {
@@ -428,9 +502,10 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     zp_energy e0 = zp_state_energy(m, &c);
     r->e_initial = e0.kinetic + e0.potential;
 
-    double t = 0, next_row = 0;
-    int next_sample = 0;
-    emit_outputs(s, in, t, 0, &next_row, &next_sample);
+    double t = 0;
+    out_cursor oc = {0};
+    emit_outputs(s, in, t, 0, &oc);
+    frames_at_x_here(s, in, t, s->y[0], &oc);
     /* a root finder ignores a root at t0: a start that rolls back at once is caught here */
     if (departure(s, t, s->y) < 0) {
         finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_ROLLED_BACK);
@@ -461,6 +536,7 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             return fail(s, r, t, err);
         }
         track_extremes(s, t, s->y, r);
+        frames_at_x_in_step(s, in, t, &oc);
         if (s->o.peaks) {
             double lb[2];
             load_levels(s, t, s->y, lb);
@@ -469,7 +545,7 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             memcpy(la, lb, sizeof la);
         }
         if (adv != ZP_ADV_ROOT) {
-            emit_outputs(s, in, t, 1, &next_row, &next_sample);
+            emit_outputs(s, in, t, 1, &oc);
             /* a boundary passed without a root (one masked at a restart) is crossed here */
             if (s->y[0] < m->xb[s->sec] || s->y[0] > m->xb[s->sec + 1]) {
                 memset(s->roots, 0, sizeof *s->roots * s->nroot);
@@ -492,12 +568,14 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
         int link = 0, to = 0;
         zp_event ev = zp_events_classify(m, s->sec, s->roots, &link, &to);
         /* outputs up to the event from the dense output; one on a kink shows the state after */
-        emit_outputs(s, in, ev == ZP_EVENT_KINK ? t - ZP_EVENT_TIME_EPS : t, 1, &next_row,
-                     &next_sample);
+        emit_outputs(s, in, ev == ZP_EVENT_KINK ? t - ZP_EVENT_TIME_EPS : t, 1, &oc);
         if (ev == ZP_EVENT_NONE) {
             continue;
         }
         add_stats(s, r);
+        if (ev == ZP_EVENT_FINISH) {
+            frames_at_x_here(s, in, t, m->xb[m->nsec], &oc);
+        }
         if (ev != ZP_EVENT_KINK) {
             r->died_link = ev == ZP_EVENT_DEATH ? link + 1 : 0;
             finish_result(s, r, t,
@@ -511,7 +589,8 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
         if (trapped < 0) {
             return fail(s, r, t, "the mass matrix is not positive definite at the kink");
         }
-        emit_outputs(s, in, t + ZP_EVENT_TIME_EPS, 0, &next_row, &next_sample);
+        emit_outputs(s, in, t + ZP_EVENT_TIME_EPS, 0, &oc);
+        frames_at_x_here(s, in, t, s->y[0], &oc);
         if (trapped) {
             finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_TRAPPED_AT_KINK);
             return ZP_OK;
@@ -535,7 +614,7 @@ zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     s->nbreak = zp_schedule_breaks(in->sched, s->breaks, ZP_SCHED_MAX_BREAKS);
     s->sec = 0;
     s->e_impulse = 0;
-    s->nrows = s->nsamples = s->ncross = 0;
+    s->nrows = s->nsamples = s->nframes = s->ncross = 0;
     s->peaks = (zp_load_peaks){.normal_min = INFINITY, .normal_max = -INFINITY};
     zp_status st = run(m, s, in, r);
     clock_gettime(CLOCK_MONOTONIC, &t1);
@@ -551,6 +630,11 @@ const zp_row *zp_sim_rows(const zp_sim *s, int *n) {
 const zp_row *zp_sim_samples(const zp_sim *s, int *n) {
     *n = s->nsamples;
     return s->samples;
+}
+
+const zp_row *zp_sim_frames(const zp_sim *s, int *n) {
+    *n = s->nframes;
+    return s->frames;
 }
 
 const zp_crossing *zp_sim_crossings(const zp_sim *s, int *n) {

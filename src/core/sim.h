@@ -47,6 +47,12 @@ typedef struct zp_input {
                               and its y on the course; for tests and split runs */
     const double *sample_t; /* borrowed; s, ascending sample times (may be NULL) */
     int nsample;
+    /* borrowed, may be NULL: ascending still-frame moments, times (s) or, with frame_at_x,
+       positions (m): the state where the trolley first reaches each x; at a section boundary
+       the state after the kink impulse. Frames come from the dense output like samples but
+       leave the run, its load peaks included, exactly as without them */
+    const double *frame_at;
+    int nframe, frame_at_x;
 } zp_input;
 
 typedef struct zp_crossing {
@@ -102,6 +108,9 @@ zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
    next run. */
 const zp_row *zp_sim_rows(const zp_sim *s, int *n);
 const zp_row *zp_sim_samples(const zp_sim *s, int *n);
+/* The still frames of the last run: one per reached frame_at value, in its order (those never
+   reached are the tail of frame_at); valid until the next run. */
+const zp_row *zp_sim_frames(const zp_sim *s, int *n);
 /* Kink crossings of the last run, in time order (at most ZP_MAX_CROSSINGS); valid until the
    next run. */
 const zp_crossing *zp_sim_crossings(const zp_sim *s, int *n);
