@@ -1,4 +1,4 @@
-/* The survival landscape (issue 5): many schedules through the simulator in parallel, each
+/* The survival landscape: many schedules through the simulator in parallel, each
    reduced to its outcome and time. */
 #ifndef ZP_LANDSCAPE_H
 #define ZP_LANDSCAPE_H

@@ -1,4 +1,4 @@
-/* Forces -> zp_sim_run -> finish time and survival constraint (issue 4 item 1), in the nominal
+/* Forces -> zp_sim_run -> finish time and survival constraint, in the nominal
    scene and in the scenarios of a robust set. Runs that die, stall or break down still score
    by how far they got, so a search can climb out of deadly regions; nothing here ever returns
    NaN or infinity. */

@@ -1,4 +1,4 @@
-/* The search's view of one simulation (issue 4 "Objective and constraint"): a schedule's
+/* The search's view of one simulation: a schedule's
    parameters in; the finish time and a continuous survival constraint out, always finite. */
 #ifndef ZP_OBJECTIVE_H
 #define ZP_OBJECTIVE_H

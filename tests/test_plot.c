@@ -1,4 +1,4 @@
-/* Figures and the landscape (issue 5): every figure is a real image of the size its script
+/* Figures and the landscape: every figure is a real image of the size its script
    asks for; the data drawn are the trajectory (centres of mass from state.c at each row, link
    ends one link length apart); a missing gnuplot still leaves data and scripts, a failing one
    leaves nothing; bad options exit 2 with nothing written; the landscape's points are what

@@ -1,4 +1,4 @@
-/* `zipopt landscape`: the survival landscape (issue 5 item 3): finish time or death over a
+/* `zipopt landscape`: the survival landscape: finish time or death over a
    constant push, and over a 2D slice of two sections' forces through a base schedule. */
 #include <math.h>
 #include <stdio.h>

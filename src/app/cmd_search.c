@@ -1,5 +1,5 @@
 /* `zipopt [SCENE.ini] [--out DIR]`: the search for the fastest survivable schedule, its
-   verification and the best-forcing report (CLI.md; issue 4). */
+   verification and the best-forcing report. */
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>

@@ -1,4 +1,4 @@
-/* Figures of one run (issue 5): the course with every centre-of-mass path, energy, joint
+/* Figures of one run: the course with every centre-of-mass path, energy, joint
    angles, loads, still frames and an animation. Each image comes with its data file and the
    gnuplot script that draws it, so a user can restyle it. */
 #ifndef ZP_PLOT_H
