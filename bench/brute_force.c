@@ -30,7 +30,7 @@ int main(int argc, char **argv) {
     }
     const zp_schedule *box = &st.sched; /* [drive] min, max */
     int np = box->np;
-    zp_objective ob = {st.m, st.limit, st.search.t_max, box};
+    zp_objective ob = {.m = st.m, .limit = st.limit, .t_max = st.search.t_max, .shape = box};
     zp_pool *pool = zp_pool_create(st.m, &st.search, 0);
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
     double *f = malloc(sizeof *f * BATCH * np);

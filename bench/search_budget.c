@@ -16,7 +16,8 @@ static zp_search_result res;
 
 /* the search as `zipopt SCENE.ini` runs it, at budget evals: its best time, INFINITY if none */
 static double search_at(const zp_setup *st, long evals, long *spent, int *converged) {
-    zp_objective ob = {st->m, st->limit, st->search.t_max, &st->sched};
+    zp_objective ob = {
+        .m = st->m, .limit = st->limit, .t_max = st->search.t_max, .shape = &st->sched};
     zp_search_opts o = {.max_evals = evals, .seed = st->seed};
     char err[256];
     if (zp_search_run(&ob, &st->search, st->sched.lo, st->sched.hi, &o, &res, err, sizeof err)) {

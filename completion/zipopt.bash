@@ -14,7 +14,7 @@ _zipopt() {
     local cmd='' study='' i
     for ((i = 1; i < COMP_CWORD; i++)); do
         case ${COMP_WORDS[i]} in
-        simulate | check | landscape | sweep | bench) [[ -z $cmd ]] && cmd=${COMP_WORDS[i]} ;;
+        simulate | check | landscape | tradeoff | sweep | bench) [[ -z $cmd ]] && cmd=${COMP_WORDS[i]} ;;
         trade) [[ $cmd == bench ]] && study=trade ;;
         esac
     done
@@ -41,7 +41,7 @@ _zipopt() {
         return
         ;;
     --force | --vary | --seed | --max-evals | --max-time | --sample-times | --frames-at | --fps | --size | \
-        --speedup | --force-range | --slice | --range | --repeats)
+        --speedup | --force-range | --slice | --range | --repeats | --levels)
         return # a value the user types
         ;;
     esac
@@ -52,8 +52,10 @@ _zipopt() {
     check) opts="--json --help" ;;
     landscape) opts="--force-range --slice --range --force --schedule --out --json --help" ;;
     sweep) opts="--vary --run --out --resume --json --help" ;;
-    bench) opts="--repeats --out --help" ;;
-    *) opts="--out --algorithm --seed --max-evals --max-time --no-plot --help --help-all --version" ;;
+    bench) opts="--repeats --json --out --help" ;;
+    tradeoff) opts="--levels --json --out --help" ;;
+    *) opts="--out --algorithm --seed --max-evals --max-time --no-plot --json --help --help-all
+             --version" ;;
     esac
     if [[ $cur == -* ]]; then
         _zipopt_add < <(compgen -W "$opts" -- "$cur")
@@ -63,7 +65,7 @@ _zipopt() {
         _zipopt_add < <(compgen -f -X '!*.ini' -- "$cur")
         _zipopt_add < <(compgen -d -- "$cur")
         if [[ -z $cmd && $COMP_CWORD == 1 ]]; then
-            _zipopt_add < <(compgen -W "simulate check landscape sweep bench" -- "$cur")
+            _zipopt_add < <(compgen -W "simulate check landscape tradeoff sweep bench" -- "$cur")
         fi
     fi
 }

@@ -1,8 +1,9 @@
-/* The survival landscape (issue 5): many schedules through the simulator in parallel, each
+/* The survival landscape: many schedules through the simulator in parallel, each
    reduced to its outcome and time. */
 #ifndef ZP_LANDSCAPE_H
 #define ZP_LANDSCAPE_H
 
+#include "scenario.h"
 #include "sim.h"
 
 /* What one schedule's run came to. */
@@ -14,6 +15,7 @@ typedef struct zp_landscape_point {
     double x;             /* m, trolley x then */
     int died_link;        /* 1-based, 0 when nobody died */
     double max_rel_angle; /* rad, largest |relative joint angle| over every joint */
+    double reached[ZP_LIMIT_COUNT]; /* what the run reached of each [limits] value */
 } zp_landscape_point;
 
 /* Called after each finished run, serialised; done counts runs finished so far. */

@@ -1,28 +1,30 @@
-/* Forces -> zp_sim_run -> finish time and survival constraint (issue 4 item 1). Runs that die,
-   stall or break down still score by how far they got, so a search can climb out of deadly
-   regions; nothing here ever returns NaN or infinity. */
+/* Forces -> zp_sim_run -> finish time and survival constraint, in the nominal
+   scene and in the scenarios of a robust set. Runs that die, stall or break down still score
+   by how far they got, so a search can climb out of deadly regions; nothing here ever returns
+   NaN or infinity. */
 #include "objective.h"
 
 #include <math.h>
+
+#include "robust.h"
 
 #define DEG (180.0 / M_PI)
 /* deg kept below the limit besides the margin, so that the margin also holds when the run is
    verified at a 100x tighter tolerance (angles move by ~1e-5 deg between the two) */
 #define SLACK 1e-3
+/* deg of constraint per unit of relative excess over a [limits] value (10 % over: 9 deg), and
+   the relative slack kept below each limit for the same reason as SLACK */
+#define LIMIT_DEG 90.0
+#define LIMIT_SLACK 1e-5
 
-zp_schedule zp_objective_schedule(const zp_objective *ob, const double *p) {
-    if (ob->shape) {
-        return zp_schedule_with(ob->shape, p);
-    }
-    return zp_schedule_sections(ob->m->nsec, p, -INFINITY, INFINITY);
+static void set_score(const zp_objective *ob, zp_eval *e) {
+    /* penalty weight: a violation by half a turn costs as much as running out of time */
+    e->score = e->obj + fmax(e->cons, 0) * ob->t_max / 180;
 }
 
-void zp_objective_eval(const zp_objective *ob, zp_sim *s, const double *p, zp_eval *e,
-                       zp_result *r) {
-    const zp_model *m = ob->m;
-    zp_schedule sched = zp_objective_schedule(ob, p);
-    zp_input in = {.sched = &sched};
-    int failed = zp_sim_run(m, s, &in, r) != ZP_OK;
+void zp_objective_eval_run(const zp_objective *ob, const zp_model *m, zp_sim *s, const zp_input *in,
+                     zp_eval *e, zp_result *r) {
+    int failed = zp_sim_run(m, s, in, r) != ZP_OK;
     double angle = 0;
     for (int i = 0; i < m->nlink; i++) {
         angle = fmax(angle, r->max_rel_angle[i]);
@@ -34,7 +36,7 @@ void zp_objective_eval(const zp_objective *ob, zp_sim *s, const double *p, zp_ev
         angle = m->phi_max;
     }
     *e = (zp_eval){.outcome = r->outcome, .failed = failed, .time = r->time, .x = r->x,
-                   .angle = angle};
+                   .angle = angle, .scenario = -1};
     /* a run that does not finish ranks after every finish (T <= t_max), nearer the end better;
        one that dies or breaks down also violates the constraint, more the earlier it stops */
     double behind = 1 - progress;
@@ -46,9 +48,55 @@ void zp_objective_eval(const zp_objective *ob, zp_sim *s, const double *p, zp_ev
     e->cons = (angle - ob->limit) * DEG + SLACK;
     if (failed || r->outcome == ZP_OUTCOME_DIED) {
         e->cons = (m->phi_max - ob->limit) * DEG + 180 * behind;
+    } else if (zp_limits_any(&ob->lim)) {
+        int which;
+        double ex = zp_limits_excess(&ob->lim, m, r, &which);
+        e->cons = fmax(e->cons, (ex + LIMIT_SLACK) * LIMIT_DEG);
     }
-    /* penalty weight: a violation by half a turn costs as much as running out of time */
-    e->score = e->obj + fmax(e->cons, 0) * ob->t_max / 180;
+    set_score(ob, e);
+}
+
+double zp_objective_scenario_cons(const zp_objective *ob, const zp_eval *e) {
+    /* a scenario that stalls breaks the schedule too, more the earlier it stops */
+    if (e->failed || e->outcome != ZP_OUTCOME_FINISHED) {
+        return fmax(e->cons, 1 + 180 * (e->obj / ob->t_max - 1));
+    }
+    return e->cons;
+}
+
+zp_schedule zp_objective_schedule(const zp_objective *ob, const double *p) {
+    if (ob->shape) {
+        return zp_schedule_with(ob->shape, p);
+    }
+    return zp_schedule_sections(ob->m->nsec, p, -INFINITY, INFINITY);
+}
+
+void zp_objective_eval(const zp_objective *ob, zp_sim *s, const double *p, zp_eval *e,
+                       zp_result *r) {
+    zp_schedule sched = zp_objective_schedule(ob, p);
+    zp_input in = {.sched = &sched};
+    zp_objective_eval_run(ob, ob->m, s, &in, e, r);
+    if (ob->set && zp_objective_feasible(e)) {
+        zp_scen_set *set = ob->set;
+        for (int i = 0; i < set->n; i++) {
+            int j = set->order[i];
+            zp_eval ej;
+            in = (zp_input){.sched = &sched, .force_scale = set->sc[j].force,
+                            .start = &set->start[j]};
+            zp_objective_eval_run(ob, &set->m[j], s, &in, &ej, r);
+            double cons = zp_objective_scenario_cons(ob, &ej);
+            e->cons = fmax(e->cons, cons);
+#pragma omp atomic
+            set->runs++;
+            if (cons > 0) {
+                e->scenario = j;
+#pragma omp atomic
+                set->fails[j]++;
+                break;
+            }
+        }
+    }
+    set_score(ob, e);
 }
 
 int zp_objective_feasible(const zp_eval *e) {

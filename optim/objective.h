@@ -1,9 +1,12 @@
-/* The search's view of one simulation (issue 4 "Objective and constraint"): a schedule's
+/* The search's view of one simulation: a schedule's
    parameters in; the finish time and a continuous survival constraint out, always finite. */
 #ifndef ZP_OBJECTIVE_H
 #define ZP_OBJECTIVE_H
 
+#include "scenario.h"
 #include "sim.h"
+
+struct zp_scen_set;
 
 /* One evaluated schedule. */
 typedef struct zp_eval {
@@ -15,6 +18,7 @@ typedef struct zp_eval {
     double obj;     /* s: the finish time; past t_max for runs that do not finish */
     double cons;    /* deg: <= 0 when the run finishes with the margin kept */
     double score;   /* s: obj plus a penalty for cons > 0, for algorithms without constraints */
+    int scenario;   /* the scenario (index in the set) that broke the run, -1: none did */
 } zp_eval;
 
 /* What every evaluation of one search shares. */
@@ -24,6 +28,9 @@ typedef struct zp_objective {
     double t_max;      /* s, the stall time of the runs */
     const zp_schedule *shape; /* borrowed: the kind the parameters fill; NULL: per-section
                                  constants (N) */
+    zp_limits lim;     /* [limits]; all 0: none */
+    struct zp_scen_set *set; /* borrowed, NULL: the nominal scene only; else every candidate
+                                that survives the nominal scene is held to each scenario */
 } zp_objective;
 
 /* How many parameters the search varies: ob->shape's, or one force per section. */
@@ -32,9 +39,16 @@ static inline int zp_objective_nparams(const zp_objective *ob) {
 }
 /* The schedule the search's parameters p stand for (ob->shape with p). */
 zp_schedule zp_objective_schedule(const zp_objective *ob, const double *p);
-/* Runs the schedule of parameters p on the workspace s and scores it; r receives the run. */
+/* Runs the schedule of parameters p on the workspace s and scores it: in the nominal scene,
+   then (a survivor, with a set) in each scenario of the set in its order, stopping at the first
+   that breaks the margin or a limit; cons is the worst over the runs. r receives the last run. */
 void zp_objective_eval(const zp_objective *ob, zp_sim *s, const double *p, zp_eval *e,
                        zp_result *r);
+/* One run of in on model m (ob->m or a scenario's model), scored without the set. */
+void zp_objective_eval_run(const zp_objective *ob, const zp_model *m, zp_sim *s,
+                           const zp_input *in, zp_eval *e, zp_result *r);
+/* e's constraint as a scenario's: a run that does not finish breaks it too. */
+double zp_objective_scenario_cons(const zp_objective *ob, const zp_eval *e);
 /* 1 when e finished with the margin kept. */
 int zp_objective_feasible(const zp_eval *e);
 /* 1 when a is better than b: feasible before infeasible, then lower score, then lower obj. */

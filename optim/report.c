@@ -213,6 +213,80 @@ static void md_loads(FILE *f, const zp_report *r) {
                                : "");
 }
 
+/* each [limits] value of the best run against its limit */
+static void md_limits(FILE *f, const zp_report *r) {
+    if (!r->lim || !zp_limits_any(r->lim)) {
+        return;
+    }
+    double v[ZP_LIMIT_COUNT];
+    zp_limits_reached(r->m, r->v->run, v);
+    fputs("\n## Limits\n\n| limit | reached | allowed | |\n|---|---|---|---|\n", f);
+    for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
+        if (r->lim->max[i] > 0) {
+            fprintf(f, "| %s | %.4g %s | %g %s | %s |\n", zp_limit_name(i), v[i],
+                    zp_limit_unit(i), r->lim->max[i], zp_limit_unit(i),
+                    v[i] <= r->lim->max[i] ? "kept" : "**broken**");
+        }
+    }
+}
+
+/* one [robust] range as the designer reads it, if it is varied */
+static void md_range(FILE *f, const char *what, const double range[2]) {
+    if (range[0] != 100 || range[1] != 100) {
+        fprintf(f, "- %s from %g %% to %g %% of nominal\n", what, range[0], range[1]);
+    }
+}
+
+/* the ranges held, the verification on fresh scenarios, the worst scenario found */
+static void md_survivable(FILE *f, const zp_report *r) {
+    const zp_scene *sc = r->sc;
+    const zp_robust_check *c = r->check;
+    const zp_robust_worst *w = &r->rinfo->worst;
+    fputs("\n## Survivable for\n\n", f);
+    if (sc->force_error > 0) {
+        fprintf(f, "- every section's force off by up to +/-%g %%, independently\n",
+                sc->force_error);
+    }
+    md_range(f, "rider mass (all links)", sc->mass_range);
+    md_range(f, "rider size (all link lengths)", sc->length_range);
+    md_range(f, "trolley mass", sc->trolley_mass_range);
+    md_range(f, "joint damping", sc->damping_range);
+    if (sc->start_angle > 0) {
+        fprintf(f, "- each link starting swung by up to +/-%g deg\n", sc->start_angle);
+    }
+    fprintf(f, "\nHeld during the search to %d scenarios (%d corners of the ranges, %d "
+               "quasi-random, %d added where the answer broke) besides the nominal scene: %ld "
+               "scenario runs in %d rounds, and %ld runs of the adversary.\n",
+            r->set->n, r->set->ncorner, r->set->n - r->set->ncorner - r->rinfo->added,
+            r->rinfo->added, r->set->runs, r->rinfo->rounds, r->rinfo->sims);
+    if (c->samples > 0) {
+        fprintf(f, "\nChecked on %d fresh random scenarios at rtol %.0e: %d finished alive, %d "
+                   "kept the margin, %d kept every limit; survivable (both) in %d, so the "
+                   "probability of a survivable ride is at least **%.2f %%** (95 %% confidence, "
+                   "Clopper-Pearson). Smallest margin seen: %.2f deg.\n",
+                c->samples, r->v->rtol, c->survived, c->margin_kept,
+                c->limits_kept, c->all_kept, 100 * c->lower_95, c->worst_margin_deg);
+    }
+    if (r->rinfo->rounds > 0 && isfinite(w->cons)) {
+        zp_scenario s;
+        zp_box_scenario(r->box, w->u, &s);
+        fprintf(f, "\nWorst scenario found (the adversary's search of the ranges): forces x");
+        for (int k = 0; k < r->m->nsec; k++) {
+            fprintf(f, " %.4f", s.force[k]);
+        }
+        fprintf(f, ", masses x %.3f, lengths x %.3f, trolley x %.3f, damping x %.3f: %s, "
+                   "margin %.2f deg at joint %d",
+                s.mass, s.length, s.trolley, s.damping, zp_sim_outcome_name(w->outcome),
+                w->margin_deg, w->joint);
+        if (w->limit >= 0) {
+            fprintf(f, "; nearest limit %s at %+.1f %% of it", zp_limit_name(w->limit),
+                    100 * w->excess);
+        }
+        fprintf(f, " (%s).\n", w->cons > 0 ? "**broken**: the search ran out of rounds"
+                                             : "kept");
+    }
+}
+
 static void md_search(FILE *f, const zp_report *r) {
     const zp_search_result *s = r->res;
     fputs("\n## Search\n\n", f);
@@ -229,6 +303,12 @@ static void md_search(FILE *f, const zp_report *r) {
             "  schedule rerun with %s at rtol %g, atol %g ([solver]) and verified %gx tighter\n",
             zp_method_get(r->search->method)->name, r->search->rtol, r->search->atol, r->method,
             r->solver->rtol, r->solver->atol, ZP_ESTIMATE_FACTOR);
+    if (r->sc->accuracy > 0) {
+        double met = fabs(r->v->run->time - r->v->tight->time);
+        fprintf(f, "- accuracy: %.2g s requested ([solver] accuracy: method and rtol from the "
+                   "work-precision table), %.2g s met%s\n",
+                r->sc->accuracy, met, met <= r->sc->accuracy ? "" : " - NOT MET");
+    }
     if (s->nhist > 0) {
         fputs("- best finish time against simulations spent:", f);
         int step = s->nhist > 12 ? s->nhist / 12 : 1;
@@ -302,6 +382,10 @@ void zp_report_write_md(FILE *f, const zp_report *r) {
         md_kinks(f, r);
     }
     md_loads(f, r);
+    md_limits(f, r);
+    if (r->box) {
+        md_survivable(f, r);
+    }
     md_search(f, r);
     md_robustness(f, r->v);
     md_figures_rerun(f, r);

@@ -5,6 +5,7 @@
 
 #include <stdio.h>
 
+#include "robust.h"
 #include "search.h"
 #include "verify.h"
 
@@ -26,6 +27,11 @@ typedef struct zp_report {
     const zp_schedule *shape;      /* borrowed: the kind and bounds res->force fills */
     unsigned long seed;            /* the search's seed and budget, as they ran */
     long max_evals;
+    const zp_limits *lim;          /* borrowed: [limits], NULL or all 0: none */
+    const zp_box *box;             /* borrowed, NULL: no [robust] */
+    const zp_scen_set *set;        /* borrowed with box: the scenarios the answer is held to */
+    const zp_robust_info *rinfo;   /* borrowed with box */
+    const zp_robust_check *check;  /* borrowed with box: the verification on fresh scenarios */
 } zp_report;
 
 /* A schedule file: only [drive] forces (CONFIG.md), with comments saying what it is. */

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "robust.h"
 #include "search.h"
 #include "verify.h"
 
@@ -67,41 +68,52 @@ static void fill(const zp_scene *sc, const zp_model *m, const zp_schedule *sh, c
     }
 }
 
-static void run_search(const zp_scene *sc, const zp_model *m, const zp_objective *ob,
+static void run_search(const zp_scene *sc, const zp_model *m, const zp_schedule *sched,
                        const zp_sim_opts *so, zp_study_row *row) {
     /* the search's runs as `zipopt SCENE.ini` makes them: no trajectory, no load peaks, the
        [optimize] integrator and tolerance */
-    zp_sim_opts fast = *so;
-    fast.track_loads = 0;
-    fast.output_dt = 0;
-    fast.method = zp_method_find(sc->search_method);
-    fast.rtol = sc->search_rtol;
-    fast.atol = sc->search_rtol / 100;
+    zp_sim_opts search = *so, fast;
+    search.track_loads = 0;
+    search.output_dt = 0;
+    search.method = zp_method_find(sc->search_method);
+    search.rtol = sc->search_rtol;
+    search.atol = sc->search_rtol / 100;
     zp_search_opts o = {.max_evals = sc->max_evals, .seed = sc->seed};
     zp_search_result *res = malloc(sizeof *res);
+    zp_robust_problem *pb = malloc(sizeof *pb); /* large: off the stack */
     char err[512] = "";
-    if (!res) {
+    /* the limit exactly as the search command sets it, so a point equals `zipopt SCENE`; with
+       [robust] ranges, the robust search as that command runs it */
+    double limit = m->phi_max - sc->margin * M_PI / 180;
+    if (!res || !pb || zp_robust_setup(pb, sc, m, limit, sched, so, &search, &fast)) {
         fail(row, "out of memory for the search");
-        return;
-    }
-    if (zp_search_run(ob, &fast, ob->shape->lo, ob->shape->hi, &o, res, err, sizeof err)) {
-        fail(row, err);
-        free(res);
-        return;
-    }
-    row->found = res->found;
-    row->evals = res->evals;
-    memcpy(row->force, res->force, sizeof *row->force * (size_t)row->np);
-    zp_verify v;
-    zp_sim *best = NULL;
-    if (zp_verify_run(ob, so, res->force, sc->seed, 0, 0, &best, &v, NULL, NULL, err, sizeof err)) {
+    } else if (zp_robust_solve(pb, sc, so, &fast, sched->lo, sched->hi, &o, res, err,
+                               sizeof err)) {
         fail(row, err);
     } else {
-        row->verified = v.agree;
-        fill(sc, m, ob->shape, v.run, row);
+        row->found = res->found;
+        row->evals = res->evals;
+        memcpy(row->force, res->force, sizeof *row->force * (size_t)row->np);
+        zp_objective ob = pb->ob; /* the nominal scene: the scenarios were checked above */
+        ob.set = NULL;
+        zp_sim_opts solver = *so;
+        solver.peaks = fast.peaks;
+        zp_verify v;
+        zp_sim *best = NULL;
+        if (zp_verify_run(&ob, &solver, res->force, sc->seed, 0, 0, &best, &v, NULL, NULL, err,
+                          sizeof err)) {
+            fail(row, err);
+        } else {
+            row->verified = v.agree;
+            fill(sc, m, sched, v.run, row);
+        }
+        zp_verify_free(&v);
+        zp_sim_free(best);
     }
-    zp_verify_free(&v);
-    zp_sim_free(best);
+    if (pb) {
+        zp_robust_problem_free(pb);
+    }
+    free(pb);
     free(res);
 }
 
@@ -141,11 +153,12 @@ void zp_study_run(const zp_scene *sc, zp_study_kind kind, zp_study_row *row) {
         return;
     }
     so.output_dt = 0; /* outcomes only: output requests never change the integrator's steps */
-    /* the limit exactly as the search command sets it, so a point equals `zipopt SCENE` */
-    zp_objective ob = {m, m->phi_max - sc->margin * M_PI / 180, so.t_max, &sched};
     if (kind == ZP_STUDY_SEARCH) {
-        run_search(sc, m, &ob, &so, row);
+        run_search(sc, m, &sched, &so, row);
     } else {
+        /* the limit exactly as the search command sets it */
+        zp_objective ob = {.m = m, .limit = m->phi_max - sc->margin * M_PI / 180,
+                           .t_max = so.t_max, .shape = &sched};
         run_simulate(sc, m, &ob, &so, row);
     }
     zp_model_free(m);

@@ -59,6 +59,34 @@ static void json_robust(FILE *f, const zp_verify *v) {
     fputc('}', f);
 }
 
+/* [solver] accuracy: what the answer's run met; the search checks, simulate also tightens */
+static void json_accuracy(FILE *f, const zp_report *r) {
+    double met = fabs(r->v->run->time - r->v->tight->time);
+    fputs(",\n  \"accuracy\": {\"requested\": ", f);
+    zp_out_json_number(f, r->sc->accuracy);
+    fputs(", \"met\": ", f);
+    zp_out_json_number(f, met);
+    fprintf(f, ", \"ok\": %s, \"method\": \"%s\", \"rtol\": ",
+            met <= r->sc->accuracy ? "true" : "false", r->method);
+    zp_out_json_number(f, r->solver->rtol);
+    fputc('}', f);
+}
+
+/* the robust search's key (CLI.md): its scenarios, and the answer on fresh ones */
+static void json_scenarios(FILE *f, const zp_report *r) {
+    const zp_robust_check *c = r->check;
+    fprintf(f, ",\n  \"robust\": {\"scenarios\": %d, \"corners\": %d, \"added\": %d, "
+               "\"rounds\": %d, \"worst_margin_deg\": ",
+            r->set->n, r->set->ncorner, r->rinfo->added, r->rinfo->rounds);
+    /* the smallest margin seen: on the fresh scenarios or the adversary's worst */
+    zp_out_json_number(f, fmin(c->worst_margin_deg, r->rinfo->worst.margin_deg));
+    fprintf(f, ", \"scenario_runs\": %ld, \"verify\": {\"samples\": %d, \"survived\": %d, "
+               "\"margin_kept\": %d, \"limits_kept\": %d, \"all_kept\": %d, \"lower_95\": ",
+            r->set->runs, c->samples, c->survived, c->margin_kept, c->limits_kept, c->all_kept);
+    zp_out_json_number(f, c->lower_95);
+    fputs("}}", f);
+}
+
 void zp_report_write_json(FILE *f, const zp_report *r) {
     const zp_search_result *s = r->res;
     const zp_result *run = r->v->run;
@@ -75,6 +103,9 @@ void zp_report_write_json(FILE *f, const zp_report *r) {
     zp_out_json_number(f, run->time);
     fputs(",\n  \"time_error\": ", f);
     zp_out_json_number(f, fabs(run->time - r->v->tight->time));
+    if (r->sc->accuracy > 0) {
+        json_accuracy(f, r);
+    }
     fputs(",\n  \"margin_deg\": ", f);
     zp_out_json_number(f, (m->phi_max - largest_angle(m, run)) * DEG);
     fputs(",\n  \"max_rel_angle\": [", f);
@@ -106,6 +137,11 @@ void zp_report_write_json(FILE *f, const zp_report *r) {
     zp_out_json_number(f, r->study->time);
     fputs("},\n  \"robustness\": ", f);
     json_robust(f, r->v);
+    fputs(",\n  \"limits\": ", f);
+    zp_out_json_limits(f, m, run, r->lim);
+    if (r->box) {
+        json_scenarios(f, r);
+    }
     fputs(",\n  \"convergence\": ", f);
     json_convergence(f, s);
     fputs(",\n  \"history\": [", f);

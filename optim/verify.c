@@ -1,4 +1,4 @@
-/* Verification of the best schedule (issue 4 item 4): the same run at a 100x tighter
+/* Verification of the best schedule: the same run at a 100x tighter
    tolerance, then seeded random perturbations of every force and, force by force, the
    smallest change that kills. */
 #include "verify.h"

@@ -1,4 +1,4 @@
-/* The answer checked (issue 4 item 4): the best schedule re-simulated at a 100x tighter
+/* The answer checked: the best schedule re-simulated at a 100x tighter
    tolerance, and its robustness to perturbed forces. */
 #ifndef ZP_VERIFY_H
 #define ZP_VERIFY_H

@@ -1,9 +1,9 @@
 #!/bin/sh
 # The floors link only downward (README "Design"): no file includes a header from a floor above
-# its own. Floors, bottom up: src/numerics, src/core, src/io, optim, src/app.
+# its own. Floors, bottom up: src/numerics, src/core, src/io, optim, src/lib, src/app.
 top=${1:-.}
 cd "$top" || exit 1
-floors="src/numerics src/core src/io optim src/app"
+floors="src/numerics src/core src/io optim src/lib src/app"
 level() { # the floor index of the folder holding header $1, or -1 if none does
     i=0
     for f in $floors; do

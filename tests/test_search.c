@@ -23,17 +23,6 @@ static const char *bare =
     "[drive]\nmin = 0\nmax = 50\n"
     "[optimize]\nmargin = 10\nmax_evals = 300\n";
 
-static const char *swing =
-    "[course]\nx_start = 0\nsection = 40 : -x/10 + 10\n"
-    "[trolley]\nmass = 30\n"
-    "[body]\nlengths = 1\nmasses = 5\ndamping = 2\ndeath_angle = 30\n"
-    "[drive]\nmin = 0\nmax = 400\n"
-    "[optimize]\nmargin = 5\nmax_evals = 400\n";
-
-static zp_objective objective(const zp_model *m, const zp_scene *sc, const zp_sim_opts *o) {
-    return (zp_objective){m, m->phi_max - sc->margin * M_PI / 180, o->t_max, NULL};
-}
-
 static zp_search_result res, res2;
 
 static void search(const zp_objective *ob, const zp_sim_opts *o, const zp_scene *sc,
@@ -56,7 +45,7 @@ int main(void) {
     {
         zp_model *m = tu_model(bare, &sc);
         zp_sim_opts o = tu_opts(&sc, 1e-8);
-        zp_objective ob = objective(m, &sc, &o);
+        zp_objective ob = tu_objective(m, &sc, &o);
         search(&ob, &o, &sc, 2, &res);
         double alpha = atan(0.1), mass = 30 + 0.001;
         double a = 9.81 * sin(alpha) + 50 / mass * cos(alpha);
@@ -71,9 +60,9 @@ int main(void) {
     /* a swinging spy whose swing grows with the push: the optimum is the largest push that
        keeps the margin, found here by bisection with the simulator alone */
     {
-        zp_model *m = tu_model(swing, &sc);
+        zp_model *m = tu_model(tu_swing, &sc);
         zp_sim_opts o = tu_opts(&sc, 1e-8);
-        zp_objective ob = objective(m, &sc, &o);
+        zp_objective ob = tu_objective(m, &sc, &o);
         double lo = 0, hi = 400;
         zp_schedule in_sched = tu_sched(m, (double[1]){0});
         double *f = in_sched.p; /* the schedule's one force, set below */
@@ -110,7 +99,7 @@ int main(void) {
         zp_model *m = zp_model_build(&sc, &d);
         zp_sim_opts o = tu_opts(&sc, sc.rtol);
         o.atol = sc.atol;
-        zp_objective ob = objective(m, &sc, &o);
+        zp_objective ob = tu_objective(m, &sc, &o);
         search(&ob, &o, &sc, 2, &res);
         search(&ob, &o, &sc, 2, &res2);
         CHECK(!memcmp(res.force, res2.force, sizeof res.force));
@@ -142,7 +131,7 @@ int main(void) {
                 m = tu_model(kinked, &sc);
             }
             zp_sim_opts o = tu_opts(&sc, 1e-5);
-            zp_objective ob = objective(m, &sc, &o);
+            zp_objective ob = tu_objective(m, &sc, &o);
             double prev = INFINITY;
             for (long b = 100; b <= 800; b *= 2) {
                 sc.max_evals = b;

@@ -4,8 +4,8 @@
    conservation and the work-energy audit shrinking with the tolerance, dampers never adding
    energy, outcomes (death on the seed at 100 N robust to tolerance and method, roll-back at
    t = 0, trapped at a sharp kink, t_max), a sample at a kink showing the state after it,
-   the exact largest joint angle, bit-for-bit reproducibility (outputs included), and a clean
-   numerical failure. */
+   the exact largest joint angle, bit-for-bit reproducibility (outputs included), still frames
+   at exactly the asked x or t, and a clean numerical failure. */
 #include <math.h>
 #include <string.h>
 
@@ -356,6 +356,73 @@ static void check_numeric_failure(void) {
     zp_model_free(m);
 }
 
+/* the bits of a result that frames must leave alone */
+static int same_run(const zp_result *a, const zp_result *b) {
+    return a->outcome == b->outcome && a->time == b->time && a->x == b->x &&
+           a->e_final == b->e_final && a->steps == b->steps && a->ncross == b->ncross &&
+           !memcmp(a->max_rel_angle, b->max_rel_angle, sizeof a->max_rel_angle) &&
+           !memcmp(&a->peaks, &b->peaks, sizeof a->peaks);
+}
+
+/* still frames come from the dense output at exactly the asked moment: at x on the course
+   (y = f(x)), at the kink x = 60 the state after the impulse; each equals a sample taken at
+   its time by an independent run; and a run with frames is bit for bit the run without */
+static void check_frames(const char *method) {
+    zp_scene sc;
+    zp_model *m = tu_seed_model(&sc);
+    double f[3] = {20, 20, 20};
+    zp_sim_opts o = tu_opts(&sc, 1e-8);
+    o.method = zp_method_find(method);
+    zp_schedule sched = tu_sched(m, f);
+    zp_input plain = {.sched = &sched};
+    static zp_result r0, r1, r2;
+    zp_sim *s0 = zp_sim_create(m, &o), *s1 = zp_sim_create(m, &o), *s2 = zp_sim_create(m, &o);
+    CHECK(zp_sim_run(m, s0, &plain, &r0) == ZP_OK && r0.outcome == ZP_OUTCOME_FINISHED);
+    double xs[] = {0, 20, 60, 100.5, 140};
+    zp_input at_x = {.sched = &sched, .frame_at = xs, .nframe = 5, .frame_at_x = 1};
+    CHECK(zp_sim_run(m, s1, &at_x, &r1) == ZP_OK);
+    CHECK(same_run(&r0, &r1));
+    int n;
+    const zp_row *fr = zp_sim_frames(s1, &n);
+    CHECK(n == 5);
+    double ts[5];
+    for (int k = 0; k < n; k++) {
+        ts[k] = fr[k].t;
+        CHECK_NEAR(fr[k].c.q[0], xs[k], 1e-9);
+        CHECK_NEAR(fr[k].c.q[1], zp_course_eval(m->course, fr[k].sec, xs[k]).f, 1e-9);
+    }
+    CHECK(fr[2].sec == 1); /* x = 60: after the kink, moving along the next section */
+    CHECK_NEAR(fr[2].c.v[1], -0.1 * fr[2].c.v[0], 1e-9);
+    CHECK(fr[2].t == zp_sim_crossings(s1, &n)[0].t);
+    /* the independent check: samples at the frames' times, in a run without frames */
+    zp_input at_t = {.sched = &sched, .sample_t = ts, .nsample = 5};
+    CHECK(zp_sim_run(m, s2, &at_t, &r2) == ZP_OK);
+    const zp_row *smp = zp_sim_samples(s2, &n);
+    CHECK(n == 5);
+    /* the finish line's frame is the run's end state (a sample there may be interpolated) */
+    CHECK(fr[4].c.q[0] == r0.x && hypot(fr[4].c.v[0], fr[4].c.v[1]) == r0.v);
+    for (int k = 0; k < 4; k++) {
+        CHECK(smp[k].sec == fr[k].sec);
+        for (int j = 0; j < 2 + m->nlink; j++) {
+            CHECK_NEAR(smp[k].c.q[j], fr[k].c.q[j], 1e-12);
+            CHECK_NEAR(smp[k].c.v[j], fr[k].c.v[j], 1e-12);
+        }
+    }
+    /* frames at t are those samples, bit for bit, and leave the run alone */
+    zp_input frames_t = {.sched = &sched, .frame_at = ts, .nframe = 5};
+    CHECK(zp_sim_run(m, s1, &frames_t, &r1) == ZP_OK);
+    CHECK(same_run(&r0, &r1));
+    fr = zp_sim_frames(s1, &n);
+    CHECK(n == 5);
+    for (int k = 0; k < n; k++) {
+        CHECK(!memcmp(&fr[k].c, &smp[k].c, sizeof fr[k].c) && fr[k].t == smp[k].t);
+    }
+    zp_sim_free(s0);
+    zp_sim_free(s1);
+    zp_sim_free(s2);
+    zp_model_free(m);
+}
+
 int main(void) {
     check_numeric_failure();
     check_effective_gravity("horizontal");
@@ -370,5 +437,7 @@ int main(void) {
     check_zeno_vee();
     check_samples_and_extremes();
     check_reproducible();
+    check_frames("cvode-adams");
+    check_frames("gsl-rk8pd");
     return CHECK_DONE();
 }

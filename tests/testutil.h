@@ -2,11 +2,13 @@
 #ifndef ZP_TESTUTIL_H
 #define ZP_TESTUTIL_H
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 
+#include "objective.h"
 #include "scene_read.h"
 #include "sim.h"
 
@@ -69,6 +71,22 @@ static inline const zp_result *tu_run(const zp_model *m, const zp_sim_opts *o, c
         abort();
     }
     return &r;
+}
+
+/* A spy on a straight slope whose swing grows with the push: survival is monotone in the one
+   force, so the optimum is the largest push that keeps the margin. */
+static const char *const tu_swing =
+    "[course]\nx_start = 0\nsection = 40 : -x/10 + 10\n"
+    "[trolley]\nmass = 30\n"
+    "[body]\nlengths = 1\nmasses = 5\ndamping = 2\ndeath_angle = 30\n"
+    "[drive]\nmin = 0\nmax = 400\n"
+    "[optimize]\nmargin = 5\nmax_evals = 400\n";
+
+/* The search's objective for m: the scene's margin, the options' t_max, no limits or set. */
+static inline zp_objective tu_objective(const zp_model *m, const zp_scene *sc,
+                                        const zp_sim_opts *o) {
+    return (zp_objective){.m = m, .limit = m->phi_max - sc->margin * M_PI / 180,
+                          .t_max = o->t_max};
 }
 
 /* The kink crossings of the last tu_run. */

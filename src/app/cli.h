@@ -58,6 +58,7 @@ int zp_cmd_check(int argc, char **argv);
 int zp_cmd_landscape(int argc, char **argv);
 int zp_cmd_search(int argc, char **argv);
 int zp_cmd_bench(int argc, char **argv);
+int zp_cmd_tradeoff(int argc, char **argv);
 int zp_cmd_sweep(int argc, char **argv);
 
 #endif

@@ -1,7 +1,8 @@
 /* `zipopt bench trade [SCENE]`: the work-precision study (docs/trade.md). Every method over a
    tolerance sweep on three cases of one scene; the error of what users read against a
    reference run by two methods that agree, against wall time and rhs evaluations; a CSV, a
-   gnuplot script and its log-log plot in out/<scene name>/bench/. */
+   gnuplot script and its log-log plot in out/<scene name>/bench/; the results as text or, with
+   --json, one JSON object. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -9,6 +10,7 @@
 
 #include "cli.h"
 #include "gnuplot.h"
+#include "out_json.h"
 #include "setup.h"
 #include "sim.h"
 
@@ -129,11 +131,20 @@ static double worst(errors e) {
 
 typedef struct trade_args {
     const char *scene, *out;
-    int repeats;
+    int repeats, json;
 } trade_args;
 
+/* the whole study: per case its reference, then every method at every tolerance */
+typedef struct trade_study {
+    double tols[NTOL];
+    reading ref[NCASE];
+    errors agree[NCASE]; /* the second reference method against the first */
+    reading runs[NCASE][ZP_METHOD_COUNT][NTOL];
+    errors errs[NCASE][ZP_METHOD_COUNT][NTOL];
+} trade_study;
+
 static void usage(FILE *f) {
-    fputs("usage: zipopt bench trade [SCENE.ini] [--repeats N] [--out DIR]\n"
+    fputs("usage: zipopt bench trade [SCENE.ini] [--repeats N] [--json] [--out DIR]\n"
           "Work-precision study: every method at rtol 1e-3 .. 1e-12 (atol = rtol/100) on the\n"
           "scene (default: the built-in seed) at 10 N everywhere (survives), 100 N (dies) and\n"
           "100 N with joint damping 1e4 N m s/rad (stiff). Errors of the finish/death time,\n"
@@ -141,13 +152,15 @@ static void usage(FILE *f) {
           "1e-13 by two methods that agree; cost as the median wall time of up to N runs\n"
           "(default 5) and rhs evaluations. Writes trade.csv, trade.gp and trade.png in DIR\n"
           "(default out/<scene name>/bench/) and prints the fastest method and tolerance\n"
-          "reaching a finish or death time error of 1e-3, 1e-6 and 1e-9 s.\n",
+          "reaching a finish or death time error of 1e-3, 1e-6 and 1e-9 s; with --json, one\n"
+          "JSON object instead (keys: README).\n",
           f);
 }
 
-enum { O_OUT = ZP_OPT_FIRST, O_REPEATS };
+enum { O_OUT = ZP_OPT_FIRST, O_REPEATS, O_JSON };
 static const struct option options[] = {
     {"help", no_argument, NULL, 'h'},
+    {"json", no_argument, NULL, O_JSON},
     {"out", required_argument, NULL, O_OUT},
     {"repeats", required_argument, NULL, O_REPEATS},
     {NULL, 0, NULL, 0},
@@ -173,6 +186,9 @@ static int parse_args(int argc, char **argv, trade_args *a) {
             return 1;
         case O_OUT:
             a->out = optarg;
+            break;
+        case O_JSON:
+            a->json = 1;
             break;
         case O_REPEATS:
             if (zp_cli_whole("bench trade", "--repeats", optarg, 1, 64, &n)) {
@@ -227,6 +243,225 @@ static void print_error(const char *label, double e) {
     }
 }
 
+/* the model and options of case c on the scene base, at its schedule (sched); NULL on a bad
+   scene (said on stderr) */
+static zp_model *case_model(const zp_scene *base, int c, zp_sim_opts *o, zp_schedule *sched) {
+    const trade_case *tc = &cases[c];
+    zp_scene sc = *base;
+    double push[ZP_MAX_SECTIONS];
+    for (int k = 0; k < sc.nsec; k++) {
+        push[k] = tc->force;
+    }
+    *sched = zp_schedule_sections(sc.nsec, push, 0, 0);
+    if (tc->damping >= 0) {
+        sc.ndamping = 1;
+        sc.damping[0] = tc->damping;
+    }
+    zp_diag d;
+    zp_diag_init(&d);
+    zp_model *m = zp_model_build(&sc, &d);
+    if (!m || zp_sim_opts_from_scene(&sc, o, &d)) {
+        zp_diag_print(&d, stderr);
+        zp_model_free(m);
+        return NULL;
+    }
+    o->output_dt = 0; /* integration and events only, as the search runs */
+    o->track_loads = 0;
+    return m;
+}
+
+/* case c of the study: its reference, then every configuration, each a line of the CSV;
+   0, or -1 (said on stderr) */
+static int run_case(const zp_scene *base, int c, int repeats, trade_study *st, FILE *csv) {
+    const trade_case *tc = &cases[c];
+    zp_sim_opts o;
+    zp_schedule sched;
+    zp_model *m = case_model(base, c, &o, &sched);
+    if (!m) {
+        return -1;
+    }
+    /* the reference: gsl-rk8pd and a CVODE method at REF_RTOL, and how well they agree */
+    o.rtol = REF_RTOL;
+    o.atol = REF_RTOL * ATOL_RATIO;
+    o.method = ZP_METHOD_GSL_RK8PD;
+    reading ref = st->ref[c] = measure(m, o, &sched, 1);
+    o.method = tc->ref_cvode;
+    reading ref2 = measure(m, o, &sched, 1);
+    errors agree = st->agree[c] = compare(m, &ref2, &ref);
+    fprintf(stderr, "%s: reference %s at %.9f s by %s and %s, which agree to %.1e s (time), "
+                    "%.1e N s (impulses), %.1e deg (angles), %.1e m (x)\n",
+            tc->name, zp_sim_outcome_name(ref.outcome), ref.time,
+            zp_method_get(ZP_METHOD_GSL_RK8PD)->name, zp_method_get(tc->ref_cvode)->name,
+            agree.time, agree.impulse, agree.angle, agree.x);
+    if (!ref.ok || !isfinite(worst(agree))) {
+        fprintf(stderr, "zipopt bench trade: %s: the reference runs disagree on the "
+                        "outcome; nothing was written\n",
+                tc->name);
+        zp_model_free(m);
+        return -1;
+    }
+    for (int k = 0; k < ZP_METHOD_COUNT; k++) {
+        for (int t = 0; t < NTOL; t++) {
+            o.method = k;
+            o.rtol = st->tols[t];
+            o.atol = st->tols[t] * ATOL_RATIO;
+            reading *r = &st->runs[c][k][t];
+            *r = measure(m, o, &sched, repeats);
+            st->errs[c][k][t] = compare(m, r, &ref);
+            const errors *e = &st->errs[c][k][t];
+            fprintf(csv, "%s,%s,%.0e,%s,%.12g,%.3e,%.3e,%.3e,%.3e,%.3e,%ld,%.6e,%ld,%d\n",
+                    tc->name, zp_method_get(k)->name, st->tols[t],
+                    r->ok ? zp_sim_outcome_name(r->outcome) : "failed", r->time, e->time,
+                    e->impulse, e->angle, e->x, e->v, r->evals, r->wall, r->steps, r->repeats);
+        }
+    }
+    zp_model_free(m);
+    return 0;
+}
+
+/* the fastest configuration (*bk method, *bt tolerance, total median wall returned) whose
+   finish/death time error is within target on case c, or on all of them (c == NCASE);
+   *bk < 0 when none is */
+static double fastest(const trade_study *st, double target, int c, int *bk, int *bt) {
+    double best = INFINITY;
+    *bk = *bt = -1;
+    int c0 = c == NCASE ? 0 : c, c1 = c == NCASE ? NCASE : c + 1;
+    for (int k = 0; k < ZP_METHOD_COUNT; k++) {
+        for (int t = 0; t < NTOL; t++) {
+            double e = 0, w = 0;
+            for (int cc = c0; cc < c1; cc++) {
+                e = fmax(e, st->errs[cc][k][t].time);
+                w += st->runs[cc][k][t].wall;
+            }
+            if (e <= target && w < best) {
+                best = w;
+                *bk = k;
+                *bt = t;
+            }
+        }
+    }
+    return best;
+}
+
+static void print_text(const trade_study *st) {
+    /* the table: time error and cost of every configuration */
+    for (int c = 0; c < NCASE; c++) {
+        printf("\n%s (%g N%s): error of the %s time (s) / median wall (ms) / rhs evals\n",
+               cases[c].name, cases[c].force, cases[c].damping >= 0 ? ", c = 1e4" : "",
+               st->runs[c][0][0].outcome == ZP_OUTCOME_DIED ? "death" : "finish");
+        printf("%-7s", "rtol");
+        for (int k = 0; k < ZP_METHOD_COUNT; k++) {
+            printf(" | %-26s", zp_method_get(k)->name);
+        }
+        printf("\n");
+        for (int t = 0; t < NTOL; t++) {
+            printf("%-7.0e", st->tols[t]);
+            for (int k = 0; k < ZP_METHOD_COUNT; k++) {
+                const reading *r = &st->runs[c][k][t];
+                printf(" | ");
+                print_error("", st->errs[c][k][t].time);
+                printf(" %8.2f %7ld", 1e3 * r->wall, r->evals);
+            }
+            printf("\n");
+        }
+    }
+    /* the fastest configuration reaching each target, per case and over all three */
+    printf("\nfastest to reach a finish/death time error (method, rtol, median wall):\n");
+    for (int g = 0; g < NTARGET; g++) {
+        printf("  <= %.0e s:", targets[g]);
+        for (int c = 0; c <= NCASE; c++) {
+            int bk, bt;
+            double best = fastest(st, targets[g], c, &bk, &bt);
+            printf("  %s: ", c == NCASE ? "all three" : cases[c].name);
+            if (bk < 0) {
+                printf("none");
+            } else {
+                printf("%s %.0e (%.2f ms)", zp_method_get(bk)->name, st->tols[bt], 1e3 * best);
+            }
+            fputs(c < NCASE ? ";" : "\n", stdout);
+        }
+    }
+}
+
+/* "key": number, then sep */
+static void json_num(const char *key, double v, const char *sep) {
+    printf("\"%s\": ", key);
+    zp_out_json_number(stdout, v);
+    fputs(sep, stdout);
+}
+
+/* one errors object: null where the outcome or the kinks crossed differ */
+static void json_errors(const errors *e) {
+    fputs("{", stdout);
+    json_num("time", e->time, ", ");
+    json_num("impulse", e->impulse, ", ");
+    json_num("angle", e->angle, ", ");
+    json_num("x", e->x, ", ");
+    json_num("speed", e->v, "}");
+}
+
+static void json_case(const trade_study *st, int c) {
+    const trade_case *tc = &cases[c];
+    const reading *ref = &st->ref[c];
+    printf("    {\"name\": \"%s\", ", tc->name);
+    json_num("force", tc->force, ", ");
+    json_num("damping", tc->damping >= 0 ? tc->damping : NAN, ",\n");
+    printf("     \"reference\": {\"methods\": [\"%s\", \"%s\"], \"outcome\": \"%s\", ",
+           zp_method_get(ZP_METHOD_GSL_RK8PD)->name, zp_method_get(tc->ref_cvode)->name,
+           zp_sim_outcome_name(ref->outcome));
+    json_num("time", ref->time, ", ");
+    fputs("\"agreement\": ", stdout);
+    json_errors(&st->agree[c]);
+    fputs("},\n     \"runs\": [", stdout);
+    for (int k = 0; k < ZP_METHOD_COUNT; k++) {
+        for (int t = 0; t < NTOL; t++) {
+            const reading *r = &st->runs[c][k][t];
+            printf("%s\n      {\"method\": \"%s\", ", k || t ? "," : "", zp_method_get(k)->name);
+            json_num("rtol", st->tols[t], ", ");
+            json_num("atol", st->tols[t] * ATOL_RATIO, ", ");
+            printf("\"outcome\": \"%s\", ", r->ok ? zp_sim_outcome_name(r->outcome) : "failed");
+            json_num("time", r->ok ? r->time : NAN, ", ");
+            fputs("\"error\": ", stdout);
+            json_errors(&st->errs[c][k][t]);
+            printf(", \"rhs_evals\": %ld, \"steps\": %ld, ", r->evals, r->steps);
+            json_num("wall_s", r->wall, ", ");
+            printf("\"repeats\": %d}", r->repeats);
+        }
+    }
+    printf("\n     ]}%s\n", c + 1 < NCASE ? "," : "");
+}
+
+/* the study as one JSON object (README "zipopt bench trade --json") */
+static void print_json(const trade_study *st, const char *scene, int repeats) {
+    fputs("{\n  \"study\": \"trade\",\n  \"scene\": ", stdout);
+    zp_out_json_string(stdout, scene);
+    printf(",\n  \"repeats\": %d,\n  ", repeats);
+    json_num("reference_rtol", REF_RTOL, ",\n  ");
+    json_num("atol_per_rtol", ATOL_RATIO, ",\n  \"cases\": [\n");
+    for (int c = 0; c < NCASE; c++) {
+        json_case(st, c);
+    }
+    fputs("  ],\n  \"fastest\": [", stdout);
+    for (int g = 0; g < NTARGET; g++) {
+        printf("%s\n    {", g ? "," : "");
+        json_num("time_error", targets[g], "");
+        for (int c = 0; c <= NCASE; c++) {
+            int bk, bt;
+            double best = fastest(st, targets[g], c, &bk, &bt);
+            printf(", \"%s\": ", c == NCASE ? "all" : cases[c].name);
+            if (bk < 0) {
+                fputs("null", stdout);
+                continue;
+            }
+            printf("{\"method\": \"%s\", ", zp_method_get(bk)->name);
+            json_num("rtol", st->tols[bt], ", ");
+            json_num("wall_s", best, "}");
+        }
+        fputs("}", stdout);
+    }
+    fputs("\n  ]\n}\n", stdout);
+}
+
 int zp_cmd_bench(int argc, char **argv) {
     trade_args a;
     int pa = parse_args(argc, argv, &a);
@@ -240,11 +475,9 @@ int zp_cmd_bench(int argc, char **argv) {
     }
     zp_setup_free(&base);
 
-    static reading runs[NCASE][ZP_METHOD_COUNT][NTOL];
-    static errors errs[NCASE][ZP_METHOD_COUNT][NTOL];
-    double tols[NTOL];
+    static trade_study st;
     for (int t = 0; t < NTOL; t++) {
-        tols[t] = pow(10, -3 - t);
+        st.tols[t] = pow(10, -3 - t);
     }
     zp_tx set;
     if (zp_cli_out_begin(&set, "bench trade", "bench", a.out, &base.sc)) {
@@ -262,66 +495,10 @@ int zp_cmd_bench(int argc, char **argv) {
           "err_speed_mps,rhs_evals,wall_s,steps,repeats\n",
           csv);
     for (int c = 0; c < NCASE; c++) {
-        const trade_case *tc = &cases[c];
-        zp_scene sc = base.sc;
-        double push[ZP_MAX_SECTIONS];
-        for (int k = 0; k < sc.nsec; k++) {
-            push[k] = tc->force;
-        }
-        zp_schedule sched = zp_schedule_sections(sc.nsec, push, 0, 0);
-        if (tc->damping >= 0) {
-            sc.ndamping = 1;
-            sc.damping[0] = tc->damping;
-        }
-        zp_diag d;
-        zp_diag_init(&d);
-        zp_model *m = zp_model_build(&sc, &d);
-        zp_sim_opts o;
-        if (!m || zp_sim_opts_from_scene(&sc, &o, &d)) {
-            zp_diag_print(&d, stderr);
-            zp_model_free(m);
+        if (run_case(&base.sc, c, a.repeats, &st, csv)) {
             zp_tx_abort(&set);
             return ZP_EXIT_FAIL;
         }
-        o.output_dt = 0;   /* integration and events only, as the search runs */
-        o.track_loads = 0;
-        /* the reference: gsl-rk8pd and a CVODE method at REF_RTOL, and how well they agree */
-        o.rtol = REF_RTOL;
-        o.atol = REF_RTOL * ATOL_RATIO;
-        o.method = ZP_METHOD_GSL_RK8PD;
-        reading ref = measure(m, o, &sched, 1);
-        o.method = tc->ref_cvode;
-        reading ref2 = measure(m, o, &sched, 1);
-        errors agree = compare(m, &ref2, &ref);
-        fprintf(stderr, "%s: reference %s at %.9f s by %s and %s, which agree to %.1e s (time), "
-                        "%.1e N s (impulses), %.1e deg (angles), %.1e m (x)\n",
-                tc->name, zp_sim_outcome_name(ref.outcome), ref.time,
-                zp_method_get(ZP_METHOD_GSL_RK8PD)->name, zp_method_get(tc->ref_cvode)->name,
-                agree.time, agree.impulse, agree.angle, agree.x);
-        if (!ref.ok || !isfinite(worst(agree))) {
-            fprintf(stderr, "zipopt bench trade: %s: the reference runs disagree on the "
-                            "outcome; nothing was written\n", tc->name);
-            zp_model_free(m);
-            zp_tx_abort(&set);
-            return ZP_EXIT_FAIL;
-        }
-        for (int k = 0; k < ZP_METHOD_COUNT; k++) {
-            for (int t = 0; t < NTOL; t++) {
-                o.method = k;
-                o.rtol = tols[t];
-                o.atol = tols[t] * ATOL_RATIO;
-                reading *r = &runs[c][k][t];
-                *r = measure(m, o, &sched, a.repeats);
-                errs[c][k][t] = compare(m, r, &ref);
-                const errors *e = &errs[c][k][t];
-                fprintf(csv, "%s,%s,%.0e,%s,%.12g,%.3e,%.3e,%.3e,%.3e,%.3e,%ld,%.6e,%ld,%d\n",
-                        tc->name, zp_method_get(k)->name, tols[t],
-                        r->ok ? zp_sim_outcome_name(r->outcome) : "failed", r->time, e->time,
-                        e->impulse, e->angle, e->x, e->v, r->evals, r->wall, r->steps,
-                        r->repeats);
-            }
-        }
-        zp_model_free(m);
     }
     write_gnuplot(gp);
     const char *script = "trade.gp";
@@ -334,59 +511,13 @@ int zp_cmd_bench(int argc, char **argv) {
     if (zp_cli_out_commit(&set, "bench trade")) {
         return ZP_EXIT_FAIL;
     }
-
-    /* the table: time error and cost of every configuration */
-    for (int c = 0; c < NCASE; c++) {
-        printf("\n%s (%g N%s): error of the %s time (s) / median wall (ms) / rhs evals\n",
-               cases[c].name, cases[c].force, cases[c].damping >= 0 ? ", c = 1e4" : "",
-               runs[c][0][0].outcome == ZP_OUTCOME_DIED ? "death" : "finish");
-        printf("%-7s", "rtol");
-        for (int k = 0; k < ZP_METHOD_COUNT; k++) {
-            printf(" | %-26s", zp_method_get(k)->name);
-        }
-        printf("\n");
-        for (int t = 0; t < NTOL; t++) {
-            printf("%-7.0e", tols[t]);
-            for (int k = 0; k < ZP_METHOD_COUNT; k++) {
-                const reading *r = &runs[c][k][t];
-                printf(" | ");
-                print_error("", errs[c][k][t].time);
-                printf(" %8.2f %7ld", 1e3 * r->wall, r->evals);
-            }
-            printf("\n");
-        }
+    if (a.json) {
+        print_json(&st, base.sc.name, a.repeats);
+    } else {
+        print_text(&st);
     }
-    /* the fastest configuration reaching each target, per case and over all three */
-    printf("\nfastest to reach a finish/death time error (method, rtol, median wall):\n");
-    for (int g = 0; g < NTARGET; g++) {
-        printf("  <= %.0e s:", targets[g]);
-        for (int c = 0; c <= NCASE; c++) {
-            int bk = -1, bt = -1;
-            double best = INFINITY;
-            for (int k = 0; k < ZP_METHOD_COUNT; k++) {
-                for (int t = 0; t < NTOL; t++) {
-                    double e = 0, w = 0;
-                    for (int cc = c == NCASE ? 0 : c; cc < (c == NCASE ? NCASE : c + 1); cc++) {
-                        e = fmax(e, errs[cc][k][t].time);
-                        w += runs[cc][k][t].wall;
-                    }
-                    if (e <= targets[g] && w < best) {
-                        best = w;
-                        bk = k;
-                        bt = t;
-                    }
-                }
-            }
-            printf("  %s: ", c == NCASE ? "all three" : cases[c].name);
-            if (bk < 0) {
-                printf("none");
-            } else {
-                printf("%s %.0e (%.2f ms)", zp_method_get(bk)->name, tols[bt], 1e3 * best);
-            }
-            fputs(c < NCASE ? ";" : "\n", stdout);
-        }
-    }
-    printf("\nwrote in %s: %s%s\n", set.dir, set.written,
-           missing ? " (gnuplot is not installed: no plot; apt-get install gnuplot-nox)" : "");
+    fprintf(a.json ? stderr : stdout, "%swrote in %s: %s%s\n", a.json ? "" : "\n", set.dir,
+            set.written,
+            missing ? " (gnuplot is not installed: no plot; apt-get install gnuplot-nox)" : "");
     return ZP_EXIT_OK;
 }

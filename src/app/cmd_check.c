@@ -123,10 +123,17 @@ static void print_scene(const zp_setup *st) {
     }
     printf("%s; search bounds [%g, %g] N\n", sc->nforce ? "" : " (none given)", sc->force_min,
            sc->force_max);
-    printf("solver: method %s (%s); formulation %s (%s)\n", sc->method, method_doc(sc->method),
+    /* st->sim: with [solver] accuracy, the method and tolerances picked for it */
+    const char *method = zp_method_get(st->sim.method)->name;
+    printf("solver: method %s (%s); formulation %s (%s)\n", method, method_doc(method),
            sc->formulation, formulation_doc(sc->formulation));
-    printf("        rtol %g, atol %g, t_max %g s, output_dt %g s\n", sc->rtol, sc->atol, sc->t_max,
-           sc->output_dt);
+    printf("        rtol %g, atol %g, t_max %g s, output_dt %g s\n", st->sim.rtol, st->sim.atol,
+           sc->t_max, sc->output_dt);
+    if (sc->accuracy > 0) {
+        printf("        picked for accuracy %g s (work-precision table; simulate tightens it "
+               "until its error estimate meets it)\n",
+               sc->accuracy);
+    }
     printf("optimize: margin %g deg, max_evals %ld%s, seed %lu\n", sc->margin,
            sc->line_max_evals ? sc->max_evals : zp_search_default_budget(sc->nsec),
            sc->line_max_evals ? "" : " (the search's default)", sc->seed);
@@ -212,10 +219,11 @@ static void print_json(const zp_setup *st) {
     json_list("forces", sc->forces, sc->nforce ? sc->nsec : 0, ", ");
     json_num("force_min", sc->force_min, ", ");
     json_num("force_max", sc->force_max, ", ");
-    json_str("method", sc->method, ", ");
+    json_str("method", zp_method_get(st->sim.method)->name, ", ");
     json_str("formulation", sc->formulation, ", ");
-    json_num("rtol", sc->rtol, ", ");
-    json_num("atol", sc->atol, ", ");
+    json_num("rtol", st->sim.rtol, ", ");
+    json_num("atol", st->sim.atol, ", ");
+    json_num("accuracy", sc->accuracy > 0 ? sc->accuracy : NAN, ", ");
     json_num("t_max", sc->t_max, ", ");
     json_num("output_dt", sc->output_dt, ", ");
     json_num("margin", sc->margin, ", ");

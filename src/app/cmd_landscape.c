@@ -1,4 +1,4 @@
-/* `zipopt landscape`: the survival landscape (issue 5 item 3): finish time or death over a
+/* `zipopt landscape`: the survival landscape: finish time or death over a
    constant push, and over a 2D slice of two sections' forces through a base schedule. */
 #include <math.h>
 #include <stdio.h>
@@ -151,14 +151,24 @@ static const char *outcome_name(const zp_landscape_point *p) {
     return p->failed ? "failed" : zp_sim_outcome_name(p->outcome);
 }
 
-/* one CSV row's result columns */
-static void write_point(FILE *f, const zp_landscape_point *p) {
-    fprintf(f, ",%s,%s,%.9g,%.9g,%d,%.6g\n", outcome_name(p),
-            p->failed || p->outcome != ZP_OUTCOME_STALLED ? "" : zp_sim_stall_name(p->stall),
-            p->time, p->x, p->died_link, p->max_rel_angle * 180 / M_PI);
+/* 1 when p finished with the margin (limit, rad) and every [limits] value kept */
+static int keeps(const zp_landscape_point *p, double limit, const zp_limits *lim) {
+    int kept = !p->failed && p->outcome == ZP_OUTCOME_FINISHED && p->max_rel_angle <= limit;
+    for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
+        kept &= !(lim->max[i] > 0) || p->reached[i] <= lim->max[i];
+    }
+    return kept;
 }
 
-static const char *result_header = "outcome,stall_reason,time,x,died_link,max_rel_angle_deg";
+/* one CSV row's result columns */
+static void write_point(FILE *f, const zp_landscape_point *p, int kept) {
+    fprintf(f, ",%s,%s,%.9g,%.9g,%d,%.6g,%d\n", outcome_name(p),
+            p->failed || p->outcome != ZP_OUTCOME_STALLED ? "" : zp_sim_stall_name(p->stall),
+            p->time, p->x, p->died_link, p->max_rel_angle * 180 / M_PI, kept);
+}
+
+static const char *result_header =
+    "outcome,stall_reason,time,x,died_link,max_rel_angle_deg,kept";
 
 /* one window, points i..j: listed as the points it is, since pushes between two sampled
    points were never run */
@@ -309,6 +319,9 @@ int zp_cmd_landscape(int argc, char **argv) {
     }
     zp_sim_opts o = st.sim;
     o.output_dt = 0; /* outcomes only */
+    zp_limits lim;
+    zp_limits_from_scene(sc, &lim);
+    o.peaks = zp_limits_need_peaks(&lim);
 
     /* the schedules: the constant pushes, then the slice */
     status = ZP_EXIT_FAIL;
@@ -359,7 +372,7 @@ int zp_cmd_landscape(int argc, char **argv) {
     fprintf(csv, "force,%s\n", result_header);
     for (int k = 0; k < n1; k++) {
         fprintf(csv, "%.9g", at(&r1, k));
-        write_point(csv, &pt[k]);
+        write_point(csv, &pt[k], keeps(&pt[k], st.limit, &lim));
     }
     zp_fig_landscape_1d(gp, sc->name, &r1);
     if (n2) {
@@ -367,7 +380,7 @@ int zp_cmd_landscape(int argc, char **argv) {
         for (int k = 0; k < n2; k++) {
             const double *f = force + (size_t)(n1 + k) * ns;
             fprintf(csv2, "%.9g,%.9g", f[si], f[sj]);
-            write_point(csv2, &pt[n1 + k]);
+            write_point(csv2, &pt[n1 + k], keeps(&pt[n1 + k], st.limit, &lim));
         }
         zp_fig_landscape_2d(gp2, sc->name, sc->nsec, si, sj, &rx, &ry, base,
                             a.schedule     ? a.schedule

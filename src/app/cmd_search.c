@@ -1,5 +1,5 @@
 /* `zipopt [SCENE.ini] [--out DIR]`: the search for the fastest survivable schedule, its
-   verification and the best-forcing report (CLI.md; issue 4). */
+   verification and the best-forcing report. */
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
@@ -13,6 +13,7 @@
 #include "out_file.h"
 #include "plot.h"
 #include "report.h"
+#include "robust.h"
 #include "search.h"
 #include "setup.h"
 #include "verify.h"
@@ -26,7 +27,7 @@ static volatile sig_atomic_t interrupted;
 
 static void usage(FILE *f) {
     fputs("usage: zipopt [SCENE.ini] [--out DIR] [--algorithm NAME] [--seed N] [--max-evals N]\n"
-          "              [--max-time S] [--no-plot]\n"
+          "              [--max-time S] [--no-plot] [--json]\n"
           "Searches for the fastest schedule of drive forces, one per course section within\n"
           "[drive] min, max, that brings the spy to the end alive with every relative joint\n"
           "angle at least [optimize] margin below death_angle. With no file: the built-in seed\n"
@@ -45,6 +46,8 @@ static void usage(FILE *f) {
           "  --max-time S      stops the search after S seconds of wall time, keeping the best\n"
           "                    so far (then the answer depends on the machine's speed)\n"
           "  --no-plot         skip the figures\n"
+          "  --json            print summary.json's object on stdout instead of the text\n"
+          "                    summary (keys: README, CLI.md)\n"
           "strategies:\n",
           f);
     for (int i = 0; i < zp_search_algo_count(); i++) {
@@ -58,12 +61,13 @@ typedef struct search_args {
     int has_seed;
     unsigned long seed, max_evals; /* max_evals 0: from the scene */
     double max_time;               /* s, 0: no limit */
-    int no_plot;
+    int no_plot, json;
 } search_args;
 
-enum { O_OUT = ZP_OPT_FIRST, O_NO_PLOT, O_ALGORITHM, O_SEED, O_MAX_EVALS, O_MAX_TIME };
+enum { O_OUT = ZP_OPT_FIRST, O_NO_PLOT, O_ALGORITHM, O_SEED, O_MAX_EVALS, O_MAX_TIME, O_JSON };
 static const struct option options[] = {
     {"help", no_argument, NULL, 'h'},
+    {"json", no_argument, NULL, O_JSON},
     {"out", required_argument, NULL, O_OUT},
     {"no-plot", no_argument, NULL, O_NO_PLOT},
     {"algorithm", required_argument, NULL, O_ALGORITHM},
@@ -98,6 +102,9 @@ static int parse_args(int argc, char **argv, search_args *a) {
             break;
         case O_NO_PLOT:
             a->no_plot = 1;
+            break;
+        case O_JSON:
+            a->json = 1;
             break;
         case O_ALGORITHM:
             a->algo = optarg;
@@ -217,8 +224,10 @@ static int write_outputs(zp_tx *t, const zp_report *r, zp_sim *best_sim) {
         return -1;
     }
     zp_report_write_md(md, r);
-    snprintf(note, sizeof note, "best schedule of the search%s: %s, %.6f s; rerun with zipopt "
-             "simulate SCENE.ini --schedule this-file", r->res->interrupted ? " (interrupted)" : "",
+    snprintf(note, sizeof note, "%s of the search%s: %s, %.6f s; rerun with zipopt "
+             "simulate SCENE.ini --schedule this-file",
+             r->res->found ? "best schedule" : "CLOSEST CANDIDATE (nothing met the constraints)",
+             r->res->interrupted ? " (interrupted)" : "",
              zp_sim_outcome_name(r->v->run->outcome), r->v->run->time);
     zp_schedule best = zp_schedule_with(r->shape, r->res->force);
     zp_report_write_schedule(ini, r->sc, &best, note);
@@ -256,8 +265,10 @@ static void print_summary(const zp_report *r) {
     const zp_search_result *s = r->res;
     const zp_result *run = r->v->run;
     if (!s->found) {
-        printf("no schedule keeps the margin: none of %ld simulations survived with it; the "
-               "closest candidate is written, marked as such\n", s->evals);
+        printf("no schedule keeps the margin%s: none of %ld simulations survived with it; the "
+               "closest candidate is written, marked as such\n",
+               r->box || zp_limits_any(r->lim) ? ", the [limits] and the [robust] scenarios" : "",
+               s->evals);
     }
     printf("%sbest schedule (N):", s->interrupted ? "interrupted; " : "");
     for (int k = 0; k < r->m->nsec; k++) {
@@ -278,6 +289,13 @@ static void print_summary(const zp_report *r) {
     }
     printf("search: %s, %ld simulations in %.2f s on %d threads\n", r->algo, s->evals,
            s->wall_s, s->nthreads);
+    if (r->box) {
+        const zp_robust_check *c = r->check;
+        printf("robust: held to %d scenarios (%d added by the adversary); on %d fresh ones %d "
+               "finished, %d kept the margin, %d every limit: P(survivable) >= %.4f (95 %%)\n",
+               r->set->n, r->rinfo->added, c->samples, c->survived, c->margin_kept,
+               c->limits_kept, c->lower_95);
+    }
     char conv[512];
     zp_report_convergence(conv, sizeof conv, s);
     printf("convergence: %s\n", conv);
@@ -303,15 +321,23 @@ int zp_cmd_search(int argc, char **argv) {
     }
     zp_tx_soft_interrupt(&tx, &interrupted);
 
-    zp_objective ob = {m, st.limit, st.sim.t_max, &st.sched};
+    zp_sim_opts fast;
+    static zp_robust_problem pb; /* large: kept off the stack */
+    if (zp_robust_setup(&pb, sc, m, st.limit, &st.sched, &st.sim, &st.search, &fast)) {
+        fputs("zipopt: out of memory building the scenarios; nothing was written\n", stderr);
+        zp_robust_problem_free(&pb);
+        zp_tx_abort(&tx);
+        zp_setup_free(&st);
+        return ZP_EXIT_FAIL;
+    }
     progress_ctx pc = {.sc = sc, .shape = &st.sched, .tx = &tx, .tty = isatty(STDERR_FILENO)};
     zp_search_opts o = {.algo = a.algo ? zp_search_algo_find(a.algo) : 0,
                         .max_evals = st.max_evals, .max_time = a.max_time, .seed = st.seed,
                         .stop = &interrupted, .progress = on_progress, .user = &pc};
     static zp_search_result res;
     char err[512] = "";
-    zp_status rc = zp_search_run(&ob, &st.search, st.sched.lo, st.sched.hi, &o, &res, err,
-                                 sizeof err);
+    zp_status rc = zp_robust_solve(&pb, sc, &st.sim, &fast, st.sched.lo, st.sched.hi, &o, &res,
+                                   err, sizeof err);
     int status = ZP_EXIT_FAIL;
     zp_sim *best_sim = NULL, *study_sim = NULL;
     zp_verify v = {0};
@@ -319,9 +345,14 @@ int zp_cmd_search(int argc, char **argv) {
         fprintf(stderr, "zipopt: %s; nothing was written\n", err);
         goto done;
     }
-    /* verification (always) and robustness (not after Ctrl-C: the user wants out) */
+    /* verification (always) and robustness (not after Ctrl-C: the user wants out), of the
+       nominal scene: the scenarios were checked above */
+    zp_objective ob = pb.ob;
+    ob.set = NULL;
+    zp_sim_opts solver = st.sim;
+    solver.peaks = fast.peaks;
     phase_start(&pc, "verification: the best schedule with [solver] and 100x tighter");
-    rc = zp_verify_run(&ob, &st.sim, res.force, st.seed, res.interrupted ? 0 : NROBUST, 0,
+    rc = zp_verify_run(&ob, &solver, res.force, st.seed, res.interrupted ? 0 : NROBUST, 0,
                        &best_sim, &v, on_verify, &pc, err, sizeof err);
     if (pc.shown) {
         fputc('\n', stderr);
@@ -350,14 +381,22 @@ int zp_cmd_search(int argc, char **argv) {
         pc.shown = 0;
     }
     int drawn = a.no_plot ? 0 : figures(&tx, m, sc, &st.sched, &res, &v, best_sim);
+    int robust = pb.robust;
     zp_report r = {sc, m, &res, &v, best_sim, &study, STUDY_FORCE,
                    zp_search_algo_get(o.algo)->name, zp_method_get(st.sim.method)->name, a.scene,
-                   tx.dir, drawn > 0, &st.search, &st.sim, &st.sched, st.seed, st.max_evals};
+                   tx.dir, drawn > 0, &fast, &solver, &st.sched, st.seed, st.max_evals,
+                   .lim = &pb.ob.lim, .box = robust ? &pb.box : NULL,
+                   .set = robust ? &pb.set : NULL, .rinfo = robust ? &pb.info : NULL,
+                   .check = robust ? &pb.check : NULL};
     if (drawn < 0 || write_outputs(&tx, &r, best_sim) || zp_cli_out_commit(&tx, "")) {
         goto done;
     }
-    print_summary(&r);
-    printf("wrote in %s: %s\n", tx.dir, tx.written);
+    if (a.json) {
+        zp_report_write_json(stdout, &r); /* summary.json's object */
+    } else {
+        print_summary(&r);
+    }
+    fprintf(a.json ? stderr : stdout, "wrote in %s: %s\n", tx.dir, tx.written);
     status = ZP_EXIT_OK;
     if (res.interrupted) {
         fputs("zipopt: interrupted; wrote the best schedule found so far\n", stderr);
@@ -374,6 +413,7 @@ done:
     zp_verify_free(&v);
     zp_sim_free(best_sim);
     zp_sim_free(study_sim);
+    zp_robust_problem_free(&pb);
     zp_setup_free(&st);
     return status;
 }

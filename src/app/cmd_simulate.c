@@ -145,6 +145,18 @@ static int cmp_double(const void *a, const void *b) {
     return (x > y) - (x < y);
 }
 
+/* each [limits] value set: reached against the limit */
+static void print_limits(const zp_model *m, const zp_result *r, const zp_limits *lim) {
+    double v[ZP_LIMIT_COUNT];
+    zp_limits_reached(m, r, v);
+    for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
+        if (lim->max[i] > 0) {
+            printf("limit %s: reached %.4g %s of %g (%s)\n", zp_limit_name(i), v[i],
+                   zp_limit_unit(i), lim->max[i], v[i] <= lim->max[i] ? "kept" : "BROKEN");
+        }
+    }
+}
+
 static void print_text(const zp_model *m, const zp_result *r) {
     printf("outcome: %s", zp_sim_outcome_name(r->outcome));
     if (r->outcome == ZP_OUTCOME_DIED) {
@@ -310,6 +322,32 @@ static int say_figures(const char *dir, const zp_plot_opts *po, const zp_plot_in
     return ZP_EXIT_OK;
 }
 
+/* the answer's run and its error estimate; with [solver] accuracy, tightened until it is met */
+static zp_status run_answer(const zp_model *m, double accuracy, zp_sim_opts *o,
+                            const zp_input *in, zp_sim **s, zp_result *r, zp_estimate *e,
+                            zp_accuracy *a) {
+    if (accuracy > 0) {
+        return zp_accuracy_run(m, o, in, accuracy, s, r, e, a);
+    }
+    *s = zp_sim_create(m, o);
+    if (!*s) {
+        snprintf(r->message, sizeof r->message, "cannot create the simulator (out of memory)");
+        return ZP_ERR_NOMEM;
+    }
+    zp_status st = zp_sim_run(m, *s, in, r);
+    if (st == ZP_OK) {
+        zp_estimate_run(m, o, in, r, e);
+    }
+    return st;
+}
+
+/* what a request for accuracy met, and what it cost */
+static void print_accuracy(const zp_accuracy *a) {
+    printf("accuracy: %.2g s requested, %.2g s met%s (%s at rtol %.0e, %d rerun%s)\n",
+           a->requested, a->met, a->ok ? "" : " - NOT MET", zp_method_get(a->method)->name,
+           a->rtol, a->reruns, a->reruns == 1 ? "" : "s");
+}
+
 int zp_cmd_simulate(int argc, char **argv) {
     sim_args a;
     int pa = parse_args(argc, argv, &a);
@@ -322,7 +360,7 @@ int zp_cmd_simulate(int argc, char **argv) {
         return ZP_EXIT_USAGE;
     }
     const zp_model *m = st.m;
-    const zp_sim_opts o = st.sim;
+    zp_sim_opts o = st.sim;
     int status = ZP_EXIT_USAGE;
     zp_sim *s = NULL;
     double *samples = NULL;
@@ -349,14 +387,15 @@ int zp_cmd_simulate(int argc, char **argv) {
         goto done;
     }
     status = ZP_EXIT_FAIL;
-    s = zp_sim_create(m, &o);
-    if (!s) {
-        fputs("zipopt simulate: cannot create the simulator (out of memory)\n", stderr);
-        goto done;
-    }
+    zp_limits lim;
+    zp_limits_from_scene(&st.sc, &lim);
+    o.peaks = zp_limits_need_peaks(&lim);
     zp_result r;
+    zp_estimate est;
+    zp_accuracy acc;
     zp_input in = {.sched = &st.sched, .sample_t = samples, .nsample = nsample};
-    if (zp_sim_run(m, s, &in, &r)) {
+    zp_plot_frames_input(&po, &in);
+    if (run_answer(m, st.sc.accuracy, &o, &in, &s, &r, &est, &acc)) {
         fprintf(stderr, "zipopt simulate: %s; nothing was written\n", r.message);
         goto done;
     }
@@ -366,11 +405,10 @@ int zp_cmd_simulate(int argc, char **argv) {
     }
     int nsmp;
     const zp_row *smp = zp_sim_samples(s, &nsmp);
-    zp_estimate est;
-    zp_estimate_run(m, &o, &in, &r, &est);
     zp_run_meta meta = {st.sc.name, zp_method_get(o.method)->name,
                         zp_formulation_get(o.formulation)->name, o.rtol, o.atol, &st.sched, &est,
-                        samples + nsmp, nsample - nsmp};
+                        samples + nsmp, nsample - nsmp, &lim,
+                        st.sc.accuracy > 0 ? &acc : NULL};
     zp_tx t;
     zp_plot_info info;
     if (zp_cli_out_begin(&t, "simulate", "simulate", a.out, &st.sc)) {
@@ -385,8 +423,12 @@ int zp_cmd_simulate(int argc, char **argv) {
         zp_out_json_result(stdout, m, &r, s, &meta);
     } else {
         print_text(m, &r);
+        print_limits(m, &r, &lim);
         print_samples(m, smp, nsmp, &meta, r.time);
         print_estimate(&r, &est);
+        if (meta.accuracy) {
+            print_accuracy(&acc);
+        }
     }
     fprintf(a.json ? stderr : stdout, "wrote in %s: %s\n", t.dir, t.written);
     status = a.plot ? say_figures(t.dir, &po, &info, a.json ? stderr : stdout) : ZP_EXIT_OK;

@@ -13,6 +13,7 @@ static const struct {
     {"simulate", zp_cmd_simulate},
     {"check", zp_cmd_check},
     {"landscape", zp_cmd_landscape},
+    {"tradeoff", zp_cmd_tradeoff},
     {"sweep", zp_cmd_sweep},
     {"bench", zp_cmd_bench},
 };
@@ -62,7 +63,12 @@ int main(int argc, char **argv) {
         return ZP_EXIT_OK;
     }
     if (argc >= 2 && !strcmp(argv[1], "--version")) {
-        printf("zipopt %s\n", ZIPOPT_VERSION);
+        /* --json: the same as one JSON object, like every command's */
+        if (argc >= 3 && !strcmp(argv[2], "--json")) {
+            printf("{\"name\": \"zipopt\", \"version\": \"%s\"}\n", ZIPOPT_VERSION);
+        } else {
+            printf("zipopt %s\n", ZIPOPT_VERSION);
+        }
         return ZP_EXIT_OK;
     }
     for (int i = 0; argc >= 2 && i < NCOMMAND; i++) {

@@ -11,7 +11,7 @@
 
 /* the chain's constant coefficients: M_x,thj = B_j (cos thj + f' sin thj),
    M_thj,thk = C_jk cos(thj - thk) (derivation in form_lagrange.c) */
-static void derive_chain(zp_model *m) {
+void zp_model_derive(zp_model *m) {
     int n = m->nlink;
     m->mtot = m->m0;
     for (int i = 0; i < n; i++) {
@@ -272,7 +272,7 @@ zp_model *zp_model_build(const zp_scene *sc, zp_diag *d) {
     m->phi_max = sc->death_angle * M_PI / 180.0;
     int dir = zp_drive_dir_find(sc->direction);
     m->drive = dir < 0 ? ZP_DRIVE_HORIZONTAL : (zp_drive_dir)dir;
-    derive_chain(m);
+    zp_model_derive(m);
 
     set_physics(m, sc);
     if (!check_course(m, sc, d) || (sc->kink_radius > 0 && !round_kinks(m, sc, d))) {

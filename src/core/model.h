@@ -72,6 +72,8 @@ void zp_model_free(zp_model *m);
 /* The course under the trolley on section sec at x, arcs included (the plain course when the
    model has none); course: the caller's evaluators. */
 zp_track zp_model_track(const zp_model *m, const zp_course *course, int sec, double x);
+/* Recomputes mtot, B and C from m0, len, half, mass and inertia (after changing them). */
+void zp_model_derive(zp_model *m);
 /* A course for one simulating thread (zp_course_for_thread: compiled code shared by all),
    owned by the caller; NULL with why in e. */
 zp_course *zp_model_course(const zp_model *m, zp_course_err *e);

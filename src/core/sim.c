@@ -2,11 +2,14 @@
    kink impulse and restart the integrator; fills zp_result. Formulation- and method-agnostic. */
 #include "sim.h"
 
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_min.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
+#include "accuracy.h"
 #include "events.h"
 #include "impulse.h"
 
@@ -17,6 +20,9 @@
 #define ZP_ZENO_RUN 4
 /* an output time this close (s) to an event shows the state after the event */
 #define ZP_EVENT_TIME_EPS 1e-9
+/* a load peak inside a step is located to this share of its time (Brent's method) */
+#define ZP_PEAK_RTOL 1e-10
+#define ZP_PEAK_ITER 60
 
 typedef zp_track (*track_fn)(const zp_model *m, const zp_course *c, int sec, double x);
 
@@ -34,6 +40,7 @@ struct zp_sim {
 
     /* the run under way */
     const zp_schedule *sched; /* borrowed */
+    const double *scale;      /* borrowed, per section, NULL: 1 (zp_input.force_scale) */
     double breaks[ZP_SCHED_MAX_BREAKS]; /* s, where the force jumps in time */
     int nbreak;
     int sec;
@@ -42,10 +49,13 @@ struct zp_sim {
     int nrows, cap_rows;
     zp_row *samples; /* owned, cap_samples */
     int nsamples, cap_samples;
+    zp_row *frames; /* owned, cap_frames */
+    int nframes, cap_frames;
     zp_load_peaks peaks; /* so far; every evaluation of the loads updates them */
 
     zp_crossing *cross;  /* owned, ZP_MAX_CROSSINGS */
     int ncross;          /* kept in cross (the result counts all) */
+    gsl_min_fminimizer *brent; /* owned when o.peaks */
 
     /* [physics] */
     track_fn track; /* the course with its arcs, or the plain course (chosen at create) */
@@ -63,6 +73,9 @@ static zp_track plain_track(const zp_model *m, const zp_course *c, int sec, doub
 static inline zp_drive_now drive_at(const zp_sim *s, track_fn track, double t, double x) {
     zp_drive_now dn = {track(s->m, s->course, s->sec, x), 0, 0, 0};
     double F = zp_schedule_force(s->sched, t, x, s->sec);
+    if (s->scale) {
+        F *= s->scale[s->sec];
+    }
     if (s->m->drive == ZP_DRIVE_TANGENT) {
         double norm = sqrt(1 + dn.tr.fp * dn.tr.fp);
         dn.fx = F / norm;
@@ -125,7 +138,11 @@ void zp_sim_free(zp_sim *s) {
     free(s->roots);
     free(s->rows);
     free(s->samples);
+    free(s->frames);
     free(s->cross);
+    if (s->brent) {
+        gsl_min_fminimizer_free(s->brent);
+    }
     free(s);
 }
 
@@ -163,12 +180,15 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
                                m->physics & ZP_PHYS_ROUNDED ? sim_rhs_rounded : zp_sim_rhs,
                                m->physics & ZP_PHYS_ROLLING ? sim_root_rolling : sim_root, s,
                                &mo);
+    if (o->peaks) {
+        s->brent = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
+    }
     if (o->output_dt > 0) {
         s->cap_rows = (int)fmin(o->t_max / o->output_dt + 2, ZP_MAX_ROWS + 2);
         s->rows = malloc(sizeof *s->rows * s->cap_rows);
     }
     if (!s->course || !s->fwork || !s->y || !s->ydot || !s->yout || !s->roots || !s->cross ||
-        !s->mwork || (o->output_dt > 0 && !s->rows)) {
+        !s->mwork || (o->output_dt > 0 && !s->rows) || (o->peaks && !s->brent)) {
         zp_sim_free(s);
         return NULL;
     }
@@ -182,7 +202,8 @@ static zp_chain chain_of(const zp_sim *s, const double *y) {
     return c;
 }
 
-static zp_row row_of(zp_sim *s, double t, const double *y) {
+/* the row at (t, y), touching nothing of the run */
+static zp_row row_at(zp_sim *s, double t, const double *y) {
     zp_drive_now dn = drive_now(s, t, y[0]); /* its course point serves the chain too */
     zp_row r = {.t = t, .sec = s->sec};
     s->form->to_chain(s->m, &dn.tr, y, &r.c);
@@ -194,6 +215,12 @@ static zp_row row_of(zp_sim *s, double t, const double *y) {
     }
     r.e_impulse = s->e_impulse;
     s->form->rhs(s->m, s->fwork, &dn, y, s->ydot, &r.loads);
+    return r;
+}
+
+/* the row at (t, y), its loads counted in the run's peaks */
+static zp_row row_of(zp_sim *s, double t, const double *y) {
+    zp_row r = row_at(s, t, y);
     zp_load_peaks *p = &s->peaks;
     p->normal_min = fmin(p->normal_min, r.loads.normal);
     p->normal_max = fmax(p->normal_max, r.loads.normal);
@@ -217,6 +244,83 @@ static zp_row row_of(zp_sim *s, double t, const double *y) {
     return r;
 }
 
+/* the largest felt acceleration (g) and joint force (N) over the links at state y; the peaks
+   take them in as a side effect */
+static void load_levels(zp_sim *s, double t, const double *y, double lv[2]) {
+    zp_row r = row_of(s, t, y);
+    double load[2][ZP_MAX_LINKS]; /* acceleration, joint force */
+    zp_row_loads(s->m, &r.loads, load[1], load[0]);
+    for (int q = 0; q < 2; q++) {
+        lv[q] = 0;
+        for (int i = 0; i < s->m->nlink; i++) {
+            lv[q] = fmax(lv[q], load[q][i]);
+        }
+        lv[q] = isfinite(lv[q]) ? lv[q] : 0;
+    }
+}
+
+typedef struct level_fn {
+    zp_sim *s;
+    int which; /* 0: felt acceleration, 1: joint force */
+} level_fn;
+
+/* minus one load level at time t inside the last step, from the dense output */
+static double minus_level(double t, void *p) {
+    level_fn *L = p;
+    double lv[2] = {0, 0};
+    if (L->s->meth->interpolate(L->s->mwork, t, L->s->yout) == 0) {
+        load_levels(L->s, t, L->s->yout, lv);
+    }
+    return -lv[L->which];
+}
+
+/* a maximum of level q inside the step [a, b] (f: minus the level at a, at guess and at b,
+   the guess below both ends), refined by Brent's method; every evaluation feeds the peaks */
+static void brent_peak(zp_sim *s, int q, double a, double fa, double guess, double fg, double b,
+                       double fb) {
+    level_fn L = {s, q};
+    gsl_function F = {minus_level, &L};
+    if (gsl_min_fminimizer_set_with_values(s->brent, &F, guess, fg, a, fa, b, fb)) {
+        return;
+    }
+    for (int it = 0; it < ZP_PEAK_ITER; it++) {
+        if (gsl_min_fminimizer_iterate(s->brent)) {
+            return;
+        }
+        double lo = gsl_min_fminimizer_x_lower(s->brent), hi = gsl_min_fminimizer_x_upper(s->brent);
+        if (gsl_min_test_interval(lo, hi, 0, ZP_PEAK_RTOL) == GSL_SUCCESS) {
+            return;
+        }
+    }
+}
+
+/* the load peaks of the step [a, b] just taken (levels la, lb at its ends): the midpoint, and
+   the top of the parabola through the three, bracket a maximum inside for Brent's method */
+static void step_peaks(zp_sim *s, double a, double b, const double la[2], const double lb[2]) {
+    double m = 0.5 * (a + b), lm[2];
+    if (!(b > a) || s->meth->interpolate(s->mwork, m, s->yout)) {
+        return;
+    }
+    load_levels(s, m, s->yout, lm);
+    for (int q = 0; q < 2; q++) {
+        double guess = m, top = lm[q];
+        if (!(top > la[q] && top > lb[q])) {
+            double d1 = (m - a) * (lm[q] - lb[q]), d2 = (m - b) * (lm[q] - la[q]);
+            double v = d1 - d2 != 0 ? m - 0.5 * ((m - a) * d1 - (m - b) * d2) / (d1 - d2) : a;
+            if (!(v > a && v < b)) {
+                continue;
+            }
+            level_fn L = {s, q};
+            guess = v;
+            top = -minus_level(v, &L);
+            if (!(top > la[q] && top > lb[q])) {
+                continue;
+            }
+        }
+        brent_peak(s, q, a, -la[q], guess, -top, b, -lb[q]);
+    }
+}
+
 /* which way the trolley leaves x: its velocity, or from rest its acceleration */
 static int departure(zp_sim *s, double t, const double *y) {
     zp_row r = row_of(s, t, y);
@@ -237,48 +341,112 @@ static int held(zp_sim *s, double t, const double *y) {
            fabs(ld.hold) <= s->m->mu * fabs(ld.normal);
 }
 
-/* the next output time (row or sample), or INFINITY */
-static double next_output(const zp_sim *s, const zp_input *in, double next_row, int next_sample) {
-    double t = s->rows && s->nrows < s->cap_rows ? next_row : INFINITY;
-    return next_sample < in->nsample ? fmin(t, in->sample_t[next_sample]) : t;
+/* where the outputs of a run stand: the next row's time, the next sample and frame */
+typedef struct out_cursor {
+    double next_row; /* s */
+    int next_sample, next_frame;
+    double t_prev; /* s: where the last step (or restart) ended */
+} out_cursor;
+
+/* the next frame time, or INFINITY (none left, or frames at x) */
+static double next_frame_t(const zp_input *in, const out_cursor *oc) {
+    return !in->frame_at_x && oc->next_frame < in->nframe ? in->frame_at[oc->next_frame]
+                                                          : INFINITY;
 }
 
-static int push_sample(zp_sim *s, zp_row r) {
-    if (s->nsamples == s->cap_samples) {
-        int cap = s->cap_samples ? 2 * s->cap_samples : 16;
-        zp_row *grown = realloc(s->samples, sizeof *grown * cap);
+/* the next output time (row, sample or frame), or INFINITY */
+static double next_output(const zp_sim *s, const zp_input *in, const out_cursor *oc) {
+    double t = s->rows && s->nrows < s->cap_rows ? oc->next_row : INFINITY;
+    t = fmin(t, next_frame_t(in, oc));
+    return oc->next_sample < in->nsample ? fmin(t, in->sample_t[oc->next_sample]) : t;
+}
+
+/* r appended to the growing list *v (n used, cap allocated); -1 out of memory */
+static int push_row(zp_row **v, int *n, int *cap, zp_row r) {
+    if (*n == *cap) {
+        int grown_cap = *cap ? 2 * *cap : 16;
+        zp_row *grown = realloc(*v, sizeof *grown * grown_cap);
         if (!grown) {
             return -1;
         }
-        s->samples = grown;
-        s->cap_samples = cap;
+        *v = grown;
+        *cap = grown_cap;
     }
-    s->samples[s->nsamples++] = r;
+    (*v)[(*n)++] = r;
     return 0;
 }
 
-/* rows of the output grid and samples due by time t_upto. dense: take each from the
+/* rows of the output grid, samples and frames due by time t_upto. dense: take each from the
    integrator's dense output at its own time; else all show the current state s->y (at an
    event, within ZP_EVENT_TIME_EPS of it) */
 static void emit_outputs(zp_sim *s, const zp_input *in, double t_upto, int dense,
-                         double *next_row, int *next_sample) {
-    for (double to; (to = next_output(s, in, *next_row, *next_sample)) <= t_upto;) {
+                         out_cursor *oc) {
+    for (double to; (to = next_output(s, in, oc)) <= t_upto;) {
         const double *y = s->y;
         if (dense && s->meth->interpolate(s->mwork, to, s->yout) == 0) {
             y = s->yout;
         }
-        zp_row r = row_of(s, to, y);
-        if (s->rows && s->nrows < s->cap_rows && *next_row == to) {
-            s->rows[s->nrows++] = r;
-            *next_row = s->nrows * s->o.output_dt;
-        }
-        if (*next_sample < in->nsample && in->sample_t[*next_sample] == to) {
-            if (push_sample(s, r)) {
+        if (next_frame_t(in, oc) == to) {
+            /* before the row of the run: a frame leaves the load peaks alone */
+            if (push_row(&s->frames, &s->nframes, &s->cap_frames, row_at(s, to, y))) {
                 return;
             }
-            ++*next_sample;
+            oc->next_frame++;
+        }
+        int row = s->rows && s->nrows < s->cap_rows && oc->next_row == to;
+        int sample = oc->next_sample < in->nsample && in->sample_t[oc->next_sample] == to;
+        if (!row && !sample) {
+            continue;
+        }
+        zp_row r = row_of(s, to, y);
+        if (row) {
+            s->rows[s->nrows++] = r;
+            oc->next_row = s->nrows * s->o.output_dt;
+        }
+        if (sample) {
+            if (push_row(&s->samples, &s->nsamples, &s->cap_samples, r)) {
+                return;
+            }
+            oc->next_sample++;
         }
     }
+}
+
+/* frames at x the trolley has reached by the step that ended at (t, s->y): each where the
+   dense output first crosses it, those at or past the section's right end left to the kink
+   (shown after its impulse) or the finish */
+static void frames_at_x_in_step(zp_sim *s, const zp_input *in, double t, out_cursor *oc) {
+    double x = s->y[0], x_right = s->m->xb[s->sec + 1]; /* crossed by now, not past the kink */
+    for (; in->frame_at_x && oc->next_frame < in->nframe; oc->next_frame++) {
+        double at = in->frame_at[oc->next_frame], tc;
+        if (!(at <= x && at < x_right)) {
+            break;
+        }
+        const double *y = s->yout;
+        if (zp_method_dense_crossing(s->meth, s->mwork, 0, at, oc->t_prev, t, &tc, s->yout)) {
+            y = tc == t ? s->y : NULL; /* the interpolant misses it: the nearer end */
+        }
+        if (!y && s->meth->interpolate(s->mwork, tc, s->yout) == 0) {
+            y = s->yout;
+        }
+        if (!y || push_row(&s->frames, &s->nframes, &s->cap_frames, row_at(s, tc, y))) {
+            return;
+        }
+    }
+    oc->t_prev = t;
+}
+
+/* frames at x up to `reached` (the start, a kink just crossed, the finish line; a root's x
+   may fall short of it by the root's tolerance): they show the state s->y at t */
+static void frames_at_x_here(zp_sim *s, const zp_input *in, double t, double reached,
+                             out_cursor *oc) {
+    for (; in->frame_at_x && oc->next_frame < in->nframe; oc->next_frame++) {
+        if (!(in->frame_at[oc->next_frame] <= reached) ||
+            push_row(&s->frames, &s->nframes, &s->cap_frames, row_at(s, t, s->y))) {
+            break;
+        }
+    }
+    oc->t_prev = t;
 }
 
 static void track_extremes(zp_sim *s, double t, const double *y, zp_result *r) {
@@ -318,11 +486,13 @@ static int cross_kink(zp_sim *s, double t, zp_result *r, int to) {
     c.q[0] = b;
     c.q[1] = entered.f;
     zp_impulse imp = {0, 0};
+    double v_in[2] = {c.v[0], c.v[1]};
     if (m->physics & ZP_PHYS_ROUNDED) {
         c.v[1] = entered.fp * c.v[0]; /* an arc has no kink: only onto the course at b */
     } else if (zp_impulse_apply(m, entered.fp, &c, &imp)) {
         return -1;
     }
+    s->peaks.kink_dv = fmax(s->peaks.kink_dv, hypot(c.v[0] - v_in[0], c.v[1] - v_in[1]));
     double wk[ZP_W_MAX];
     memcpy(wk, s->y + s->w0, sizeof *wk * m->nwork);
     s->form->from_chain(m, &c, wk, s->y);
@@ -405,9 +575,10 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     zp_energy e0 = zp_state_energy(m, &c);
     r->e_initial = e0.kinetic + e0.potential;
 
-    double t = 0, next_row = 0;
-    int next_sample = 0;
-    emit_outputs(s, in, t, 0, &next_row, &next_sample);
+    double t = 0;
+    out_cursor oc = {0};
+    emit_outputs(s, in, t, 0, &oc);
+    frames_at_x_here(s, in, t, s->y[0], &oc);
     if (held(s, t, s->y)) {
         finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_HELD_BY_FRICTION);
         return ZP_OK;
@@ -419,6 +590,10 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     }
     if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
         return fail(s, r, t, "the integrator could not start");
+    }
+    double ta = t, la[2] = {0, 0}; /* the last step's start and load levels there (o.peaks) */
+    if (s->o.peaks) {
+        load_levels(s, t, s->y, la);
     }
     for (;;) {
         char err[256] = "";
@@ -438,8 +613,16 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             return fail(s, r, t, err);
         }
         track_extremes(s, t, s->y, r);
+        frames_at_x_in_step(s, in, t, &oc);
+        if (s->o.peaks) {
+            double lb[2];
+            load_levels(s, t, s->y, lb);
+            step_peaks(s, ta, t, la, lb);
+            ta = t;
+            memcpy(la, lb, sizeof la);
+        }
         if (adv != ZP_ADV_ROOT) {
-            emit_outputs(s, in, t, 1, &next_row, &next_sample);
+            emit_outputs(s, in, t, 1, &oc);
             /* a boundary passed without a root (one masked at a restart) is crossed here */
             if (s->y[0] < m->xb[s->sec] || s->y[0] > m->xb[s->sec + 1]) {
                 memset(s->roots, 0, sizeof *s->roots * s->nroot);
@@ -462,8 +645,7 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
         int link = 0, to = 0;
         zp_event ev = zp_events_classify(m, s->sec, s->roots, &link, &to);
         /* outputs up to the event from the dense output; one on a kink shows the state after */
-        emit_outputs(s, in, ev == ZP_EVENT_KINK ? t - ZP_EVENT_TIME_EPS : t, 1, &next_row,
-                     &next_sample);
+        emit_outputs(s, in, ev == ZP_EVENT_KINK ? t - ZP_EVENT_TIME_EPS : t, 1, &oc);
         if (ev == ZP_EVENT_NONE) {
             continue;
         }
@@ -479,6 +661,9 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             }
             continue;
         }
+        if (ev == ZP_EVENT_FINISH) {
+            frames_at_x_here(s, in, t, m->xb[m->nsec], &oc);
+        }
         if (ev != ZP_EVENT_KINK) {
             r->died_link = ev == ZP_EVENT_DEATH ? link + 1 : 0;
             finish_result(s, r, t,
@@ -492,13 +677,17 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
         if (trapped < 0) {
             return fail(s, r, t, "the mass matrix is not positive definite at the kink");
         }
-        emit_outputs(s, in, t + ZP_EVENT_TIME_EPS, 0, &next_row, &next_sample);
+        emit_outputs(s, in, t + ZP_EVENT_TIME_EPS, 0, &oc);
+        frames_at_x_here(s, in, t, s->y[0], &oc);
         if (trapped) {
             finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_TRAPPED_AT_KINK);
             return ZP_OK;
         }
         if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
             return fail(s, r, t, "the integrator could not restart after the kink");
+        }
+        if (s->o.peaks) {
+            load_levels(s, t, s->y, la);
         }
     }
 }
@@ -507,11 +696,13 @@ zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     struct timespec t0, t1;
     clock_gettime(CLOCK_MONOTONIC, &t0);
     memset(r, 0, sizeof *r);
+    s->m = m;
     s->sched = in->sched;
+    s->scale = in->force_scale;
     s->nbreak = zp_schedule_breaks(in->sched, s->breaks, ZP_SCHED_MAX_BREAKS);
     s->sec = 0;
     s->e_impulse = 0;
-    s->nrows = s->nsamples = s->ncross = 0;
+    s->nrows = s->nsamples = s->nframes = s->ncross = 0;
     s->peaks = (zp_load_peaks){.normal_min = INFINITY, .normal_max = -INFINITY};
     memset(s->arc_peaks, 0, sizeof s->arc_peaks);
     zp_status st = run(m, s, in, r);
@@ -528,6 +719,11 @@ const zp_row *zp_sim_rows(const zp_sim *s, int *n) {
 const zp_row *zp_sim_samples(const zp_sim *s, int *n) {
     *n = s->nsamples;
     return s->samples;
+}
+
+const zp_row *zp_sim_frames(const zp_sim *s, int *n) {
+    *n = s->nframes;
+    return s->frames;
 }
 
 const zp_crossing *zp_sim_crossings(const zp_sim *s, int *n) {
@@ -565,6 +761,10 @@ zp_status zp_sim_opts_from_scene(const zp_scene *sc, zp_sim_opts *o, zp_diag *d)
         zp_diag_add(d, sc->path, sc->line_formulation, "solver", "formulation",
                     "unknown formulation '%s'; expected one of those listed by zipopt --help",
                     sc->formulation);
+    }
+    if (sc->accuracy > 0 && o->method >= 0) {
+        /* a method given beside accuracy restricts the pick to it */
+        zp_accuracy_pick(sc->accuracy, sc->line_method ? o->method : -1, zp_accuracy_stiff(sc), o);
     }
     return o->method < 0 || o->formulation < 0 ? ZP_ERR_INPUT : ZP_OK;
 }

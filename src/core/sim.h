@@ -35,14 +35,25 @@ typedef struct zp_sim_opts {
     long max_steps;   /* bound on integrator steps per run */
     int track_loads;  /* 1: load and speed peaks sampled at every step (one rhs call a
                          step); 0: loads only at rows, samples and events, no max_speed */
+    int peaks;        /* 1: the peaks of felt acceleration and joint force located exactly
+                         (each step's midpoint, then Brent's method on the dense output where
+                         a step holds a maximum), for [limits]; 0: as track_loads says */
 } zp_sim_opts;
 
 typedef struct zp_input {
     const zp_schedule *sched; /* borrowed; the drive force at (t, x, section) */
+    const double *force_scale; /* borrowed, may be NULL: a factor on each section's force (a
+                                  scenario's force error) */
     const zp_chain *start; /* borrowed; NULL: the MODEL.md start. Its x must lie in section 1
                               and its y on the course; for tests and split runs */
     const double *sample_t; /* borrowed; s, ascending sample times (may be NULL) */
     int nsample;
+    /* borrowed, may be NULL: ascending still-frame moments, times (s) or, with frame_at_x,
+       positions (m): the state where the trolley first reaches each x; at a section boundary
+       the state after the kink impulse. Frames come from the dense output like samples but
+       leave the run, its load peaks included, exactly as without them */
+    const double *frame_at;
+    int nframe, frame_at_x;
 } zp_input;
 
 typedef struct zp_crossing {
@@ -60,6 +71,7 @@ typedef struct zp_load_peaks {
     double joint[ZP_MAX_LINKS];    /* N, largest |force of the parent on link i| at joint i */
     double normal_min, normal_max; /* N, course on trolley along (-f', 1)/|.|: + pushes up */
     double acc_g[ZP_MAX_LINKS];    /* g, largest felt acceleration |a - g| of link i's centre */
+    double kink_dv;                /* m/s, largest |v+ - v-| of the trolley at a kink */
 } zp_load_peaks;
 
 /* Extremes of the loads on one rounded kink's arc (x in [x1, x2]), sampled like the peaks. */
@@ -97,13 +109,17 @@ typedef struct zp_sim zp_sim;
 zp_status zp_sim_opts_from_scene(const zp_scene *sc, zp_sim_opts *o, zp_diag *d);
 zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o);
 void zp_sim_free(zp_sim *s);
-/* Runs one schedule from the MODEL.md start. ZP_OK with r filled (any outcome), or
+/* Runs one schedule from the MODEL.md start. m is the model s was created for, or one derived
+   from it by zp_scenario_model (same course and links). ZP_OK with r filled (any outcome), or
    ZP_ERR_NUMERIC with r->message naming t, x and the cause. */
 zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result *r);
 /* Trajectory rows (every output_dt and the end) and samples of the last run; valid until the
    next run. */
 const zp_row *zp_sim_rows(const zp_sim *s, int *n);
 const zp_row *zp_sim_samples(const zp_sim *s, int *n);
+/* The still frames of the last run: one per reached frame_at value, in its order (those never
+   reached are the tail of frame_at); valid until the next run. */
+const zp_row *zp_sim_frames(const zp_sim *s, int *n);
 /* Kink crossings of the last run, in time order (at most ZP_MAX_CROSSINGS); valid until the
    next run. */
 const zp_crossing *zp_sim_crossings(const zp_sim *s, int *n);

@@ -96,8 +96,11 @@ void zp_fig_landscape_2d(FILE *f, const char *scene, int nsec, int si, int sj,
     }
     fprintf(f,
             ") N\"\nEOD\n"
-            "plot 'landscape_slice.csv' using 'f%d':'f%d':(strcol('outcome') eq 'finished' ? "
+            "plot 'landscape_slice.csv' using 'f%d':'f%d':(column('kept') == 1 ? "
             "column('time') : NaN) with image notitle, \\\n"
+            "     '' using 'f%d':'f%d':(%g):(strcol('outcome') eq 'finished' && "
+            "column('kept') == 0 ? %g : NaN) with boxxyerror lc rgb '#f4a582' "
+            "title 'finished, margin or a limit broken', \\\n"
             "     '' using 'f%d':'f%d':(%g):(strcol('outcome') eq 'died' ? %g : NaN) "
             "with boxxyerror lc rgb '#8c2d2d' title 'died', \\\n"
             "     '' using 'f%d':'f%d':(%g):(strcol('outcome') eq 'stalled' ? %g : NaN) "
@@ -110,6 +113,7 @@ void zp_fig_landscape_2d(FILE *f, const char *scene, int nsec, int si, int sj,
             "     $base using 1:2:3 with labels %s offset %g, %g tc rgb 'black' boxed "
             "font ',10' notitle\n",
             si + 1, sj + 1, si + 1, sj + 1, 0.51 * dx, 0.51 * dy, si + 1, sj + 1, 0.51 * dx,
-            0.51 * dy, si + 1, sj + 1, 0.51 * dx, 0.51 * dy, right ? "right" : "left",
+            0.51 * dy, si + 1, sj + 1, 0.51 * dx, 0.51 * dy, si + 1, sj + 1, 0.51 * dx,
+            0.51 * dy, right ? "right" : "left",
             right ? -1.5 : 1.5, upper ? -1.2 : 1.2);
 }

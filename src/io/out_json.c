@@ -59,6 +59,24 @@ static void write_samples(FILE *f, const zp_model *m, const zp_row *s, int n) {
     fputs(n ? "\n  ],\n" : "],\n", f);
 }
 
+void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp_limits *lim) {
+    double v[ZP_LIMIT_COUNT];
+    zp_limits_reached(m, r, v);
+    fputs("{", f);
+    for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
+        double max = lim ? lim->max[i] : 0;
+        fprintf(f, "\"%s\": {", zp_limit_name(i));
+        key_num(f, "reached", v[i], ", ");
+        if (max > 0) {
+            key_num(f, "limit", max, "");
+            fprintf(f, ", \"kept\": %s}", v[i] <= max ? "true" : "false");
+        } else {
+            fputs("\"limit\": null}", f);
+        }
+        fputs(i + 1 < ZP_LIMIT_COUNT ? ", " : "}", f);
+    }
+}
+
 void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp_sim *s,
                         const zp_run_meta *meta) {
     int nsamples, nk;
@@ -83,6 +101,16 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
         key_num(f, "time_error", e->ok ? e->time_error : NAN, ", ");
         key_num(f, "time_error_rtol", e->rtol, ", ");
         fprintf(f, "\"sensitive\": %s,\n", !e->ok ? "null" : e->sensitive ? "true" : "false");
+    }
+    if (meta->accuracy) {
+        const zp_accuracy *a = meta->accuracy;
+        fputs("  \"accuracy\": {", f);
+        key_num(f, "requested", a->requested, ", ");
+        key_num(f, "met", a->met, ", ");
+        fprintf(f, "\"ok\": %s, \"method\": \"%s\", ", a->ok ? "true" : "false",
+                zp_method_get(a->method)->name);
+        key_num(f, "rtol", a->rtol, ", ");
+        fprintf(f, "\"reruns\": %d},\n", a->reruns);
     }
     if (r->died_link) {
         fprintf(f, "  \"died_link\": %d,\n", r->died_link);
@@ -129,6 +157,9 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
     fputs("\"acc_peak_g\": ", f);
     num_list(f, r->peaks.acc_g, m->nlink, 1.0);
     fputs("},\n", f);
+    fputs("  \"limits\": ", f);
+    zp_out_json_limits(f, m, r, meta->lim);
+    fputs(",\n", f);
     write_samples(f, m, samples, nsamples);
     fputs("  \"samples_not_reached\": ", f);
     num_list(f, meta->unreached, meta->nunreached, 1.0);

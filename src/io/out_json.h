@@ -4,7 +4,9 @@
 
 #include <stdio.h>
 
+#include "accuracy.h"
 #include "estimate.h"
+#include "scenario.h"
 #include "sim.h"
 
 /* What the run was, echoed so a JSON file stands on its own. */
@@ -17,12 +19,17 @@ typedef struct zp_run_meta {
     const zp_estimate *estimate; /* borrowed; NULL: no error estimate was made */
     const double *unreached;     /* s: asked sample times after the end of the run */
     int nunreached;
+    const zp_limits *lim;        /* borrowed; NULL: no [limits] (each reached value still shown) */
+    const zp_accuracy *accuracy; /* borrowed; NULL: no accuracy was requested */
 } zp_run_meta;
 
 /* A number that round-trips, or null if it is not finite. */
 void zp_out_json_number(FILE *f, double v);
 /* A string with JSON escapes. */
 void zp_out_json_string(FILE *f, const char *s);
+/* The [limits] object: for each limit, what r reached and the limit (null when off, lim may
+   be NULL), and whether it was kept. */
+void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp_limits *lim);
 /* The whole object of r, the last run of workspace s (its samples and kink crossings). */
 void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp_sim *s,
                         const zp_run_meta *meta);

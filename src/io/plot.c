@@ -27,6 +27,11 @@ void zp_plot_opts_default(zp_plot_opts *o) {
     o->speedup = 1;
 }
 
+static int cmp_double(const void *a, const void *b) {
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
 int zp_plot_parse_frames(const zp_model *m, const char *text, zp_plot_opts *o, char *why,
                          size_t whylen) {
     if ((text[0] != 'x' && text[0] != 't') || text[1] != '=') {
@@ -51,8 +56,20 @@ int zp_plot_parse_frames(const zp_model *m, const char *text, zp_plot_opts *o, c
             return -1;
         }
     }
-    o->nframe = n;
+    qsort(o->frame_at, n, sizeof *o->frame_at, cmp_double);
+    o->nframe = 0;
+    for (int i = 0; i < n; i++) { /* a moment asked for twice is one frame */
+        if (!o->nframe || o->frame_at[i] != o->frame_at[o->nframe - 1]) {
+            o->frame_at[o->nframe++] = o->frame_at[i];
+        }
+    }
     return 0;
+}
+
+void zp_plot_frames_input(const zp_plot_opts *o, zp_input *in) {
+    in->frame_at = o->frame_at;
+    in->nframe = o->nframe;
+    in->frame_at_x = o->frame_kind == ZP_PLOT_AT_X;
 }
 
 int zp_plot_parse_size(const char *text, zp_plot_opts *o, char *why, size_t whylen) {
@@ -197,8 +214,7 @@ static void script_course(FILE *f, const zp_model *m, const zp_result *r, const 
           "     $kinks using 1:2:3 with labels boxed center offset 0, 1.6 font ',10' notitle",
           f);
     if (r->outcome == ZP_OUTCOME_DIED && last) {
-        zp_plot_pose ps;
-        zp_plot_pose_at(m, last, 1, ZP_PLOT_AT_T, last->t, &ps); /* the last row's pose */
+        zp_plot_pose ps = zp_plot_pose_of_row(m, last);
         int i = r->died_link;
         fprintf(f,
                 ", \\\n     '+' using (%.9g):(%.9g) every ::0::0 with points pt 2 ps 3 lw 3 "
@@ -361,7 +377,9 @@ zp_status zp_plot_run(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_res
         if (!fd) {
             return ZP_ERR_IO;
         }
-        zp_plot_frames(fg, fd, m, rows, n, o, info);
+        int nf;
+        const zp_row *frames = zp_sim_frames(s, &nf);
+        zp_plot_frames(fg, fd, m, frames, nf, o, info);
     }
     if (o->animate) {
         FILE *ag = open_file(t, "run.gp", scripts, &ns, err, errlen);

@@ -1,4 +1,4 @@
-/* Figures of one run (issue 5): the course with every centre-of-mass path, energy, joint
+/* Figures of one run: the course with every centre-of-mass path, energy, joint
    angles, loads, still frames and an animation. Each image comes with its data file and the
    gnuplot script that draws it, so a user can restyle it. */
 #ifndef ZP_PLOT_H
@@ -15,7 +15,8 @@ typedef struct zp_plot_opts {
     double margin; /* rad below the death angle that the search keeps (a line on angles.png) */
     zp_plot_at frame_kind;
     int nframe;                          /* still frames; 0: none */
-    double frame_at[ZP_PLOT_MAX_FRAMES]; /* m (trolley x) or s (time), per frame_kind */
+    double frame_at[ZP_PLOT_MAX_FRAMES]; /* m (trolley x) or s (time), per frame_kind;
+                                            ascending */
     int animate;                         /* 1: run.gif, and run.mp4 when ffmpeg is on PATH */
     double fps;                          /* animation frames per second, 1 to 100 */
     int width, height;                   /* px, animation size; height 0: from the course's shape */
@@ -34,16 +35,20 @@ typedef struct zp_plot_info {
 
 /* The defaults: margin 0, no frames, no animation, 25 fps, 960 px wide, speed-up 1. */
 void zp_plot_opts_default(zp_plot_opts *o);
-/* Parses --frames-at text, "x=0,20,60" (m, on m's course) or "t=1,2" (s, >= 0), into o; 0,
-   or -1 with why. */
+/* Parses --frames-at text, "x=0,20,60" (m, on m's course) or "t=1,2" (s, >= 0), into o
+   (ascending, each once); 0, or -1 with why. */
 int zp_plot_parse_frames(const zp_model *m, const char *text, zp_plot_opts *o, char *why,
                          size_t whylen);
+/* Asks the run of in for o's still frames (the simulator's state at exactly each moment):
+   zp_plot_run draws the frames of the run it is given. */
+void zp_plot_frames_input(const zp_plot_opts *o, zp_input *in);
 /* Parses --size text "WxH" (px) into o; 0, or -1 with why. */
 int zp_plot_parse_size(const char *text, zp_plot_opts *o, char *why, size_t whylen);
 
 /* Draws the last run of s (its trajectory rows and kink crossings; r: its result, for the
    death) into the transaction t: course.png, energy.png, angles.png, loads.png,
-   frame_x<X>.png / frame_t<T>.png and run.gif as o asks, each with its .gp script, and the
+   frame_x<X>.png / frame_t<T>.png (the frames s's run was asked for, see
+   zp_plot_frames_input) and run.gif as o asks, each with its .gp script, and the
    plot_*.dat data they read. ZP_OK with info filled (also when gnuplot is missing:
    info->no_gnuplot), or ZP_ERR_IO with why in err: the caller then aborts t.
    Single-threaded: it evaluates m->course. */

@@ -34,8 +34,8 @@ static void frame_name(const zp_plot_opts *o, int i, char *buf, size_t len) {
     snprintf(buf, len, "frame_%c%g", o->frame_kind == ZP_PLOT_AT_X ? 'x' : 't', o->frame_at[i]);
 }
 
-int zp_plot_frames(FILE *gp, FILE *dat, const zp_model *m, const zp_row *rows, int n,
-                        const zp_plot_opts *o, zp_plot_info *info) {
+int zp_plot_frames(FILE *gp, FILE *dat, const zp_model *m, const zp_row *frames, int n,
+                   const zp_plot_opts *o, zp_plot_info *info) {
     double reach = 0;
     for (int i = 0; i < m->nlink; i++) {
         reach += m->len[i];
@@ -44,12 +44,9 @@ int zp_plot_frames(FILE *gp, FILE *dat, const zp_model *m, const zp_row *rows, i
              FRAME_PX, 1);
     fputs("set size ratio -1\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nunset key\n", gp);
     int drawn = 0;
-    for (int i = 0; i < o->nframe; i++) {
-        zp_plot_pose ps;
-        if (zp_plot_pose_at(m, rows, n, o->frame_kind, o->frame_at[i], &ps)) {
-            info->nskipped++;
-            continue;
-        }
+    info->nskipped = o->nframe - n;
+    for (int i = 0; i < n; i++) {
+        zp_plot_pose ps = zp_plot_pose_of_row(m, &frames[i]);
         char name[64], sec[64];
         frame_name(o, i, name, sizeof name);
         zp_plot_section_text(o, ps.sec, sec, sizeof sec);
@@ -82,8 +79,7 @@ void zp_plot_anim(FILE *gp, FILE *dat, FILE *lab, const zp_model *m, const zp_ro
     nf += t0 + (nf - 1) * dt < t1; /* the last pose too */
     char text[256], sec[64];
     for (int j = 0; j < nf; j++) {
-        zp_plot_pose ps;
-        zp_plot_pose_at(m, rows, n, ZP_PLOT_AT_T, fmin(t0 + j * dt, t1), &ps);
+        zp_plot_pose ps = zp_plot_pose_at_t(m, rows, n, fmin(t0 + j * dt, t1));
         zp_plot_write_pose(dat, m, &ps);
         zp_plot_section_text(o, ps.sec, sec, sizeof sec);
         if (j == nf - 1) {

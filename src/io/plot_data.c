@@ -1,5 +1,5 @@
-/* The data files of one run's figures (plot_parts.h): the pose at a chosen moment from the
-   trajectory rows and the chain geometry of MODEL.md "Bodies" (state.c), the course, and the
+/* The data files of one run's figures (plot_parts.h): the pose of a row, or between rows, from
+   the chain geometry of MODEL.md "Bodies" (state.c), the course, and the
    trajectory with its derived columns. */
 #include <math.h>
 #include <string.h>
@@ -11,39 +11,40 @@
 /* ---- the state at a chosen moment ---- */
 
 
-/* the pose a fraction u of the way from row a to row b (positions interpolated linearly) */
-static zp_plot_pose pose_between(const zp_model *m, const zp_row *a, const zp_row *b, double u) {
+/* the pose of chain c at time t on section sec */
+static zp_plot_pose pose_of(const zp_model *m, double t, int sec, const zp_chain *c) {
     zp_plot_pose ps;
-    zp_chain c;
-    for (int k = 0; k < 2 + m->nlink; k++) {
-        c.q[k] = a->c.q[k] + u * (b->c.q[k] - a->c.q[k]);
-        c.v[k] = a->c.v[k] + u * (b->c.v[k] - a->c.v[k]);
-    }
-    ps.t = a->t + u * (b->t - a->t);
-    ps.sec = u < 0.5 ? a->sec : b->sec;
-    ps.speed = hypot(c.v[0], c.v[1]);
-    ps.p[0][0] = c.q[0];
-    ps.p[0][1] = c.q[1];
+    ps.t = t;
+    ps.sec = sec;
+    ps.speed = hypot(c->v[0], c->v[1]);
+    ps.p[0][0] = c->q[0];
+    ps.p[0][1] = c->q[1];
     for (int i = 0; i < m->nlink; i++) {
-        ps.p[i + 1][0] = ps.p[i][0] + m->len[i] * sin(c.q[2 + i]);
-        ps.p[i + 1][1] = ps.p[i][1] - m->len[i] * cos(c.q[2 + i]);
+        ps.p[i + 1][0] = ps.p[i][0] + m->len[i] * sin(c->q[2 + i]);
+        ps.p[i + 1][1] = ps.p[i][1] - m->len[i] * cos(c->q[2 + i]);
     }
-    zp_state_com(m, &c, ps.com);
+    zp_state_com(m, c, ps.com);
     return ps;
 }
 
-int zp_plot_pose_at(const zp_model *m, const zp_row *rows, int n, zp_plot_at kind, double at,
-                   zp_plot_pose *ps) {
-    for (int k = 0; k < n; k++) {
-        double v = kind == ZP_PLOT_AT_X ? rows[k].c.q[0] : rows[k].t;
-        if (v >= at) {
-            double prev = k ? (kind == ZP_PLOT_AT_X ? rows[k - 1].c.q[0] : rows[k - 1].t) : v;
-            double u = k && v > prev ? (at - prev) / (v - prev) : 1;
-            *ps = pose_between(m, &rows[k ? k - 1 : 0], &rows[k], u);
-            return 0;
-        }
+zp_plot_pose zp_plot_pose_of_row(const zp_model *m, const zp_row *r) {
+    return pose_of(m, r->t, r->sec, &r->c);
+}
+
+zp_plot_pose zp_plot_pose_at_t(const zp_model *m, const zp_row *rows, int n, double t) {
+    int k = 0;
+    while (k + 1 < n && rows[k].t < t) {
+        k++;
     }
-    return -1;
+    const zp_row *a = &rows[k ? k - 1 : 0], *b = &rows[k];
+    double u = b->t > a->t ? (t - a->t) / (b->t - a->t) : 1;
+    /* positions interpolated linearly: enough for an animation's moving picture */
+    zp_chain c;
+    for (int j = 0; j < 2 + m->nlink; j++) {
+        c.q[j] = a->c.q[j] + u * (b->c.q[j] - a->c.q[j]);
+        c.v[j] = a->c.v[j] + u * (b->c.v[j] - a->c.v[j]);
+    }
+    return pose_of(m, a->t + u * (b->t - a->t), u < 0.5 ? a->sec : b->sec, &c);
 }
 
 

@@ -26,9 +26,10 @@ typedef struct zp_plot_box {
 /* one colour per link, top to bottom; the trolley is black */
 extern const char *const zp_plot_link_color[ZP_MAX_LINKS];
 
-/* the pose when the trolley first reaches x (kind X) or at time t (kind T); 0 if reached */
-int zp_plot_pose_at(const zp_model *m, const zp_row *rows, int n, zp_plot_at kind, double at,
-                    zp_plot_pose *ps);
+/* the pose of one row (a still frame: the simulator's state at the asked moment) */
+zp_plot_pose zp_plot_pose_of_row(const zp_model *m, const zp_row *r);
+/* the pose at time t (within the rows' span) between the two rows around it */
+zp_plot_pose zp_plot_pose_at_t(const zp_model *m, const zp_row *rows, int n, double t);
 /* b grown to hold (x, y) */
 void zp_plot_grow(zp_plot_box *b, double x, double y);
 /* plot_course.dat: the course, one block per section; returns its extent */
@@ -47,9 +48,10 @@ void zp_plot_section_text(const zp_plot_opts *o, int sec, char *buf, size_t len)
 void zp_plot_head_png(FILE *f, const zp_model *m, const char *name, const char *what, int w, int h,
                       int several);
 
-/* frames.gp and plot_frames.dat: one still frame per reached position or time; returns how
-   many were drawn (info->nframe, info->nskipped) */
-int zp_plot_frames(FILE *gp, FILE *dat, const zp_model *m, const zp_row *rows, int n,
+/* frames.gp and plot_frames.dat: one still frame per reached position or time (the run's
+   frames, the first n of o->frame_at); returns how many were drawn (info->nframe,
+   info->nskipped) */
+int zp_plot_frames(FILE *gp, FILE *dat, const zp_model *m, const zp_row *frames, int n,
                    const zp_plot_opts *o, zp_plot_info *info);
 /* run.gp, plot_anim.dat and plot_anim_label.dat: the body followed along the course, and
    where it is on the whole course (extent course) */

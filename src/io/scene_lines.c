@@ -33,6 +33,9 @@ const zp_scene_key zp_scene_keys[K_COUNT] = {
     [K_T_MAX] = {S_SOLVER, "t_max", "a number in (0, " ZP_T_MAX_MAX_S "] (s)"},
     [K_FORMULATION] = {S_SOLVER, "formulation", "a formulation name (see zipopt --help)"},
     [K_OUTPUT_DT] = {S_SOLVER, "output_dt", "a number > 0 (s)"},
+    [K_ACCURACY] = {S_SOLVER, "accuracy",
+                    "a number in [" ZP_ACCURACY_MIN_S ", " ZP_ACCURACY_MAX_S
+                    "] (s), without rtol or atol"},
     [K_MARGIN] = {S_OPTIMIZE, "margin", "a number >= 0 (deg) below death_angle"},
     [K_MAX_EVALS] = {S_OPTIMIZE, "max_evals", "a whole number >= 1"},
     [K_SEED] = {S_OPTIMIZE, "seed", "a whole number >= 0"},

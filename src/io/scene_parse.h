@@ -42,6 +42,7 @@ enum {
     K_T_MAX,
     K_FORMULATION,
     K_OUTPUT_DT,
+    K_ACCURACY,
     K_MARGIN,
     K_MAX_EVALS,
     K_SEED,

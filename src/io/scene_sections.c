@@ -201,6 +201,21 @@ static void get_tolerance(parse_ctx *c, int k, double lo, double hi, double *out
     }
 }
 
+/* accuracy asks zipopt to choose the tolerances: with rtol or atol beside it neither can be
+   said to win, so both lines are named; a method beside it restricts the choice to it */
+static void get_accuracy(parse_ctx *c, zp_scene *sc) {
+    get_tolerance(c, K_ACCURACY, ZP_ACCURACY_MIN, ZP_ACCURACY_MAX, &sc->accuracy);
+    const int tol[] = {K_RTOL, K_ATOL};
+    for (int i = 0; i < 2 && c->key_line[K_ACCURACY]; i++) {
+        if (c->key_line[tol[i]]) {
+            zp_scene_bad_key(c, K_ACCURACY,
+                             "given with %s on line %d; give one: accuracy (s on the finish "
+                             "time) chooses the method's tolerances itself",
+                             zp_scene_keys[tol[i]].name, c->key_line[tol[i]]);
+        }
+    }
+}
+
 /* method and formulation names are checked against their registries later */
 void zp_scene_read_solver(parse_ctx *c, zp_scene *sc) {
     zp_scene_get_text(c, K_METHOD, sc->method, sizeof sc->method);
@@ -209,6 +224,7 @@ void zp_scene_read_solver(parse_ctx *c, zp_scene *sc) {
     sc->line_formulation = c->key_line[K_FORMULATION];
     get_tolerance(c, K_RTOL, ZP_RTOL_MIN, ZP_RTOL_MAX, &sc->rtol);
     get_tolerance(c, K_ATOL, ZP_ATOL_MIN, ZP_ATOL_MAX, &sc->atol);
+    get_accuracy(c, sc);
     double v;
     if (zp_scene_get_number(c, K_T_MAX, R_POS, &v) > 0) {
         if (v > ZP_T_MAX_MAX) {

@@ -92,6 +92,9 @@ static void other_text(const zp_scene *sc, int k, char *out, size_t cap) {
     case K_DAMPING:
         list(out, cap, sc->damping, sc->ndamping);
         break;
+    case K_ACCURACY:
+        snprintf(out, cap, "off (method and rtol decide)");
+        break;
     case K_FORCES:
         snprintf(out, cap, "0 for every section");
         break;
@@ -113,6 +116,10 @@ static void other_text(const zp_scene *sc, int k, char *out, size_t cap) {
 /* the value key k holds in sc, as scene-file text */
 static void value_text(const zp_scene *sc, int k, char *out, size_t cap) {
     const char *base = (const char *)sc;
+    if (sc->accuracy > 0 && (k == K_METHOD || k == K_RTOL || k == K_ATOL)) {
+        snprintf(out, cap, "chosen for accuracy = %g s (work-precision table)", sc->accuracy);
+        return;
+    }
     for (size_t i = 0; i < sizeof numbers / sizeof *numbers; i++) {
         if (numbers[i].k == k) {
             number(out, cap, *(const double *)(base + numbers[i].off));

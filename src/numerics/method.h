@@ -53,6 +53,12 @@ typedef enum {
 } zp_method_id;
 
 const zp_method *zp_method_get(int id);
+/* On the dense output of w's last step: the first time in [ta, tb] at which component comp of
+   y crosses level, found by Brent's method on the interpolant, with y there; comp must lie
+   below level at ta and not below it at tb. 0 on success; on failure (the interpolant does
+   not bracket the crossing) *t is the end nearer to it and y is unset. */
+int zp_method_dense_crossing(const zp_method *meth, void *w, int comp, double level, double ta,
+                             double tb, double *t, double *y);
 int zp_method_find(const char *name); /* -1 if unknown */
 
 #endif

@@ -1,0 +1,472 @@
+/* The robust search: the [robust] box, scenario sets (corners, then shifted Sobol/Halton
+   points), the adversary that grows the set where the answer breaks, and the verification on
+   fresh random scenarios with a Clopper-Pearson bound. */
+#include "robust.h"
+
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_qrng.h>
+#include <gsl/gsl_rng.h>
+#include <math.h>
+#include <nlopt.h>
+#include <stdio.h>
+#include <omp.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "state.h"
+#include "estimate.h"
+
+#define DEG (180.0 / M_PI)
+#define SOBOL_MAX_DIM 40     /* gsl_qrng_sobol's largest dimension */
+#define ADV_POINTS 128       /* random points of the adversary's first look */
+#define ADV_POLISH 2         /* of them, the worst polished locally */
+#define ADV_EVALS 60         /* simulations per polish */
+#define STREAM_SET 0x5e7u    /* seeds of the set's shift and the adversary: streams apart from */
+#define STREAM_ADV 0xad5u    /* each other and from ZP_ROBUST_STREAM_VERIFY */
+
+void zp_box_from_scene(const zp_scene *sc, const zp_model *m, zp_box *b) {
+    memset(b, 0, sizeof *b);
+    b->nlink = m->nlink;
+    if (sc->force_error > 0) {
+        b->nforce = m->nsec;
+        b->force_error = sc->force_error / 100;
+        b->d = m->nsec;
+    }
+    const double *ranges[4] = {sc->mass_range, sc->length_range, sc->trolley_mass_range,
+                               sc->damping_range};
+    for (int q = 0; q < 4; q++) {
+        b->dim[q] = -1;
+        if (ranges[q][0] != 100 || ranges[q][1] != 100) {
+            b->dim[q] = b->d++;
+            b->range[q][0] = ranges[q][0] / 100;
+            b->range[q][1] = ranges[q][1] / 100;
+        }
+    }
+    b->theta0 = -1;
+    if (sc->start_angle > 0) {
+        b->theta0 = b->d;
+        b->theta_max = sc->start_angle / DEG;
+        b->d += m->nlink;
+    }
+}
+
+void zp_box_scenario(const zp_box *b, const double *u, zp_scenario *s) {
+    zp_scenario_nominal(s);
+    for (int k = 0; k < b->nforce; k++) {
+        s->force[k] = 1 + b->force_error * u[k];
+    }
+    double *fac[4] = {&s->mass, &s->length, &s->trolley, &s->damping};
+    for (int q = 0; q < 4; q++) {
+        if (b->dim[q] >= 0) {
+            double w = 0.5 * (u[b->dim[q]] + 1);
+            *fac[q] = b->range[q][0] + w * (b->range[q][1] - b->range[q][0]);
+        }
+    }
+    for (int i = 0; b->theta0 >= 0 && i < b->nlink; i++) {
+        s->theta[i] = b->theta_max * u[b->theta0 + i];
+    }
+}
+
+void zp_scen_set_free(zp_scen_set *set) {
+    free(set->u);
+    free(set->sc);
+    free(set->m);
+    free(set->start);
+    free(set->order);
+    free(set->fails);
+    memset(set, 0, sizeof *set);
+}
+
+static int grow(zp_scen_set *set) {
+    int cap = set->cap ? 2 * set->cap : 64;
+    double *u = realloc(set->u, sizeof *u * ZP_BOX_MAX * cap);
+    set->u = u ? u : set->u;
+    zp_scenario *sc = realloc(set->sc, sizeof *sc * cap);
+    set->sc = sc ? sc : set->sc;
+    zp_model *m = realloc(set->m, sizeof *m * cap);
+    set->m = m ? m : set->m;
+    zp_chain *st = realloc(set->start, sizeof *st * cap);
+    set->start = st ? st : set->start;
+    int *order = realloc(set->order, sizeof *order * cap);
+    set->order = order ? order : set->order;
+    long *fails = realloc(set->fails, sizeof *fails * cap);
+    set->fails = fails ? fails : set->fails;
+    if (!u || !sc || !m || !st || !order || !fails) {
+        return -1;
+    }
+    set->cap = cap;
+    return 0;
+}
+
+zp_status zp_scen_set_add(zp_scen_set *set, const zp_box *b, const zp_model *nom,
+                          const double *u) {
+    if (set->n == set->cap && grow(set)) {
+        return ZP_ERR_NOMEM;
+    }
+    int j = set->n++;
+    memcpy(set->u + (size_t)j * ZP_BOX_MAX, u, sizeof *u * b->d);
+    zp_box_scenario(b, u, &set->sc[j]);
+    zp_scenario_model(nom, &set->sc[j], &set->m[j]);
+    zp_chain c0;
+    zp_state_start(nom, nom->course, &c0);
+    zp_scenario_start(&c0, nom->nlink, &set->sc[j], &set->start[j]);
+    /* a new scenario is the adversary's worst: it goes first */
+    memmove(set->order + 1, set->order, sizeof *set->order * j);
+    set->order[0] = j;
+    set->fails[j] = 0;
+    return ZP_OK;
+}
+
+/* corner i of the box: coordinate c at -1 or +1 by bit c of i */
+static void corner(int d, unsigned long i, double *u) {
+    for (int c = 0; c < d; c++) {
+        u[c] = (i >> c) & 1 ? 1 : -1;
+    }
+}
+
+zp_status zp_scen_set_build(zp_scen_set *set, const zp_box *b, const zp_model *nom, int samples,
+                            unsigned long seed) {
+    memset(set, 0, sizeof *set);
+    if (b->d == 0) {
+        return ZP_OK;
+    }
+    gsl_qrng *q = gsl_qrng_alloc(b->d <= SOBOL_MAX_DIM ? gsl_qrng_sobol : gsl_qrng_halton, b->d);
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    if (!q || !rng) {
+        gsl_qrng_free(q);
+        gsl_rng_free(rng);
+        return ZP_ERR_NOMEM;
+    }
+    gsl_rng_set(rng, seed ^ STREAM_SET);
+    double shift[ZP_BOX_MAX], p[ZP_BOX_MAX], u[ZP_BOX_MAX];
+    for (int c = 0; c < b->d; c++) {
+        shift[c] = gsl_rng_uniform(rng);
+    }
+    int all = b->d < 30 && (1L << b->d) <= samples;
+    int ncorner = all ? (int)(1L << b->d) : samples / 2;
+    zp_status st = ZP_OK;
+    gsl_qrng_get(q, p); /* the first point is the origin: skipped */
+    for (int i = 0; i < samples && !st; i++) {
+        if (i < ncorner && all) {
+            corner(b->d, (unsigned long)i, u);
+        } else {
+            gsl_qrng_get(q, p);
+            for (int c = 0; c < b->d; c++) {
+                double w = fmod(p[c] + shift[c], 1.0);
+                u[c] = i < ncorner ? (w < 0.5 ? -1 : 1) : 2 * w - 1;
+            }
+        }
+        st = zp_scen_set_add(set, b, nom, u);
+    }
+    /* the corners first, in the order they were made */
+    for (int i = 0; i < set->n; i++) {
+        set->order[i] = i;
+    }
+    set->ncorner = ncorner < set->n ? ncorner : set->n;
+    gsl_qrng_free(q);
+    gsl_rng_free(rng);
+    return st;
+}
+
+/* scenario i goes before j: more fails, then the lower index */
+static int before(const zp_scen_set *set, int i, int j) {
+    return set->fails[i] != set->fails[j] ? set->fails[i] > set->fails[j] : i < j;
+}
+
+void zp_scen_set_reorder(zp_scen_set *set) {
+    /* insertion sort: a few hundred scenarios at most, between searches */
+    for (int a = 1; a < set->n; a++) {
+        int v = set->order[a], b = a;
+        for (; b > 0 && before(set, v, set->order[b - 1]); b--) {
+            set->order[b] = set->order[b - 1];
+        }
+        set->order[b] = v;
+    }
+}
+
+double zp_clopper_pearson_lower(int k, int n, double alpha) {
+    return k <= 0 ? 0 : gsl_cdf_beta_Pinv(alpha, k, n - k + 1);
+}
+
+/* per-thread workspaces */
+typedef struct workers {
+    int n;
+    zp_sim **sim;  /* owned */
+    zp_result **r; /* owned */
+} workers;
+
+static void workers_free(workers *w) {
+    for (int t = 0; t < w->n; t++) {
+        zp_sim_free(w->sim[t]);
+        free(w->r[t]);
+    }
+    free(w->sim);
+    free(w->r);
+}
+
+static zp_status workers_make(workers *w, const zp_model *m, const zp_sim_opts *so,
+                              int nthreads) {
+    w->n = nthreads > 0 ? nthreads : omp_get_max_threads();
+    w->sim = calloc(w->n, sizeof *w->sim);
+    w->r = calloc(w->n, sizeof *w->r);
+    int ok = w->sim && w->r;
+    for (int t = 0; ok && t < w->n; t++) {
+        w->sim[t] = zp_sim_create(m, so);
+        w->r[t] = malloc(sizeof *w->r[t]);
+        ok = w->sim[t] && w->r[t];
+    }
+    if (!ok) {
+        w->n = w->sim && w->r ? w->n : 0;
+        workers_free(w);
+        return ZP_ERR_NOMEM;
+    }
+    return ZP_OK;
+}
+
+/* sched in the scenario at u, judged in full: *w filled; returns the constraint (deg) */
+static double scen_judge(const zp_objective *ob, const zp_box *b, const zp_chain *c0,
+                         zp_sim *s, zp_result *r, const zp_schedule *sched, const double *u,
+                         zp_robust_worst *w) {
+    zp_scenario sc;
+    zp_model m;
+    zp_chain start;
+    zp_box_scenario(b, u, &sc);
+    zp_scenario_model(ob->m, &sc, &m);
+    zp_scenario_start(c0, m.nlink, &sc, &start);
+    zp_input in = {.sched = sched, .force_scale = sc.force, .start = &start};
+    zp_eval e;
+    zp_objective_eval_run(ob, &m, s, &in, &e, r);
+    memcpy(w->u, u, sizeof *u * b->d);
+    w->cons = zp_objective_scenario_cons(ob, &e);
+    w->margin_deg = (m.phi_max - e.angle) * DEG;
+    w->outcome = e.outcome;
+    w->joint = 1;
+    for (int i = 0; i < m.nlink; i++) {
+        w->joint = r->max_rel_angle[i] > r->max_rel_angle[w->joint - 1] ? i + 1 : w->joint;
+    }
+    w->limit = -1;
+    w->excess = -1;
+    if (zp_limits_any(&ob->lim)) {
+        w->excess = e.failed ? 1 : zp_limits_excess(&ob->lim, &m, r, &w->limit);
+    }
+    return w->cons;
+}
+
+/* the adversary's local search: NLopt maximises the constraint over the box */
+typedef struct adv_ctx {
+    const zp_objective *ob;
+    const zp_box *b;
+    const zp_chain *c0;
+    zp_sim *s;
+    zp_result *r;
+    const zp_schedule *sched;
+    zp_robust_worst best;
+    long sims;
+} adv_ctx;
+
+static double adv_obj(unsigned n, const double *u, double *grad, void *data) {
+    adv_ctx *a = data;
+    (void)n;
+    (void)grad;
+    zp_robust_worst w;
+    double c = scen_judge(a->ob, a->b, a->c0, a->s, a->r, a->sched, u, &w);
+    a->sims++;
+    if (c > a->best.cons) {
+        a->best = w;
+    }
+    return c;
+}
+
+/* the worst scenario of force found in the box: ADV_POINTS seeded random points in parallel,
+   the worst ADV_POLISH of them polished by BOBYQA (the box's corners included as points) */
+static void adversary(const zp_objective *ob, const zp_box *b, workers *w, const double *p,
+                      unsigned long seed, int round, zp_robust_worst *worst, long *sims) {
+    zp_schedule sched = zp_objective_schedule(ob, p);
+    int d = b->d, npt = ADV_POINTS;
+    double *u = malloc(sizeof *u * npt * d);
+    zp_robust_worst *pw = malloc(sizeof *pw * npt);
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    zp_chain c0;
+    zp_state_start(ob->m, ob->m->course, &c0);
+    worst->cons = -INFINITY;
+    if (!u || !pw || !rng) {
+        goto out;
+    }
+    gsl_rng_set(rng, (seed ^ STREAM_ADV) + 7919UL * (unsigned long)round);
+    for (int i = 0; i < npt * d; i++) {
+        u[i] = 2 * gsl_rng_uniform(rng) - 1;
+    }
+#pragma omp parallel for num_threads(w->n) schedule(dynamic, 1)
+    for (int i = 0; i < npt; i++) {
+        int t = omp_get_thread_num();
+        scen_judge(ob, b, &c0, w->sim[t], w->r[t], &sched, u + (size_t)i * d, &pw[i]);
+    }
+    *sims += npt;
+    int top[ADV_POLISH];
+    for (int k = 0; k < ADV_POLISH; k++) {
+        top[k] = -1;
+        for (int i = 0; i < npt; i++) {
+            int taken = 0;
+            for (int j = 0; j < k; j++) {
+                taken |= top[j] == i;
+            }
+            if (!taken && (top[k] < 0 || pw[i].cons > pw[top[k]].cons)) {
+                top[k] = i;
+            }
+        }
+        if (pw[top[k]].cons > worst->cons) {
+            *worst = pw[top[k]];
+        }
+    }
+    double lo[ZP_BOX_MAX], hi[ZP_BOX_MAX];
+    for (int c = 0; c < d; c++) {
+        lo[c] = -1;
+        hi[c] = 1;
+    }
+    for (int k = 0; k < ADV_POLISH; k++) {
+        adv_ctx a = {ob, b, &c0, w->sim[0], w->r[0], &sched, pw[top[k]], 0};
+        nlopt_opt opt = nlopt_create(d > 1 ? NLOPT_LN_BOBYQA : NLOPT_LN_COBYLA, d);
+        double x[ZP_BOX_MAX], val;
+        memcpy(x, pw[top[k]].u, sizeof *x * d);
+        if (opt) {
+            nlopt_set_max_objective(opt, adv_obj, &a);
+            nlopt_set_lower_bounds(opt, lo);
+            nlopt_set_upper_bounds(opt, hi);
+            nlopt_set_maxeval(opt, ADV_EVALS);
+            nlopt_set_initial_step1(opt, 0.25);
+            nlopt_optimize(opt, x, &val);
+            nlopt_destroy(opt);
+        }
+        *sims += a.sims;
+        if (a.best.cons > worst->cons) {
+            *worst = a.best;
+        }
+    }
+out:
+    free(u);
+    free(pw);
+    gsl_rng_free(rng);
+}
+
+zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
+                           const double *lo, const double *hi, const zp_search_opts *o,
+                           int max_rounds, zp_search_result *res, zp_robust_info *info, char *err,
+                           size_t errlen) {
+    memset(info, 0, sizeof *info);
+    info->worst.cons = NAN; /* no adversary yet */
+    workers w = {0};
+    if (b->d > 0 && workers_make(&w, ob->m, so, o->nthreads)) {
+        snprintf(err, errlen, "out of memory for the adversary's workspaces");
+        return ZP_ERR_NOMEM;
+    }
+    zp_status st = ZP_OK;
+    for (;;) {
+        st = zp_search_run(ob, so, lo, hi, o, res, err, errlen);
+        info->rounds++;
+        if (st || !res->found || res->interrupted || b->d == 0) {
+            break;
+        }
+        adversary(ob, b, &w, res->force, o->seed, info->rounds, &info->worst, &info->sims);
+        if (info->worst.cons <= 0 || info->rounds >= max_rounds) {
+            break;
+        }
+        /* worst first: what broke candidates most often, then the adversary's find */
+        zp_scen_set_reorder(ob->set);
+        if ((st = zp_scen_set_add(ob->set, b, ob->m, info->worst.u))) {
+            snprintf(err, errlen, "out of memory growing the scenario set");
+            break;
+        }
+        info->added++;
+    }
+    workers_free(&w);
+    return st;
+}
+
+zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
+                           const double *p, int n, unsigned long seed, int nthreads,
+                           zp_robust_check *c) {
+    zp_schedule sched = zp_objective_schedule(ob, p);
+    memset(c, 0, sizeof *c);
+    c->samples = n;
+    c->worst_margin_deg = INFINITY;
+    workers w = {0};
+    double *u = malloc(sizeof *u * (size_t)n * (b->d + 1));
+    zp_robust_worst *pw = malloc(sizeof *pw * (size_t)(n + 1));
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    if (!u || !pw || !rng || workers_make(&w, ob->m, so, nthreads)) {
+        free(u);
+        free(pw);
+        gsl_rng_free(rng);
+        return ZP_ERR_NOMEM;
+    }
+    gsl_rng_set(rng, seed ^ ZP_ROBUST_STREAM_VERIFY);
+    for (long i = 0; i < (long)n * b->d; i++) {
+        u[i] = 2 * gsl_rng_uniform(rng) - 1;
+    }
+    zp_chain c0;
+    zp_state_start(ob->m, ob->m->course, &c0);
+#pragma omp parallel for num_threads(w.n) schedule(dynamic, 4)
+    for (int i = 0; i < n; i++) {
+        int t = omp_get_thread_num();
+        scen_judge(ob, b, &c0, w.sim[t], w.r[t], &sched, u + (size_t)i * b->d, &pw[i]);
+    }
+    for (int i = 0; i < n; i++) {
+        int fin = pw[i].outcome == ZP_OUTCOME_FINISHED;
+        int margin = fin && pw[i].margin_deg >= (ob->m->phi_max - ob->limit) * DEG;
+        int limits = fin && pw[i].excess <= 0;
+        c->survived += fin;
+        c->margin_kept += margin;
+        c->limits_kept += limits;
+        c->all_kept += margin && limits;
+        if (fin) {
+            c->worst_margin_deg = fmin(c->worst_margin_deg, pw[i].margin_deg);
+        }
+    }
+    c->lower_95 = zp_clopper_pearson_lower(c->all_kept, n, 0.05);
+    workers_free(&w);
+    free(u);
+    free(pw);
+    gsl_rng_free(rng);
+    return ZP_OK;
+}
+
+zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_model *m,
+                          double limit, const zp_schedule *shape, const zp_sim_opts *so,
+                          const zp_sim_opts *search, zp_sim_opts *fast) {
+    memset(p, 0, sizeof *p);
+    p->ob = (zp_objective){.m = m, .limit = limit, .t_max = so->t_max, .shape = shape};
+    zp_limits_from_scene(sc, &p->ob.lim);
+    *fast = *search;
+    fast->peaks = zp_limits_need_peaks(&p->ob.lim);
+    zp_box_from_scene(sc, m, &p->box);
+    p->robust = sc->robust && p->box.d > 0;
+    if (p->robust && zp_scen_set_build(&p->set, &p->box, m, sc->robust_samples, sc->seed)) {
+        return ZP_ERR_NOMEM;
+    }
+    p->ob.set = p->robust ? &p->set : NULL;
+    return ZP_OK;
+}
+
+zp_status zp_robust_solve(zp_robust_problem *p, const zp_scene *sc, const zp_sim_opts *so,
+                          const zp_sim_opts *fast, const double *lo, const double *hi,
+                          const zp_search_opts *o, zp_search_result *res, char *err,
+                          size_t errlen) {
+    zp_status st = zp_robust_search(&p->ob, &p->box, fast, lo, hi, o,
+                                    p->robust ? ZP_ROBUST_ROUNDS : 1, res, &p->info, err,
+                                    errlen);
+    if (st || !p->robust || res->interrupted) {
+        return st;
+    }
+    zp_sim_opts to = zp_estimate_tighter(so);
+    to.output_dt = 0;
+    to.track_loads = 0;
+    to.peaks = fast->peaks;
+    st = zp_robust_verify(&p->ob, &p->box, &to, res->force, sc->verify_samples, sc->seed,
+                          o->nthreads, &p->check);
+    if (st) {
+        snprintf(err, errlen, "out of memory verifying the scenarios");
+    }
+    return st;
+}
+
+void zp_robust_problem_free(zp_robust_problem *p) { zp_scen_set_free(&p->set); }

@@ -1,0 +1,126 @@
+/* The robust search (MODEL.md "Uncertainty and limits"): the [robust] box of scenarios, the
+   scenario sets every candidate is held to (corners first, then quasi-random points fixed by
+   the seed), the adversarial growth of the set, and the verification on fresh scenarios. */
+#ifndef ZP_ROBUST_H
+#define ZP_ROBUST_H
+
+#include "search.h"
+
+/* The [robust] ranges as a box [-1, 1]^d: one coordinate per varied quantity. */
+typedef struct zp_box {
+    int d;
+    int nforce;           /* sections with a force coordinate (the first nforce), 0: none */
+    double force_error;   /* share, u = 1 scales a force by 1 + force_error */
+    int dim[4];           /* coordinate of mass, length, trolley, damping; -1: not varied */
+    double range[4][2];   /* their factors at u = -1 and u = +1 */
+    int theta0;           /* first start-angle coordinate (one per link), -1: none */
+    double theta_max;     /* rad */
+    int nlink;
+} zp_box;
+
+void zp_box_from_scene(const zp_scene *sc, const zp_model *m, zp_box *b);
+/* The scenario at u (d coordinates in [-1, 1]). */
+void zp_box_scenario(const zp_box *b, const double *u, zp_scenario *s);
+
+/* The scenarios every candidate is held to, with their derived models and starts. */
+typedef struct zp_scen_set {
+    int n, cap;
+    int ncorner;       /* the first ncorner are corners of the box */
+    double *u;         /* owned, cap x ZP_BOX_MAX: each scenario's point */
+    zp_scenario *sc;   /* owned, cap */
+    zp_model *m;       /* owned, cap: sharing the nominal model's course */
+    zp_chain *start;   /* owned, cap */
+    int *order;        /* owned, n: the order of evaluation, worst first */
+    long *fails;       /* owned, cap: candidates each scenario stopped, for the order */
+    long runs;         /* scenario simulations so far (the search counts candidates) */
+} zp_scen_set;
+
+#define ZP_ROBUST_STREAM_VERIFY 0x7e1fUL
+#define ZP_BOX_MAX (ZP_MAX_SECTIONS + 4 + ZP_MAX_LINKS)
+
+/* samples scenarios of b around nom: every corner when 2^d fits in samples (else samples/2
+   corners picked by quasi-random signs), then Sobol (Halton past 40 coordinates) points
+   shifted by a seeded random vector. ZP_OK or ZP_ERR_NOMEM. */
+zp_status zp_scen_set_build(zp_scen_set *set, const zp_box *b, const zp_model *nom, int samples,
+                            unsigned long seed);
+zp_status zp_scen_set_add(zp_scen_set *set, const zp_box *b, const zp_model *nom,
+                          const double *u);
+/* Sorts the order by the scenarios' fail counts so far (most first; ties by index). */
+void zp_scen_set_reorder(zp_scen_set *set);
+void zp_scen_set_free(zp_scen_set *set);
+
+/* The answer on fresh random scenarios (a stream apart from the set's). */
+typedef struct zp_robust_check {
+    int samples;
+    int survived;    /* finished alive */
+    int margin_kept; /* finished with the margin kept */
+    int limits_kept; /* finished with every [limits] value kept */
+    int all_kept;    /* both: survivable (MODEL.md) */
+    double lower_95; /* 95 % lower confidence bound of P(survivable), Clopper-Pearson */
+    double worst_margin_deg; /* smallest margin over the finishing scenarios */
+} zp_robust_check;
+
+/* The worst scenario found for a schedule, and what limited it. */
+typedef struct zp_robust_worst {
+    double u[ZP_BOX_MAX];
+    double cons;      /* deg, the constraint there (> 0: broken) */
+    double margin_deg;
+    int outcome;      /* zp_outcome */
+    int joint;        /* 1-based joint with the largest angle */
+    int limit;        /* zp_limit_id with the largest excess, -1: none set */
+    double excess;    /* that excess, reached / limit - 1 (> 0: broken; -1: none set) */
+} zp_robust_worst;
+
+typedef struct zp_robust_info {
+    int rounds;        /* searches run (1 + scenarios added by the adversary) */
+    int added;         /* scenarios the adversary added */
+    long sims;         /* simulations of the adversary */
+    zp_robust_worst worst; /* of the answer, from the last adversarial search */
+} zp_robust_info;
+
+/* The robust search: ob (with ob->set built) searched as zp_search_run does; then, while the
+   answer exists and the adversary finds a scenario of b that breaks it, that scenario joins
+   the set and the search reruns (at most max_rounds searches). */
+zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
+                           const double *lo, const double *hi, const zp_search_opts *o,
+                           int max_rounds, zp_search_result *res, zp_robust_info *info, char *err,
+                           size_t errlen);
+/* The schedule of parameters p checked on n fresh scenarios of b with workspaces from so (the
+   caller passes the tighter verification tolerance); nthreads 0: OpenMP's default. Scenario i is the point of
+   coordinates 2 U - 1, U the next b->d uniforms of gsl_rng_mt19937 seeded with
+   seed ^ ZP_ROBUST_STREAM_VERIFY (a stream apart from the set's and the adversary's). */
+zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
+                           const double *p, int n, unsigned long seed, int nthreads,
+                           zp_robust_check *c);
+/* A scene's problem as the search sees it: the objective (margin, limits, and the set when
+   the scene has [robust] ranges), the box and the set, then what the robust search found. */
+typedef struct zp_robust_problem {
+    zp_objective ob;
+    int robust;          /* the scene has [robust] ranges: ob.set = &set */
+    zp_box box;
+    zp_scen_set set;
+    zp_robust_info info;
+    zp_robust_check check; /* samples 0: not verified */
+} zp_robust_problem;
+
+#define ZP_ROBUST_ROUNDS 4 /* searches at most: the adversary adds up to 3 scenarios */
+
+/* p for sc and m: the objective (limit: rad, the largest joint angle allowed; shape: the
+   schedule kind the parameters fill; t_max of the [solver] options so), and fast = search (the
+   search's runs) with exact load peaks when a limit needs them. ZP_OK or ZP_ERR_NOMEM. */
+zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_model *m,
+                          double limit, const zp_schedule *shape, const zp_sim_opts *so,
+                          const zp_sim_opts *search, zp_sim_opts *fast);
+/* The (robust) search over the box [lo[k], hi[k]] (one per parameter) with the adversary,
+   then, unless interrupted, the answer verified on sc->verify_samples fresh scenarios at so's
+   tolerance made tighter as zp_estimate_tighter does. */
+zp_status zp_robust_solve(zp_robust_problem *p, const zp_scene *sc, const zp_sim_opts *so,
+                          const zp_sim_opts *fast, const double *lo, const double *hi,
+                          const zp_search_opts *o, zp_search_result *res, char *err,
+                          size_t errlen);
+void zp_robust_problem_free(zp_robust_problem *p);
+
+/* The one-sided 95 % Clopper-Pearson lower bound of a probability with k successes in n. */
+double zp_clopper_pearson_lower(int k, int n, double alpha);
+
+#endif

@@ -1,0 +1,88 @@
+/* Scenarios derived from a built model (factors and start angles), and the [limits] judged
+   on a run's result. */
+#include "scenario.h"
+
+#include <math.h>
+#include <string.h>
+
+#define KMH (3.6) /* km/h per m/s */
+
+void zp_scenario_nominal(zp_scenario *s) {
+    memset(s, 0, sizeof *s);
+    for (int k = 0; k < ZP_MAX_SECTIONS; k++) {
+        s->force[k] = 1;
+    }
+    s->mass = s->length = s->trolley = s->damping = 1;
+}
+
+void zp_scenario_model(const zp_model *nom, const zp_scenario *s, zp_model *out) {
+    *out = *nom;
+    out->m0 = nom->m0 * s->trolley;
+    for (int i = 0; i < nom->nlink; i++) {
+        out->len[i] = nom->len[i] * s->length;
+        out->half[i] = 0.5 * out->len[i];
+        out->mass[i] = nom->mass[i] * s->mass;
+        out->inertia[i] = out->mass[i] * out->len[i] * out->len[i] / 12.0;
+        out->damp[i] = nom->damp[i] * s->damping;
+    }
+    zp_model_derive(out);
+}
+
+void zp_scenario_start(const zp_chain *nominal, int nlink, const zp_scenario *s, zp_chain *c) {
+    *c = *nominal;
+    for (int i = 0; i < nlink; i++) {
+        c->q[2 + i] = s->theta[i];
+    }
+}
+
+static const char *const limit_names[ZP_LIMIT_COUNT] = {"max_g", "max_joint_force",
+                                                         "max_arrival_speed", "max_kink_dv"};
+static const char *const limit_units[ZP_LIMIT_COUNT] = {"g", "N", "km/h", "m/s"};
+
+const char *zp_limit_name(int i) { return limit_names[i]; }
+const char *zp_limit_unit(int i) { return limit_units[i]; }
+
+void zp_limits_from_scene(const zp_scene *sc, zp_limits *l) {
+    l->max[ZP_LIMIT_G] = sc->max_g;
+    l->max[ZP_LIMIT_JOINT] = sc->max_joint_force;
+    l->max[ZP_LIMIT_ARRIVAL] = sc->max_arrival_speed;
+    l->max[ZP_LIMIT_KINK_DV] = sc->max_kink_dv;
+}
+
+int zp_limits_any(const zp_limits *l) {
+    for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
+        if (l->max[i] > 0) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+int zp_limits_need_peaks(const zp_limits *l) {
+    return l->max[ZP_LIMIT_G] > 0 || l->max[ZP_LIMIT_JOINT] > 0;
+}
+
+void zp_limits_reached(const zp_model *m, const zp_result *r, double v[ZP_LIMIT_COUNT]) {
+    v[ZP_LIMIT_G] = v[ZP_LIMIT_JOINT] = 0;
+    for (int i = 0; i < m->nlink; i++) {
+        v[ZP_LIMIT_G] = fmax(v[ZP_LIMIT_G], r->peaks.acc_g[i]);
+        v[ZP_LIMIT_JOINT] = fmax(v[ZP_LIMIT_JOINT], r->peaks.joint[i]);
+    }
+    v[ZP_LIMIT_ARRIVAL] = r->outcome == ZP_OUTCOME_FINISHED ? r->v * KMH : 0;
+    v[ZP_LIMIT_KINK_DV] = r->peaks.kink_dv;
+}
+
+double zp_limits_excess(const zp_limits *l, const zp_model *m, const zp_result *r, int *which) {
+    double v[ZP_LIMIT_COUNT], worst = -1;
+    *which = -1;
+    zp_limits_reached(m, r, v);
+    for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
+        double ex = v[i] / l->max[i] - 1;
+        if (l->max[i] > 0 && (*which < 0 || ex > worst)) {
+            worst = ex;
+            *which = i;
+        }
+    }
+    /* a non-finite peak (a broken run) breaks every limit */
+    return isfinite(worst) ? worst : 1;
+}

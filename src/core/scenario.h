@@ -1,0 +1,46 @@
+/* Uncertainty and limits (MODEL.md): a scenario is the nominal model with its forces, masses,
+   lengths, damping and start angles changed, derived from the built model without re-parsing
+   or re-compiling the course; [limits] are judged on a run's result. */
+#ifndef ZP_SCENARIO_H
+#define ZP_SCENARIO_H
+
+#include "sim.h"
+
+/* One scenario: factors on the nominal values (1: nominal) and start angles. */
+typedef struct zp_scenario {
+    double force[ZP_MAX_SECTIONS]; /* factor on each section's force */
+    double mass, length, trolley, damping; /* factors on all link masses, all link lengths, the
+                                              trolley mass, every joint's damping */
+    double theta[ZP_MAX_LINKS];    /* rad, each link's start angle from the vertical */
+} zp_scenario;
+
+void zp_scenario_nominal(zp_scenario *s);
+/* out = nom with s's masses, lengths and damping. out shares nom's course (borrowed): it
+   lives no longer than nom and is never passed to zp_model_free. */
+void zp_scenario_model(const zp_model *nom, const zp_scenario *s, zp_model *out);
+/* The start of s: nominal (the MODEL.md start, zp_state_start) with each of the nlink links
+   turned to s->theta, at rest. */
+void zp_scenario_start(const zp_chain *nominal, int nlink, const zp_scenario *s, zp_chain *c);
+/* [limits] (CONFIG.md): each 0 when off. */
+typedef enum { ZP_LIMIT_G, ZP_LIMIT_JOINT, ZP_LIMIT_ARRIVAL, ZP_LIMIT_KINK_DV, ZP_LIMIT_COUNT }
+zp_limit_id;
+
+typedef struct zp_limits {
+    double max[ZP_LIMIT_COUNT]; /* g, N, km/h, m/s; 0: off */
+} zp_limits;
+
+void zp_limits_from_scene(const zp_scene *sc, zp_limits *l);
+int zp_limits_any(const zp_limits *l);
+/* 1 when a limit needs the load peaks located exactly (zp_sim_opts.peaks). */
+int zp_limits_need_peaks(const zp_limits *l);
+/* The key name of limit i ("max_g", ...) and its unit. */
+const char *zp_limit_name(int i);
+const char *zp_limit_unit(int i);
+/* What run r reached, in each limit's unit: the largest felt acceleration and joint force
+   (over links and the run), the arrival speed (0 unless finished), the largest kink dv. */
+void zp_limits_reached(const zp_model *m, const zp_result *r, double v[ZP_LIMIT_COUNT]);
+/* The worst excess over the limits set, reached / limit - 1 (<= 0: all kept; -1 with no
+   limit set), and in *which the limit that gave it (-1: none set). */
+double zp_limits_excess(const zp_limits *l, const zp_model *m, const zp_result *r, int *which);
+
+#endif

@@ -1,0 +1,475 @@
+/* The public C API (include/zipopt.h) over the floors: handles own copies of everything they
+   hand out, problems come back as text, nothing is printed. */
+#define ZIPOPT_BUILDING
+#include "zipopt.h"
+
+#include <gsl/gsl_errno.h>
+#include <math.h>
+#include <pthread.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "prep.h"
+#include "robust.h"
+#include "search.h"
+
+/* the stop flag is handed to the search as its sig_atomic_t flag */
+_Static_assert(_Generic((sig_atomic_t)0, int : 1, default : 0), "sig_atomic_t is int");
+
+#define NCOL_MAX (5 + 3 * ZP_MAX_LINKS + 5) /* trajectory columns of the largest chain */
+#define COL_NAME 16
+
+/* the named numbers of a run and of a search (zipopt.h), in the order *_numbers fills them */
+static const char *const run_keys[] = {
+    "time",    "x",         "speed",  "died_link", "kinks",           "e_initial",
+    "e_final", "w_drive",   "w_damp", "e_impulse", "energy_residual", "constraint_residual",
+    "steps",   "rhs_evals", "wall_s"};
+#define NRUN_KEYS ((int)(sizeof run_keys / sizeof *run_keys))
+static const char *const search_keys[] = {"found",       "time",       "angle",      "evals",
+                                          "feasible",    "failed",     "threads",    "wall_s",
+                                          "interrupted", "base_found", "base_force", "base_time"};
+#define NSEARCH_KEYS ((int)(sizeof search_keys / sizeof *search_keys))
+
+/* libmatheval's parser keeps globals and nlopt_srand is process-wide: loads and searches take
+   turns; the lock is the library's only static and holds no data */
+static pthread_mutex_t turn = PTHREAD_MUTEX_INITIALIZER;
+
+struct zipopt_scene {
+    zp_setup st;
+    zp_sim *sim; /* owned: the workspace every zipopt_simulate of this scene reuses */
+};
+
+struct zipopt_run {
+    zp_result r;
+    double num[NRUN_KEYS];
+    int nlink;
+    int nrow, ncol;
+    double *traj; /* owned, nrow x ncol */
+    char col[NCOL_MAX][COL_NAME];
+    int nkink;
+    double *kinks; /* owned, nkink x 6 */
+};
+
+struct zipopt_search {
+    zp_search_result res;
+    double num[NSEARCH_KEYS];
+    int np; /* parameters of the schedule: one force per section */
+};
+
+__attribute__((format(printf, 3, 4))) static void say(char *err, size_t errlen, const char *fmt,
+                                                      ...) {
+    if (err && errlen) {
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(err, errlen, fmt, ap);
+        va_end(ap);
+    }
+}
+
+/* every message of d, one per line, as zp_diag_print would print them */
+static void diag_text(const zp_diag *d, char *err, size_t errlen) {
+    if (!err || !errlen) {
+        return;
+    }
+    size_t len = 0;
+    err[0] = '\0';
+    for (int i = 0; i < d->n && len < errlen; i++) {
+        len += (size_t)snprintf(err + len, errlen - len, "%s%s", i ? "\n" : "", d->text[i]);
+    }
+    if (d->dropped && len < errlen) {
+        snprintf(err + len, errlen - len, "\n(%d more)", d->dropped);
+    }
+}
+
+const char *zipopt_version(void) {
+    return ZIPOPT_VERSION_TEXT;
+}
+
+static zipopt_scene *load(const char *path, const char *text, char *err, size_t errlen) {
+    zipopt_scene *s = calloc(1, sizeof *s);
+    if (!s) {
+        say(err, errlen, "out of memory");
+        return NULL;
+    }
+    zp_diag d;
+    zp_diag_init(&d);
+    pthread_mutex_lock(&turn);
+    gsl_set_error_handler_off();
+    int rc = zp_prep_load("library", path, text, &ZP_OVERRIDES_NONE, &s->st, &d);
+    if (rc == 0) {
+        s->sim = zp_sim_create(s->st.m, &s->st.sim);
+    }
+    pthread_mutex_unlock(&turn);
+    if (rc) {
+        diag_text(&d, err, errlen);
+        free(s);
+        return NULL;
+    }
+    if (!s->sim) {
+        say(err, errlen, "cannot create the simulator (out of memory)");
+        zipopt_scene_free(s);
+        return NULL;
+    }
+    return s;
+}
+
+zipopt_scene *zipopt_scene_load(const char *path, char *err, size_t errlen) {
+    if (!path) {
+        say(err, errlen, "no scene file given");
+        return NULL;
+    }
+    return load(path, NULL, err, errlen);
+}
+
+zipopt_scene *zipopt_scene_load_string(const char *text, const char *name, char *err,
+                                       size_t errlen) {
+    if (!text) {
+        say(err, errlen, "no scene text given");
+        return NULL;
+    }
+    return load(name ? name : "<string>", text, err, errlen);
+}
+
+void zipopt_scene_free(zipopt_scene *s) {
+    if (s) {
+        zp_sim_free(s->sim);
+        zp_prep_free(&s->st);
+        free(s);
+    }
+}
+
+const char *zipopt_scene_name(const zipopt_scene *s) {
+    return s->st.sc.name;
+}
+
+int zipopt_scene_sections(const zipopt_scene *s) {
+    return s->st.m->nsec;
+}
+
+int zipopt_scene_links(const zipopt_scene *s) {
+    return s->st.m->nlink;
+}
+
+int zipopt_scene_forces(const zipopt_scene *s, double *force, int n) {
+    const zp_schedule *sh = &s->st.sched;
+    for (int k = 0; k < sh->np && k < n; k++) {
+        force[k] = sh->p[k];
+    }
+    return sh->np;
+}
+
+int zipopt_scene_set_forces(zipopt_scene *s, const double *force, int n, char *err, size_t errlen) {
+    const zp_schedule *sh = &s->st.sched;
+    if (n != sh->np) {
+        say(err, errlen, "forces: %d values, expected %d (one per section, N)", n, sh->np);
+        return -1;
+    }
+    for (int k = 0; k < n; k++) {
+        if (!isfinite(force[k])) {
+            say(err, errlen, "forces: item %d is not a finite number; expected N", k + 1);
+            return -1;
+        }
+    }
+    s->st.sched = zp_schedule_with(sh, force);
+    return 0;
+}
+
+/* the trajectory columns (zipopt.h): names, then one row's values */
+static int columns(zipopt_run *u) {
+    static const char *const head[] = {"t", "section", "x", "y", "speed"};
+    static const char *const per_link[] = {"theta", "omega", "phi"};
+    static const char *const tail[] = {"kinetic", "potential", "drive_work", "damper_work",
+                                       "impulse_loss"};
+    int j = 0;
+    for (size_t i = 0; i < sizeof head / sizeof *head; i++) {
+        snprintf(u->col[j++], COL_NAME, "%s", head[i]);
+    }
+    for (size_t i = 0; i < sizeof per_link / sizeof *per_link; i++) {
+        for (int l = 1; l <= u->nlink; l++) {
+            snprintf(u->col[j++], COL_NAME, "%s%d", per_link[i], l);
+        }
+    }
+    for (size_t i = 0; i < sizeof tail / sizeof *tail; i++) {
+        snprintf(u->col[j++], COL_NAME, "%s", tail[i]);
+    }
+    return j;
+}
+
+static void row_values(const zp_model *m, const zp_row *r, double *out) {
+    zp_row_view v;
+    zp_row_derive(m, r, &v);
+    int j = 0;
+    out[j++] = r->t;
+    out[j++] = r->sec + 1;
+    out[j++] = r->c.q[0];
+    out[j++] = r->c.q[1];
+    out[j++] = v.speed;
+    for (int i = 0; i < m->nlink; i++) {
+        out[j++] = r->c.q[2 + i];
+    }
+    for (int i = 0; i < m->nlink; i++) {
+        out[j++] = r->c.v[2 + i];
+    }
+    for (int i = 0; i < m->nlink; i++) {
+        out[j++] = v.phi[i];
+    }
+    out[j++] = v.e.kinetic;
+    out[j++] = v.e.potential;
+    out[j++] = r->w_drive;
+    out[j++] = r->w_damp;
+    out[j++] = r->e_impulse;
+}
+
+/* the run's rows and kink crossings copied out of the workspace, which the next run reuses */
+static int copy_out(zipopt_run *u, const zp_model *m, const zp_sim *sim) {
+    int nrow, nk;
+    const zp_row *rows = zp_sim_rows(sim, &nrow);
+    const zp_crossing *cr = zp_sim_crossings(sim, &nk);
+    u->nlink = m->nlink;
+    u->ncol = columns(u);
+    u->traj = malloc(sizeof *u->traj * (size_t)(nrow > 0 ? nrow : 1) * (size_t)u->ncol);
+    u->kinks = malloc(sizeof *u->kinks * (size_t)(nk > 0 ? nk : 1) * 6);
+    if (!u->traj || !u->kinks) {
+        return -1;
+    }
+    u->nrow = nrow;
+    for (int i = 0; i < nrow; i++) {
+        row_values(m, &rows[i], u->traj + (size_t)i * (size_t)u->ncol);
+    }
+    u->nkink = nk;
+    for (int i = 0; i < nk; i++) {
+        double *k = u->kinks + (size_t)i * 6;
+        k[0] = cr[i].t;
+        k[1] = cr[i].x;
+        k[2] = cr[i].from + 1;
+        k[3] = cr[i].to + 1;
+        k[4] = cr[i].impulse;
+        k[5] = cr[i].energy_lost;
+    }
+    return 0;
+}
+
+static void run_numbers(const zp_result *r, double *v) {
+    const double n[] = {r->time,
+                        r->x,
+                        r->v,
+                        r->died_link,
+                        r->ncross,
+                        r->e_initial,
+                        r->e_final,
+                        r->w_drive,
+                        r->w_damp,
+                        r->e_impulse,
+                        r->e_final - r->e_initial - r->w_drive + r->w_damp + r->e_impulse,
+                        r->constraint_residual,
+                        (double)r->steps,
+                        (double)r->rhs_evals,
+                        r->wall_s};
+    _Static_assert(sizeof n / sizeof *n == NRUN_KEYS, "one number per key");
+    memcpy(v, n, sizeof n);
+}
+
+zipopt_run *zipopt_simulate(zipopt_scene *s, char *err, size_t errlen) {
+    zipopt_run *u = calloc(1, sizeof *u);
+    if (!u) {
+        say(err, errlen, "out of memory");
+        return NULL;
+    }
+    const zp_model *m = s->st.m;
+    zp_input in = {.sched = &s->st.sched};
+    if (zp_sim_run(m, s->sim, &in, &u->r)) {
+        say(err, errlen, "%s", u->r.message);
+        free(u);
+        return NULL;
+    }
+    run_numbers(&u->r, u->num);
+    if (copy_out(u, m, s->sim)) {
+        say(err, errlen, "out of memory");
+        zipopt_run_free(u);
+        return NULL;
+    }
+    return u;
+}
+
+void zipopt_run_free(zipopt_run *r) {
+    if (r) {
+        free(r->traj);
+        free(r->kinks);
+        free(r);
+    }
+}
+
+int zipopt_run_outcome(const zipopt_run *r) {
+    return (int)r->r.outcome;
+}
+
+const char *zipopt_outcome_name(int outcome) {
+    return outcome >= 0 && outcome < ZP_OUTCOME_COUNT ? zp_sim_outcome_name(outcome) : NULL;
+}
+
+const char *zipopt_run_stall(const zipopt_run *r) {
+    return r->r.outcome == ZP_OUTCOME_STALLED ? zp_sim_stall_name(r->r.stall) : "";
+}
+
+/* the value of key in keys (n of them) from v; NaN when no key matches */
+static double lookup(const char *const *keys, int n, const double *v, const char *key) {
+    for (int i = 0; key && i < n; i++) {
+        if (!strcmp(keys[i], key)) {
+            return v[i];
+        }
+    }
+    return NAN;
+}
+
+double zipopt_run_get(const zipopt_run *r, const char *key) {
+    return lookup(run_keys, NRUN_KEYS, r->num, key);
+}
+
+const char *zipopt_run_key(int i) {
+    return i >= 0 && i < NRUN_KEYS ? run_keys[i] : NULL;
+}
+
+int zipopt_run_max_angles(const zipopt_run *r, double *angle, int n) {
+    for (int i = 0; i < r->nlink && i < n; i++) {
+        angle[i] = r->r.max_rel_angle[i];
+    }
+    return r->nlink;
+}
+
+int zipopt_run_kinks(const zipopt_run *r, double *out, int max) {
+    if (out && max > 0) {
+        int n = r->nkink < max ? r->nkink : max;
+        memcpy(out, r->kinks, sizeof *out * (size_t)n * 6);
+    }
+    return r->nkink;
+}
+
+int zipopt_run_rows(const zipopt_run *r) {
+    return r->nrow;
+}
+
+int zipopt_run_columns(const zipopt_run *r) {
+    return r->ncol;
+}
+
+const char *zipopt_run_column(const zipopt_run *r, int j) {
+    return j >= 0 && j < r->ncol ? r->col[j] : NULL;
+}
+
+const double *zipopt_run_trajectory(const zipopt_run *r) {
+    return r->traj;
+}
+
+/* the caller's progress function behind the search's; its nonzero return raises the flag */
+typedef struct progress_ctx {
+    zipopt_progress_fn fn;
+    void *user;
+    int np;
+    volatile sig_atomic_t *flag;
+} progress_ctx;
+
+static void on_progress(void *user, const zp_search_progress *p, int improved) {
+    progress_ctx *c = user;
+    if (c->fn(c->user, p->evals, p->wall_s, p->found, p->time, p->force, c->np, improved)) {
+        *c->flag = 1;
+    }
+}
+
+/* the search over the scene's bounds, as the command runs it: held to the scene's [limits]
+   and [robust] scenarios when it has them, the answer verified on fresh scenarios */
+static zp_status search(const zp_setup *st, const zp_search_opts *o, zp_search_result *res,
+                        char *err, size_t errlen) {
+    zp_robust_problem *pb = calloc(1, sizeof *pb); /* large: kept off the stack */
+    zp_sim_opts fast;
+    if (!pb || zp_robust_setup(pb, &st->sc, st->m, st->limit, &st->sched, &st->sim,
+                               &st->search, &fast)) {
+        snprintf(err, errlen, "out of memory building the scenarios");
+        if (pb) {
+            zp_robust_problem_free(pb);
+        }
+        free(pb);
+        return ZP_ERR_NOMEM;
+    }
+    zp_status rc = zp_robust_solve(pb, &st->sc, &st->sim, &fast, st->sched.lo, st->sched.hi, o,
+                                   res, err, errlen);
+    zp_robust_problem_free(pb);
+    free(pb);
+    return rc;
+}
+
+static void search_numbers(const zp_search_result *r, double *v) {
+    const double n[] = {r->found,
+                        r->found ? r->best.time : NAN,
+                        r->found ? r->best.angle : NAN,
+                        (double)r->evals,
+                        (double)r->nfeasible,
+                        (double)r->nfailed,
+                        r->nthreads,
+                        r->wall_s,
+                        r->interrupted,
+                        r->base_found,
+                        r->base_found ? r->base_force : NAN,
+                        r->base_found ? r->base.time : NAN};
+    _Static_assert(sizeof n / sizeof *n == NSEARCH_KEYS, "one number per key");
+    memcpy(v, n, sizeof n);
+}
+
+zipopt_search *zipopt_search_run(zipopt_scene *s, long max_evals, long seed,
+                                 zipopt_progress_fn progress, void *user, volatile int *stop,
+                                 char *err, size_t errlen) {
+    zipopt_search *u = calloc(1, sizeof *u);
+    if (!u) {
+        say(err, errlen, "out of memory");
+        return NULL;
+    }
+    const zp_setup *st = &s->st;
+    volatile sig_atomic_t own = 0;
+    progress_ctx pc = {progress, user, st->sched.np, stop ? stop : &own};
+    zp_search_opts o = {.algo = 0,
+                        .max_evals = max_evals > 0 ? max_evals : st->max_evals,
+                        .seed = seed >= 0 ? (unsigned long)seed : st->seed,
+                        .stop = pc.flag,
+                        .progress = progress ? on_progress : NULL,
+                        .user = &pc};
+    char why[512] = "";
+    zp_status rc = ZP_OK;
+    if (*pc.flag) {
+        /* stopped before it began: nothing run, the scene's forces stand */
+        u->res.interrupted = 1;
+        memcpy(u->res.force, st->sched.p, sizeof *u->res.force * (size_t)st->sched.np);
+    } else {
+        pthread_mutex_lock(&turn);
+        rc = search(st, &o, &u->res, why, sizeof why);
+        pthread_mutex_unlock(&turn);
+    }
+    if (rc) {
+        say(err, errlen, "%s", why);
+        free(u);
+        return NULL;
+    }
+    u->np = st->sched.np;
+    search_numbers(&u->res, u->num);
+    return u;
+}
+
+void zipopt_search_free(zipopt_search *r) {
+    free(r);
+}
+
+double zipopt_search_get(const zipopt_search *r, const char *key) {
+    return lookup(search_keys, NSEARCH_KEYS, r->num, key);
+}
+
+const char *zipopt_search_key(int i) {
+    return i >= 0 && i < NSEARCH_KEYS ? search_keys[i] : NULL;
+}
+
+int zipopt_search_forces(const zipopt_search *r, double *force, int n) {
+    for (int k = 0; k < r->np && k < n; k++) {
+        force[k] = r->res.force[k];
+    }
+    return r->np;
+}

@@ -1,0 +1,237 @@
+/* The public C API (include/zipopt.h) through the shared library: a scene from text equals the
+   same scene from its file bit for bit; on a straight slope the centre of mass of the whole
+   body, rebuilt from the trajectory's x, y and theta columns, moves along the slope with the
+   closed-form acceleration (F cos a - M g sin a) / M whatever the chain does; the energy audit
+   closes; handles in two threads give the sequential bits; bad input and a stopped search come
+   back as values, with nothing printed. */
+#include <math.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "check.h"
+#include "zipopt.h"
+
+#define K_RTOL 300.0 /* closed forms are met to a few hundred times the requested rtol */
+#define SEED ZP_SOURCE_DIR "/config/seed.ini"
+
+static char *slurp(const char *path) {
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        return NULL;
+    }
+    static char buf[1 << 16];
+    size_t n = fread(buf, 1, sizeof buf - 1, f);
+    fclose(f);
+    buf[n] = '\0';
+    return buf;
+}
+
+static zipopt_run *run_forces(zipopt_scene *s, const double *f, int n) {
+    char err[512];
+    CHECK(zipopt_scene_set_forces(s, f, n, err, sizeof err) == 0);
+    zipopt_run *r = zipopt_simulate(s, err, sizeof err);
+    CHECK(r != NULL);
+    return r;
+}
+
+static int same_run(const zipopt_run *a, const zipopt_run *b) {
+    size_t n = (size_t)zipopt_run_rows(a) * (size_t)zipopt_run_columns(a);
+    return zipopt_run_get(a, "time") == zipopt_run_get(b, "time") &&
+           zipopt_run_rows(a) == zipopt_run_rows(b) &&
+           !memcmp(zipopt_run_trajectory(a), zipopt_run_trajectory(b), n * sizeof(double));
+}
+
+static int column(const zipopt_run *r, const char *name) {
+    for (int j = 0; j < zipopt_run_columns(r); j++) {
+        if (!strcmp(zipopt_run_column(r, j), name)) {
+            return j;
+        }
+    }
+    return -1;
+}
+
+/* file and text give the same bits; the audit and the trajectory's own definitions hold */
+static void check_seed(void) {
+    char err[4096];
+    zipopt_scene *a = zipopt_scene_load(SEED, err, sizeof err);
+    zipopt_scene *b = zipopt_scene_load_string(slurp(SEED), "seed-text.ini", err, sizeof err);
+    CHECK(a && b);
+    CHECK(zipopt_scene_sections(a) == 3 && zipopt_scene_links(a) == 3);
+    double f[3] = {10, 10, 10};
+    zipopt_run *ra = run_forces(a, f, 3), *rb = run_forces(b, f, 3);
+    CHECK(same_run(ra, rb));
+    CHECK(zipopt_run_outcome(ra) == ZIPOPT_FINISHED);
+    CHECK(!strcmp(zipopt_outcome_name(zipopt_run_outcome(ra)), "finished"));
+    /* work-energy: E_final - E_initial = W_drive - W_damp - E_impulse */
+    double scale = fmax(zipopt_run_get(ra, "e_initial"), zipopt_run_get(ra, "w_drive"));
+    CHECK_NEAR(zipopt_run_get(ra, "energy_residual"), 0, K_RTOL * 1e-8 * scale);
+    /* the last row is the end of the run; phi are differences of theta */
+    int rows = zipopt_run_rows(ra), cols = zipopt_run_columns(ra);
+    const double *last = zipopt_run_trajectory(ra) + (size_t)(rows - 1) * cols;
+    CHECK(last[column(ra, "t")] == zipopt_run_get(ra, "time"));
+    CHECK(last[column(ra, "x")] == zipopt_run_get(ra, "x"));
+    CHECK(last[column(ra, "phi2")] == last[column(ra, "theta2")] - last[column(ra, "theta1")]);
+    CHECK(column(ra, "omega3") > 0 && zipopt_run_column(ra, cols) == NULL);
+    double kinks[2 * 6], angle[3];
+    CHECK(zipopt_run_kinks(ra, kinks, 2) == (int)zipopt_run_get(ra, "kinks"));
+    CHECK(zipopt_run_kinks(ra, kinks, 2) == 2 && kinks[1] == 60 && kinks[7] == 100);
+    CHECK(zipopt_run_max_angles(ra, angle, 3) == 3 && angle[2] > angle[0]);
+    CHECK(isnan(zipopt_run_get(ra, "no such key")) && zipopt_run_key(0) != NULL);
+    /* a wrong count or a NaN is refused and leaves the forces as they were */
+    double bad[3] = {1, NAN, 1}, now[3];
+    CHECK(zipopt_scene_set_forces(a, bad, 2, err, sizeof err) == -1 && strstr(err, "3"));
+    CHECK(zipopt_scene_set_forces(a, bad, 3, err, sizeof err) == -1);
+    CHECK(zipopt_scene_forces(a, now, 3) == 3 && now[0] == 10 && now[1] == 10);
+    zipopt_run_free(ra);
+    zipopt_run_free(rb);
+    zipopt_scene_free(a);
+    zipopt_scene_free(b);
+}
+
+/* the whole body's centre of mass along the slope: s(t) = s0 + a t^2 / 2 */
+static void check_slope(void) {
+    const char *ini = "[course]\nx_start = 0\nsection = 200 : 100 - 0.2*x\n"
+                      "[trolley]\nmass = 30\n[body]\nlengths = 5, 4, 3\nmasses = 15, 5, 2\n"
+                      "damping = 1\ndeath_angle = 179\n[drive]\nforces = 50\n"
+                      "[solver]\nrtol = 1e-10\natol = 1e-12\noutput_dt = 0.1\n";
+    char err[4096];
+    zipopt_scene *s = zipopt_scene_load_string(ini, "slope.ini", err, sizeof err);
+    CHECK(s != NULL);
+    if (!s) {
+        fprintf(stderr, "%s\n", err);
+        return;
+    }
+    zipopt_run *r = zipopt_simulate(s, err, sizeof err);
+    CHECK(r && zipopt_run_outcome(r) == ZIPOPT_FINISHED);
+    const double m[4] = {30, 15, 5, 2}, len[3] = {5, 4, 3}, M = 52, F = 50, g = 9.81;
+    double al = atan(-0.2), ux = cos(al), uy = sin(al);
+    double acc = (F * cos(al) - M * g * sin(al)) / M;
+    int cols = zipopt_run_columns(r), jx = column(r, "x"), jth = column(r, "theta1");
+    double worst = 0, s0 = 0;
+    for (int k = 0; k < zipopt_run_rows(r); k++) {
+        const double *row = zipopt_run_trajectory(r) + (size_t)k * cols;
+        double px = row[jx], py = row[jx + 1], cx = m[0] * px, cy = m[0] * py;
+        for (int i = 0; i < 3; i++) {
+            double th = row[jth + i];
+            cx += m[i + 1] * (px + len[i] / 2 * sin(th));
+            cy += m[i + 1] * (py - len[i] / 2 * cos(th));
+            px += len[i] * sin(th);
+            py -= len[i] * cos(th);
+        }
+        double along = (cx * ux + cy * uy) / M, t = row[column(r, "t")];
+        s0 = k ? s0 : along;
+        worst = fmax(worst, fabs(along - (s0 + acc * t * t / 2)));
+    }
+    CHECK_NEAR(worst, 0, K_RTOL * 1e-10 * 200);
+    zipopt_run_free(r);
+    zipopt_scene_free(s);
+}
+
+typedef struct job {
+    double force;
+    zipopt_run *run;
+} job;
+
+static void *simulate_job(void *arg) {
+    job *j = arg;
+    char err[512];
+    zipopt_scene *s = zipopt_scene_load(SEED, err, sizeof err);
+    double f[3] = {j->force, j->force, j->force};
+    if (s && !zipopt_scene_set_forces(s, f, 3, err, sizeof err)) {
+        j->run = zipopt_simulate(s, err, sizeof err);
+    }
+    zipopt_scene_free(s);
+    return NULL;
+}
+
+/* two handles in two threads at once give the bits each gives alone */
+static void check_threads(void) {
+    job jobs[2] = {{10, NULL}, {40, NULL}}, alone[2] = {{10, NULL}, {40, NULL}};
+    pthread_t th[2];
+    for (int i = 0; i < 2; i++) {
+        CHECK(pthread_create(&th[i], NULL, simulate_job, &jobs[i]) == 0);
+    }
+    for (int i = 0; i < 2; i++) {
+        pthread_join(th[i], NULL);
+        simulate_job(&alone[i]);
+        CHECK(jobs[i].run && alone[i].run && same_run(jobs[i].run, alone[i].run));
+        zipopt_run_free(jobs[i].run);
+        zipopt_run_free(alone[i].run);
+    }
+}
+
+/* bad input: NULL with file, line and key in the text, and not a byte on stdout or stderr */
+static void check_quiet_errors(void) {
+    fflush(stdout);
+    fflush(stderr);
+    FILE *cap = tmpfile();
+    int out = dup(1), errfd = dup(2);
+    dup2(fileno(cap), 1);
+    dup2(fileno(cap), 2);
+    char err[4096] = "";
+    zipopt_scene *s = zipopt_scene_load_string("[scene]\nname = x\n[body]\nmasses = 1, -2\n",
+                                               "bad.ini", err, sizeof err);
+    zipopt_scene *t = zipopt_scene_load("/nonexistent/scene.ini", err + 2048, 2048);
+    fflush(stdout);
+    fflush(stderr);
+    dup2(out, 1);
+    dup2(errfd, 2);
+    close(out);
+    close(errfd);
+    CHECK(s == NULL && t == NULL);
+    CHECK(strstr(err, "bad.ini:4:") && strstr(err, "masses"));
+    CHECK(strstr(err + 2048, "/nonexistent/scene.ini"));
+    CHECK(ftell(cap) == 0);
+    fclose(cap);
+}
+
+typedef struct seen {
+    int calls;
+    int stop_at; /* the call that asks to stop */
+} seen;
+
+static int on_progress(void *user, long evals, double wall_s, int found, double time,
+                       const double *force, int nsec, int improved) {
+    seen *s = user;
+    (void)evals, (void)wall_s, (void)found, (void)time, (void)force, (void)improved;
+    CHECK(nsec == 3);
+    return ++s->calls == s->stop_at;
+}
+
+/* the same seed gives the same bits; a raised flag or the callback's answer stops the search */
+static void check_search(void) {
+    char err[512];
+    zipopt_scene *s = zipopt_scene_load(SEED, err, sizeof err);
+    zipopt_search *a = zipopt_search_run(s, 60, 7, NULL, NULL, NULL, err, sizeof err);
+    zipopt_search *b = zipopt_search_run(s, 60, 7, NULL, NULL, NULL, err, sizeof err);
+    CHECK(a && b);
+    double fa[3], fb[3];
+    CHECK(zipopt_search_forces(a, fa, 3) == 3 && zipopt_search_forces(b, fb, 3) == 3);
+    CHECK(!memcmp(fa, fb, sizeof fa) && zipopt_search_get(a, "evals") <= 60);
+    CHECK(zipopt_search_get(a, "interrupted") == 0);
+    volatile int stop = 1;
+    zipopt_search *c = zipopt_search_run(s, 60, 7, NULL, NULL, &stop, err, sizeof err);
+    CHECK(c && zipopt_search_get(c, "interrupted") == 1 && zipopt_search_get(c, "evals") == 0);
+    CHECK(c && !zipopt_search_get(c, "found") && isnan(zipopt_search_get(c, "time")));
+    seen n = {0, 1};
+    zipopt_search *d = zipopt_search_run(s, 400, 7, on_progress, &n, NULL, err, sizeof err);
+    CHECK(d && n.calls >= 1 && zipopt_search_get(d, "interrupted") == 1);
+    zipopt_search_free(a);
+    zipopt_search_free(b);
+    zipopt_search_free(c);
+    zipopt_search_free(d);
+    zipopt_scene_free(s);
+}
+
+int main(void) {
+    CHECK(!strcmp(zipopt_version(), "0.1.0") || strchr(zipopt_version(), '.'));
+    check_seed();
+    check_slope();
+    check_threads();
+    check_quiet_errors();
+    check_search();
+    return CHECK_DONE();
+}

@@ -1,0 +1,271 @@
+/* Scenarios, [limits] and the robust search (core/scenario.c, optim/robust.c) against
+   independent expectations: the corners of a 1-D range are its ends; a scenario's derived
+   model equals one built from the scaled scene; a chain hanging at rest on a straight incline
+   under a known acceleration feels |a - g| and carries its weight times that at each joint; a
+   bare trolley's kink dv is its speed times the sine of the slope change; exact load peaks
+   are at least the finest sampling's; where survival is monotone in the one force, the robust
+   optimum is the largest surviving push over 1 + p; verification counts match a brute-force
+   loop; the same seed gives the same bits on 1 and 2 threads. */
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_rng.h>
+#include <math.h>
+#include <string.h>
+
+#include "check.h"
+#include "robust.h"
+#include "testutil.h"
+
+#define BOUND_TOL 2e-3 /* s: the search polishes forces to ~1e-3 N (as in test_search) */
+
+/* the corners of a 1-D range are exactly its ends; the derived model is the scaled scene's */
+static void corners_and_models(void) {
+    zp_scene sc;
+    zp_model *m = tu_model(tu_swing, &sc);
+    sc.force_error = 5;
+    zp_box b;
+    zp_box_from_scene(&sc, m, &b);
+    CHECK(b.d == 1);
+    zp_scen_set set;
+    CHECK(zp_scen_set_build(&set, &b, m, 6, 1) == ZP_OK);
+    CHECK(set.n == 6 && set.ncorner == 2);
+    CHECK(set.sc[0].force[0] == 1 - 0.05 && set.sc[1].force[0] == 1 + 0.05);
+    for (int j = 2; j < set.n; j++) {
+        CHECK(fabs(set.sc[j].force[0] - 1) < 0.05);
+    }
+    zp_scen_set_free(&set);
+
+    static const char *three =
+        "[course]\nx_start = 0\nsection = 40 : -x/10 + 10\n[trolley]\nmass = 30\n"
+        "[body]\nlengths = 5, 4, 3\nmasses = 15, 5, 2\ndamping = 1, 2, 3\n";
+    static const char *scaled =
+        "[course]\nx_start = 0\nsection = 40 : -x/10 + 10\n[trolley]\nmass = 27\n"
+        "[body]\nlengths = 5.5, 4.4, 3.3\nmasses = 12, 4, 1.6\ndamping = 2, 4, 6\n";
+    zp_scene s3, s4;
+    zp_model *m3 = tu_model(three, &s3), *m4 = tu_model(scaled, &s4);
+    s3.mass_range[0] = 80;
+    s3.mass_range[1] = 120;
+    s3.length_range[0] = 110;
+    s3.length_range[1] = 110;
+    s3.trolley_mass_range[0] = 90;
+    s3.trolley_mass_range[1] = 100;
+    s3.damping_range[0] = 200;
+    s3.damping_range[1] = 300;
+    zp_box_from_scene(&s3, m3, &b);
+    CHECK(b.d == 4);
+    double u[4] = {-1, 0, -1, -1}; /* mass 80 %, length 110 %, trolley 90 %, damping 200 % */
+    zp_scenario s;
+    zp_box_scenario(&b, u, &s);
+    zp_model d;
+    zp_scenario_model(m3, &s, &d);
+    CHECK_REL(d.mtot, m4->mtot, 1e-14);
+    for (int j = 0; j < 3; j++) {
+        CHECK_REL(d.B[j], m4->B[j], 1e-14);
+        CHECK_REL(d.damp[j], m4->damp[j], 1e-14);
+        for (int k = 0; k < 3; k++) {
+            CHECK_REL(d.C[j][k], m4->C[j][k], 1e-14);
+        }
+    }
+    zp_model_free(m3);
+    zp_model_free(m4);
+    zp_model_free(m);
+}
+
+/* a chain hanging along g - a on an incline, the whole moving at a: every link feels
+   |a - g|, and joint i carries the mass from link i down times |a - g| */
+static void hanging_chain(void) {
+    static const char *incline =
+        "[course]\nx_start = 0\nsection = 200 : -x/10 + 10\n[trolley]\nmass = 30\n"
+        "[body]\nlengths = 2, 1.5, 1\nmasses = 15, 5, 2\ndamping = 1\ndeath_angle = 180\n"
+        "[solver]\nt_max = 3\n";
+    zp_scene sc;
+    zp_model *m = tu_model(incline, &sc);
+    zp_sim_opts o = tu_opts(&sc, 1e-10);
+    o.track_loads = 0;
+    o.peaks = 1;
+    double F = 200, al = atan(0.1), g = 9.81, M = 30 + 22;
+    double a = (F * cos(al) + M * g * sin(al)) / M;
+    double ex = -a * cos(al), ey = -g + a * sin(al); /* g - a */
+    double th = atan2(ex, -ey), geff = hypot(ex, ey);
+    zp_scenario s;
+    zp_scenario_nominal(&s);
+    for (int i = 0; i < 3; i++) {
+        s.theta[i] = th;
+    }
+    zp_chain c0, c;
+    zp_state_start(m, m->course, &c0);
+    zp_scenario_start(&c0, 3, &s, &c);
+    zp_schedule sch = tu_sched(m, &F);
+    zp_input in = {.sched = &sch, .start = &c};
+    const zp_result *r = tu_run(m, &o, &in);
+    CHECK(r->outcome == ZP_OUTCOME_STALLED && r->stall == ZP_STALL_T_MAX);
+    double below[3] = {22, 7, 2};
+    for (int i = 0; i < 3; i++) {
+        CHECK_REL(r->peaks.acc_g[i], geff / g, 1e-6);
+        CHECK_REL(r->peaks.joint[i], below[i] * geff, 1e-6);
+        /* link 1 hangs at th from the vertical; the others in line with it */
+        CHECK_NEAR(r->max_rel_angle[i], i ? 0 : fabs(th), 1e-6);
+    }
+    zp_model_free(m);
+}
+
+/* a bare trolley over a kink: the impulse keeps the tangential part, dv = v sin(change) */
+static void kink_dv(void) {
+    static const char *kink =
+        "[course]\nx_start = 0\nsection = 20 : -x/10 + 10\nsection = 40 : -(x - 20)/2 + 8\n"
+        "[trolley]\nmass = 30\n[body]\nlengths = 0.2\nmasses = 0.001\ndamping = 0\n";
+    zp_scene sc;
+    zp_model *m = tu_model(kink, &sc);
+    zp_sim_opts o = tu_opts(&sc, 1e-10);
+    zp_schedule sch = tu_sched(m, (double[2]){0, 0});
+    zp_input in = {.sched = &sch};
+    const zp_result *r = tu_run(m, &o, &in);
+    double v = sqrt(2 * 9.81 * 2); /* 2 m down to the kink */
+    CHECK(r->ncross == 1);
+    CHECK_REL(r->peaks.kink_dv, v * sin(atan(0.5) - atan(0.1)), 2e-4);
+    zp_limits l = {{0, 0, 0, 0}};
+    l.max[ZP_LIMIT_KINK_DV] = r->peaks.kink_dv / 1.1;
+    int which;
+    CHECK_NEAR(zp_limits_excess(&l, m, r, &which), 0.1, 1e-12);
+    CHECK(which == ZP_LIMIT_KINK_DV);
+    zp_model_free(m);
+}
+
+/* the exact peaks reach at least the finest sampling of the same run, and not much more */
+static void exact_peaks(void) {
+    zp_scene sc;
+    zp_model *m = tu_model(tu_swing, &sc);
+    zp_sim_opts o = tu_opts(&sc, 1e-10);
+    zp_schedule sch = tu_sched(m, (double[1]){150});
+    zp_input in = {.sched = &sch};
+    o.output_dt = 1e-4;
+    o.track_loads = 0;
+    zp_load_peaks fine = tu_run(m, &o, &in)->peaks;
+    o.output_dt = 0;
+    o.peaks = 1;
+    zp_load_peaks exact = tu_run(m, &o, &in)->peaks;
+    o.peaks = 0;
+    o.track_loads = 1;
+    zp_load_peaks steps = tu_run(m, &o, &in)->peaks;
+    CHECK(exact.acc_g[0] >= fine.acc_g[0] - 1e-12);
+    CHECK(exact.joint[0] >= fine.joint[0] - 1e-9);
+    CHECK_REL(exact.acc_g[0], fine.acc_g[0], 1e-6);
+    CHECK_REL(exact.joint[0], fine.joint[0], 1e-6);
+    CHECK(exact.acc_g[0] >= steps.acc_g[0] - 1e-12);
+    zp_model_free(m);
+}
+
+/* the largest push that keeps the margin, by bisection with the simulator alone */
+static double largest_push(const zp_model *m, const zp_sim_opts *o, double limit) {
+    double lo = 0, hi = 400;
+    zp_schedule sch = tu_sched(m, (double[1]){0});
+    double *f = sch.p; /* the schedule's one force, set below */
+    zp_input in = {.sched = &sch};
+    while (hi - lo > 1e-7) {
+        f[0] = 0.5 * (lo + hi);
+        const zp_result *r = tu_run(m, o, &in);
+        int ok = r->outcome == ZP_OUTCOME_FINISHED && r->max_rel_angle[0] <= limit;
+        *(ok ? &lo : &hi) = f[0];
+    }
+    return lo;
+}
+
+static zp_search_result res, res2;
+
+static void robust_search(zp_objective *ob, const zp_scene *sc, const zp_sim_opts *o,
+                          int nthreads, zp_search_result *r, zp_robust_info *info) {
+    zp_box b;
+    zp_box_from_scene(sc, ob->m, &b);
+    zp_scen_set set;
+    CHECK(zp_scen_set_build(&set, &b, ob->m, sc->robust_samples, sc->seed) == ZP_OK);
+    ob->set = &set;
+    zp_search_opts so = {.max_evals = sc->max_evals, .seed = sc->seed, .nthreads = nthreads};
+    char err[256];
+    double lo[ZP_MAX_SECTIONS], hi[ZP_MAX_SECTIONS];
+    for (int k = 0; k < ob->m->nsec; k++) {
+        lo[k] = sc->force_min;
+        hi[k] = sc->force_max;
+    }
+    CHECK(zp_robust_search(ob, &b, o, lo, hi, &so, 4, r, info, err, sizeof err) == ZP_OK);
+    ob->set = NULL;
+    zp_scen_set_free(&set);
+}
+
+/* survival monotone in the force: the robust optimum is the largest push over 1 + p */
+static void monotone(void) {
+    zp_scene sc;
+    zp_model *m = tu_model(tu_swing, &sc);
+    zp_sim_opts o = tu_opts(&sc, 1e-8);
+    zp_objective ob = tu_objective(m, &sc, &o);
+    double p = 0.05, top = largest_push(m, &o, ob.limit);
+    sc.force_error = 100 * p;
+    sc.robust_samples = 8;
+    zp_robust_info info;
+    robust_search(&ob, &sc, &o, 2, &res, &info);
+    zp_schedule sch = tu_sched(m, (double[1]){top / (1 + p)});
+    double *f = sch.p;
+    zp_input in = {.sched = &sch};
+    double t_rob = tu_run(m, &o, &in)->time;
+    CHECK(res.found);
+    CHECK_NEAR(res.best.time, t_rob, BOUND_TOL);
+    CHECK(res.best.time >= t_rob - 1e-9);
+    CHECK(res.force[0] * (1 + p) <= top + 1e-6);
+
+    /* verification against a brute-force loop over the same draws, at a schedule some of
+       them break (those pushing it past top) */
+    double F = top / (1 + p / 2);
+    zp_box b;
+    zp_box_from_scene(&sc, m, &b);
+    zp_sim_opts tight = tu_opts(&sc, 1e-10);
+    zp_robust_check c;
+    const int n = 300;
+    CHECK(zp_robust_verify(&ob, &b, &tight, &F, n, 7, 2, &c) == ZP_OK);
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, 7 ^ ZP_ROBUST_STREAM_VERIFY);
+    int fin = 0, kept = 0;
+    for (int i = 0; i < n; i++) {
+        f[0] = F * (1 + p * (2 * gsl_rng_uniform(rng) - 1));
+        const zp_result *r = tu_run(m, &tight, &in);
+        fin += r->outcome == ZP_OUTCOME_FINISHED;
+        kept += r->outcome == ZP_OUTCOME_FINISHED && r->max_rel_angle[0] <= ob.limit;
+    }
+    gsl_rng_free(rng);
+    CHECK(c.samples == n && c.survived == fin && c.margin_kept == kept);
+    CHECK(c.limits_kept == fin && c.all_kept == kept);
+    CHECK(kept > 0 && kept < n);
+    CHECK_NEAR(c.lower_95, gsl_cdf_beta_Pinv(0.05, kept, n - kept + 1), 1e-15);
+    zp_model_free(m);
+}
+
+/* several uncertain quantities: the same seed gives the same bits on 1 and 2 threads */
+static void threads(void) {
+    zp_scene sc;
+    zp_model *m = tu_model(tu_swing, &sc);
+    zp_sim_opts o = tu_opts(&sc, 1e-8);
+    zp_objective ob = tu_objective(m, &sc, &o);
+    sc.force_error = 3;
+    sc.mass_range[0] = 90;
+    sc.mass_range[1] = 110;
+    sc.start_angle = 2;
+    sc.robust_samples = 12;
+    sc.max_g = 3;
+    zp_limits_from_scene(&sc, &ob.lim);
+    o.peaks = 1;
+    zp_robust_info i1, i2;
+    robust_search(&ob, &sc, &o, 2, &res, &i2);
+    robust_search(&ob, &sc, &o, 1, &res2, &i1);
+    CHECK(res.found);
+    CHECK(!memcmp(res.force, res2.force, sizeof res.force));
+    CHECK(res.evals == res2.evals && res.best.time == res2.best.time);
+    CHECK(i1.rounds == i2.rounds && i1.added == i2.added && i1.worst.cons == i2.worst.cons);
+    zp_model_free(m);
+}
+
+int main(void) {
+    corners_and_models();
+    hanging_chain();
+    kink_dv();
+    exact_peaks();
+    monotone();
+    threads();
+    return CHECK_DONE();
+}
