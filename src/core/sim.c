@@ -656,6 +656,13 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
                 finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_HELD_BY_FRICTION);
                 return ZP_OK;
             }
+            /* at rest exactly: a residual x' of the root's tolerance would set the friction
+               against the wrong way and bring the root straight back, at the same t */
+            zp_chain rest = chain_of(s, s->y);
+            rest.v[0] = rest.v[1] = 0;
+            double wk[ZP_W_MAX];
+            memcpy(wk, s->y + s->w0, sizeof *wk * m->nwork);
+            s->form->from_chain(m, &rest, wk, s->y);
             if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
                 return fail(s, r, t, "the integrator could not restart at rest");
             }
