@@ -219,6 +219,34 @@ static inline double friction_terms(const zp_model *m, const zp_drive_now *dn, d
     return -q * xd;
 }
 
+/* the rates both paths end with: q' and q'' (1 on a non-finite acceleration), the work
+   integrals (power of the drive, dampers, and with physics of drag and friction: p[0..2]),
+   and the loads when asked for; phys is the model's effects (a constant where inlined) */
+__attribute__((always_inline)) static inline int
+store_rates(const zp_model *m, const zp_drive_now *dn, unsigned phys, const double *y,
+            const double *qdd, double xd, double fp, const double p[3], const double f[2],
+            double (*fd)[2], double hold, double *ydot, zp_loads *loads) {
+    int nq = m->nlink + 1;
+    for (int i = 0; i < nq; i++) {
+        ydot[i] = y[nq + i];
+        ydot[nq + i] = qdd[i];
+        if (!isfinite(qdd[i])) {
+            return 1;
+        }
+    }
+    ydot[2 * nq] = (dn->fx + dn->fy * fp) * xd;
+    ydot[2 * nq + 1] = p[0];
+    if (phys) {
+        ydot[2 * nq + 2] = p[1];
+        ydot[2 * nq + 3] = p[2];
+    }
+    if (loads) {
+        lagrange_loads(m, dn, f[0], f[1], phys & ZP_PHYS_DRAG ? fd : NULL, y, qdd, loads);
+        loads->hold = hold;
+    }
+    return 0;
+}
+
 static int lagrange_rhs_general(const zp_model *m, void *work, const zp_drive_now *dn,
                                 const double *y, double *ydot, zp_loads *loads) {
     lagrange_work *lw = work;
@@ -277,24 +305,9 @@ static int lagrange_rhs_general(const zp_model *m, void *work, const zp_drive_no
         pfric = friction_terms(m, dn, xd, f[0], f[1], s, c, wd2, n,
                                gsl_vector_const_ptr(lw->u, 0), qdd, &hold);
     }
-    for (int i = 0; i < nq; i++) {
-        ydot[i] = y[nq + i];
-        ydot[nq + i] = qdd[i];
-        if (!isfinite(qdd[i])) {
-            return 1;
-        }
-    }
-    ydot[2 * nq] = (dn->fx + dn->fy * fp) * xd;
-    ydot[2 * nq + 1] = pdamp;
-    if (m->nwork > 2) {
-        ydot[2 * nq + 2] = pdrag;
-        ydot[2 * nq + 3] = pfric;
-    }
-    if (loads) {
-        lagrange_loads(m, dn, f[0], f[1], m->physics & ZP_PHYS_DRAG ? fd : NULL, y, qdd, loads);
-        loads->hold = hold;
-    }
-    return 0;
+    unsigned phys = m->physics & (ZP_PHYS_DRAG | ZP_PHYS_ROLLING); /* the work integrals' */
+    return store_rates(m, dn, phys, y, qdd, xd, fp, (const double[]){pdamp, pdrag, pfric}, f, fd,
+                       hold, ydot, loads);
 }
 
 /* M's Cholesky factor in its lower triangle (M SPD of size nq, lower triangle read); 0, or 1
@@ -401,24 +414,8 @@ __attribute__((always_inline)) static inline int fast_rhs(const zp_model *m,
         cholesky_subst(M, ex, u, nq);
         pfric = friction_terms(m, dn, xd, f[0], f[1], s, c, wd2, n, u, qdd, &hold);
     }
-    for (int i = 0; i < nq; i++) {
-        ydot[i] = y[nq + i];
-        ydot[nq + i] = qdd[i];
-        if (!isfinite(qdd[i])) {
-            return 1;
-        }
-    }
-    ydot[2 * nq] = (dn->fx + dn->fy * fp) * xd;
-    ydot[2 * nq + 1] = pdamp;
-    if (phys) {
-        ydot[2 * nq + 2] = pdrag;
-        ydot[2 * nq + 3] = pfric;
-    }
-    if (loads) {
-        lagrange_loads(m, dn, f[0], f[1], phys & ZP_PHYS_DRAG ? fd : NULL, y, qdd, loads);
-        loads->hold = hold;
-    }
-    return 0;
+    return store_rates(m, dn, phys, y, qdd, xd, fp, (const double[]){pdamp, pdrag, pfric}, f, fd,
+                       hold, ydot, loads);
 }
 
 #define FAST_RHS_P(N, P, NAME)                                                                     \
