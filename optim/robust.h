@@ -112,10 +112,10 @@ zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_mod
                           double limit, const zp_schedule *shape, const zp_sim_opts *so,
                           const zp_sim_opts *search, zp_sim_opts *fast);
 /* The (robust) search over the box [lo[k], hi[k]] (one per parameter) with the adversary,
-   then, unless interrupted, the answer verified on sc->verify_samples fresh scenarios at so's
-   tolerance made tighter as zp_estimate_tighter does. */
-zp_status zp_robust_solve(zp_robust_problem *p, const zp_scene *sc, const zp_sim_opts *so,
-                          const zp_sim_opts *fast, const double *lo, const double *hi,
+   then, unless interrupted, the answer verified on sc->verify_samples fresh scenarios at the
+   search's runs' tolerance (fast) made tighter as zp_estimate_tighter does. */
+zp_status zp_robust_solve(zp_robust_problem *p, const zp_scene *sc, const zp_sim_opts *fast,
+                          const double *lo, const double *hi,
                           const zp_search_opts *o, zp_search_result *res, char *err,
                           size_t errlen);
 void zp_robust_problem_free(zp_robust_problem *p);

@@ -87,7 +87,7 @@ static void run_search(const zp_scene *sc, const zp_model *m, const zp_schedule 
     double limit = m->phi_max - sc->margin * M_PI / 180;
     if (!res || !pb || zp_robust_setup(pb, sc, m, limit, sched, so, &search, &fast)) {
         fail(row, "out of memory for the search");
-    } else if (zp_robust_solve(pb, sc, so, &fast, sched->lo, sched->hi, &o, res, err,
+    } else if (zp_robust_solve(pb, sc, &fast, sched->lo, sched->hi, &o, res, err,
                                sizeof err)) {
         fail(row, err);
     } else {

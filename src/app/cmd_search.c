@@ -336,7 +336,7 @@ int zp_cmd_search(int argc, char **argv) {
                         .stop = &interrupted, .progress = on_progress, .user = &pc};
     static zp_search_result res;
     char err[512] = "";
-    zp_status rc = zp_robust_solve(&pb, sc, &st.sim, &fast, st.sched.lo, st.sched.hi, &o, &res,
+    zp_status rc = zp_robust_solve(&pb, sc, &fast, st.sched.lo, st.sched.hi, &o, &res,
                                    err, sizeof err);
     int status = ZP_EXIT_FAIL;
     zp_sim *best_sim = NULL, *study_sim = NULL;

@@ -87,7 +87,7 @@ static zp_status solve_level(const zp_setup *su, double p, level_out *out, char 
                                    &fast);
     zp_search_opts o = {.max_evals = su->max_evals, .seed = su->seed};
     if (!st) {
-        st = zp_robust_solve(&pb, &sc, &su->sim, &fast, su->sched.lo, su->sched.hi, &o,
+        st = zp_robust_solve(&pb, &sc, &fast, su->sched.lo, su->sched.hi, &o,
                              &res, err, errlen);
     }
     zp_sim *s = st ? NULL : zp_sim_create(m, &fast);

@@ -393,7 +393,7 @@ static zp_status search(const zp_setup *st, const zp_search_opts *o, zp_search_r
         free(pb);
         return ZP_ERR_NOMEM;
     }
-    zp_status rc = zp_robust_solve(pb, &st->sc, &st->sim, &fast, st->sched.lo, st->sched.hi, o,
+    zp_status rc = zp_robust_solve(pb, &st->sc, &fast, st->sched.lo, st->sched.hi, o,
                                    res, err, errlen);
     zp_robust_problem_free(pb);
     free(pb);
