@@ -96,8 +96,21 @@ static void test_directions(void) {
     CHECK(zp_drive_dir_find("sideways") == -1 && zp_drive_dir_find("") == -1);
 }
 
+/* a scaled schedule's force is the original's times the section's factor, on every section,
+   and the bounds are the original's */
+static void test_scaled(void) {
+    const double f[] = {59.5, -3, 500}, k[] = {1.05, 0.95, 1};
+    zp_schedule s = zp_schedule_sections(3, f, -10, 500);
+    zp_schedule sc = zp_schedule_scaled(&s, k);
+    for (int sec = 0; sec < 3; sec++) {
+        CHECK(zp_schedule_force(&sc, 1.5, 42, sec) == f[sec] * k[sec]);
+        CHECK(sc.lo[sec] == s.lo[sec] && sc.hi[sec] == s.hi[sec]);
+    }
+}
+
 int main(void) {
     test_sections();
+    test_scaled();
     test_round_trip();
     test_bad_text();
     test_scene();

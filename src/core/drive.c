@@ -48,6 +48,14 @@ zp_schedule zp_schedule_of_scene(const zp_scene *sc) {
     return s;
 }
 
+zp_schedule zp_schedule_scaled(const zp_schedule *s, const double *scale) {
+    zp_schedule out = *s;
+    for (int k = 0; k < s->nsec; k++) { /* per-section constants: one parameter a section */
+        out.p[k] = s->p[k] * scale[k];
+    }
+    return out;
+}
+
 double zp_schedule_force(const zp_schedule *s, double t, double x, int sec) {
     (void)t;
     (void)x;

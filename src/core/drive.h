@@ -37,6 +37,9 @@ zp_schedule zp_schedule_with(const zp_schedule *sh, const double *p);
 /* The schedule the scene's [drive] describes (forces, min, max; all 0 when no forces). */
 zp_schedule zp_schedule_of_scene(const zp_scene *sc);
 
+/* The schedule whose force on each section sec is s's times scale[sec] (a drive off by a
+   known factor per section: a scenario's force error). */
+zp_schedule zp_schedule_scaled(const zp_schedule *s, const double *scale);
 /* N, the drive force at time t (s) with the trolley at x (m) on section sec (0-based). */
 double zp_schedule_force(const zp_schedule *s, double t, double x, int sec);
 /* The instants (s, ascending, at most max) where the force jumps in time; returns how many.

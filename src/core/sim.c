@@ -40,7 +40,7 @@ struct zp_sim {
 
     /* the run under way */
     const zp_schedule *sched; /* borrowed */
-    const double *scale;      /* borrowed, per section, NULL: 1 (zp_input.force_scale) */
+    zp_schedule scaled;       /* the run's schedule times zp_input.force_scale, when given */
     double breaks[ZP_SCHED_MAX_BREAKS]; /* s, where the force jumps in time */
     int nbreak;
     int sec;
@@ -73,9 +73,6 @@ static zp_track plain_track(const zp_model *m, const zp_course *c, int sec, doub
 static inline zp_drive_now drive_at(const zp_sim *s, track_fn track, double t, double x) {
     zp_drive_now dn = {track(s->m, s->course, s->sec, x), 0, 0, 0};
     double F = zp_schedule_force(s->sched, t, x, s->sec);
-    if (s->scale) {
-        F *= s->scale[s->sec];
-    }
     if (s->m->drive == ZP_DRIVE_TANGENT) {
         double norm = sqrt(1 + dn.tr.fp * dn.tr.fp);
         dn.fx = F / norm;
@@ -704,8 +701,13 @@ zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     clock_gettime(CLOCK_MONOTONIC, &t0);
     memset(r, 0, sizeof *r);
     s->m = m;
-    s->sched = in->sched;
-    s->scale = in->force_scale;
+    /* a scaled drive is a schedule of its own, made once per run, not a factor per evaluation */
+    if (in->force_scale) {
+        s->scaled = zp_schedule_scaled(in->sched, in->force_scale);
+        s->sched = &s->scaled;
+    } else {
+        s->sched = in->sched;
+    }
     s->nbreak = zp_schedule_breaks(in->sched, s->breaks, ZP_SCHED_MAX_BREAKS);
     s->sec = 0;
     s->e_impulse = 0;
