@@ -9,10 +9,10 @@
 #include <math.h>
 #include <nlopt.h>
 #include <stdio.h>
-#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "pool.h"
 #include "state.h"
 #include "estimate.h"
 
@@ -188,41 +188,6 @@ double zp_clopper_pearson_lower(int k, int n, double alpha) {
     return k <= 0 ? 0 : gsl_cdf_beta_Pinv(alpha, k, n - k + 1);
 }
 
-/* per-thread workspaces */
-typedef struct workers {
-    int n;
-    zp_sim **sim;  /* owned */
-    zp_result **r; /* owned */
-} workers;
-
-static void workers_free(workers *w) {
-    for (int t = 0; t < w->n; t++) {
-        zp_sim_free(w->sim[t]);
-        free(w->r[t]);
-    }
-    free(w->sim);
-    free(w->r);
-}
-
-static zp_status workers_make(workers *w, const zp_model *m, const zp_sim_opts *so,
-                              int nthreads) {
-    w->n = nthreads > 0 ? nthreads : omp_get_max_threads();
-    w->sim = calloc(w->n, sizeof *w->sim);
-    w->r = calloc(w->n, sizeof *w->r);
-    int ok = w->sim && w->r;
-    for (int t = 0; ok && t < w->n; t++) {
-        w->sim[t] = zp_sim_create(m, so);
-        w->r[t] = malloc(sizeof *w->r[t]);
-        ok = w->sim[t] && w->r[t];
-    }
-    if (!ok) {
-        w->n = w->sim && w->r ? w->n : 0;
-        workers_free(w);
-        return ZP_ERR_NOMEM;
-    }
-    return ZP_OK;
-}
-
 /* sched in the scenario at u, judged in full: *w filled; returns the constraint (deg) */
 static double scen_judge(const zp_objective *ob, const zp_box *b, const zp_chain *c0,
                          zp_sim *s, zp_result *r, const zp_schedule *sched, const double *u,
@@ -277,9 +242,66 @@ static double adv_obj(unsigned n, const double *u, double *grad, void *data) {
     return c;
 }
 
+/* a batch of scenarios of one schedule, judged in parallel over the pool: pw[i] for u row i */
+typedef struct scen_batch {
+    const zp_objective *ob;
+    const zp_box *b;
+    const zp_chain *c0;
+    const zp_schedule *sched;
+    const double *u;
+    zp_robust_worst *pw;
+} scen_batch;
+
+static void scen_job(void *user, int i, zp_sim *s, zp_result *r) {
+    scen_batch *sb = user;
+    scen_judge(sb->ob, sb->b, sb->c0, s, r, sb->sched, sb->u + (size_t)i * sb->b->d, &sb->pw[i]);
+}
+
+/* the polishes of the adversary, one after another on one workspace */
+typedef struct polish_batch {
+    const zp_objective *ob;
+    const zp_box *b;
+    const zp_chain *c0;
+    const zp_schedule *sched;
+    const zp_robust_worst *pw;
+    const int *top;
+    zp_robust_worst *worst;
+    long *sims;
+} polish_batch;
+
+static void polish_job(void *user, int i, zp_sim *s, zp_result *r) {
+    polish_batch *pb = user;
+    int d = pb->b->d;
+    double lo[ZP_BOX_MAX], hi[ZP_BOX_MAX];
+    (void)i;
+    for (int c = 0; c < d; c++) {
+        lo[c] = -1;
+        hi[c] = 1;
+    }
+    for (int k = 0; k < ADV_POLISH; k++) {
+        adv_ctx a = {pb->ob, pb->b, pb->c0, s, r, pb->sched, pb->pw[pb->top[k]], 0};
+        nlopt_opt opt = nlopt_create(d > 1 ? NLOPT_LN_BOBYQA : NLOPT_LN_COBYLA, d);
+        double x[ZP_BOX_MAX], val;
+        memcpy(x, pb->pw[pb->top[k]].u, sizeof *x * d);
+        if (opt) {
+            nlopt_set_max_objective(opt, adv_obj, &a);
+            nlopt_set_lower_bounds(opt, lo);
+            nlopt_set_upper_bounds(opt, hi);
+            nlopt_set_maxeval(opt, ADV_EVALS);
+            nlopt_set_initial_step1(opt, 0.25);
+            nlopt_optimize(opt, x, &val);
+            nlopt_destroy(opt);
+        }
+        *pb->sims += a.sims;
+        if (a.best.cons > pb->worst->cons) {
+            *pb->worst = a.best;
+        }
+    }
+}
+
 /* the worst scenario of force found in the box: ADV_POINTS seeded random points in parallel,
    the worst ADV_POLISH of them polished by BOBYQA (the box's corners included as points) */
-static void adversary(const zp_objective *ob, const zp_box *b, workers *w, const double *p,
+static void adversary(const zp_objective *ob, const zp_box *b, zp_pool *w, const double *p,
                       unsigned long seed, int round, zp_robust_worst *worst, long *sims) {
     zp_schedule sched = zp_objective_schedule(ob, p);
     int d = b->d, npt = ADV_POINTS;
@@ -296,11 +318,8 @@ static void adversary(const zp_objective *ob, const zp_box *b, workers *w, const
     for (int i = 0; i < npt * d; i++) {
         u[i] = 2 * gsl_rng_uniform(rng) - 1;
     }
-#pragma omp parallel for num_threads(w->n) schedule(dynamic, 1)
-    for (int i = 0; i < npt; i++) {
-        int t = omp_get_thread_num();
-        scen_judge(ob, b, &c0, w->sim[t], w->r[t], &sched, u + (size_t)i * d, &pw[i]);
-    }
+    scen_batch sb = {ob, b, &c0, &sched, u, pw};
+    zp_pool_map(w, npt, scen_job, &sb, NULL, NULL);
     *sims += npt;
     int top[ADV_POLISH];
     for (int k = 0; k < ADV_POLISH; k++) {
@@ -318,30 +337,8 @@ static void adversary(const zp_objective *ob, const zp_box *b, workers *w, const
             *worst = pw[top[k]];
         }
     }
-    double lo[ZP_BOX_MAX], hi[ZP_BOX_MAX];
-    for (int c = 0; c < d; c++) {
-        lo[c] = -1;
-        hi[c] = 1;
-    }
-    for (int k = 0; k < ADV_POLISH; k++) {
-        adv_ctx a = {ob, b, &c0, w->sim[0], w->r[0], &sched, pw[top[k]], 0};
-        nlopt_opt opt = nlopt_create(d > 1 ? NLOPT_LN_BOBYQA : NLOPT_LN_COBYLA, d);
-        double x[ZP_BOX_MAX], val;
-        memcpy(x, pw[top[k]].u, sizeof *x * d);
-        if (opt) {
-            nlopt_set_max_objective(opt, adv_obj, &a);
-            nlopt_set_lower_bounds(opt, lo);
-            nlopt_set_upper_bounds(opt, hi);
-            nlopt_set_maxeval(opt, ADV_EVALS);
-            nlopt_set_initial_step1(opt, 0.25);
-            nlopt_optimize(opt, x, &val);
-            nlopt_destroy(opt);
-        }
-        *sims += a.sims;
-        if (a.best.cons > worst->cons) {
-            *worst = a.best;
-        }
-    }
+    polish_batch pb = {ob, b, &c0, &sched, pw, top, worst, sims};
+    zp_pool_map(w, 1, polish_job, &pb, NULL, NULL);
 out:
     free(u);
     free(pw);
@@ -354,8 +351,8 @@ zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts 
                            size_t errlen) {
     memset(info, 0, sizeof *info);
     info->worst.cons = NAN; /* no adversary yet */
-    workers w = {0};
-    if (b->d > 0 && workers_make(&w, ob->m, so, o->nthreads)) {
+    zp_pool *w = NULL;
+    if (b->d > 0 && !(w = zp_pool_create(ob->m, so, o->nthreads))) {
         snprintf(err, errlen, "out of memory for the adversary's workspaces");
         return ZP_ERR_NOMEM;
     }
@@ -366,7 +363,7 @@ zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts 
         if (st || !res->found || res->interrupted || b->d == 0) {
             break;
         }
-        adversary(ob, b, &w, res->force, o->seed, info->rounds, &info->worst, &info->sims);
+        adversary(ob, b, w, res->force, o->seed, info->rounds, &info->worst, &info->sims);
         if (info->worst.cons <= 0 || info->rounds >= max_rounds) {
             break;
         }
@@ -378,7 +375,7 @@ zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts 
         }
         info->added++;
     }
-    workers_free(&w);
+    zp_pool_free(w);
     return st;
 }
 
@@ -389,11 +386,11 @@ zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim
     memset(c, 0, sizeof *c);
     c->samples = n;
     c->worst_margin_deg = INFINITY;
-    workers w = {0};
+    zp_pool *w = NULL;
     double *u = malloc(sizeof *u * (size_t)n * (b->d + 1));
     zp_robust_worst *pw = malloc(sizeof *pw * (size_t)(n + 1));
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    if (!u || !pw || !rng || workers_make(&w, ob->m, so, nthreads)) {
+    if (!u || !pw || !rng || !(w = zp_pool_create(ob->m, so, nthreads))) {
         free(u);
         free(pw);
         gsl_rng_free(rng);
@@ -405,11 +402,8 @@ zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim
     }
     zp_chain c0;
     zp_state_start(ob->m, ob->m->course, &c0);
-#pragma omp parallel for num_threads(w.n) schedule(dynamic, 4)
-    for (int i = 0; i < n; i++) {
-        int t = omp_get_thread_num();
-        scen_judge(ob, b, &c0, w.sim[t], w.r[t], &sched, u + (size_t)i * b->d, &pw[i]);
-    }
+    scen_batch sb = {ob, b, &c0, &sched, u, pw};
+    zp_pool_map(w, n, scen_job, &sb, NULL, NULL);
     for (int i = 0; i < n; i++) {
         int fin = pw[i].outcome == ZP_OUTCOME_FINISHED;
         int margin = fin && pw[i].margin_deg >= (ob->m->phi_max - ob->limit) * DEG;
@@ -423,7 +417,7 @@ zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim
         }
     }
     c->lower_95 = zp_clopper_pearson_lower(c->all_kept, n, 0.05);
-    workers_free(&w);
+    zp_pool_free(w);
     free(u);
     free(pw);
     gsl_rng_free(rng);
