@@ -29,7 +29,18 @@ typedef struct zp_verify {
     int kill_section; /* 1-based section whose change alone kills at `kill`, 0: a random mix */
 } zp_verify;
 
-/* Checks force (N per section) with fresh workspaces from so; trajectory rows of v->run stay
+/* The verification in two steps, so the caller can draw the best run while the checks go:
+   begin re-runs force (N per section) at so, its trajectory rows in *sim_out (owned by the
+   caller, freed with zp_sim_free, also on error) and its result in v->run; finish runs the
+   tighter run and the robustness runs (nrobust per level, 0: none) in one parallel batch over
+   nthreads (0: OpenMP's default), progress(user, done, total) after each job (may be NULL).
+   Each returns ZP_OK, or ZP_ERR_NUMERIC / ZP_ERR_NOMEM with why in err. */
+zp_status zp_verify_begin(const zp_objective *ob, const zp_sim_opts *so, const double *force,
+                          zp_sim **sim_out, zp_verify *v, char *err, size_t errlen);
+zp_status zp_verify_finish(const zp_objective *ob, const zp_sim_opts *so, const double *force,
+                           unsigned long seed, int nrobust, int nthreads, zp_verify *v,
+                           zp_pool_done progress, void *user, char *err, size_t errlen);
+/* Both steps: checks force (N per section) with fresh workspaces from so; trajectory rows of v->run stay
    in *sim_out (owned by the caller, freed with zp_sim_free). nrobust = 0 skips robustness;
    progress(user, done, total) after each robustness job (may be NULL). Returns ZP_OK, or
    ZP_ERR_NUMERIC / ZP_ERR_NOMEM with why in err. */
