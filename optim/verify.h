@@ -5,6 +5,7 @@
 
 #include <signal.h>
 
+#include "accuracy.h"
 #include "estimate.h"
 #include "pool.h"
 
@@ -48,5 +49,14 @@ zp_status zp_verify_run(const zp_objective *ob, const zp_sim_opts *so, const dou
                         unsigned long seed, int nrobust, int nthreads, zp_sim **sim_out,
                         zp_verify *v, zp_pool_done progress, void *user, char *err, size_t errlen);
 void zp_verify_free(zp_verify *v);
+/* [solver] accuracy = acc (s) after zp_verify_finish: when the verification's estimate
+   |v->run->time - v->tight->time| exceeds acc or the verdicts differ, the answer is rerun from
+   one step tighter than so until its estimate meets acc (zp_accuracy_run), and v->run,
+   *sim_out and v->tight (with v->rtol, atol, agree) become those of the new answer. *answer:
+   the options of the answer's run; *a: what it met (reruns counted from the [solver] run).
+   ZP_OK, or the failing run's status with why in err. */
+zp_status zp_verify_accuracy(const zp_objective *ob, const zp_sim_opts *so, const double *force,
+                             double acc, zp_sim **sim_out, zp_verify *v, zp_sim_opts *answer,
+                             zp_accuracy *a, char *err, size_t errlen);
 
 #endif
