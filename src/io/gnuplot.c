@@ -34,7 +34,7 @@ static pid_t start(zp_tx *t, const zp_gnuplot_job *j, int g) {
     const char *argv[3 * ZP_GNUPLOT_MAX_SCRIPTS + 2] = {"gnuplot"};
     int argc = 1;
     for (int i = g; i < j->n; i += j->nproc) {
-        snprintf(mark[i], sizeof mark[i], "reset session; print '%s%s'", ZP_GNUPLOT_MARK,
+        snprintf(mark[i], sizeof mark[i], "print '%s%s'; reset session", ZP_GNUPLOT_MARK,
                  j->script[i]);
         argv[argc++] = "-e";
         argv[argc++] = mark[i];
