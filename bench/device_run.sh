@@ -14,10 +14,12 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 mkdir -p "$dest"
 {
   echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2)"
+  lscpu 2>/dev/null | grep -E '^(Thread|Core|Socket|NUMA node\(s\))'
+  command -v gnuplot >/dev/null || echo "no gnuplot there: the figures' cost is not measured"
   zipopt --version
   bench/thread_scaling.sh 1 2 4 8 16
   THREADS=1 bench/sweep_scaling.sh 1 2 4 8 16
-  python3 bench/run_bench.py --bench-sim "$bundle/bin/bench_sim" --repeat 11
+  python3 bench/run_bench.py --bench-sim "$bundle/bin/bench_sim" --repeat 11 --no-callgrind
 } 2>&1 | tee "$dest/device_run.log"
 cp out/bench/thread_scaling/scaling.csv "$dest/thread_scaling.csv" 2>/dev/null
 cp out/bench/sweep_scaling/scaling.csv "$dest/sweep_scaling.csv" 2>/dev/null
