@@ -8,7 +8,8 @@
 #          REPS    runs per point (default 3; the robust study runs once)
 #          ONLY    the studies to run, by name (default all)
 # Writes out/bench/thread_scaling/scaling.csv (study, threads, wall_s, cpu_s, speedup,
-# efficiency). Timed with bash's `time` (no /usr/bin/time needed).
+# efficiency, and for the searches search_s, search_speedup: the search phase alone, summary.json
+# wall_s, without the verification and the outputs). Timed with bash's `time` (no /usr/bin/time needed).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 zipopt=${ZIPOPT:-$(command -v zipopt || echo build/zipopt)}
@@ -48,31 +49,42 @@ answer() {
   fi
 }
 
-echo "study,threads,wall_s,cpu_s,speedup,efficiency" >"$out/scaling.csv"
-printf '%-16s %7s %8s %8s %8s %10s\n' study threads wall_s cpu_s speedup efficiency
+# the median of the numbers on stdin
+median() { sort -g | awk '{ a[NR] = $1 } END { print a[int((NR + 1) / 2)] }'; }
+# the search phase's wall time of a run (summary.json wall_s), or nan for the landscape
+search_s() { sed -n 's/^  "wall_s": \([0-9.e+-]*\),*$/\1/p' "$1/summary.json" 2>/dev/null | grep . || echo nan; }
+
+echo "study,threads,wall_s,cpu_s,speedup,efficiency,search_s,search_speedup" >"$out/scaling.csv"
+printf '%-16s %7s %8s %8s %8s %10s %9s %8s\n' study threads wall_s cpu_s speedup efficiency \
+  search_s speedup
 for s in "${studies[@]}"; do
   name=${s%%|*}
   [ -z "${ONLY:-}" ] || [[ " $ONLY " == *" $name "* ]] || continue
   read -r -a args <<<"${s#*|}"
   n=$reps
   case $name in seed_pm5_robust | human_*) n=1 ;; esac
-  w1=
+  w1= s1=
   for t in "${threads[@]}"; do
-    walls=() cpus=()
+    walls=() cpus=() searches=()
     for ((i = 0; i < n; i++)); do
       rm -rf "$out/run"
       read -r w c < <(OMP_NUM_THREADS=$t timed "$zipopt" "${args[@]}" --out "$out/run")
-      walls+=("$w") cpus+=("$c")
+      walls+=("$w") cpus+=("$c") searches+=("$(search_s "$out/run")")
     done
-    w=$(printf '%s\n' "${walls[@]}" | sort -g | awk '{ a[NR] = $1 } END { print a[int((NR + 1) / 2)] }')
-    c=$(printf '%s\n' "${cpus[@]}" | sort -g | awk '{ a[NR] = $1 } END { print a[int((NR + 1) / 2)] }')
+    w=$(printf '%s\n' "${walls[@]}" | median)
+    c=$(printf '%s\n' "${cpus[@]}" | median)
+    sw=$(printf '%s\n' "${searches[@]}" | median)
     answer "$out/run" >"$out/answer_$t.txt"
     cmp -s "$out/answer_$t.txt" "$out/answer_${threads[0]}.txt" ||
       { echo "$name: $t threads give another answer than ${threads[0]}" >&2; exit 1; }
     w1=${w1:-$(awk -v w="$w" -v t="$t" 'BEGIN { print w * t }')}
-    awk -v s="$name" -v t="$t" -v w="$w" -v c="$c" -v w1="$w1" 'BEGIN {
-      printf "%-16s %7d %8.3f %8.3f %8.2f %9.0f%%\n", s, t, w, c, w1 / w, 100 * w1 / w / t
-      print s "," t "," w "," c "," w1 / w "," w1 / w / t >> "'"$out/scaling.csv"'" }'
+    s1=${s1:-$(awk -v w="$sw" -v t="$t" 'BEGIN { print w * t }')}
+    awk -v s="$name" -v t="$t" -v w="$w" -v c="$c" -v w1="$w1" -v sw="$sw" -v s1="$s1" 'BEGIN {
+      sp = sw == "nan" ? "nan" : sprintf("%.2f", s1 / sw)
+      ss = sw == "nan" ? "nan" : sprintf("%.3f", sw)
+      printf "%-16s %7d %8.3f %8.3f %8.2f %9.0f%% %9s %8s\n", s, t, w, c, w1 / w, 100 * w1 / w / t,
+        ss, sp
+      print s "," t "," w "," c "," w1 / w "," w1 / w / t "," sw "," sp >> "'"$out/scaling.csv"'" }'
   done
 done
 echo "every thread count gave the same answer; speed-up against the first count's wall time"
