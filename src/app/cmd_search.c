@@ -241,10 +241,11 @@ static int write_outputs(zp_tx *t, const zp_report *r, zp_sim *best_sim) {
 /* the best run's figures into the transaction, started: 0, or -1 failed (said on stderr) */
 static int figures_start(zp_tx *t, const zp_model *m, const zp_scene *sc,
                          const zp_schedule *shape, const zp_search_result *res,
-                         const zp_verify *v, const zp_sim *best_sim, zp_gnuplot_job *job,
-                         zp_plot_info *info) {
+                         const zp_verify *v, const zp_sim *best_sim, int procs,
+                         zp_gnuplot_job *job, zp_plot_info *info) {
     zp_plot_opts po;
     zp_plot_opts_default(&po);
+    po.procs = procs;
     po.margin = sc->margin * M_PI / 180;
     zp_schedule best = zp_schedule_with(shape, res->force);
     po.sched = &best;
@@ -367,8 +368,12 @@ int zp_cmd_search(int argc, char **argv) {
     zp_gnuplot_job job;
     zp_plot_info info;
     rc = zp_verify_begin(&ob, &solver, res.force, &best_sim, &v, err, sizeof err);
+    /* half the cores draw while the checks have the other half: every gnuplot start-up costs
+       about what drawing one figure does */
+    int half = zp_gnuplot_cores() / 2;
     if (!rc && early &&
-        figures_start(&tx, m, sc, &st.sched, &res, &v, best_sim, &job, &info)) {
+        figures_start(&tx, m, sc, &st.sched, &res, &v, best_sim, half > 1 ? half : 1, &job,
+                      &info)) {
         goto done;
     }
     phase_start(&pc, "verification: the best schedule with [solver] and 100x tighter");
@@ -407,7 +412,7 @@ int zp_cmd_search(int argc, char **argv) {
     if (!a.no_plot) {
         phase_start(&pc, "figures: drawing the best run with gnuplot\n");
         pc.shown = 0;
-        if (!early && figures_start(&tx, m, sc, &st.sched, &res, &v, best_sim, &job, &info)) {
+        if (!early && figures_start(&tx, m, sc, &st.sched, &res, &v, best_sim, 0, &job, &info)) {
             goto done;
         }
         drawn = figures_finish(&tx, &job, &info);

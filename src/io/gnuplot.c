@@ -1,10 +1,13 @@
 /* The gnuplot runner (gnuplot.h): a process per core, each drawing its share of the scripts,
    run in the private folder so the scripts name their data and images by relative paths and
    can be rerun by hand in the output folder; the wait survives signals. */
+#define _GNU_SOURCE /* sched_getaffinity, CPU_COUNT */
 #include "gnuplot.h"
 
 #include <errno.h>
+#include <sched.h>
 #include <fcntl.h>
+#include <limits.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -24,6 +27,15 @@ int zp_gnuplot_have(const char *prog) {
         path += n + (path[n] == ':');
     }
     return 0;
+}
+
+int zp_gnuplot_cores(void) {
+    cpu_set_t set;
+    if (sched_getaffinity(0, sizeof set, &set) == 0 && CPU_COUNT(&set) > 0) {
+        return CPU_COUNT(&set);
+    }
+    long n = sysconf(_SC_NPROCESSORS_ONLN);
+    return n < 1 ? 1 : n > INT_MAX ? INT_MAX : (int)n;
 }
 
 /* starts one gnuplot drawing the scripts of group g (every nproc-th from g) in the private
@@ -113,8 +125,8 @@ static pid_t reap(int *st) {
     return done;
 }
 
-zp_status zp_gnuplot_start(zp_tx *t, const char *const *scripts, int n, zp_gnuplot_job *j,
-                           char *err, size_t errlen) {
+zp_status zp_gnuplot_start(zp_tx *t, const char *const *scripts, int n, int nproc,
+                           zp_gnuplot_job *j, char *err, size_t errlen) {
     memset(j, 0, sizeof *j);
     if (zp_tx_flush(t, err, errlen)) {
         return ZP_ERR_IO;
@@ -128,9 +140,9 @@ zp_status zp_gnuplot_start(zp_tx *t, const char *const *scripts, int n, zp_gnupl
         return ZP_OK;
     }
     /* a process per core: each start-up (fonts, terminal) costs about what drawing one does */
-    long ncpu = sysconf(_SC_NPROCESSORS_ONLN);
+    int ncpu = nproc > 0 ? nproc : zp_gnuplot_cores();
     j->n = n;
-    j->nproc = ncpu < 1 ? 1 : ncpu > ZP_GNUPLOT_MAX_PROC ? ZP_GNUPLOT_MAX_PROC : (int)ncpu;
+    j->nproc = ncpu > ZP_GNUPLOT_MAX_PROC ? ZP_GNUPLOT_MAX_PROC : ncpu;
     j->nproc = j->nproc < n ? j->nproc : n;
     for (int i = 0; i < n; i++) {
         j->script[i] = scripts[i];
@@ -174,7 +186,7 @@ zp_status zp_gnuplot_wait(zp_tx *t, zp_gnuplot_job *j, char *err, size_t errlen)
 zp_status zp_gnuplot_run(zp_tx *t, const char *const *scripts, int n, int *missing, char *err,
                          size_t errlen) {
     zp_gnuplot_job j;
-    zp_status st = zp_gnuplot_start(t, scripts, n, &j, err, errlen);
+    zp_status st = zp_gnuplot_start(t, scripts, n, 0, &j, err, errlen);
     *missing = j.missing;
     return st ? st : zp_gnuplot_wait(t, &j, err, errlen);
 }

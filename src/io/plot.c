@@ -393,7 +393,7 @@ zp_status zp_plot_start(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_r
         info->mp4 = zp_gnuplot_have("ffmpeg");
         zp_plot_anim(ag, ad, al, m, rows, n, r, o, cb, info->mp4, info);
     }
-    zp_status st = zp_gnuplot_start(t, scripts, ns, j, err, errlen);
+    zp_status st = zp_gnuplot_start(t, scripts, ns, o->procs, j, err, errlen);
     info->no_gnuplot = j->missing;
     return st;
 }

@@ -23,6 +23,7 @@ typedef struct zp_plot_opts {
     int width, height;                   /* px, animation size; height 0: from the course's shape */
     double speedup;                      /* simulated seconds shown per second of animation */
     const zp_schedule *sched; /* borrowed, may be NULL: each section's drive in the labels */
+    int procs; /* gnuplot processes, 0: one per core (fewer when the caller computes meanwhile) */
 } zp_plot_opts;
 
 /* What zp_plot_run made. */
