@@ -235,28 +235,14 @@ int zp_expr_deriv(zp_expr *e, int root) {
     return r;
 }
 
-int zp_expr_int_power(const zp_expr *e, int i) {
-    const zp_ex_node *p = &e->node[i];
-    if (p->op != ZP_EX_POW || e->node[p->b].op != ZP_EX_NUM) {
-        return 0;
-    }
-    double c = e->node[p->b].value;
-    return c == 2 ? 2 : c == 3 ? 3 : 0;
-}
-
 double zp_expr_eval(const zp_expr *e, int root, double x) {
     const zp_ex_node *p = &e->node[root];
-    int n = zp_expr_int_power(e, root);
     switch (p->op) {
     case ZP_EX_NUM:
         return p->value;
     case ZP_EX_X:
         return x;
     default:
-        if (n) {
-            double a = zp_expr_eval(e, p->a, x), sq = a * a;
-            return n == 2 ? sq : fma(sq, a, fma(a, a, -sq) * a);
-        }
         return apply(p->op, zp_expr_eval(e, p->a, x), p->b >= 0 ? zp_expr_eval(e, p->b, x) : 0);
     }
 }

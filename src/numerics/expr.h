@@ -44,10 +44,6 @@ typedef struct zp_expr {
 int zp_expr_parse(zp_expr *e, const char *text, char *err, size_t errlen);
 /* d/dx of the expression at root, built in e; its root, or -1 when out of memory. */
 int zp_expr_deriv(zp_expr *e, int root);
-/* 2 or 3 when node i is a^2 or a^3 (constant exponent), else 0. These are products, not pow
-   (~20x the cost): a^2 = a a, rounded once like a correctly rounded pow; a^3 = p a + e a with
-   p = a a and e = fma(a, a, -p) its rounding error, the sum rounded once by an fma. */
-int zp_expr_int_power(const zp_expr *e, int i);
 /* The expression at root evaluated at x (the operations the compiled code does). */
 double zp_expr_eval(const zp_expr *e, int root, double x);
 void zp_expr_free(zp_expr *e);

@@ -96,30 +96,10 @@ typedef struct gen {
     gcc_jit_context *ctx;
     gcc_jit_type *dbl;
     gcc_jit_function *builtin[ZP_EX_COUNT];
-    gcc_jit_function *fma;
     gcc_jit_rvalue **val; /* per node, in the function being built */
 } gen;
 
-/* a^2 or a^3 as zp_expr_eval computes them (expr.h) */
-static gcc_jit_rvalue *small_power(gen *g, gcc_jit_rvalue *a, int n) {
-    gcc_jit_rvalue *sq = J(gcc_jit_context_new_binary_op)(g->ctx, NULL, GCC_JIT_BINARY_OP_MULT,
-                                                          g->dbl, a, a);
-    if (n == 2) {
-        return sq;
-    }
-    gcc_jit_rvalue *neg = J(gcc_jit_context_new_unary_op)(g->ctx, NULL, GCC_JIT_UNARY_OP_MINUS,
-                                                          g->dbl, sq);
-    gcc_jit_rvalue *lo_args[3] = {a, a, neg};
-    gcc_jit_rvalue *lo = J(gcc_jit_context_new_call)(g->ctx, NULL, g->fma, 3, lo_args);
-    gcc_jit_rvalue *args[3] = {sq, a,
-                               J(gcc_jit_context_new_binary_op)(g->ctx, NULL,
-                                                                GCC_JIT_BINARY_OP_MULT, g->dbl,
-                                                                lo, a)};
-    return J(gcc_jit_context_new_call)(g->ctx, NULL, g->fma, 3, args);
-}
-
-static gcc_jit_rvalue *node_value(gen *g, const zp_expr *e, int i, gcc_jit_param *x) {
-    const zp_ex_node *p = &e->node[i];
+static gcc_jit_rvalue *node_value(gen *g, const zp_ex_node *p, gcc_jit_param *x) {
     static const enum gcc_jit_binary_op bin[ZP_EX_COUNT] = {[ZP_EX_ADD] = GCC_JIT_BINARY_OP_PLUS,
                                                             [ZP_EX_SUB] = GCC_JIT_BINARY_OP_MINUS,
                                                             [ZP_EX_MUL] = GCC_JIT_BINARY_OP_MULT,
@@ -139,10 +119,6 @@ static gcc_jit_rvalue *node_value(gen *g, const zp_expr *e, int i, gcc_jit_param
         return J(gcc_jit_context_new_binary_op)(g->ctx, NULL, bin[p->op], g->dbl, g->val[p->a],
                                                 g->val[p->b]);
     case ZP_EX_POW: {
-        int n = zp_expr_int_power(e, i);
-        if (n) {
-            return small_power(g, g->val[p->a], n);
-        }
         gcc_jit_rvalue *args[2] = {g->val[p->a], g->val[p->b]};
         return J(gcc_jit_context_new_call)(g->ctx, NULL, g->builtin[ZP_EX_POW], 2, args);
     }
@@ -180,7 +156,7 @@ static void build_function(gen *g, const zp_expr *e, const char *name, int nout,
         if (!used[i]) {
             continue;
         }
-        gcc_jit_rvalue *v = node_value(g, e, i, prm[0]);
+        gcc_jit_rvalue *v = node_value(g, &e->node[i], prm[0]);
         if (e->node[i].op != ZP_EX_NUM && e->node[i].op != ZP_EX_X) {
             char local[24];
             snprintf(local, sizeof local, "t%d", i);
@@ -217,7 +193,7 @@ static void set_options(gcc_jit_context *ctx) {
    linker run as processes) only the first time a scene's course is seen. The file is named by
    one hash of everything the code is made from (nodes, roots, this generator's version) and
    holds a second, checked after loading. */
-#define ZP_JIT_GENERATOR 2 /* raise when the generated code changes for the same pool */
+#define ZP_JIT_GENERATOR 1 /* raise when the generated code changes for the same pool */
 
 static unsigned long long fnv(unsigned long long h, const void *data, size_t len) {
     const unsigned char *b = data;
@@ -337,13 +313,12 @@ static int generate(gen *g, const zp_expr *e, int nfn, int nout, const int *root
 
 static void declare_functions(gen *g) {
     g->dbl = J(gcc_jit_context_get_type)(g->ctx, GCC_JIT_TYPE_DOUBLE);
-    /* pow is the library's, not the builtin: GCC would rewrite pow(u, c) for some constants c
-       into other operations than the interpreter's (small integer powers are products in both) */
+    /* pow is the library's, not the builtin: GCC would turn pow(u, 2) into u * u, which
+       differs from the interpreter's pow in the last bit at some u */
     gcc_jit_param *pw[2] = {J(gcc_jit_context_new_param)(g->ctx, NULL, g->dbl, "a"),
                             J(gcc_jit_context_new_param)(g->ctx, NULL, g->dbl, "b")};
     g->builtin[ZP_EX_POW] = J(gcc_jit_context_new_function)(g->ctx, NULL, GCC_JIT_FUNCTION_IMPORTED,
                                                             g->dbl, "pow", 2, pw, 0);
-    g->fma = J(gcc_jit_context_get_builtin_function)(g->ctx, "__builtin_fma");
     for (int op = ZP_EX_SQRT; op < ZP_EX_COUNT; op++) {
         char name[32];
         snprintf(name, sizeof name, "__builtin_%s", zp_expr_func_name((zp_ex_op)op));
