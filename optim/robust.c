@@ -74,6 +74,7 @@ void zp_scen_set_free(zp_scen_set *set) {
     free(set->start);
     free(set->order);
     free(set->fails);
+    free(set->judge);
     memset(set, 0, sizeof *set);
 }
 
@@ -91,7 +92,9 @@ static int grow(zp_scen_set *set) {
     set->order = order ? order : set->order;
     long *fails = realloc(set->fails, sizeof *fails * cap);
     set->fails = fails ? fails : set->fails;
-    if (!u || !sc || !m || !st || !order || !fails) {
+    zp_objective *judge = set->judge ? realloc(set->judge, sizeof *judge * cap) : NULL;
+    set->judge = judge ? judge : set->judge;
+    if (!u || !sc || !m || !st || !order || !fails || (set->judge && !judge)) {
         return -1;
     }
     set->cap = cap;
@@ -114,6 +117,41 @@ zp_status zp_scen_set_add(zp_scen_set *set, const zp_box *b, const zp_model *nom
     memmove(set->order + 1, set->order, sizeof *set->order * j);
     set->order[0] = j;
     set->fails[j] = 0;
+    if (set->judge) {
+        set->judge[j] = (zp_objective){0}; /* the search's objective */
+    }
+    return ZP_OK;
+}
+
+zp_status zp_scen_set_add_model(zp_scen_set *set, const zp_model *m, const zp_scenario *sc,
+                                const zp_chain *start, const zp_objective *judge) {
+    if (set->n == set->cap && grow(set)) {
+        return ZP_ERR_NOMEM;
+    }
+    if (judge && !set->judge) {
+        /* the scenarios so far keep the search's objective: theirs is marked by m == NULL */
+        set->judge = calloc((size_t)set->cap, sizeof *set->judge);
+        if (!set->judge) {
+            return ZP_ERR_NOMEM;
+        }
+    }
+    int j = set->n++;
+    memset(set->u + (size_t)j * ZP_BOX_MAX, 0, sizeof *set->u * ZP_BOX_MAX);
+    set->sc[j] = *sc;
+    set->m[j] = *m;
+    if (start) {
+        set->start[j] = *start;
+    } else {
+        zp_chain c0;
+        zp_state_start(m, m->course, &c0);
+        zp_scenario_start(&c0, m->nlink, sc, &set->start[j]);
+    }
+    set->order[j] = j; /* in the order given */
+    set->fails[j] = 0;
+    if (set->judge) {
+        set->judge[j] = judge ? *judge : (zp_objective){0};
+        set->judge[j].set = NULL;
+    }
     return ZP_OK;
 }
 

@@ -32,6 +32,9 @@ typedef struct zp_scen_set {
     zp_chain *start;   /* owned, cap */
     int *order;        /* owned, n: the order of evaluation, worst first */
     long *fails;       /* owned, cap: candidates each scenario stopped, for the order */
+    zp_objective *judge; /* owned, cap, or NULL (every scenario judged by the search's
+                            objective): scenario j's own criteria (limit, t_max, [limits]) where
+                            zp_scen_set_add_model gave one, judge[j].m == NULL where not */
     long runs;         /* scenario simulations so far (the search counts candidates) */
 } zp_scen_set;
 
@@ -45,6 +48,13 @@ zp_status zp_scen_set_build(zp_scen_set *set, const zp_box *b, const zp_model *n
                             unsigned long seed);
 zp_status zp_scen_set_add(zp_scen_set *set, const zp_box *b, const zp_model *nom,
                           const double *u);
+/* Adds the scenario sc (its force factors) on the model m itself, borrowed and copied as a
+   struct (it must outlive the set and run on workspaces of the search's nominal model: the
+   same links, sections, course and effects), from start (NULL: m's own MODEL.md start turned
+   to sc's angles), judged by judge (copied; NULL: the search's objective). ZP_OK or
+   ZP_ERR_NOMEM. */
+zp_status zp_scen_set_add_model(zp_scen_set *set, const zp_model *m, const zp_scenario *sc,
+                                const zp_chain *start, const zp_objective *judge);
 /* Sorts the order by the scenarios' fail counts so far (most first; ties by index). */
 void zp_scen_set_reorder(zp_scen_set *set);
 void zp_scen_set_free(zp_scen_set *set);
