@@ -12,6 +12,8 @@
 #include "out_file.h"
 
 #define NFIXED 8 /* result columns before the forces: status .. evals */
+#define LINE_MAX_BYTES 16384 /* a row or grid line is shorter (a grid line of 10000 points:
+                                2500 hex digits) */
 
 void zp_sweep_csv_header(FILE *f, const zp_sweep *s, int np) {
     fputs("point", f);
@@ -312,8 +314,11 @@ zp_status zp_sweep_checkpoint_open(zp_sweep_checkpoint *c, int dirfd, const char
         close(fd);
         return ZP_ERR_INPUT;
     }
+    /* a buffer larger than any line: each line reaches the file in one write(), so a signal
+       that ends the job lands before or after it, never inside */
     if (fd < 0 || ftruncate(fd, keep > 0 ? keep : 0) || lseek(fd, 0, SEEK_END) < 0 ||
-        (c->dirfd = fcntl(dirfd, F_DUPFD_CLOEXEC, 0)) < 0 || !(c->f = fdopen(fd, "a"))) {
+        (c->dirfd = fcntl(dirfd, F_DUPFD_CLOEXEC, 0)) < 0 || !(c->f = fdopen(fd, "a")) ||
+        setvbuf(c->f, NULL, _IOFBF, LINE_MAX_BYTES)) {
         snprintf(err, errlen, "%s: %s", c->path, head ? strerror(errno) : "out of memory");
         free(head);
         if (fd >= 0) {
@@ -334,16 +339,21 @@ zp_status zp_sweep_checkpoint_open(zp_sweep_checkpoint *c, int dirfd, const char
     return ZP_OK;
 }
 
+/* the line just formatted, to the disk */
+static int push(zp_sweep_checkpoint *c) {
+    return fflush(c->f) || fsync(fileno(c->f)) ? -1 : 0;
+}
+
 int zp_sweep_checkpoint_add(zp_sweep_checkpoint *c, const zp_sweep *s, int p,
                             const zp_study_row *r) {
     zp_sweep_csv_row(c->f, s, p, r);
-    return fflush(c->f) || fsync(fileno(c->f)) ? -1 : 0;
+    return push(c);
 }
 
 int zp_sweep_checkpoint_add_grid(zp_sweep_checkpoint *c, const zp_sweep *s,
                                  const zp_grid_result *g) {
     zp_sweep_csv_grid(c->f, g, s->npoint);
-    return fflush(c->f) || fsync(fileno(c->f)) ? -1 : 0;
+    return push(c);
 }
 
 void zp_sweep_checkpoint_close(zp_sweep_checkpoint *c, int remove_file) {

@@ -132,7 +132,10 @@ typedef struct study {
     zp_grid_result *grid_res; /* owned, rank 0 */
     zp_sweep_checkpoint cp;
     int cp_failed;   /* a row could not be appended to the checkpoint */
-    int fault_after; /* ZIPOPT_SWEEP_FAULT_AFTER: rows appended before a hard kill, 0: never */
+    /* the fault a test injects (README): after fault_after rows are appended (0: never),
+       rank 0 is killed hard as a lost node is, or with fault_hang hangs as a stuck node does
+       (until a signal ends the job) */
+    int fault_after, fault_hang;
     int appended;
     int tty;
     struct timespec start;
@@ -183,6 +186,15 @@ static void work(void *user, int p, void *result) {
     zp_study_run(st->sc, st->s->kind, row);
 }
 
+/* rank 0 dies (or hangs) at once: no handler runs, nothing more is written */
+static void inject_fault(const study *st) {
+    fflush(stdout);
+    while (st->fault_hang) {
+        pause();
+    }
+    raise(SIGKILL);
+}
+
 static void done(void *user, int p, const void *result) {
     study *st = user;
     int bad;
@@ -195,9 +207,8 @@ static void done(void *user, int p, const void *result) {
         st->ndone += !st->done[p];
         st->done[p] = 1;
         bad = zp_sweep_checkpoint_add(&st->cp, st->s, p, &st->rows[p]);
-        /* a lost node, on purpose (tests): the whole job dies at once, no handler runs */
         if (!bad && st->fault_after > 0 && ++st->appended >= st->fault_after) {
-            raise(SIGKILL);
+            inject_fault(st);
         }
     }
     if (bad && !st->cp_failed) {
@@ -367,8 +378,9 @@ static int open_study(study *st, const sweep_args *a, zp_tx *t, int **todo, int 
     }
     st->nresumed = st->ndone;
     st->grid_resumed = st->grid_done;
-    const char *fault = getenv("ZIPOPT_SWEEP_FAULT_AFTER");
+    const char *fault = getenv("ZIPOPT_SWEEP_FAULT_AFTER"), *how = getenv("ZIPOPT_SWEEP_FAULT");
     st->fault_after = fault ? atoi(fault) : 0;
+    st->fault_hang = how && !strcmp(how, "hang");
     *ntodo = 0;
     if (st->grid && !st->grid_done) {
         (*todo)[(*ntodo)++] = n; /* the costliest item first: it overlaps the points */
