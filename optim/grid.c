@@ -81,14 +81,17 @@ static int load_point(const zp_sweep *s, const char *base, const char *path, zp_
         g->m = zp_model_build(sc, &d);
     }
     if (!g->m || zp_sim_opts_from_scene(sc, &g->so, &d)) {
-        snprintf(why, whylen, "%.*s", (int)whylen - 1, d.n ? d.text[0] : "the scene does not build");
+        snprintf(why, whylen, "%.*s", (int)whylen - 1,
+                 d.n ? d.text[0] : "the scene does not build");
         return -1;
     }
     g->so.output_dt = 0; /* outcomes only: output requests never change the integrator's steps */
     g->sched = zp_schedule_of_scene(sc);
     /* the limit exactly as the search command sets it */
-    g->ob = (zp_objective){.m = g->m, .limit = g->m->phi_max - sc->margin * M_PI / 180,
-                           .t_max = g->so.t_max, .shape = &g->sched};
+    g->ob = (zp_objective){.m = g->m,
+                           .limit = g->m->phi_max - sc->margin * M_PI / 180,
+                           .t_max = g->so.t_max,
+                           .shape = &g->sched};
     zp_limits_from_scene(sc, &g->ob.lim);
     g->death_angle = sc->death_angle;
     zp_box box;
@@ -116,16 +119,16 @@ static int same_kind(const zp_model *a, const zp_model *b) {
 
 /* pt[0] the nominal, pt[1..n-1] the corners: loaded, checked alike, and their scenarios in
    set (the corners first, then every point's [robust] scenarios); lo/hi the bounds all keep */
-static int setup(const zp_sweep *s, const char *base, const char *path, zp_scene *sc,
-                 gpoint *pt, int n, search_cfg *cfg, zp_scen_set *set, double *lo, double *hi,
-                 char *why, size_t whylen) {
+static int setup(const zp_sweep *s, const char *base, const char *path, zp_scene *sc, gpoint *pt,
+                 int n, search_cfg *cfg, zp_scen_set *set, double *lo, double *hi, char *why,
+                 size_t whylen) {
     for (int i = 0; i < n; i++) {
         if (load_point(s, base, path, sc, 1, &pt[i], why, whylen)) {
             return -1;
         }
         if (i == 0) {
-            *cfg = (search_cfg){zp_method_find(sc->search_method), sc->search_rtol,
-                                sc->max_evals, sc->seed};
+            *cfg = (search_cfg){zp_method_find(sc->search_method), sc->search_rtol, sc->max_evals,
+                                sc->seed};
         }
         char at[256];
         zp_sweep_describe(s, pt[i].p, at, sizeof at);
@@ -153,8 +156,8 @@ static int setup(const zp_sweep *s, const char *base, const char *path, zp_scene
     }
     for (int i = 0; i < n && !st; i++) {
         for (int j = 0; j < pt[i].set.n && !st; j++) {
-            st = zp_scen_set_add_model(set, &pt[i].set.m[j], &pt[i].set.sc[j],
-                                       &pt[i].set.start[j], &pt[i].ob);
+            st = zp_scen_set_add_model(set, &pt[i].set.m[j], &pt[i].set.sc[j], &pt[i].set.start[j],
+                                       &pt[i].ob);
         }
     }
     if (st) {

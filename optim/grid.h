@@ -7,19 +7,19 @@
 
 /* What the grid schedule came to. Plain data (no pointers): copied as bytes between ranks. */
 typedef struct zp_grid_result {
-    int failed;        /* 1: it could not be searched for; message says why */
-    int found;         /* a schedule keeps the limits at the nominal and every corner */
-    int nominal;       /* the grid point whose finish time is minimised: the middle one */
-    int ncorner;       /* distinct corners held to, the nominal not counted */
-    int nscen;         /* scenarios in all: the corners, with their [robust] scenarios */
-    long evals;        /* candidates the search ran */
-    int np;                            /* the parameters of the scene's kind of schedule */
+    int failed;  /* 1: it could not be searched for; message says why */
+    int found;   /* a schedule keeps the limits at the nominal and every corner */
+    int nominal; /* the grid point whose finish time is minimised: the middle one */
+    int ncorner; /* distinct corners held to, the nominal not counted */
+    int nscen;   /* scenarios in all: the corners, with their [robust] scenarios */
+    long evals;  /* candidates the search ran */
+    int np;      /* the parameters of the scene's kind of schedule */
     double force[ZP_SCHED_MAX_PARAMS]; /* the answer's (or closest candidate's) parameters */
-    double time;       /* s, its finish (or stop) at the nominal point with that point's [solver] */
-    double margin;     /* deg there: death_angle minus the largest |relative joint angle| */
-    int worst;         /* the corner (a grid point) nearest to breaking it */
+    double time;   /* s, its finish (or stop) at the nominal point with that point's [solver] */
+    double margin; /* deg there: death_angle minus the largest |relative joint angle| */
+    int worst;     /* the corner (a grid point) nearest to breaking it */
     double worst_margin; /* deg there */
-    int survived;      /* grid points where it finishes with the point's margin and limits kept */
+    int survived;        /* grid points where it finishes with the point's margin and limits kept */
     unsigned char ok[(ZP_SWEEP_MAX_POINTS + 7) / 8]; /* bit p set: point p survived */
     char message[200];
 } zp_grid_result;

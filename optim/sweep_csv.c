@@ -302,7 +302,9 @@ zp_status zp_sweep_checkpoint_open(zp_sweep_checkpoint *c, int dirfd, const char
     size_t len = 0;
     long keep = -2;
     if (fd >= 0 && resume && (old = read_fd(fd, &len)) != NULL && len > 0) {
-        keep = strlen(old) == len ? read_rows(old, head, s, np, rows, done, ndone, grid, grid_done) : -1;
+        keep = strlen(old) == len
+                   ? read_rows(old, head, s, np, rows, done, ndone, grid, grid_done)
+                   : -1;
     }
     free(old);
     if (keep == -1) {
