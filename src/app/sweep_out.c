@@ -50,7 +50,7 @@ static size_t grid_summary(const zp_sweep_out *o, char *out, size_t cap) {
         return len;
     }
     zp_sweep_describe(o->s, g->nominal, at, sizeof at);
-    ADD(" %s schedule that all survive (the middle point and the grid's %d corner%s)",
+    ADD(" %s schedule that the grid's %d corner%s and its middle all survive",
         g->found ? "Fastest" : "No", g->ncorner, g->ncorner == 1 ? "" : "s");
     ADD(g->found ? ":" : " was found (the closest:");
     for (int k = 0; k < g->np; k++) {
@@ -61,8 +61,16 @@ static size_t grid_summary(const zp_sweep_out *o, char *out, size_t cap) {
         zp_sweep_describe(o->s, g->worst, at, sizeof at);
         ADD(", worst corner %s (margin %.2f deg)", at, g->worst_margin);
     }
-    ADD("%s; it keeps the limits at %d of %d points.", g->found ? "" : ")", g->survived,
+    int broken = o->s->npoint - g->survived;
+    ADD("%s; it keeps the limits at %d of %d points", g->found ? "" : ")", g->survived,
         o->s->npoint);
+    for (int p = 0, shown = 0; p < o->s->npoint && broken && broken <= 3; p++) {
+        if (!zp_grid_survived_at(g, p)) {
+            zp_sweep_describe(o->s, p, at, sizeof at);
+            ADD("%s%s", shown++ ? "; " : " (not at ", at);
+        }
+    }
+    ADD("%s.", broken && broken <= 3 ? ")" : "");
     return len;
 }
 
