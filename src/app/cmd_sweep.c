@@ -197,26 +197,25 @@ static void inject_fault(const study *st) {
 
 static void done(void *user, int p, const void *result) {
     study *st = user;
-    int bad;
-    if (p == st->s->npoint) {
+    int grid = p == st->s->npoint;
+    if (grid) {
         *st->grid_res = ((const item_result *)result)->grid;
         st->grid_done = 1;
-        bad = zp_sweep_checkpoint_add_grid(&st->cp, st->s, st->grid_res);
     } else {
         st->rows[p] = *(const zp_study_row *)result;
         st->ndone += !st->done[p];
         st->done[p] = 1;
-        bad = zp_sweep_checkpoint_add(&st->cp, st->s, p, &st->rows[p]);
-        if (!bad && st->fault_after > 0 && ++st->appended >= st->fault_after) {
-            inject_fault(st);
-        }
     }
-    if (bad && !st->cp_failed) {
+    if (!st->cp_failed && (grid ? zp_sweep_checkpoint_add_grid(&st->cp, st->s, st->grid_res)
+                                : zp_sweep_checkpoint_add(&st->cp, st->s, p, &st->rows[p]))) {
         st->cp_failed = 1;
         fprintf(stderr,
                 "\nzipopt sweep: cannot append to %s; the study goes on, but a rerun "
                 "would start afresh\n",
                 st->cp.path);
+    }
+    if (!grid && !st->cp_failed && st->fault_after > 0 && ++st->appended >= st->fault_after) {
+        inject_fault(st);
     }
     if (st->tty) {
         fprintf(stderr, "\rzipopt sweep: %d/%d points, %.1f s   ", st->ndone, st->s->npoint,
