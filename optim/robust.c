@@ -12,17 +12,17 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "estimate.h"
 #include "pool.h"
 #include "state.h"
-#include "estimate.h"
 
 #define DEG (180.0 / M_PI)
-#define SOBOL_MAX_DIM 40     /* gsl_qrng_sobol's largest dimension */
-#define ADV_POINTS 128       /* random points of the adversary's first look */
-#define ADV_POLISH 2         /* of them, the worst polished locally */
-#define ADV_EVALS 60         /* simulations per polish */
-#define STREAM_SET 0x5e7u    /* seeds of the set's shift and the adversary: streams apart from */
-#define STREAM_ADV 0xad5u    /* each other and from ZP_ROBUST_STREAM_VERIFY */
+#define SOBOL_MAX_DIM 40  /* gsl_qrng_sobol's largest dimension */
+#define ADV_POINTS 128    /* random points of the adversary's first look */
+#define ADV_POLISH 2      /* of them, the worst polished locally */
+#define ADV_EVALS 60      /* simulations per polish */
+#define STREAM_SET 0x5e7u /* seeds of the set's shift and the adversary: streams apart from */
+#define STREAM_ADV 0xad5u /* each other and from ZP_ROBUST_STREAM_VERIFY */
 
 void zp_box_from_scene(const zp_scene *sc, const zp_model *m, zp_box *b) {
     memset(b, 0, sizeof *b);
@@ -98,8 +98,7 @@ static int grow(zp_scen_set *set) {
     return 0;
 }
 
-zp_status zp_scen_set_add(zp_scen_set *set, const zp_box *b, const zp_model *nom,
-                          const double *u) {
+zp_status zp_scen_set_add(zp_scen_set *set, const zp_box *b, const zp_model *nom, const double *u) {
     if (set->n == set->cap && grow(set)) {
         return ZP_ERR_NOMEM;
     }
@@ -189,8 +188,8 @@ double zp_clopper_pearson_lower(int k, int n, double alpha) {
 }
 
 /* sched in the scenario at u, judged in full: *w filled; returns the constraint (deg) */
-static double scen_judge(const zp_objective *ob, const zp_box *b, const zp_chain *c0,
-                         zp_sim *s, zp_result *r, const zp_schedule *sched, const double *u,
+static double scen_judge(const zp_objective *ob, const zp_box *b, const zp_chain *c0, zp_sim *s,
+                         zp_result *r, const zp_schedule *sched, const double *u,
                          zp_robust_worst *w) {
     zp_scenario sc;
     zp_model m;
@@ -381,7 +380,7 @@ zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts 
 
 zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
                            const double *p, int n, unsigned long seed, int nthreads,
-                           zp_robust_check *c) {
+                           const zp_spread *sp, zp_robust_check *c) {
     zp_schedule sched = zp_objective_schedule(ob, p);
     memset(c, 0, sizeof *c);
     c->samples = n;
@@ -403,8 +402,8 @@ zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim
     zp_chain c0;
     zp_state_start(ob->m, ob->m->course, &c0);
     scen_batch sb = {ob, b, &c0, &sched, u, pw};
-    zp_pool_map(w, n, scen_job, &sb, NULL, NULL);
-    for (int i = 0; i < n; i++) {
+    zp_status st = zp_spread_map(sp, w, n, scen_job, &sb, pw, sizeof *pw, NULL, NULL);
+    for (int i = 0; !st && i < n; i++) {
         int fin = pw[i].outcome == ZP_OUTCOME_FINISHED;
         int margin = fin && pw[i].margin_deg >= (ob->m->phi_max - ob->limit) * DEG;
         int limits = fin && pw[i].excess <= 0;
@@ -421,11 +420,11 @@ zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim
     free(u);
     free(pw);
     gsl_rng_free(rng);
-    return ZP_OK;
+    return st;
 }
 
-zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_model *m,
-                          double limit, const zp_schedule *shape, const zp_sim_opts *so,
+zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_model *m, double limit,
+                          const zp_schedule *shape, const zp_sim_opts *so,
                           const zp_sim_opts *search, zp_sim_opts *fast) {
     memset(p, 0, sizeof *p);
     p->ob = (zp_objective){.m = m, .limit = limit, .t_max = so->t_max, .shape = shape};
@@ -441,14 +440,46 @@ zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_mod
     return ZP_OK;
 }
 
+/* rank 0's word to the other ranks after its search: verify this schedule, or go home */
+typedef struct answer {
+    int verify;
+    double force[ZP_SCHED_MAX_PARAMS];
+} answer;
+
+void zp_robust_release(const zp_spread *sp) {
+    answer a = {0};
+    if (zp_spread_active(sp)) {
+        sp->bcast(sp->user, &a, sizeof a);
+    }
+}
+
+/* rank 0's answer on every rank: *verify and res->force as rank 0 has them; -1: not sent */
+static int share_answer(const zp_spread *sp, int *verify, zp_search_result *res) {
+    answer a = {.verify = *verify};
+    memcpy(a.force, res->force, sizeof a.force);
+    if (sp->bcast(sp->user, &a, sizeof a)) {
+        return -1;
+    }
+    memcpy(res->force, a.force, sizeof a.force);
+    *verify = a.verify;
+    return 0;
+}
+
 zp_status zp_robust_solve(zp_robust_problem *p, const zp_scene *sc, const zp_sim_opts *fast,
-                          const double *lo, const double *hi,
-                          const zp_search_opts *o, zp_search_result *res, char *err,
-                          size_t errlen) {
-    zp_status st = zp_robust_search(&p->ob, &p->box, fast, lo, hi, o,
-                                    p->robust ? ZP_ROBUST_ROUNDS : 1, res, &p->info, err,
-                                    errlen);
-    if (st || !p->robust || res->interrupted) {
+                          const double *lo, const double *hi, const zp_search_opts *o,
+                          zp_search_result *res, char *err, size_t errlen) {
+    const zp_spread *sp = zp_spread_active(p->spread) ? p->spread : NULL;
+    zp_status st = ZP_OK;
+    if (!sp || sp->rank == 0) {
+        st = zp_robust_search(&p->ob, &p->box, fast, lo, hi, o, p->robust ? ZP_ROBUST_ROUNDS : 1,
+                              res, &p->info, err, errlen);
+    }
+    int verify = !st && p->robust && !res->interrupted;
+    if (sp && share_answer(sp, &verify, res)) {
+        snprintf(err, errlen, "the MPI ranks could not share the search's answer");
+        return ZP_ERR_IO;
+    }
+    if (!verify) {
         return st;
     }
     /* the fresh scenarios at the search's own integrator made 100x tighter: its error is then
@@ -458,11 +489,15 @@ zp_status zp_robust_solve(zp_robust_problem *p, const zp_scene *sc, const zp_sim
     to.output_dt = 0;
     to.track_loads = 0;
     st = zp_robust_verify(&p->ob, &p->box, &to, res->force, sc->verify_samples, sc->seed,
-                          o->nthreads, &p->check);
+                          o->nthreads, sp, &p->check);
     if (st) {
-        snprintf(err, errlen, "out of memory verifying the scenarios");
+        snprintf(err, errlen, "%s",
+                 st == ZP_ERR_IO ? "the MPI ranks could not exchange the verification"
+                                 : "out of memory verifying the scenarios");
     }
     return st;
 }
 
-void zp_robust_problem_free(zp_robust_problem *p) { zp_scen_set_free(&p->set); }
+void zp_robust_problem_free(zp_robust_problem *p) {
+    zp_scen_set_free(&p->set);
+}
