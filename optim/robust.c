@@ -12,17 +12,17 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "estimate.h"
 #include "pool.h"
 #include "state.h"
+#include "estimate.h"
 
 #define DEG (180.0 / M_PI)
-#define SOBOL_MAX_DIM 40  /* gsl_qrng_sobol's largest dimension */
-#define ADV_POINTS 128    /* random points of the adversary's first look */
-#define ADV_POLISH 2      /* of them, the worst polished locally */
-#define ADV_EVALS 60      /* simulations per polish */
-#define STREAM_SET 0x5e7u /* seeds of the set's shift and the adversary: streams apart from */
-#define STREAM_ADV 0xad5u /* each other and from ZP_ROBUST_STREAM_VERIFY */
+#define SOBOL_MAX_DIM 40     /* gsl_qrng_sobol's largest dimension */
+#define ADV_POINTS 128       /* random points of the adversary's first look */
+#define ADV_POLISH 2         /* of them, the worst polished locally */
+#define ADV_EVALS 60         /* simulations per polish */
+#define STREAM_SET 0x5e7u    /* seeds of the set's shift and the adversary: streams apart from */
+#define STREAM_ADV 0xad5u    /* each other and from ZP_ROBUST_STREAM_VERIFY */
 
 void zp_box_from_scene(const zp_scene *sc, const zp_model *m, zp_box *b) {
     memset(b, 0, sizeof *b);
@@ -98,7 +98,8 @@ static int grow(zp_scen_set *set) {
     return 0;
 }
 
-zp_status zp_scen_set_add(zp_scen_set *set, const zp_box *b, const zp_model *nom, const double *u) {
+zp_status zp_scen_set_add(zp_scen_set *set, const zp_box *b, const zp_model *nom,
+                          const double *u) {
     if (set->n == set->cap && grow(set)) {
         return ZP_ERR_NOMEM;
     }
@@ -188,8 +189,8 @@ double zp_clopper_pearson_lower(int k, int n, double alpha) {
 }
 
 /* sched in the scenario at u, judged in full: *w filled; returns the constraint (deg) */
-static double scen_judge(const zp_objective *ob, const zp_box *b, const zp_chain *c0, zp_sim *s,
-                         zp_result *r, const zp_schedule *sched, const double *u,
+static double scen_judge(const zp_objective *ob, const zp_box *b, const zp_chain *c0,
+                         zp_sim *s, zp_result *r, const zp_schedule *sched, const double *u,
                          zp_robust_worst *w) {
     zp_scenario sc;
     zp_model m;
@@ -423,8 +424,8 @@ zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim
     return st;
 }
 
-zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_model *m, double limit,
-                          const zp_schedule *shape, const zp_sim_opts *so,
+zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_model *m,
+                          double limit, const zp_schedule *shape, const zp_sim_opts *so,
                           const zp_sim_opts *search, zp_sim_opts *fast) {
     memset(p, 0, sizeof *p);
     p->ob = (zp_objective){.m = m, .limit = limit, .t_max = so->t_max, .shape = shape};
@@ -466,8 +467,9 @@ static int share_answer(const zp_spread *sp, int *verify, zp_search_result *res)
 }
 
 zp_status zp_robust_solve(zp_robust_problem *p, const zp_scene *sc, const zp_sim_opts *fast,
-                          const double *lo, const double *hi, const zp_search_opts *o,
-                          zp_search_result *res, char *err, size_t errlen) {
+                          const double *lo, const double *hi,
+                          const zp_search_opts *o, zp_search_result *res, char *err,
+                          size_t errlen) {
     const zp_spread *sp = zp_spread_active(p->spread) ? p->spread : NULL;
     zp_status st = ZP_OK;
     if (!sp || sp->rank == 0) {
@@ -498,6 +500,4 @@ zp_status zp_robust_solve(zp_robust_problem *p, const zp_scene *sc, const zp_sim
     return st;
 }
 
-void zp_robust_problem_free(zp_robust_problem *p) {
-    zp_scen_set_free(&p->set);
-}
+void zp_robust_problem_free(zp_robust_problem *p) { zp_scen_set_free(&p->set); }

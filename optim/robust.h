@@ -10,12 +10,12 @@
 /* The [robust] ranges as a box [-1, 1]^d: one coordinate per varied quantity. */
 typedef struct zp_box {
     int d;
-    int nforce;         /* sections with a force coordinate (the first nforce), 0: none */
-    double force_error; /* share, u = 1 scales a force by 1 + force_error */
-    int dim[4];         /* coordinate of mass, length, trolley, damping; -1: not varied */
-    double range[4][2]; /* their factors at u = -1 and u = +1 */
-    int theta0;         /* first start-angle coordinate (one per link), -1: none */
-    double theta_max;   /* rad */
+    int nforce;           /* sections with a force coordinate (the first nforce), 0: none */
+    double force_error;   /* share, u = 1 scales a force by 1 + force_error */
+    int dim[4];           /* coordinate of mass, length, trolley, damping; -1: not varied */
+    double range[4][2];   /* their factors at u = -1 and u = +1 */
+    int theta0;           /* first start-angle coordinate (one per link), -1: none */
+    double theta_max;     /* rad */
     int nlink;
 } zp_box;
 
@@ -26,14 +26,14 @@ void zp_box_scenario(const zp_box *b, const double *u, zp_scenario *s);
 /* The scenarios every candidate is held to, with their derived models and starts. */
 typedef struct zp_scen_set {
     int n, cap;
-    int ncorner;     /* the first ncorner are corners of the box */
-    double *u;       /* owned, cap x ZP_BOX_MAX: each scenario's point */
-    zp_scenario *sc; /* owned, cap */
-    zp_model *m;     /* owned, cap: sharing the nominal model's course */
-    zp_chain *start; /* owned, cap */
-    int *order;      /* owned, n: the order of evaluation, worst first */
-    long *fails;     /* owned, cap: candidates each scenario stopped, for the order */
-    long runs;       /* scenario simulations so far (the search counts candidates) */
+    int ncorner;       /* the first ncorner are corners of the box */
+    double *u;         /* owned, cap x ZP_BOX_MAX: each scenario's point */
+    zp_scenario *sc;   /* owned, cap */
+    zp_model *m;       /* owned, cap: sharing the nominal model's course */
+    zp_chain *start;   /* owned, cap */
+    int *order;        /* owned, n: the order of evaluation, worst first */
+    long *fails;       /* owned, cap: candidates each scenario stopped, for the order */
+    long runs;         /* scenario simulations so far (the search counts candidates) */
 } zp_scen_set;
 
 #define ZP_ROBUST_STREAM_VERIFY 0x7e1fUL
@@ -44,7 +44,8 @@ typedef struct zp_scen_set {
    shifted by a seeded random vector. ZP_OK or ZP_ERR_NOMEM. */
 zp_status zp_scen_set_build(zp_scen_set *set, const zp_box *b, const zp_model *nom, int samples,
                             unsigned long seed);
-zp_status zp_scen_set_add(zp_scen_set *set, const zp_box *b, const zp_model *nom, const double *u);
+zp_status zp_scen_set_add(zp_scen_set *set, const zp_box *b, const zp_model *nom,
+                          const double *u);
 /* Sorts the order by the scenarios' fail counts so far (most first; ties by index). */
 void zp_scen_set_reorder(zp_scen_set *set);
 void zp_scen_set_free(zp_scen_set *set);
@@ -52,29 +53,29 @@ void zp_scen_set_free(zp_scen_set *set);
 /* The answer on fresh random scenarios (a stream apart from the set's). */
 typedef struct zp_robust_check {
     int samples;
-    int survived;            /* finished alive */
-    int margin_kept;         /* finished with the margin kept */
-    int limits_kept;         /* finished with every [limits] value kept */
-    int all_kept;            /* both: survivable (MODEL.md) */
-    double lower_95;         /* 95 % lower confidence bound of P(survivable), Clopper-Pearson */
+    int survived;    /* finished alive */
+    int margin_kept; /* finished with the margin kept */
+    int limits_kept; /* finished with every [limits] value kept */
+    int all_kept;    /* both: survivable (MODEL.md) */
+    double lower_95; /* 95 % lower confidence bound of P(survivable), Clopper-Pearson */
     double worst_margin_deg; /* smallest margin over the finishing scenarios */
 } zp_robust_check;
 
 /* The worst scenario found for a schedule, and what limited it. */
 typedef struct zp_robust_worst {
     double u[ZP_BOX_MAX];
-    double cons; /* deg, the constraint there (> 0: broken) */
+    double cons;      /* deg, the constraint there (> 0: broken) */
     double margin_deg;
-    int outcome;   /* zp_outcome */
-    int joint;     /* 1-based joint with the largest angle */
-    int limit;     /* zp_limit_id with the largest excess, -1: none set */
-    double excess; /* that excess, reached / limit - 1 (> 0: broken; -1: none set) */
+    int outcome;      /* zp_outcome */
+    int joint;        /* 1-based joint with the largest angle */
+    int limit;        /* zp_limit_id with the largest excess, -1: none set */
+    double excess;    /* that excess, reached / limit - 1 (> 0: broken; -1: none set) */
 } zp_robust_worst;
 
 typedef struct zp_robust_info {
-    int rounds;            /* searches run (1 + scenarios added by the adversary) */
-    int added;             /* scenarios the adversary added */
-    long sims;             /* simulations of the adversary */
+    int rounds;        /* searches run (1 + scenarios added by the adversary) */
+    int added;         /* scenarios the adversary added */
+    long sims;         /* simulations of the adversary */
     zp_robust_worst worst; /* of the answer, from the last adversarial search */
 } zp_robust_info;
 
@@ -86,11 +87,11 @@ zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts 
                            int max_rounds, zp_search_result *res, zp_robust_info *info, char *err,
                            size_t errlen);
 /* The schedule of parameters p checked on n fresh scenarios of b with workspaces from so (the
-   caller passes the tighter verification tolerance); nthreads 0: OpenMP's default. Scenario i is
-   the point of coordinates 2 U - 1, U the next b->d uniforms of gsl_rng_mt19937 seeded with seed ^
-   ZP_ROBUST_STREAM_VERIFY (a stream apart from the set's and the adversary's). With sp (may be
-   NULL) every rank calls it alike, runs its share of the scenarios and ends with the same c, bit
-   for bit, as one process alone. ZP_OK, ZP_ERR_NOMEM or ZP_ERR_IO (the exchange). */
+   caller passes the tighter verification tolerance); nthreads 0: OpenMP's default. Scenario i is the point of
+   coordinates 2 U - 1, U the next b->d uniforms of gsl_rng_mt19937 seeded with
+   seed ^ ZP_ROBUST_STREAM_VERIFY (a stream apart from the set's and the adversary's). With sp
+   (may be NULL) every rank calls it alike, runs its share of the scenarios and ends with the
+   same c, bit for bit, as one process alone. ZP_OK, ZP_ERR_NOMEM or ZP_ERR_IO (the exchange). */
 zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
                            const double *p, int n, unsigned long seed, int nthreads,
                            const zp_spread *sp, zp_robust_check *c);
@@ -98,7 +99,7 @@ zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim
    the scene has [robust] ranges), the box and the set, then what the robust search found. */
 typedef struct zp_robust_problem {
     zp_objective ob;
-    int robust; /* the scene has [robust] ranges: ob.set = &set */
+    int robust;          /* the scene has [robust] ranges: ob.set = &set */
     zp_box box;
     zp_scen_set set;
     zp_robust_info info;
@@ -113,8 +114,8 @@ typedef struct zp_robust_problem {
 /* p for sc and m: the objective (limit: rad, the largest joint angle allowed; shape: the
    schedule kind the parameters fill; t_max of the [solver] options so), and fast = search (the
    search's runs) with exact load peaks when a limit needs them. ZP_OK or ZP_ERR_NOMEM. */
-zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_model *m, double limit,
-                          const zp_schedule *shape, const zp_sim_opts *so,
+zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_model *m,
+                          double limit, const zp_schedule *shape, const zp_sim_opts *so,
                           const zp_sim_opts *search, zp_sim_opts *fast);
 /* The (robust) search over the box [lo[k], hi[k]] (one per parameter) with the adversary,
    then, unless interrupted, the answer verified on sc->verify_samples fresh scenarios at the
@@ -122,8 +123,9 @@ zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_mod
    every rank calls it: rank 0 searches; the others get its answer (res->force only) and their
    share of the verification, and end with the same p->check. */
 zp_status zp_robust_solve(zp_robust_problem *p, const zp_scene *sc, const zp_sim_opts *fast,
-                          const double *lo, const double *hi, const zp_search_opts *o,
-                          zp_search_result *res, char *err, size_t errlen);
+                          const double *lo, const double *hi,
+                          const zp_search_opts *o, zp_search_result *res, char *err,
+                          size_t errlen);
 /* Rank 0 stopping before zp_robust_solve sends the other ranks of sp (NULL: none) home. */
 void zp_robust_release(const zp_spread *sp);
 void zp_robust_problem_free(zp_robust_problem *p);

@@ -157,10 +157,10 @@ typedef struct progress_ctx {
     const zp_schedule *shape; /* the kind and bounds the search's parameters fill */
     zp_tx *tx;
     const zp_search_progress *p; /* the improvement being checkpointed */
-    int tty;                     /* stderr is a terminal: show the progress line */
-    int shown;                   /* a progress line is on screen */
-    struct timespec t0;          /* start of the current phase */
-    double last;                 /* s into it at the last line shown */
+    int tty;      /* stderr is a terminal: show the progress line */
+    int shown;    /* a progress line is on screen */
+    struct timespec t0; /* start of the current phase */
+    double last;  /* s into it at the last line shown */
 } progress_ctx;
 
 static void phase_start(progress_ctx *c, const char *what) {
@@ -175,10 +175,8 @@ static void phase_start(progress_ctx *c, const char *what) {
 static void write_checkpoint(FILE *f, void *user) {
     const progress_ctx *c = user;
     char note[160];
-    snprintf(note, sizeof note,
-             "search checkpoint: best so far, finish %.6f s after %ld "
-             "simulations",
-             c->p->time, c->p->evals);
+    snprintf(note, sizeof note, "search checkpoint: best so far, finish %.6f s after %ld "
+             "simulations", c->p->time, c->p->evals);
     zp_schedule best = zp_schedule_with(c->shape, c->p->force);
     zp_report_write_schedule(f, c->sc, &best, note);
 }
@@ -196,10 +194,8 @@ static void on_progress(void *user, const zp_search_progress *p, int improved) {
     if (c->tty) {
         /* the budget left at the rate so far: an upper bound, as a round may converge first */
         double rate = p->evals / fmax(p->wall_s, 1e-9);
-        fprintf(stderr,
-                "\rsearch round %d, %s: %ld of %ld simulations, %.0f/s, best %s%.4f s, "
-                "at most %.0f s left   ",
-                p->round + 1, p->phase, p->evals, p->budget, rate,
+        fprintf(stderr, "\rsearch round %d, %s: %ld of %ld simulations, %.0f/s, best %s%.4f s, "
+                "at most %.0f s left   ", p->round + 1, p->phase, p->evals, p->budget, rate,
                 p->found ? "" : "(none survives) ", p->found ? p->time : 0.0,
                 (p->budget - p->evals) / fmax(rate, 1e-9));
         c->shown = 1;
@@ -232,12 +228,11 @@ static int write_outputs(zp_tx *t, const zp_report *r, zp_sim *best_sim) {
         return -1;
     }
     zp_report_write_md(md, r);
-    snprintf(note, sizeof note,
-             "%s of the search%s: %s, %.6f s; rerun with zipopt "
+    snprintf(note, sizeof note, "%s of the search%s: %s, %.6f s; rerun with zipopt "
              "simulate SCENE.ini --schedule this-file",
              r->res->found ? "best schedule" : "CLOSEST CANDIDATE (nothing met the constraints)",
-             r->res->interrupted ? " (interrupted)" : "", zp_sim_outcome_name(r->v->run->outcome),
-             r->v->run->time);
+             r->res->interrupted ? " (interrupted)" : "",
+             zp_sim_outcome_name(r->v->run->outcome), r->v->run->time);
     zp_schedule best = zp_schedule_with(r->shape, r->res->force);
     zp_report_write_schedule(ini, r->sc, &best, note);
     zp_report_write_json(js, r);
@@ -296,14 +291,14 @@ static void print_summary(const zp_report *r) {
     } else {
         printf("best constant push: none found that keeps the margin\n");
     }
-    printf("search: %s, %ld simulations in %.2f s on %d threads\n", r->algo, s->evals, s->wall_s,
-           s->nthreads);
+    printf("search: %s, %ld simulations in %.2f s on %d threads\n", r->algo, s->evals,
+           s->wall_s, s->nthreads);
     if (r->box) {
         const zp_robust_check *c = r->check;
         printf("robust: held to %d scenarios (%d added by the adversary); on %d fresh ones %d "
                "finished, %d kept the margin, %d every limit: P(survivable) >= %.4f (95 %%)\n",
-               r->set->n, r->rinfo->added, c->samples, c->survived, c->margin_kept, c->limits_kept,
-               c->lower_95);
+               r->set->n, r->rinfo->added, c->samples, c->survived, c->margin_kept,
+               c->limits_kept, c->lower_95);
     }
     char conv[512];
     zp_report_convergence(conv, sizeof conv, s);
@@ -350,17 +345,13 @@ static int search(int argc, char **argv, const zp_spread *sp) {
     }
     progress_ctx pc = {.sc = sc, .shape = &st.sched, .tx = &tx, .tty = isatty(STDERR_FILENO)};
     zp_search_opts o = {.algo = a.algo ? zp_search_algo_find(a.algo) : 0,
-                        .max_evals = st.max_evals,
-                        .max_time = a.max_time,
-                        .seed = st.seed,
-                        .stop = &interrupted,
-                        .progress = on_progress,
-                        .user = &pc};
+                        .max_evals = st.max_evals, .max_time = a.max_time, .seed = st.seed,
+                        .stop = &interrupted, .progress = on_progress, .user = &pc};
     static zp_search_result res;
     char err[512] = "";
     pb.spread = sp;
-    zp_status rc =
-        zp_robust_solve(&pb, sc, &fast, st.sched.lo, st.sched.hi, &o, &res, err, sizeof err);
+    zp_status rc = zp_robust_solve(&pb, sc, &fast, st.sched.lo, st.sched.hi, &o, &res,
+                                   err, sizeof err);
     int status = ZP_EXIT_FAIL;
     zp_sim *best_sim = NULL, *study_sim = NULL;
     zp_verify v = {0};
@@ -409,27 +400,11 @@ static int search(int argc, char **argv, const zp_spread *sp) {
     }
     int drawn = a.no_plot ? 0 : figures(&tx, m, sc, &st.sched, &res, &v, best_sim);
     int robust = pb.robust;
-    zp_report r = {sc,
-                   m,
-                   &res,
-                   &v,
-                   best_sim,
-                   &study,
-                   STUDY_FORCE,
-                   zp_search_algo_get(o.algo)->name,
-                   zp_method_get(st.sim.method)->name,
-                   a.scene,
-                   tx.dir,
-                   drawn > 0,
-                   &fast,
-                   &solver,
-                   &st.sched,
-                   st.seed,
-                   st.max_evals,
-                   .lim = &pb.ob.lim,
-                   .box = robust ? &pb.box : NULL,
-                   .set = robust ? &pb.set : NULL,
-                   .rinfo = robust ? &pb.info : NULL,
+    zp_report r = {sc, m, &res, &v, best_sim, &study, STUDY_FORCE,
+                   zp_search_algo_get(o.algo)->name, zp_method_get(st.sim.method)->name, a.scene,
+                   tx.dir, drawn > 0, &fast, &solver, &st.sched, st.seed, st.max_evals,
+                   .lim = &pb.ob.lim, .box = robust ? &pb.box : NULL,
+                   .set = robust ? &pb.set : NULL, .rinfo = robust ? &pb.info : NULL,
                    .check = robust ? &pb.check : NULL};
     if (drawn < 0 || write_outputs(&tx, &r, best_sim) || zp_cli_out_commit(&tx, "")) {
         goto done;
