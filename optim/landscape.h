@@ -12,10 +12,10 @@ typedef struct zp_landscape_point {
     int failed; /* 1: the integrator gave up (ZP_ERR_NUMERIC); the rest is unset */
     zp_outcome outcome;
     zp_stall stall;
-    double time;                    /* s: finish, death or stall */
-    double x;                       /* m, trolley x then */
-    int died_link;                  /* 1-based, 0 when nobody died */
-    double max_rel_angle;           /* rad, largest |relative joint angle| over every joint */
+    double time;          /* s: finish, death or stall */
+    double x;             /* m, trolley x then */
+    int died_link;        /* 1-based, 0 when nobody died */
+    double max_rel_angle; /* rad, largest |relative joint angle| over every joint */
     double reached[ZP_LIMIT_COUNT]; /* what the run reached of each [limits] value */
 } zp_landscape_point;
 

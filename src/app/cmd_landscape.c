@@ -173,7 +173,8 @@ static void write_point(FILE *f, const zp_landscape_point *p, int kept) {
             p->time, p->x, p->died_link, p->max_rel_angle * 180 / M_PI, kept);
 }
 
-static const char *result_header = "outcome,stall_reason,time,x,died_link,max_rel_angle_deg,kept";
+static const char *result_header =
+    "outcome,stall_reason,time,x,died_link,max_rel_angle_deg,kept";
 
 /* one window, points i..j: listed as the points it is, since pushes between two sampled
    points were never run */
