@@ -17,10 +17,8 @@ static int run(const char *cmd) {
 }
 
 int main(void) {
-    const char *mpirun = ZP_MPIEXEC;
-    if (!*mpirun || access(mpirun, X_OK)) {
-        printf("SKIP: zipopt is built without MPI or mpirun is missing (install openmpi-bin and "
-               "libopenmpi-dev, then rebuild)\n");
+    const char *mpirun = tu_mpirun();
+    if (!mpirun) {
         return 77;
     }
     char dir[] = "/tmp/zp_sweep_mpiXXXXXX", cmd[4096], path[600];
