@@ -5,7 +5,7 @@
 # efficiency of each (against the first count), and checks that every run's sweep.csv equals
 # the one-process file bit for bit.
 #   usage: bench/sweep_scaling.sh [RANKS..]   (default: 1 2; e.g. 1 2 4 8 16 on a big machine)
-#   env:   ZIPOPT   the binary (default build/zipopt)
+#   env:   ZIPOPT   the binary (default: zipopt on PATH, else build/zipopt)
 #          RUN      search (default) or simulate
 #          EVALS    the search's budget per point ([optimize] max_evals; default the seed's 5000)
 #          THREADS  OpenMP threads per rank (default 1: each rank on one core)
@@ -15,7 +15,7 @@
 # Writes out/bench/sweep_scaling/scaling.csv (ranks, wall_s, cpu_s, speedup, efficiency).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-zipopt=${ZIPOPT:-build/zipopt}
+zipopt=${ZIPOPT:-$(command -v zipopt || echo build/zipopt)}
 run=${RUN:-search}
 out=out/bench/sweep_scaling
 ranks=("$@")
@@ -35,8 +35,9 @@ read -r -a mpi <<<"${MPIRUN_ARGS:---oversubscribe}"
 
 # one study: "wall_s cpu_s" (the CPU seconds of every process it started)
 timed() {
-  /usr/bin/time -f "%e %U %S" -o "$out/time.txt" "$@" >/dev/null
-  awk '{ print $1, $2 + $3 }' "$out/time.txt"
+  local TIMEFORMAT='%R %U %S'
+  { time "$@" >/dev/null; } 2>"$out/time.txt"
+  awk 'END { print $1, $2 + $3 }' "$out/time.txt"
 }
 # the reference: one process, no mpirun; every MPI run must give its sweep.csv bit for bit
 read -r w0 c0 < <(timed "$zipopt" sweep "$scene" "${vary[@]}" --run "$run" --out "$out/plain")
