@@ -419,7 +419,7 @@ zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts 
 
 zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
                            const double *p, int n, unsigned long seed, int nthreads,
-                           zp_robust_check *c) {
+                           const zp_spread *sp, zp_robust_check *c) {
     zp_schedule sched = zp_objective_schedule(ob, p);
     memset(c, 0, sizeof *c);
     c->samples = n;
@@ -441,8 +441,8 @@ zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim
     zp_chain c0;
     zp_state_start(ob->m, ob->m->course, &c0);
     scen_batch sb = {ob, b, &c0, &sched, u, pw};
-    zp_pool_map(w, n, scen_job, &sb, NULL, NULL);
-    for (int i = 0; i < n; i++) {
+    zp_status st = zp_spread_map(sp, w, n, scen_job, &sb, pw, sizeof *pw, NULL, NULL);
+    for (int i = 0; !st && i < n; i++) {
         int fin = pw[i].outcome == ZP_OUTCOME_FINISHED;
         int margin = fin && pw[i].margin_deg >= (ob->m->phi_max - ob->limit) * DEG;
         int limits = fin && pw[i].excess <= 0;
@@ -459,7 +459,7 @@ zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim
     free(u);
     free(pw);
     gsl_rng_free(rng);
-    return ZP_OK;
+    return st;
 }
 
 zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_model *m,
@@ -479,14 +479,47 @@ zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_mod
     return ZP_OK;
 }
 
+/* rank 0's word to the other ranks after its search: verify this schedule, or go home */
+typedef struct answer {
+    int verify;
+    double force[ZP_SCHED_MAX_PARAMS];
+} answer;
+
+void zp_robust_release(const zp_spread *sp) {
+    answer a = {0};
+    if (zp_spread_active(sp)) {
+        sp->bcast(sp->user, &a, sizeof a);
+    }
+}
+
+/* rank 0's answer on every rank: *verify and res->force as rank 0 has them; -1: not sent */
+static int share_answer(const zp_spread *sp, int *verify, zp_search_result *res) {
+    answer a = {.verify = *verify};
+    memcpy(a.force, res->force, sizeof a.force);
+    if (sp->bcast(sp->user, &a, sizeof a)) {
+        return -1;
+    }
+    memcpy(res->force, a.force, sizeof a.force);
+    *verify = a.verify;
+    return 0;
+}
+
 zp_status zp_robust_solve(zp_robust_problem *p, const zp_scene *sc, const zp_sim_opts *fast,
                           const double *lo, const double *hi,
                           const zp_search_opts *o, zp_search_result *res, char *err,
                           size_t errlen) {
-    zp_status st = zp_robust_search(&p->ob, &p->box, fast, lo, hi, o,
-                                    p->robust ? ZP_ROBUST_ROUNDS : 1, res, &p->info, err,
-                                    errlen);
-    if (st || !p->robust || res->interrupted) {
+    const zp_spread *sp = zp_spread_active(p->spread) ? p->spread : NULL;
+    zp_status st = ZP_OK;
+    if (!sp || sp->rank == 0) {
+        st = zp_robust_search(&p->ob, &p->box, fast, lo, hi, o, p->robust ? ZP_ROBUST_ROUNDS : 1,
+                              res, &p->info, err, errlen);
+    }
+    int verify = !st && p->robust && !res->interrupted;
+    if (sp && share_answer(sp, &verify, res)) {
+        snprintf(err, errlen, "the MPI ranks could not share the search's answer");
+        return ZP_ERR_IO;
+    }
+    if (!verify) {
         return st;
     }
     /* the fresh scenarios at the search's own integrator made 100x tighter: its error is then
@@ -496,9 +529,11 @@ zp_status zp_robust_solve(zp_robust_problem *p, const zp_scene *sc, const zp_sim
     to.output_dt = 0;
     to.track_loads = 0;
     st = zp_robust_verify(&p->ob, &p->box, &to, res->force, sc->verify_samples, sc->seed,
-                          o->nthreads, &p->check);
+                          o->nthreads, sp, &p->check);
     if (st) {
-        snprintf(err, errlen, "out of memory verifying the scenarios");
+        snprintf(err, errlen, "%s",
+                 st == ZP_ERR_IO ? "the MPI ranks could not exchange the verification"
+                                 : "out of memory verifying the scenarios");
     }
     return st;
 }

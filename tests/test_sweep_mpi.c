@@ -102,10 +102,8 @@ static void stopped(const char *scene) {
 }
 
 int main(void) {
-    const char *mpirun = ZP_MPIEXEC;
-    if (!*mpirun || access(mpirun, X_OK)) {
-        printf("SKIP: zipopt is built without MPI or mpirun is missing (install openmpi-bin and "
-               "libopenmpi-dev, then rebuild)\n");
+    const char *mpirun = tu_mpirun();
+    if (!mpirun) {
         return 77;
     }
     char cmd[4096], path[600];
