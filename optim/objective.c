@@ -80,11 +80,12 @@ void zp_objective_eval(const zp_objective *ob, zp_sim *s, const double *p, zp_ev
         zp_scen_set *set = ob->set;
         for (int i = 0; i < set->n; i++) {
             int j = set->order[i];
+            const zp_objective *oj = set->judge && set->judge[j].m ? &set->judge[j] : ob;
             zp_eval ej;
             in = (zp_input){.sched = &sched, .force_scale = set->sc[j].force,
                             .start = &set->start[j]};
-            zp_objective_eval_run(ob, &set->m[j], s, &in, &ej, r);
-            double cons = zp_objective_scenario_cons(ob, &ej);
+            zp_objective_eval_run(oj, &set->m[j], s, &in, &ej, r);
+            double cons = zp_objective_scenario_cons(oj, &ej);
             e->cons = fmax(e->cons, cons);
 #pragma omp atomic
             set->runs++;

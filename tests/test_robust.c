@@ -218,7 +218,7 @@ static void monotone(void) {
     zp_sim_opts tight = tu_opts(&sc, 1e-10);
     zp_robust_check c;
     const int n = 300;
-    CHECK(zp_robust_verify(&ob, &b, &tight, &F, n, 7, 2, &c) == ZP_OK);
+    CHECK(zp_robust_verify(&ob, &b, &tight, &F, n, 7, 2, NULL, &c) == ZP_OK);
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
     gsl_rng_set(rng, 7 ^ ZP_ROBUST_STREAM_VERIFY);
     int fin = 0, kept = 0;
