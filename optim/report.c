@@ -305,8 +305,9 @@ static void md_search(FILE *f, const zp_report *r) {
             r->solver->rtol, r->solver->atol, ZP_ESTIMATE_FACTOR);
     if (r->acc) {
         const zp_accuracy *a = r->acc;
-        fprintf(f, "- accuracy: %.2g s requested ([solver] accuracy: method and rtol from the "
-                   "work-precision table), %.2g s met%s, by %s at rtol %g after %d rerun%s\n",
+        fprintf(f,
+                "- accuracy: %.2g s requested ([solver] accuracy: method and rtol from the "
+                "work-precision table), %.2g s met%s, by %s at rtol %g after %d rerun%s\n",
                 a->requested, a->met, a->ok ? "" : " - NOT MET", zp_method_get(a->method)->name,
                 a->rtol, a->reruns, a->reruns == 1 ? "" : "s");
     }

@@ -174,15 +174,21 @@ zp_status zp_verify_finish(const zp_objective *ob, const zp_sim_opts *so, const 
     fast.track_loads = 0;
     zp_schedule sched = zp_objective_schedule(ob, force);
     zp_input in = {.sched = &sched};
-    check_batch b = {ob, force, nrobust > 0 ? nsec : 0, ntot, zp_sim_create(m, &to), &in, v,
-                     ZP_OK, malloc(sizeof *b.pf * (ntot + 1) * nsec),
-                     malloc(sizeof *b.pe * (ntot + 1)), calloc(nsec, sizeof *b.kill)};
+    check_batch b = {.ob = ob,
+                     .force = force,
+                     .nkill = nrobust > 0 ? nsec : 0,
+                     .ntot = ntot,
+                     .tight_sim = zp_sim_create(m, &to),
+                     .in = &in,
+                     .v = v};
+    b.pf = malloc(sizeof *b.pf * (ntot + 1) * nsec);
+    b.pe = malloc(sizeof *b.pe * (ntot + 1));
+    b.kill = calloc(nsec, sizeof *b.kill);
     /* without robustness the tighter run alone: no pool of workspaces for one job */
     zp_pool *pool = nrobust > 0 ? zp_pool_create(m, &fast, nthreads) : NULL;
     gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
-    zp_status ret = b.tight_sim && b.pf && b.pe && b.kill && (pool || !nrobust) && g
-                        ? ZP_OK
-                        : ZP_ERR_NOMEM;
+    zp_status ret =
+        b.tight_sim && b.pf && b.pe && b.kill && (pool || !nrobust) && g ? ZP_OK : ZP_ERR_NOMEM;
     if (ret == ZP_OK && pool) {
         perturb(force, nsec, seed, nrobust, b.pf, g);
         zp_pool_map(pool, b.nkill + 1 + ntot, check_job, &b, progress, user);
@@ -266,8 +272,8 @@ zp_status zp_verify_accuracy(const zp_objective *ob, const zp_sim_opts *so, cons
     *answer = *so;
     double met = fabs(v->run->time - v->tight->time);
     if (v->run->outcome == v->tight->outcome && met <= acc) {
-        *a = (zp_accuracy){.requested = acc, .met = met, .ok = 1, .method = so->method,
-                           .rtol = so->rtol};
+        *a = (zp_accuracy){
+            .requested = acc, .met = met, .ok = 1, .method = so->method, .rtol = so->rtol};
         return ZP_OK;
     }
     zp_schedule sched = zp_objective_schedule(ob, force);

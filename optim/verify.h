@@ -41,8 +41,8 @@ zp_status zp_verify_begin(const zp_objective *ob, const zp_sim_opts *so, const d
 zp_status zp_verify_finish(const zp_objective *ob, const zp_sim_opts *so, const double *force,
                            unsigned long seed, int nrobust, int nthreads, zp_verify *v,
                            zp_pool_done progress, void *user, char *err, size_t errlen);
-/* Both steps: checks force (N per section) with fresh workspaces from so; trajectory rows of v->run stay
-   in *sim_out (owned by the caller, freed with zp_sim_free). nrobust = 0 skips robustness;
+/* Both steps: checks force (N per section) with fresh workspaces from so; trajectory rows of v->run
+   stay in *sim_out (owned by the caller, freed with zp_sim_free). nrobust = 0 skips robustness;
    progress(user, done, total) after each robustness job (may be NULL). Returns ZP_OK, or
    ZP_ERR_NUMERIC / ZP_ERR_NOMEM with why in err. */
 zp_status zp_verify_run(const zp_objective *ob, const zp_sim_opts *so, const double *force,

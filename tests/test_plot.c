@@ -535,8 +535,9 @@ static void test_gnuplot_groups(void) {
             FILE *f = zp_tx_open(&t, name[i], e, sizeof e);
             CHECK(f != NULL);
             if (f) {
-                fprintf(f, "if (exists('leak')) exit status 3\nleak = %d\n%s"
-                           "set print 's%d.txt'\nprint 'drawn'\nunset print\n",
+                fprintf(f,
+                        "if (exists('leak')) exit status 3\nleak = %d\n%s"
+                        "set print 's%d.txt'\nprint 'drawn'\nunset print\n",
                         i, i == bad ? "plot no_such_variable_here\n" : "", i);
             }
         }

@@ -117,8 +117,7 @@ static void test_accuracy(void) {
         double first = fabs(v.run->time - v.tight->time);
         zp_sim_opts got;
         zp_accuracy a;
-        CHECK(zp_verify_accuracy(&ob, &o, answer, acc, &s, &v, &got, &a, err, sizeof err) ==
-              ZP_OK);
+        CHECK(zp_verify_accuracy(&ob, &o, answer, acc, &s, &v, &got, &a, err, sizeof err) == ZP_OK);
         CHECK(a.ok && a.met <= acc && a.requested == acc && a.method == o.method);
         CHECK(fabs(v.run->time - t_ref) <= acc);
         CHECK(got.rtol == a.rtol && got.output_dt == o.output_dt);

@@ -243,10 +243,9 @@ static int write_outputs(zp_tx *t, const zp_report *r, zp_sim *best_sim) {
 }
 
 /* the best run's figures into the transaction, started: 0, or -1 failed (said on stderr) */
-static int figures_start(zp_tx *t, const zp_model *m, const zp_scene *sc,
-                         const zp_schedule *shape, const zp_search_result *res,
-                         const zp_verify *v, const zp_sim *best_sim, int procs,
-                         zp_gnuplot_job *job, zp_plot_info *info) {
+static int figures_start(zp_tx *t, const zp_model *m, const zp_scene *sc, const zp_schedule *shape,
+                         const zp_search_result *res, const zp_verify *v, const zp_sim *best_sim,
+                         int procs, zp_gnuplot_job *job, zp_plot_info *info) {
     zp_plot_opts po;
     zp_plot_opts_default(&po);
     po.procs = procs;
@@ -402,8 +401,8 @@ static int search(int argc, char **argv, const zp_spread *sp) {
     zp_sim_opts answer = solver;
     zp_accuracy acc;
     if (!rc && sc->accuracy > 0) {
-        rc = zp_verify_accuracy(&ob, &solver, res.force, sc->accuracy, &best_sim, &v, &answer,
-                                &acc, err, sizeof err);
+        rc = zp_verify_accuracy(&ob, &solver, res.force, sc->accuracy, &best_sim, &v, &answer, &acc,
+                                err, sizeof err);
     }
     if (pc.shown) {
         fputc('\n', stderr);

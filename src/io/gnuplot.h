@@ -28,12 +28,11 @@ int zp_gnuplot_cores(void);
 /* 1 when an executable named prog is on PATH. */
 int zp_gnuplot_have(const char *prog);
 /* Closes the transaction's open files, then starts gnuplot on the n scripts (names in the
-   private folder, kept by the caller until the wait) in nproc processes (0: one per core of zp_gnuplot_cores),
-   each in its own process group
-   (a Ctrl-C at the terminal is the transaction's to handle, not gnuplot's) and registered with
-   the transaction (its abort ends them). When gnuplot is not on PATH, j->missing = 1 and
-   ZP_OK. A write error or a failed start: ZP_ERR_IO with why in err; the caller then aborts
-   the transaction. */
+   private folder, kept by the caller until the wait) in nproc processes (0: one per core of
+   zp_gnuplot_cores), each in its own process group (a Ctrl-C at the terminal is the transaction's
+   to handle, not gnuplot's) and registered with the transaction (its abort ends them). When gnuplot
+   is not on PATH, j->missing = 1 and ZP_OK. A write error or a failed start: ZP_ERR_IO with why in
+   err; the caller then aborts the transaction. */
 zp_status zp_gnuplot_start(zp_tx *t, const char *const *scripts, int n, int nproc,
                            zp_gnuplot_job *j, char *err, size_t errlen);
 /* Waits for j's processes. A failing script: ZP_ERR_IO with its name and its part of the log

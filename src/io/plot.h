@@ -62,7 +62,6 @@ zp_status zp_plot_run(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_res
 zp_status zp_plot_start(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_result *r,
                         const zp_plot_opts *o, zp_plot_info *info, zp_gnuplot_job *j, char *err,
                         size_t errlen);
-zp_status zp_plot_finish(zp_tx *t, zp_gnuplot_job *j, zp_plot_info *info, char *err,
-                         size_t errlen);
+zp_status zp_plot_finish(zp_tx *t, zp_gnuplot_job *j, zp_plot_info *info, char *err, size_t errlen);
 
 #endif
