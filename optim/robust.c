@@ -4,6 +4,7 @@
 #include "robust.h"
 
 #include <gsl/gsl_cdf.h>
+#include <gsl/gsl_roots.h>
 #include <gsl/gsl_qrng.h>
 #include <gsl/gsl_rng.h>
 #include <math.h>
@@ -222,8 +223,35 @@ void zp_scen_set_reorder(zp_scen_set *set) {
     }
 }
 
+static double beta_excess(double p, void *params) {
+    const double *a = params; /* k, n - k + 1, alpha */
+    return gsl_cdf_beta_P(p, a[0], a[1]) - a[2];
+}
+
+/* the root of I_p(k, n - k + 1) = alpha by Brent's method: gsl_cdf_beta_Pinv fails to converge
+   for large n with k near n (e.g. 1943 of 2000), while the distribution itself stays accurate */
 double zp_clopper_pearson_lower(int k, int n, double alpha) {
-    return k <= 0 ? 0 : gsl_cdf_beta_Pinv(alpha, k, n - k + 1);
+    if (k <= 0) {
+        return 0;
+    }
+    if (k >= n) {
+        return pow(alpha, 1.0 / n); /* I_p(n, 1) = p^n */
+    }
+    double a[3] = {k, n - k + 1, alpha};
+    gsl_function f = {beta_excess, a};
+    gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    double p = NAN;
+    if (s && gsl_root_fsolver_set(s, &f, 0, 1) == GSL_SUCCESS) {
+        int st = GSL_CONTINUE;
+        for (int i = 0; i < 200 && st == GSL_CONTINUE; i++) {
+            gsl_root_fsolver_iterate(s);
+            st = gsl_root_test_interval(gsl_root_fsolver_x_lower(s), gsl_root_fsolver_x_upper(s),
+                                        1e-15, 1e-13);
+        }
+        p = gsl_root_fsolver_root(s);
+    }
+    gsl_root_fsolver_free(s);
+    return p;
 }
 
 /* sched in the scenario at u, judged in full: *w filled; returns the constraint (deg) */
