@@ -2,24 +2,32 @@
    OpenMP threads, used by the search, its verification, the landscape and the brute force. */
 #include "pool.h"
 
+#include <math.h>
 #include <omp.h>
 #include <stdlib.h>
 
+#include "robust.h"
+
 struct zp_pool {
     int nw;
-    zp_sim **sim; /* owned, nw */
-    zp_result *r; /* owned, nw: large, so kept off the stack */
+    zp_sim **sim;  /* owned, nw */
+    zp_result *r;  /* owned, nw: large, so kept off the stack */
+    zp_sim **help; /* owned, nw or NULL: each thread's workspace for the scenarios it helps with */
+    zp_result *rh; /* owned, nw or NULL */
 };
 
 void zp_pool_free(zp_pool *p) {
     if (!p) {
         return;
     }
-    for (int i = 0; p->sim && i < p->nw; i++) {
-        zp_sim_free(p->sim[i]);
+    for (int i = 0; i < p->nw; i++) {
+        zp_sim_free(p->sim ? p->sim[i] : NULL);
+        zp_sim_free(p->help ? p->help[i] : NULL);
     }
     free(p->sim);
     free(p->r);
+    free(p->help);
+    free(p->rh);
     free(p);
 }
 
@@ -43,6 +51,20 @@ zp_pool *zp_pool_create(const zp_model *m, const zp_sim_opts *o, int nthreads) {
     return p;
 }
 
+int zp_pool_help(zp_pool *p, const zp_model *m, const zp_sim_opts *o) {
+    if (p->nw < 2 || p->help) {
+        return 0;
+    }
+    p->help = calloc((size_t)p->nw, sizeof *p->help);
+    p->rh = malloc(sizeof *p->rh * p->nw);
+    int ok = p->help && p->rh;
+    for (int i = 0; ok && i < p->nw; i++) {
+        p->help[i] = zp_sim_create(m, o);
+        ok = p->help[i] != NULL;
+    }
+    return ok ? 0 : -1;
+}
+
 int zp_pool_threads(const zp_pool *p) {
     return p->nw;
 }
@@ -62,6 +84,7 @@ void zp_pool_map(zp_pool *p, int n, zp_pool_job job, void *user, zp_pool_done do
 }
 
 typedef struct eval_batch {
+    zp_pool *p;
     const zp_objective *ob;
     const double *f;
     zp_eval *e;
@@ -69,11 +92,81 @@ typedef struct eval_batch {
 
 static void eval_job(void *user, int i, zp_sim *s, zp_result *r) {
     eval_batch *b = user;
-    zp_objective_eval(b->ob, s, b->f + (size_t)i * zp_objective_nparams(b->ob), &b->e[i], r);
+    zp_pool_objective_eval(b->p, b->ob, s, r, b->f + (size_t)i * zp_objective_nparams(b->ob),
+                           &b->e[i]);
 }
 
 void zp_pool_eval(zp_pool *p, const zp_objective *ob, int n, const double *f, zp_eval *e,
                   zp_pool_done done, void *done_user) {
-    eval_batch b = {ob, f, e};
+    eval_batch b = {p, ob, f, e};
     zp_pool_map(p, n, eval_job, &b, done, done_user);
+}
+
+/* A survivor's scenarios shared between its own thread and idle ones: positions are taken in
+   the set's order, one at a time, and each is run in full; a position past the first that broke
+   is moot, so it is not started once that break is known (one started before is wasted). */
+typedef struct scen_share {
+    const zp_objective *ob;
+    const zp_schedule *sched;
+    int n;        /* positions */
+    int next;     /* the next position to take */
+    int stop;     /* the first position that broke so far; n: none */
+    double *cons; /* owned, n: the constraint of each position run */
+} scen_share;
+
+static void share_work(scen_share *sh, zp_sim *s, zp_result *r) {
+    for (;;) {
+        int i, go;
+#pragma omp critical(zp_pool_share)
+        {
+            i = sh->next++;
+            go = i < sh->n && i <= sh->stop;
+        }
+        if (!go) {
+            return;
+        }
+        sh->cons[i] = zp_objective_scenario(sh->ob, i, sh->sched, s, r);
+        if (sh->cons[i] > 0) {
+#pragma omp critical(zp_pool_share)
+            sh->stop = i < sh->stop ? i : sh->stop;
+        }
+    }
+}
+
+void zp_pool_objective_eval(zp_pool *p, const zp_objective *ob, zp_sim *s, zp_result *r,
+                            const double *f, zp_eval *e) {
+    int nt = omp_get_num_threads();
+    if (!p->help || nt < 2 || nt > p->nw) {
+        zp_objective_eval(ob, s, f, e, r);
+        return;
+    }
+    zp_schedule sched = zp_objective_schedule(ob, f);
+    if (!zp_objective_eval_nominal(ob, s, &sched, e, r)) {
+        return;
+    }
+    int n = ob->set->n;
+    scen_share sh = {ob, &sched, n, 0, n, malloc(sizeof *sh.cons * n)};
+    if (!sh.cons) {
+        zp_objective_eval(ob, s, f, e, r);
+        return;
+    }
+    /* helpers for the threads idle at the batch's end; a task runs only on a thread waiting at
+       that barrier or on this one waiting below, so each uses its thread's helper workspace
+       while no other task on that thread is running */
+    for (int k = 1; k < nt; k++) {
+#pragma omp task default(none) shared(sh, p)
+        {
+            int t = omp_get_thread_num();
+            share_work(&sh, p->help[t], &p->rh[t]);
+        }
+    }
+    share_work(&sh, s, r);
+#pragma omp taskwait
+    /* the serial loop's result: the constraints folded in order up to the first break */
+    int nrun = sh.stop < n ? sh.stop + 1 : n;
+    for (int i = 0; i < nrun; i++) {
+        e->cons = fmax(e->cons, sh.cons[i]);
+    }
+    zp_objective_eval_close(ob, nrun, sh.stop < n, e);
+    free(sh.cons);
 }
