@@ -1,5 +1,6 @@
-/* The per-thread simulator pool (pool.h): the one place where schedules are shared out over
-   OpenMP threads, used by the search, its verification, the landscape and the brute force. */
+/* The per-thread simulator pool (pool.h): the one place where schedules, and a survivor's
+   scenarios, are shared out over OpenMP threads, used by the search, its verification, the
+   landscape and the brute force. */
 #include "pool.h"
 
 #include <math.h>
@@ -31,20 +32,27 @@ void zp_pool_free(zp_pool *p) {
     free(p);
 }
 
+/* n workspaces from (m, o), created one after another (the course evaluators are not
+   thread-safe), and n result buffers; 0, or -1 when out of memory (what was made is kept for
+   zp_pool_free) */
+static int create(zp_sim ***sim, zp_result **r, int n, const zp_model *m, const zp_sim_opts *o) {
+    *sim = calloc((size_t)n, sizeof **sim);
+    *r = malloc(sizeof **r * n);
+    int ok = *sim && *r;
+    for (int i = 0; ok && i < n; i++) {
+        (*sim)[i] = zp_sim_create(m, o);
+        ok = (*sim)[i] != NULL;
+    }
+    return ok ? 0 : -1;
+}
+
 zp_pool *zp_pool_create(const zp_model *m, const zp_sim_opts *o, int nthreads) {
     zp_pool *p = calloc(1, sizeof *p);
     if (!p) {
         return NULL;
     }
     p->nw = nthreads > 0 ? nthreads : omp_get_max_threads();
-    p->sim = calloc((size_t)p->nw, sizeof *p->sim);
-    p->r = malloc(sizeof *p->r * p->nw);
-    int ok = p->sim && p->r;
-    for (int i = 0; ok && i < p->nw; i++) {
-        p->sim[i] = zp_sim_create(m, o);
-        ok = p->sim[i] != NULL;
-    }
-    if (!ok) {
+    if (create(&p->sim, &p->r, p->nw, m, o)) {
         zp_pool_free(p);
         return NULL;
     }
@@ -52,17 +60,7 @@ zp_pool *zp_pool_create(const zp_model *m, const zp_sim_opts *o, int nthreads) {
 }
 
 int zp_pool_help(zp_pool *p, const zp_model *m, const zp_sim_opts *o) {
-    if (p->nw < 2 || p->help) {
-        return 0;
-    }
-    p->help = calloc((size_t)p->nw, sizeof *p->help);
-    p->rh = malloc(sizeof *p->rh * p->nw);
-    int ok = p->help && p->rh;
-    for (int i = 0; ok && i < p->nw; i++) {
-        p->help[i] = zp_sim_create(m, o);
-        ok = p->help[i] != NULL;
-    }
-    return ok ? 0 : -1;
+    return p->nw < 2 || p->help ? 0 : create(&p->help, &p->rh, p->nw, m, o);
 }
 
 int zp_pool_threads(const zp_pool *p) {

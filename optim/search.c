@@ -521,7 +521,7 @@ zp_status zp_search_warm(const zp_objective *ob, const zp_sim_opts *so, const do
     if (st == ZP_OK) {
         st = warm(&S, prev, err, errlen);
     }
-    /* the evidence of convergence stays the full search's */
+    /* the evidence of convergence stays the full search's: its polishes, what they reached */
     res->nrounds = prev->nrounds;
     res->nbasins = prev->nbasins;
     res->nreached = prev->nreached;
@@ -532,7 +532,7 @@ zp_status zp_search_warm(const zp_objective *ob, const zp_sim_opts *so, const do
     end(&S);
     res->budget_out = prev->budget_out;
     res->timed_out = prev->timed_out;
-    res->nstarts = prev->nstarts + S.npol;
+    res->nstarts = prev->nstarts;
     res->evals += prev->evals;
     res->nfeasible += prev->nfeasible;
     res->nfailed += prev->nfailed;
