@@ -32,13 +32,14 @@ static void sweep_job(void *user, int k, zp_sim *s, zp_result *r) {
 }
 
 zp_status zp_landscape_sweep(const zp_model *m, const zp_sim_opts *o, const double *force, int n,
-                             zp_landscape_point *out, zp_landscape_progress progress, void *user) {
+                             zp_landscape_point *out, zp_landscape_progress progress, void *user,
+                             const zp_spread *sp) {
     zp_pool *pool = zp_pool_create(m, o, 0);
     if (!pool) {
         return ZP_ERR_NOMEM;
     }
     sweep w = {m, force, out};
-    zp_pool_map(pool, n, sweep_job, &w, progress, user);
+    zp_status st = zp_spread_map(sp, pool, n, sweep_job, &w, out, sizeof *out, progress, user);
     zp_pool_free(pool);
-    return ZP_OK;
+    return st;
 }

@@ -5,6 +5,7 @@
 
 #include "scenario.h"
 #include "sim.h"
+#include "spread.h"
 
 /* What one schedule's run came to. */
 typedef struct zp_landscape_point {
@@ -24,8 +25,11 @@ typedef void (*zp_landscape_progress)(void *user, int done, int total);
 /* Runs n schedules (force: n rows of m->nsec values, N) with options o, on every OpenMP thread:
    one workspace per thread, created one after another before any run (libmatheval is not
    thread-safe). Fills out[n]; each point is what a single zp_sim_run of that schedule gives.
-   ZP_OK, or ZP_ERR_NOMEM with nothing run. progress may be NULL. */
+   With sp (may be NULL) every rank calls it alike: each runs its share (zp_spread_map; progress
+   counts that share) and every rank ends with all n points, the same bits as alone. ZP_OK,
+   ZP_ERR_NOMEM with nothing run, or ZP_ERR_IO when the ranks' exchange failed. */
 zp_status zp_landscape_sweep(const zp_model *m, const zp_sim_opts *o, const double *force, int n,
-                             zp_landscape_point *out, zp_landscape_progress progress, void *user);
+                             zp_landscape_point *out, zp_landscape_progress progress, void *user,
+                             const zp_spread *sp);
 
 #endif

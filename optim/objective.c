@@ -82,10 +82,11 @@ double zp_objective_scenario(const zp_objective *ob, int i, const zp_schedule *s
                              zp_result *r) {
     const zp_scen_set *set = ob->set;
     int j = set->order[i];
+    const zp_objective *oj = set->judge && set->judge[j].m ? &set->judge[j] : ob;
     zp_input in = {.sched = sched, .force_scale = set->sc[j].force, .start = &set->start[j]};
     zp_eval ej;
-    zp_objective_eval_run(ob, &set->m[j], s, &in, &ej, r);
-    return zp_objective_scenario_cons(ob, &ej);
+    zp_objective_eval_run(oj, &set->m[j], s, &in, &ej, r);
+    return zp_objective_scenario_cons(oj, &ej);
 }
 
 void zp_objective_eval_close(const zp_objective *ob, int nrun, int broke, zp_eval *e) {

@@ -4,6 +4,7 @@
 #include "robust.h"
 
 #include <gsl/gsl_cdf.h>
+#include <gsl/gsl_roots.h>
 #include <gsl/gsl_qrng.h>
 #include <gsl/gsl_rng.h>
 #include <math.h>
@@ -74,6 +75,7 @@ void zp_scen_set_free(zp_scen_set *set) {
     free(set->start);
     free(set->order);
     free(set->fails);
+    free(set->judge);
     memset(set, 0, sizeof *set);
 }
 
@@ -91,7 +93,9 @@ static int grow(zp_scen_set *set) {
     set->order = order ? order : set->order;
     long *fails = realloc(set->fails, sizeof *fails * cap);
     set->fails = fails ? fails : set->fails;
-    if (!u || !sc || !m || !st || !order || !fails) {
+    zp_objective *judge = set->judge ? realloc(set->judge, sizeof *judge * cap) : NULL;
+    set->judge = judge ? judge : set->judge;
+    if (!u || !sc || !m || !st || !order || !fails || (set->judge && !judge)) {
         return -1;
     }
     set->cap = cap;
@@ -114,6 +118,41 @@ zp_status zp_scen_set_add(zp_scen_set *set, const zp_box *b, const zp_model *nom
     memmove(set->order + 1, set->order, sizeof *set->order * j);
     set->order[0] = j;
     set->fails[j] = 0;
+    if (set->judge) {
+        set->judge[j] = (zp_objective){0}; /* the search's objective */
+    }
+    return ZP_OK;
+}
+
+zp_status zp_scen_set_add_model(zp_scen_set *set, const zp_model *m, const zp_scenario *sc,
+                                const zp_chain *start, const zp_objective *judge) {
+    if (set->n == set->cap && grow(set)) {
+        return ZP_ERR_NOMEM;
+    }
+    if (judge && !set->judge) {
+        /* the scenarios so far keep the search's objective: theirs is marked by m == NULL */
+        set->judge = calloc((size_t)set->cap, sizeof *set->judge);
+        if (!set->judge) {
+            return ZP_ERR_NOMEM;
+        }
+    }
+    int j = set->n++;
+    memset(set->u + (size_t)j * ZP_BOX_MAX, 0, sizeof *set->u * ZP_BOX_MAX);
+    set->sc[j] = *sc;
+    set->m[j] = *m;
+    if (start) {
+        set->start[j] = *start;
+    } else {
+        zp_chain c0;
+        zp_state_start(m, m->course, &c0);
+        zp_scenario_start(&c0, m->nlink, sc, &set->start[j]);
+    }
+    set->order[j] = j; /* in the order given */
+    set->fails[j] = 0;
+    if (set->judge) {
+        set->judge[j] = judge ? *judge : (zp_objective){0};
+        set->judge[j].set = NULL;
+    }
     return ZP_OK;
 }
 
@@ -184,8 +223,35 @@ void zp_scen_set_reorder(zp_scen_set *set) {
     }
 }
 
+static double beta_excess(double p, void *params) {
+    const double *a = params; /* k, n - k + 1, alpha */
+    return gsl_cdf_beta_P(p, a[0], a[1]) - a[2];
+}
+
+/* the root of I_p(k, n - k + 1) = alpha by Brent's method: gsl_cdf_beta_Pinv fails to converge
+   for large n with k near n (e.g. 1943 of 2000), while the distribution itself stays accurate */
 double zp_clopper_pearson_lower(int k, int n, double alpha) {
-    return k <= 0 ? 0 : gsl_cdf_beta_Pinv(alpha, k, n - k + 1);
+    if (k <= 0) {
+        return 0;
+    }
+    if (k >= n) {
+        return pow(alpha, 1.0 / n); /* I_p(n, 1) = p^n */
+    }
+    double a[3] = {k, n - k + 1, alpha};
+    gsl_function f = {beta_excess, a};
+    gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    double p = NAN;
+    if (s && gsl_root_fsolver_set(s, &f, 0, 1) == GSL_SUCCESS) {
+        int st = GSL_CONTINUE;
+        for (int i = 0; i < 200 && st == GSL_CONTINUE; i++) {
+            gsl_root_fsolver_iterate(s);
+            st = gsl_root_test_interval(gsl_root_fsolver_x_lower(s), gsl_root_fsolver_x_upper(s),
+                                        1e-15, 1e-13);
+        }
+        p = gsl_root_fsolver_root(s);
+    }
+    gsl_root_fsolver_free(s);
+    return p;
 }
 
 /* sched in the scenario at u, judged in full: *w filled; returns the constraint (deg) */
@@ -386,7 +452,7 @@ zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts 
 
 zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
                            const double *p, int n, unsigned long seed, int nthreads,
-                           zp_robust_check *c) {
+                           const zp_spread *sp, zp_robust_check *c) {
     zp_schedule sched = zp_objective_schedule(ob, p);
     memset(c, 0, sizeof *c);
     c->samples = n;
@@ -408,8 +474,8 @@ zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim
     zp_chain c0;
     zp_state_start(ob->m, ob->m->course, &c0);
     scen_batch sb = {ob, b, &c0, &sched, u, pw};
-    zp_pool_map(w, n, scen_job, &sb, NULL, NULL);
-    for (int i = 0; i < n; i++) {
+    zp_status st = zp_spread_map(sp, w, n, scen_job, &sb, pw, sizeof *pw, NULL, NULL);
+    for (int i = 0; !st && i < n; i++) {
         int fin = pw[i].outcome == ZP_OUTCOME_FINISHED;
         int margin = fin && pw[i].margin_deg >= (ob->m->phi_max - ob->limit) * DEG;
         int limits = fin && pw[i].excess <= 0;
@@ -426,7 +492,7 @@ zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim
     free(u);
     free(pw);
     gsl_rng_free(rng);
-    return ZP_OK;
+    return st;
 }
 
 zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_model *m,
@@ -446,14 +512,47 @@ zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_mod
     return ZP_OK;
 }
 
+/* rank 0's word to the other ranks after its search: verify this schedule, or go home */
+typedef struct answer {
+    int verify;
+    double force[ZP_SCHED_MAX_PARAMS];
+} answer;
+
+void zp_robust_release(const zp_spread *sp) {
+    answer a = {0};
+    if (zp_spread_active(sp)) {
+        sp->bcast(sp->user, &a, sizeof a);
+    }
+}
+
+/* rank 0's answer on every rank: *verify and res->force as rank 0 has them; -1: not sent */
+static int share_answer(const zp_spread *sp, int *verify, zp_search_result *res) {
+    answer a = {.verify = *verify};
+    memcpy(a.force, res->force, sizeof a.force);
+    if (sp->bcast(sp->user, &a, sizeof a)) {
+        return -1;
+    }
+    memcpy(res->force, a.force, sizeof a.force);
+    *verify = a.verify;
+    return 0;
+}
+
 zp_status zp_robust_solve(zp_robust_problem *p, const zp_scene *sc, const zp_sim_opts *fast,
                           const double *lo, const double *hi,
                           const zp_search_opts *o, zp_search_result *res, char *err,
                           size_t errlen) {
-    zp_status st = zp_robust_search(&p->ob, &p->box, fast, lo, hi, o,
-                                    p->robust ? ZP_ROBUST_ROUNDS : 1, res, &p->info, err,
-                                    errlen);
-    if (st || !p->robust || res->interrupted) {
+    const zp_spread *sp = zp_spread_active(p->spread) ? p->spread : NULL;
+    zp_status st = ZP_OK;
+    if (!sp || sp->rank == 0) {
+        st = zp_robust_search(&p->ob, &p->box, fast, lo, hi, o, p->robust ? ZP_ROBUST_ROUNDS : 1,
+                              res, &p->info, err, errlen);
+    }
+    int verify = !st && p->robust && !res->interrupted;
+    if (sp && share_answer(sp, &verify, res)) {
+        snprintf(err, errlen, "the MPI ranks could not share the search's answer");
+        return ZP_ERR_IO;
+    }
+    if (!verify) {
         return st;
     }
     /* the fresh scenarios at the search's own integrator made 100x tighter: its error is then
@@ -463,9 +562,11 @@ zp_status zp_robust_solve(zp_robust_problem *p, const zp_scene *sc, const zp_sim
     to.output_dt = 0;
     to.track_loads = 0;
     st = zp_robust_verify(&p->ob, &p->box, &to, res->force, sc->verify_samples, sc->seed,
-                          o->nthreads, &p->check);
+                          o->nthreads, sp, &p->check);
     if (st) {
-        snprintf(err, errlen, "out of memory verifying the scenarios");
+        snprintf(err, errlen, "%s",
+                 st == ZP_ERR_IO ? "the MPI ranks could not exchange the verification"
+                                 : "out of memory verifying the scenarios");
     }
     return st;
 }

@@ -5,6 +5,7 @@
 #define ZP_ROBUST_H
 
 #include "search.h"
+#include "spread.h"
 
 /* The [robust] ranges as a box [-1, 1]^d: one coordinate per varied quantity. */
 typedef struct zp_box {
@@ -32,6 +33,9 @@ typedef struct zp_scen_set {
     zp_chain *start;   /* owned, cap */
     int *order;        /* owned, n: the order of evaluation, worst first */
     long *fails;       /* owned, cap: candidates each scenario stopped, for the order */
+    zp_objective *judge; /* owned, cap, or NULL (every scenario judged by the search's
+                            objective): scenario j's own criteria (limit, t_max, [limits]) where
+                            zp_scen_set_add_model gave one, judge[j].m == NULL where not */
     long runs;         /* scenario simulations so far (the search counts candidates) */
 } zp_scen_set;
 
@@ -45,6 +49,13 @@ zp_status zp_scen_set_build(zp_scen_set *set, const zp_box *b, const zp_model *n
                             unsigned long seed);
 zp_status zp_scen_set_add(zp_scen_set *set, const zp_box *b, const zp_model *nom,
                           const double *u);
+/* Adds the scenario sc (its force factors) on the model m itself, borrowed and copied as a
+   struct (it must outlive the set and run on workspaces of the search's nominal model: the
+   same links, sections, course and effects), from start (NULL: m's own MODEL.md start turned
+   to sc's angles), judged by judge (copied; NULL: the search's objective). ZP_OK or
+   ZP_ERR_NOMEM. */
+zp_status zp_scen_set_add_model(zp_scen_set *set, const zp_model *m, const zp_scenario *sc,
+                                const zp_chain *start, const zp_objective *judge);
 /* Sorts the order by the scenarios' fail counts so far (most first; ties by index). */
 void zp_scen_set_reorder(zp_scen_set *set);
 void zp_scen_set_free(zp_scen_set *set);
@@ -89,10 +100,12 @@ zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts 
 /* The schedule of parameters p checked on n fresh scenarios of b with workspaces from so (the
    caller passes the tighter verification tolerance); nthreads 0: OpenMP's default. Scenario i is the point of
    coordinates 2 U - 1, U the next b->d uniforms of gsl_rng_mt19937 seeded with
-   seed ^ ZP_ROBUST_STREAM_VERIFY (a stream apart from the set's and the adversary's). */
+   seed ^ ZP_ROBUST_STREAM_VERIFY (a stream apart from the set's and the adversary's). With sp
+   (may be NULL) every rank calls it alike, runs its share of the scenarios and ends with the
+   same c, bit for bit, as one process alone. ZP_OK, ZP_ERR_NOMEM or ZP_ERR_IO (the exchange). */
 zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
                            const double *p, int n, unsigned long seed, int nthreads,
-                           zp_robust_check *c);
+                           const zp_spread *sp, zp_robust_check *c);
 /* A scene's problem as the search sees it: the objective (margin, limits, and the set when
    the scene has [robust] ranges), the box and the set, then what the robust search found. */
 typedef struct zp_robust_problem {
@@ -102,6 +115,9 @@ typedef struct zp_robust_problem {
     zp_scen_set set;
     zp_robust_info info;
     zp_robust_check check; /* samples 0: not verified */
+    /* NULL, or the ranks sharing the verification: rank 0 searches while the others wait
+       (without spinning), then every rank verifies its share of the scenarios */
+    const zp_spread *spread;
 } zp_robust_problem;
 
 #define ZP_ROBUST_ROUNDS 4 /* rounds at most: the adversary adds up to 3 scenarios */
@@ -114,11 +130,15 @@ zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_mod
                           const zp_sim_opts *search, zp_sim_opts *fast);
 /* The (robust) search over the box [lo[k], hi[k]] (one per parameter) with the adversary,
    then, unless interrupted, the answer verified on sc->verify_samples fresh scenarios at the
-   search's runs' tolerance (fast) made tighter as zp_estimate_tighter does. */
+   search's runs' tolerance (fast) made tighter as zp_estimate_tighter does. With p->spread
+   every rank calls it: rank 0 searches; the others get its answer (res->force only) and their
+   share of the verification, and end with the same p->check. */
 zp_status zp_robust_solve(zp_robust_problem *p, const zp_scene *sc, const zp_sim_opts *fast,
                           const double *lo, const double *hi,
                           const zp_search_opts *o, zp_search_result *res, char *err,
                           size_t errlen);
+/* Rank 0 stopping before zp_robust_solve sends the other ranks of sp (NULL: none) home. */
+void zp_robust_release(const zp_spread *sp);
 void zp_robust_problem_free(zp_robust_problem *p);
 
 /* The one-sided 95 % Clopper-Pearson lower bound of a probability with k successes in n. */

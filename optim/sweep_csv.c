@@ -12,6 +12,8 @@
 #include "out_file.h"
 
 #define NFIXED 8 /* result columns before the forces: status .. evals */
+#define LINE_MAX_BYTES 16384 /* a row or grid line is shorter (a grid line of 10000 points:
+                                2500 hex digits) */
 
 void zp_sweep_csv_header(FILE *f, const zp_sweep *s, int np) {
     fputs("point", f);
@@ -33,6 +35,16 @@ static void put_num(FILE *f, double x) {
     fprintf(f, ",%s", buf);
 }
 
+/* the last field and the line's end: the message without the characters that would break
+   the CSV line */
+static void put_message(FILE *f, const char *msg) {
+    fputc(',', f);
+    for (const char *c = msg; *c; c++) {
+        fputc(*c == ',' ? ';' : *c == '"' ? '\'' : *c == '\n' || *c == '\r' ? ' ' : *c, f);
+    }
+    fputc('\n', f);
+}
+
 void zp_sweep_csv_row(FILE *f, const zp_sweep *s, int p, const zp_study_row *r) {
     fprintf(f, "%d", p);
     for (int v = 0; v < s->nvary; v++) {
@@ -52,12 +64,7 @@ void zp_sweep_csv_row(FILE *f, const zp_sweep *s, int p, const zp_study_row *r) 
             put_num(f, r->force[k]);
         }
     }
-    /* the message without the characters that would break the CSV line */
-    fputc(',', f);
-    for (const char *c = r->message; *c; c++) {
-        fputc(*c == ',' ? ';' : *c == '"' ? '\'' : *c == '\n' || *c == '\r' ? ' ' : *c, f);
-    }
-    fputc('\n', f);
+    put_message(f, r->message);
 }
 
 static int num_field(const char *t, double *x) {
@@ -87,12 +94,10 @@ static int parse_result(char **fld, int np, zp_study_row *r) {
     return bad ? -1 : 0;
 }
 
-int zp_sweep_csv_parse(const char *line, const zp_sweep *s, int np, int *p, zp_study_row *r) {
-    enum { MAXF = 1 + ZP_SWEEP_MAX_VARY + NFIXED + ZP_SCHED_MAX_PARAMS + 1 };
-    char buf[8192], *fld[MAXF];
+/* buf cut at its commas into at most maxf fields; their count */
+static int split(char *buf, char **fld, int maxf) {
     int n = 0;
-    snprintf(buf, sizeof buf, "%s", line);
-    for (char *c = buf; n < MAXF; c++) {
+    for (char *c = buf; n < maxf; c++) {
         fld[n++] = c;
         c += strcspn(c, ",");
         if (!*c) {
@@ -100,6 +105,14 @@ int zp_sweep_csv_parse(const char *line, const zp_sweep *s, int np, int *p, zp_s
         }
         *c = '\0';
     }
+    return n;
+}
+
+int zp_sweep_csv_parse(const char *line, const zp_sweep *s, int np, int *p, zp_study_row *r) {
+    enum { MAXF = 1 + ZP_SWEEP_MAX_VARY + NFIXED + ZP_SCHED_MAX_PARAMS + 1 };
+    char buf[8192], *fld[MAXF];
+    snprintf(buf, sizeof buf, "%s", line);
+    int n = split(buf, fld, MAXF);
     memset(r, 0, sizeof *r);
     r->np = np;
     char *end;
@@ -122,6 +135,66 @@ int zp_sweep_csv_parse(const char *line, const zp_sweep *s, int np, int *p, zp_s
         return 0;
     }
     return strcmp(res[0], "ok") ? -1 : parse_result(res, np, r);
+}
+
+#define GRID_FIXED 12 /* the grid line's fields before the forces: "grid" .. survived */
+
+void zp_sweep_csv_grid(FILE *f, const zp_grid_result *g, int npoint) {
+    fprintf(f, "grid,%d,%d,%d,%d,%d,%ld", g->failed, g->found, g->nominal, g->ncorner, g->nscen,
+            g->evals);
+    put_num(f, g->time);
+    put_num(f, g->margin);
+    fprintf(f, ",%d", g->worst);
+    put_num(f, g->worst_margin);
+    fprintf(f, ",%d", g->survived);
+    for (int k = 0; k < g->np; k++) {
+        put_num(f, g->force[k]);
+    }
+    fputc(',', f);
+    for (int i = 0; i < (npoint + 7) / 8; i++) {
+        fprintf(f, "%02x", g->ok[i]);
+    }
+    put_message(f, g->message);
+}
+
+int zp_sweep_csv_grid_parse(const char *line, int np, int npoint, zp_grid_result *g) {
+    enum { MAXF = GRID_FIXED + ZP_SCHED_MAX_PARAMS + 2 };
+    char buf[8192], *fld[MAXF], *end;
+    snprintf(buf, sizeof buf, "%s", line);
+    int n = split(buf, fld, MAXF), nbyte = (npoint + 7) / 8;
+    memset(g, 0, sizeof *g);
+    if (n != GRID_FIXED + np + 2 || strcmp(fld[0], "grid") ||
+        strlen(fld[n - 2]) != 2 * (size_t)nbyte) {
+        return -1;
+    }
+    long v[8];
+    const int at[8] = {1, 2, 3, 4, 5, 6, 9, 11}; /* the whole numbers */
+    int bad = 0;
+    for (int i = 0; i < 8; i++) {
+        v[i] = strtol(fld[at[i]], &end, 10);
+        bad |= end == fld[at[i]] || *end;
+    }
+    g->failed = (int)v[0];
+    g->found = (int)v[1];
+    g->nominal = (int)v[2];
+    g->ncorner = (int)v[3];
+    g->nscen = (int)v[4];
+    g->evals = v[5];
+    g->worst = (int)v[6];
+    g->survived = (int)v[7];
+    g->np = np;
+    bad |= num_field(fld[7], &g->time) || num_field(fld[8], &g->margin) ||
+           num_field(fld[10], &g->worst_margin);
+    for (int k = 0; k < np && !bad; k++) {
+        bad = num_field(fld[GRID_FIXED + k], &g->force[k]);
+    }
+    for (int i = 0; i < nbyte && !bad; i++) {
+        char hex[3] = {fld[n - 2][2 * i], fld[n - 2][2 * i + 1], 0};
+        g->ok[i] = (unsigned char)strtoul(hex, &end, 16);
+        bad = *end != '\0';
+    }
+    snprintf(g->message, sizeof g->message, "%s", fld[n - 1]);
+    return bad ? -1 : 0;
 }
 
 /* the checkpoint's first two lines: what study it belongs to, then the CSV header */
@@ -150,7 +223,8 @@ static char *study_head(const zp_sweep *s, const char *base, int np) {
 /* the whole rows of an old checkpoint into rows/done; returns the length of the good part,
    or -1 when it belongs to another study */
 static long read_rows(const char *old, const char *head, const zp_sweep *s, int np,
-                      zp_study_row *rows, unsigned char *done, int *ndone) {
+                      zp_study_row *rows, unsigned char *done, int *ndone, zp_grid_result *grid,
+                      int *grid_done) {
     size_t hl = strlen(head);
     if (strncmp(old, head, hl)) {
         /* cut short while its head was written: nothing to keep; else another study's */
@@ -166,12 +240,18 @@ static long read_rows(const char *old, const char *head, const zp_sweep *s, int 
             break; /* the last line, torn by a kill */
         }
         snprintf(line, sizeof line, "%.*s", (int)len, old + pos);
-        if (zp_sweep_csv_parse(line, s, np, &p, &r)) {
+        if (!strncmp(line, "grid,", 5)) {
+            if (zp_sweep_csv_grid_parse(line, np, s->npoint, grid)) {
+                break;
+            }
+            *grid_done = 1;
+        } else if (zp_sweep_csv_parse(line, s, np, &p, &r)) {
             break;
+        } else {
+            *ndone += !done[p];
+            done[p] = 1;
+            rows[p] = r;
         }
-        *ndone += !done[p];
-        done[p] = 1;
-        rows[p] = r;
         pos += len + 1;
     }
     return (long)pos;
@@ -207,11 +287,12 @@ static char *read_fd(int fd, size_t *len) {
 
 zp_status zp_sweep_checkpoint_open(zp_sweep_checkpoint *c, int dirfd, const char *dir,
                                    const zp_sweep *s, const char *base, int np, int resume,
-                                   zp_study_row *rows, unsigned char *done, int *ndone, char *err,
-                                   size_t errlen) {
+                                   zp_study_row *rows, unsigned char *done, int *ndone,
+                                   zp_grid_result *grid, int *grid_done, char *err, size_t errlen) {
     c->f = NULL;
     c->dirfd = -1;
     *ndone = 0;
+    *grid_done = 0;
     snprintf(c->path, sizeof c->path, "%s/checkpoint.csv", dir);
     char *head = study_head(s, base, np), *old = NULL;
     /* never through a link planted at the name: the file is opened in the folder itself */
@@ -221,7 +302,9 @@ zp_status zp_sweep_checkpoint_open(zp_sweep_checkpoint *c, int dirfd, const char
     size_t len = 0;
     long keep = -2;
     if (fd >= 0 && resume && (old = read_fd(fd, &len)) != NULL && len > 0) {
-        keep = strlen(old) == len ? read_rows(old, head, s, np, rows, done, ndone) : -1;
+        keep = strlen(old) == len
+                   ? read_rows(old, head, s, np, rows, done, ndone, grid, grid_done)
+                   : -1;
     }
     free(old);
     if (keep == -1) {
@@ -233,8 +316,11 @@ zp_status zp_sweep_checkpoint_open(zp_sweep_checkpoint *c, int dirfd, const char
         close(fd);
         return ZP_ERR_INPUT;
     }
+    /* a buffer larger than any line: each line reaches the file in one write(), so a signal
+       that ends the job lands before or after it, never inside */
     if (fd < 0 || ftruncate(fd, keep > 0 ? keep : 0) || lseek(fd, 0, SEEK_END) < 0 ||
-        (c->dirfd = fcntl(dirfd, F_DUPFD_CLOEXEC, 0)) < 0 || !(c->f = fdopen(fd, "a"))) {
+        (c->dirfd = fcntl(dirfd, F_DUPFD_CLOEXEC, 0)) < 0 || !(c->f = fdopen(fd, "a")) ||
+        setvbuf(c->f, NULL, _IOFBF, LINE_MAX_BYTES)) {
         snprintf(err, errlen, "%s: %s", c->path, head ? strerror(errno) : "out of memory");
         free(head);
         if (fd >= 0) {
@@ -255,10 +341,21 @@ zp_status zp_sweep_checkpoint_open(zp_sweep_checkpoint *c, int dirfd, const char
     return ZP_OK;
 }
 
+/* the line just formatted, to the disk */
+static int push(zp_sweep_checkpoint *c) {
+    return fflush(c->f) || fsync(fileno(c->f)) ? -1 : 0;
+}
+
 int zp_sweep_checkpoint_add(zp_sweep_checkpoint *c, const zp_sweep *s, int p,
                             const zp_study_row *r) {
     zp_sweep_csv_row(c->f, s, p, r);
-    return fflush(c->f) || fsync(fileno(c->f)) ? -1 : 0;
+    return push(c);
+}
+
+int zp_sweep_checkpoint_add_grid(zp_sweep_checkpoint *c, const zp_sweep *s,
+                                 const zp_grid_result *g) {
+    zp_sweep_csv_grid(c->f, g, s->npoint);
+    return push(c);
 }
 
 void zp_sweep_checkpoint_close(zp_sweep_checkpoint *c, int remove_file) {

@@ -1,7 +1,8 @@
 /* `zipopt sweep` as a user runs it (CLI.md): bad --vary exits 2 writing nothing; each point
    is the same run as `zipopt simulate` (or the search `zipopt SCENE`) of a scene file written
    here by hand with that value; a study killed mid-way and resumed gives the same sweep.csv
-   as one never stopped; a checkpoint of another study is refused. */
+   as one never stopped; a checkpoint of another study is refused; the schedule that survives
+   across the grid survives each point's scene written by hand, run by `zipopt simulate`. */
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -125,11 +126,89 @@ static void same_as_search(void) {
     CHECK(field(csv, 1, 3) == 1 && strstr(json, "\"found\": true"));
 }
 
+/* the n numbers of the JSON array after "key": [ in text (from where from is found) */
+static int json_array(const char *text, const char *from, const char *key, double *x, int n) {
+    char pat[64];
+    snprintf(pat, sizeof pat, "\"%s\": [", key);
+    const char *p = strstr(text, from);
+    p = p ? strstr(p, pat) : NULL;
+    for (int i = 0; p && i < n; i++) {
+        char *end;
+        x[i] = strtod(p + (i ? 1 : strlen(pat)), &end);
+        if (end == p) {
+            return -1;
+        }
+        p = end;
+    }
+    return p ? 0 : -1;
+}
+
+/* `zipopt simulate --force f` of the small scene with that trolley mass: 1 when it finishes
+   with the margin kept (60 deg death angle, 10 deg margin); its finish time in *t */
+static int survives(const char *trolley, const double *f, double *t) {
+    char cmd[2048];
+    const char *one = scene("one", trolley, "5, 2", 100);
+    snprintf(cmd, sizeof cmd, "%s simulate %s --force %.17g,%.17g --json --out %s/one", ZP_EXE,
+             one, f[0], f[1], dir);
+    CHECK(run(cmd) == 0);
+    double angle[2];
+    CHECK(json_array(out, "{", "max_rel_angle", angle, 2) == 0);
+    *t = json_num(out, "time");
+    return strstr(out, "\"outcome\": \"finished\"") && angle[0] <= 50 && angle[1] <= 50;
+}
+
+/* a lighter trolley swings more under the same push: the grid's corners (10 and 60 kg) bound
+   survival; the grid schedule survives every point, each run by hand, and is no faster at the
+   middle than that point's own optimum; the heaviest point's optimum breaks somewhere */
+static void grid_schedule(void) {
+    char cmd[2048], csv[8192], json[65536], path[600], base[512];
+    snprintf(base, sizeof base, "%s", scene("base", "30", "5, 2", 1000)); /* scene() reuses */
+    const char *vary = "--vary trolley.mass=10:60:4";
+    snprintf(cmd, sizeof cmd, "%s sweep %s %s --out %s/grid", ZP_EXE, base, vary, dir);
+    CHECK(run(cmd) == 0);
+    CHECK(strstr(out, "Fastest schedule that the grid's 2 corners and its middle all") != NULL);
+    snprintf(path, sizeof path, "%s/grid/sweep.csv", dir);
+    CHECK(tu_slurp(path, csv, sizeof csv) > 0);
+    snprintf(path, sizeof path, "%s/grid/summary.json", dir);
+    CHECK(tu_slurp(path, json, sizeof json) > 0);
+    CHECK(strstr(json, "\"grid_schedule\": {\"found\": true") != NULL);
+    CHECK(json_num(json, "points_survived") == 4);
+    double f[2], heavy[2] = {field(csv, 4, 10), field(csv, 4, 11)}, t;
+    CHECK(json_array(json, "grid_schedule", "forces", f, 2) == 0);
+    const char *trolley[] = {"10", "26.666666666666668", "43.333333333333336", "60"};
+    int heavy_ok = 1;
+    for (int p = 0; p < 4; p++) {
+        CHECK(survives(trolley[p], f, &t));
+        if (p == 1) { /* the middle: the same run, the same bits */
+            CHECK(t == json_num(strstr(json, "\"nominal\""), "time"));
+            CHECK(t >= field(csv, 2, 5));
+        }
+        heavy_ok &= survives(trolley[p], heavy, &t);
+    }
+    CHECK(!heavy_ok);
+
+    /* killed after one row (the grid schedule's line before it): resumed, the grid schedule
+       is not searched again and the outputs are those of the study never stopped */
+    snprintf(cmd, sizeof cmd,
+             "ZIPOPT_SWEEP_FAULT_AFTER=1 %s sweep %s %s --out %s/gridcut >/dev/null 2>&1", ZP_EXE,
+             base, vary, dir);
+    CHECK(run(cmd) != 0);
+    snprintf(cmd, sizeof cmd, "%s sweep %s %s --out %s/gridcut --resume", ZP_EXE, base, vary, dir);
+    CHECK(run(cmd) == 0);
+    CHECK(strstr(out, "(1 from the checkpoint) and the grid schedule (from the checkpoint)"));
+    static char again[65536];
+    snprintf(path, sizeof path, "%s/gridcut/summary.json", dir);
+    CHECK(tu_slurp(path, again, sizeof again) > 0 && !strcmp(json, again));
+    snprintf(path, sizeof path, "%s/gridcut/sweep.csv", dir);
+    CHECK(tu_slurp(path, again, sizeof again) > 0 && !strcmp(csv, again));
+}
+
 /* killed after some rows, resumed: the same sweep.csv as a study never stopped */
 static void kill_and_resume(void) {
     char cmd[2048], path[600], whole[16384], resumed[16384];
     const char *base = scene("base", "30", "5, 2", 300);
-    const char *vary = "--vary trolley.mass=20:40:3 --vary body.masses=0.5:1.5:2";
+    const char *vary =
+        "--vary trolley.mass=20:40:3 --vary body.masses=0.5:1.5:2 --no-grid-schedule";
     snprintf(cmd, sizeof cmd, "%s sweep %s %s --out %s/whole >/dev/null", ZP_EXE, base, vary, dir);
     CHECK(run(cmd) == 0);
     snprintf(path, sizeof path, "%s/whole/sweep.csv", dir);
@@ -176,6 +255,7 @@ int main(void) {
     bad_input();
     same_as_simulate();
     same_as_search();
+    grid_schedule();
     kill_and_resume();
     char cmd[600];
     snprintf(cmd, sizeof cmd, "rm -rf %s", dir);

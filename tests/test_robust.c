@@ -5,7 +5,8 @@
    bare trolley's kink dv is its speed times the sine of the slope change; exact load peaks
    are at least the finest sampling's; where survival is monotone in the one force, the robust
    optimum is the largest surviving push over 1 + p; verification counts match a brute-force
-   loop; the same seed gives the same bits on 1 and 2 threads. */
+   loop; the same seed gives the same bits on 1 and 2 threads; the Clopper-Pearson bound makes
+   the binomial tail, summed term by term, equal to alpha (and alpha^(1/n) when all pass). */
 #include <gsl/gsl_cdf.h>
 #include <gsl/gsl_rng.h>
 #include <math.h>
@@ -221,7 +222,7 @@ static void monotone(void) {
     zp_sim_opts tight = tu_opts(&sc, 1e-10);
     zp_robust_check c;
     const int n = 300;
-    CHECK(zp_robust_verify(&ob, &b, &tight, &F, n, 7, 2, &c) == ZP_OK);
+    CHECK(zp_robust_verify(&ob, &b, &tight, &F, n, 7, 2, NULL, &c) == ZP_OK);
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
     gsl_rng_set(rng, 7 ^ ZP_ROBUST_STREAM_VERIFY);
     int fin = 0, kept = 0;
@@ -263,7 +264,7 @@ static void threads(void) {
         zp_search_result *r = t ? &res2 : &res;
         robust_search(&ob, &sc, &o, t + 1, r, &info[t], &runs[t]);
         CHECK(r->found);
-        CHECK(zp_robust_verify(&ob, &b, &o, r->force, 200, sc.seed, t + 1, &c[t]) == ZP_OK);
+        CHECK(zp_robust_verify(&ob, &b, &o, r->force, 200, sc.seed, t + 1, NULL, &c[t]) == ZP_OK);
         if (t == 0) {
             continue;
         }
@@ -333,7 +334,33 @@ static void shared_scenarios(void) {
     zp_model_free(m);
 }
 
+/* P(X >= k) for X ~ Binomial(n, p), summed term by term in long double */
+static long double binomial_tail(int k, int n, double p) {
+    long double sum = 0;
+    for (int i = k; i <= n; i++) {
+        sum += expl(lgammal(n + 1.0L) - lgammal(i + 1.0L) - lgammal(n - i + 1.0L) +
+                    i * logl(p) + (n - i) * log1pl(-(long double)p));
+    }
+    return sum;
+}
+
+/* the one-sided 95 % lower bound L: P(X >= k | L) = 0.05, including where GSL's own beta
+   inverse fails to converge (k near n, n large) */
+static void clopper_pearson(void) {
+    const int cases[][2] = {{1943, 2000}, {1999, 2000}, {1500, 2000}, {10, 2000}, {7, 10},
+                            {1, 1}, {63, 64}};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        int k = cases[i][0], n = cases[i][1];
+        double lo = zp_clopper_pearson_lower(k, n, 0.05);
+        CHECK(isfinite(lo) && lo > 0 && lo < 1);
+        CHECK(fabsl(binomial_tail(k, n, lo) - 0.05L) < 1e-9L);
+    }
+    CHECK(fabs(zp_clopper_pearson_lower(2000, 2000, 0.05) - pow(0.05, 1.0 / 2000)) < 1e-15);
+    CHECK(zp_clopper_pearson_lower(0, 2000, 0.05) == 0);
+}
+
 int main(void) {
+    clopper_pearson();
     corners_and_models();
     hanging_chain();
     kink_dv();

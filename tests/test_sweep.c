@@ -1,13 +1,16 @@
 /* The study's grid (sweep.c) and rows (sweep_csv.c): --vary checks, grid values that end
    exactly at B, each point's scene text read back by the scene reader with the value set (and
    every other key untouched), list keys scaled item by item, and rows that read back from the
-   CSV to the same line. Independent expectations: the reader's own parse of hand-written
-   values, and products computed here. */
+   CSV to the same line; the grid's middle point, the grid schedule's checkpoint line read back
+   to the same bits, and a scenario judged by criteria of its own. Independent expectations:
+   the reader's own parse of hand-written values, and products computed here. */
 #include <string.h>
 
 #include "check.h"
+#include "robust.h"
 #include "scene_read.h"
 #include "sweep_csv.h"
+#include "testutil.h"
 
 static const char *base = "; a scene with comments\n"
                           "[scene]\nname = t\n[course]\nx_start = 0\nsection = 20 : -x/10 + 10\n"
@@ -44,6 +47,70 @@ static void bad_vary(const char *text, const char *says) {
         fprintf(stderr, "--vary %s: '%s' does not say '%s'\n", text, why, says);
         CHECK(0);
     }
+}
+
+/* the grid schedule's line written, read back and written again: the same line, the same bits */
+static void grid_line(void) {
+    zp_grid_result g = {.found = 1, .nominal = 10, .ncorner = 4, .nscen = 260, .evals = 4321,
+                        .np = 3, .force = {1.0 / 3, 500, 0}, .time = 9.045890546185342,
+                        .margin = 10.000999951619107, .worst = 20, .worst_margin = NAN,
+                        .survived = 20},
+                   back;
+    for (int p = 0; p < 21; p++) {
+        g.ok[p / 8] |= (unsigned char)((p != 7) << (p % 8));
+    }
+    snprintf(g.message, sizeof g.message, "%s", "a, b");
+    char *l1 = NULL, *l2 = NULL;
+    size_t n1, n2;
+    FILE *f = open_memstream(&l1, &n1);
+    zp_sweep_csv_grid(f, &g, 21);
+    fclose(f);
+    l1[strcspn(l1, "\n")] = '\0';
+    CHECK(zp_sweep_csv_grid_parse(l1, 3, 21, &back) == 0);
+    CHECK(back.found && back.nominal == 10 && back.ncorner == 4 && back.nscen == 260 &&
+          back.evals == 4321 && back.worst == 20 && back.survived == 20);
+    CHECK(back.force[0] == 1.0 / 3 && back.time == g.time && back.margin == g.margin &&
+          isnan(back.worst_margin));
+    for (int p = 0; p < 21; p++) {
+        CHECK(zp_grid_survived_at(&back, p) == (p != 7));
+    }
+    f = open_memstream(&l2, &n2);
+    zp_sweep_csv_grid(f, &back, 21);
+    fclose(f);
+    l2[strcspn(l2, "\n")] = '\0';
+    CHECK(!strcmp(l1, l2));
+    CHECK(zp_sweep_csv_grid_parse(l1, 2, 21, &back) == -1); /* another study's width */
+    CHECK(zp_sweep_csv_grid_parse(l1, 3, 30, &back) == -1); /* another study's points */
+    free(l1);
+    free(l2);
+}
+
+/* the seed's answer survives the seed (README), and its spy swings more than 1 deg: a scenario
+   of the same model passes under the search's criteria and breaks under a 1 deg limit */
+static void own_judge(void) {
+    static zp_scene sc;
+    zp_model *m = tu_seed_model(&sc);
+    zp_sim_opts o = tu_opts(&sc, 1e-8);
+    zp_objective ob = tu_objective(m, &sc, &o), strict = ob;
+    strict.limit = M_PI / 180;
+    zp_scenario nominal;
+    zp_scenario_nominal(&nominal);
+    zp_sim *s = zp_sim_create(m, &o);
+    static zp_result r;
+    const double f[3] = {59.58914569124449, 500, 500};
+    for (int own = 0; own <= 1; own++) {
+        zp_scen_set set = {0};
+        CHECK(zp_scen_set_add_model(&set, m, &nominal, NULL, NULL) == ZP_OK);
+        CHECK(zp_scen_set_add_model(&set, m, &nominal, NULL, own ? &strict : NULL) == ZP_OK);
+        ob.set = &set;
+        zp_eval e;
+        zp_objective_eval(&ob, s, f, &e, &r);
+        CHECK(zp_objective_feasible(&e) == !own);
+        CHECK(e.scenario == (own ? 1 : -1));
+        zp_scen_set_free(&set);
+    }
+    zp_sim_free(s);
+    zp_model_free(m);
 }
 
 int main(void) {
@@ -139,5 +206,12 @@ int main(void) {
         free(l1);
         free(l2);
     }
+
+    /* the middle: index (n - 1) / 2 along each key */
+    s = grid("trolley.mass=0.1:0.7:7", "body.masses=0.8:1.2:4");
+    int mid = zp_grid_nominal(&s);
+    CHECK(zp_sweep_value(&s, 0, mid) == 0.4 && zp_sweep_value(&s, 1, mid) == 0.8 + 0.4 / 3);
+    grid_line();
+    own_judge();
     return CHECK_DONE();
 }

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include "objective.h"
 #include "scene_read.h"
@@ -137,5 +138,19 @@ static inline int tu_count_lines(const char *path) {
     }
     return n;
 }
+
+#ifdef ZP_MPIEXEC
+/* mpirun, or NULL after saying why the test skips (exit 77): zipopt built without MPI, or no
+   mpirun */
+static inline const char *tu_mpirun(void) {
+    const char *mpirun = ZP_MPIEXEC;
+    if (!*mpirun || access(mpirun, X_OK)) {
+        printf("SKIP: zipopt is built without MPI or mpirun is missing (install openmpi-bin and "
+               "libopenmpi-dev, then rebuild)\n");
+        return NULL;
+    }
+    return mpirun;
+}
+#endif
 
 #endif

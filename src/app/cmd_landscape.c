@@ -11,6 +11,7 @@
 #include "fig_landscape.h"
 #include "gnuplot.h"
 #include "landscape.h"
+#include "mpi_spread.h"
 #include "out_json.h"
 #include "setup.h"
 
@@ -37,7 +38,10 @@ static void usage(FILE *f) {
         "  --out DIR           the output folder (default out/<scene name>/landscape/)\n"
         "  --json              print the result as one JSON object (keys: README)\n"
         "Each image comes with its gnuplot script (.gp); the CSV files are its data. Prints\n"
-        "the survival windows of the constant push on stdout.\n",
+        "the survival windows of the constant push on stdout.\n"
+        "Under `mpirun -np N zipopt landscape ..` the runs are dealt out over the N ranks\n"
+        "(each on its OpenMP threads; e.g. -x OMP_NUM_THREADS=1 for one core per rank);\n"
+        "rank 0 alone prints and writes, and the files are bit for bit those without mpirun.\n",
         f);
 }
 
@@ -128,6 +132,7 @@ static double at(const range *r, int k) {
 /* the progress line on stderr, when it is a terminal */
 typedef struct progress {
     struct timespec start, last;
+    int ranks; /* > 1: the count is rank 0's share */
 } progress;
 
 static double since(const struct timespec *a) {
@@ -140,7 +145,8 @@ static void show(void *user, int done, int total) {
     progress *p = user;
     if (since(&p->last) > 0.2 || done == total) {
         clock_gettime(CLOCK_MONOTONIC, &p->last);
-        fprintf(stderr, "\rzipopt landscape: %d/%d runs, %.1f s", done, total, since(&p->start));
+        fprintf(stderr, "\rzipopt landscape: %d/%d runs%s, %.1f s", done, total,
+                p->ranks > 1 ? " (rank 0's share)" : "", since(&p->start));
         if (done == total) {
             fputc('\n', stderr);
         }
@@ -261,7 +267,8 @@ static void print_json(const zp_scene *sc, const range *r, const zp_landscape_po
     printf(", \"figures\": %s}\n", figures ? "true" : "false");
 }
 
-int zp_cmd_landscape(int argc, char **argv) {
+/* the command on every rank of sp: each runs its share, rank 0 alone writes and prints */
+static int landscape(int argc, char **argv, const zp_spread *sp) {
     land_args a;
     int pa = parse_args(argc, argv, &a);
     if (pa) {
@@ -343,16 +350,22 @@ int zp_cmd_landscape(int argc, char **argv) {
         f[si] = at(&rx, k % rx.n);
         f[sj] = at(&ry, k / rx.n);
     }
-    progress pr;
+    progress pr = {.ranks = sp->size};
     clock_gettime(CLOCK_MONOTONIC, &pr.start);
     pr.last = pr.start;
-    if (zp_landscape_sweep(m, &o, force, n1 + n2, pt, isatty(STDERR_FILENO) ? show : NULL, &pr)) {
-        fputs("zipopt landscape: cannot create the simulators (out of memory); nothing was "
-              "written\n",
-              stderr);
+    zp_status rc =
+        zp_landscape_sweep(m, &o, force, n1 + n2, pt, isatty(STDERR_FILENO) ? show : NULL, &pr, sp);
+    if (rc) {
+        fprintf(stderr, "zipopt landscape: %s; nothing was written\n",
+                rc == ZP_ERR_IO ? "the MPI ranks could not exchange their runs"
+                                : "cannot create the simulators (out of memory)");
         goto done;
     }
     double wall = since(&pr.start);
+    if (sp->rank != 0) { /* rank 0 holds every run too, and speaks for the job */
+        status = ZP_EXIT_OK;
+        goto done;
+    }
 
     /* the files, all or nothing */
     char err[1400];
@@ -401,7 +414,11 @@ int zp_cmd_landscape(int argc, char **argv) {
         print_json(sc, &r1, pt, si, sj, n2, wall, t.dir, !missing);
     } else {
         print_windows(&r1, pt);
-        printf("%d runs in %.2f s; wrote in %s: %s\n", n1 + n2, wall, t.dir, t.written);
+        printf("%d runs in %.2f s", n1 + n2, wall);
+        if (sp->size > 1) {
+            printf(" on %d ranks", sp->size);
+        }
+        printf("; wrote in %s: %s\n", t.dir, t.written);
     }
     FILE *say = a.json ? stderr : stdout; /* stdout carries only the JSON object */
     if (missing) {
@@ -425,4 +442,8 @@ done:
     free(pt);
     zp_setup_free(&st);
     return status;
+}
+
+int zp_cmd_landscape(int argc, char **argv) {
+    return zp_mpi_spread_main("landscape", landscape, argc, argv);
 }

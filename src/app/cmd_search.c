@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "mpi_spread.h"
 #include "out_csv.h"
 #include "out_file.h"
 #include "plot.h"
@@ -48,6 +49,9 @@ static void usage(FILE *f) {
           "  --no-plot         skip the figures\n"
           "  --json            print summary.json's object on stdout instead of the text\n"
           "                    summary (keys: README, CLI.md)\n"
+          "Under `mpirun -np N zipopt SCENE.ini ..` rank 0 searches on its threads while the\n"
+          "other ranks wait without spinning, then the N ranks share the robust verification's\n"
+          "fresh scenarios; rank 0 alone prints and writes, bit for bit as without mpirun.\n"
           "strategies:\n",
           f);
     for (int i = 0; i < zp_search_algo_count(); i++) {
@@ -301,7 +305,9 @@ static void print_summary(const zp_report *r) {
     printf("convergence: %s\n", conv);
 }
 
-int zp_cmd_search(int argc, char **argv) {
+/* the command on every rank of sp: rank 0 searches, prints and writes; every rank verifies
+   its share of the robust scenarios */
+static int search(int argc, char **argv, const zp_spread *sp) {
     search_args a;
     int pa = parse_args(argc, argv, &a);
     if (pa) {
@@ -314,17 +320,24 @@ int zp_cmd_search(int argc, char **argv) {
     }
     const zp_model *m = st.m;
     const zp_scene *sc = &st.sc;
-    zp_tx tx;
-    if (zp_cli_out_begin(&tx, "", "search", a.out, sc)) {
+    zp_tx tx = {.dirfd = -1, .tmpfd = -1};
+    int rank = sp->rank; /* ranks other than 0 write nothing, not even the folder */
+    if (rank == 0 && zp_cli_out_begin(&tx, "", "search", a.out, sc)) {
+        zp_robust_release(sp);
         zp_setup_free(&st);
         return ZP_EXIT_FAIL;
     }
-    zp_tx_soft_interrupt(&tx, &interrupted);
+    if (rank == 0) {
+        zp_tx_soft_interrupt(&tx, &interrupted);
+    }
 
     zp_sim_opts fast;
     static zp_robust_problem pb; /* large: kept off the stack */
     if (zp_robust_setup(&pb, sc, m, st.limit, &st.sched, &st.sim, &st.search, &fast)) {
         fputs("zipopt: out of memory building the scenarios; nothing was written\n", stderr);
+        if (rank == 0) {
+            zp_robust_release(sp);
+        }
         zp_robust_problem_free(&pb);
         zp_tx_abort(&tx);
         zp_setup_free(&st);
@@ -336,6 +349,7 @@ int zp_cmd_search(int argc, char **argv) {
                         .stop = &interrupted, .progress = on_progress, .user = &pc};
     static zp_search_result res;
     char err[512] = "";
+    pb.spread = sp;
     zp_status rc = zp_robust_solve(&pb, sc, &fast, st.sched.lo, st.sched.hi, &o, &res,
                                    err, sizeof err);
     int status = ZP_EXIT_FAIL;
@@ -343,6 +357,10 @@ int zp_cmd_search(int argc, char **argv) {
     zp_verify v = {0};
     if (rc) {
         fprintf(stderr, "zipopt: %s; nothing was written\n", err);
+        goto done;
+    }
+    if (rank != 0) { /* its share of the verification is rank 0's too, which goes on */
+        status = ZP_EXIT_OK;
         goto done;
     }
     /* verification (always) and robustness (not after Ctrl-C: the user wants out), of the
@@ -416,4 +434,8 @@ done:
     zp_robust_problem_free(&pb);
     zp_setup_free(&st);
     return status;
+}
+
+int zp_cmd_search(int argc, char **argv) {
+    return zp_mpi_spread_main("search", search, argc, argv);
 }

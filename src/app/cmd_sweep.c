@@ -1,6 +1,7 @@
 /* `zipopt sweep`: a design study over a grid of scene values (CLI.md). Under mpirun the points
    are spread over the ranks; rank 0 checkpoints each row as it comes and writes the outputs. */
 #include <errno.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -20,6 +21,7 @@
 static void usage(FILE *f) {
     fputs("usage: zipopt sweep SCENE.ini --vary SECTION.KEY=A:B:N [--vary ..]\n"
           "                    [--run search|simulate] [--out DIR] [--resume] [--json]\n"
+          "                    [--grid-schedule | --no-grid-schedule]\n"
           "A design study: the scene at every point of the grid of the varied keys (N values\n"
           "from A to B for each --vary, the first varying fastest; up to 4 keys). A list key\n"
           "(body.masses, body.lengths, body.damping, drive.forces, ..) is scaled as a whole:\n"
@@ -35,6 +37,12 @@ static void usage(FILE *f) {
           "DIR), and prints the summary. Each finished row is appended to checkpoint.csv there\n"
           "at once; after Ctrl-C or a killed job, --resume skips every finished point.\n"
           "  --json            print summary.json on stdout instead of the text\n"
+          "Besides, the schedule that survives across the whole grid: the search for the\n"
+          "fastest schedule at the middle point that keeps the limits at every corner of the\n"
+          "grid (each corner's scene as it is, with its [robust] scenarios when the scene has\n"
+          "them), then checked at every point (one run each); in the summary and\n"
+          "summary.json. On by default with --run search; --no-grid-schedule skips it,\n"
+          "--grid-schedule adds it to a --run simulate study.\n"
           "Under `mpirun -np N zipopt sweep ..` the points go to the N ranks by a work queue\n"
           "(each rank with its OpenMP threads); the results are the same bits as without.\n",
           f);
@@ -43,10 +51,11 @@ static void usage(FILE *f) {
 typedef struct sweep_args {
     const char *scene, *out, *run;
     int resume, json, nvary;
+    int grid; /* the grid schedule: 1 on, 0 off, -1 as --run decides */
     const char *vary[MAX_ARGS_VARY];
 } sweep_args;
 
-enum { O_VARY = ZP_OPT_FIRST, O_RUN, O_OUT, O_RESUME, O_JSON };
+enum { O_VARY = ZP_OPT_FIRST, O_RUN, O_OUT, O_RESUME, O_JSON, O_GRID, O_NO_GRID };
 static const struct option options[] = {
     {"help", no_argument, NULL, 'h'},
     {"vary", required_argument, NULL, O_VARY},
@@ -54,6 +63,8 @@ static const struct option options[] = {
     {"out", required_argument, NULL, O_OUT},
     {"resume", no_argument, NULL, O_RESUME},
     {"json", no_argument, NULL, O_JSON},
+    {"grid-schedule", no_argument, NULL, O_GRID},
+    {"no-grid-schedule", no_argument, NULL, O_NO_GRID},
     {NULL, 0, NULL, 0},
 };
 
@@ -61,6 +72,7 @@ static const struct option options[] = {
 static int parse_args(int argc, char **argv, sweep_args *a) {
     memset(a, 0, sizeof *a);
     a->run = "search";
+    a->grid = -1;
     zp_cli_opts_begin();
     for (int c; (c = zp_cli_opts_next("sweep", argc, argv, options)) != -1;) {
         switch (c) {
@@ -84,6 +96,10 @@ static int parse_args(int argc, char **argv, sweep_args *a) {
             break;
         case O_JSON:
             a->json = 1;
+            break;
+        case O_GRID:
+        case O_NO_GRID:
+            a->grid = c == O_GRID;
             break;
         default:
             return -1;
@@ -111,8 +127,16 @@ typedef struct study {
     zp_study_row *rows;  /* owned, npoint */
     unsigned char *done; /* owned, npoint */
     int ndone, nresumed;
+    int grid;             /* the grid schedule is wanted: the queue's item npoint */
+    int grid_done, grid_resumed;
+    zp_grid_result *grid_res; /* owned, rank 0 */
     zp_sweep_checkpoint cp;
-    int cp_failed; /* a row could not be appended to the checkpoint */
+    int cp_failed;   /* a row could not be appended to the checkpoint */
+    /* the fault a test injects (README): after fault_after rows are appended (0: never),
+       rank 0 is killed hard as a lost node is, or with fault_hang hangs as a stuck node does
+       (until a signal ends the job) */
+    int fault_after, fault_hang;
+    int appended;
     int tty;
     struct timespec start;
 } study;
@@ -136,8 +160,18 @@ static int point_scene(study *st, int p, zp_diag *d) {
     return rc == ZP_OK ? 0 : -1;
 }
 
+/* what an item of the queue comes to: a point's row, or the grid schedule (item npoint) */
+typedef union item_result {
+    zp_study_row row;
+    zp_grid_result grid;
+} item_result;
+
 static void work(void *user, int p, void *result) {
     study *st = user;
+    if (p == st->s->npoint) {
+        zp_grid_run(st->s, st->base, st->path, &((item_result *)result)->grid);
+        return;
+    }
     zp_study_row *row = result;
     zp_diag d;
     zp_diag_init(&d);
@@ -152,17 +186,36 @@ static void work(void *user, int p, void *result) {
     zp_study_run(st->sc, st->s->kind, row);
 }
 
+/* rank 0 dies (or hangs) at once: no handler runs, nothing more is written */
+static void inject_fault(const study *st) {
+    fflush(stdout);
+    while (st->fault_hang) {
+        pause();
+    }
+    raise(SIGKILL);
+}
+
 static void done(void *user, int p, const void *result) {
     study *st = user;
-    st->rows[p] = *(const zp_study_row *)result;
-    st->ndone += !st->done[p];
-    st->done[p] = 1;
-    if (!st->cp_failed && zp_sweep_checkpoint_add(&st->cp, st->s, p, &st->rows[p])) {
+    int grid = p == st->s->npoint;
+    if (grid) {
+        *st->grid_res = ((const item_result *)result)->grid;
+        st->grid_done = 1;
+    } else {
+        st->rows[p] = *(const zp_study_row *)result;
+        st->ndone += !st->done[p];
+        st->done[p] = 1;
+    }
+    if (!st->cp_failed && (grid ? zp_sweep_checkpoint_add_grid(&st->cp, st->s, st->grid_res)
+                                : zp_sweep_checkpoint_add(&st->cp, st->s, p, &st->rows[p]))) {
         st->cp_failed = 1;
         fprintf(stderr,
                 "\nzipopt sweep: cannot append to %s; the study goes on, but a rerun "
                 "would start afresh\n",
                 st->cp.path);
+    }
+    if (!grid && !st->cp_failed && st->fault_after > 0 && ++st->appended >= st->fault_after) {
+        inject_fault(st);
     }
     if (st->tty) {
         fprintf(stderr, "\rzipopt sweep: %d/%d points, %.1f s   ", st->ndone, st->s->npoint,
@@ -226,7 +279,7 @@ static int write_outputs(zp_tx *t, const zp_sweep_out *o, const char *summary,
 
 /* rank 0, once every point is done: the files, then the summary on stdout */
 static int finish(study *st, const sweep_args *a, zp_tx *t, int ranks) {
-    zp_sweep_out o = {st->s, st->rows, st->name, st->np};
+    zp_sweep_out o = {st->s, st->rows, st->name, st->np, st->grid ? st->grid_res : NULL};
     char summary[4096];
     zp_sweep_out_summary(&o, summary, sizeof summary);
     int no_gnuplot = 0;
@@ -239,9 +292,13 @@ static int finish(study *st, const sweep_args *a, zp_tx *t, int ranks) {
     if (a->json) {
         zp_sweep_out_json(stdout, &o, summary);
     } else {
-        printf("%s\n%d points (%d from the checkpoint) in %.2f s on %d rank%s; wrote %s/sweep.csv, "
-               "summary.json%s\n",
-               summary, st->s->npoint, st->nresumed, since(&st->start), ranks,
+        printf("%s\n%d points (%d from the checkpoint)%s in %.2f s on %d rank%s; wrote "
+               "%s/sweep.csv, summary.json%s\n",
+               summary, st->s->npoint, st->nresumed,
+               !st->grid           ? ""
+               : st->grid_resumed ? " and the grid schedule (from the checkpoint)"
+                                   : " and the grid schedule",
+               since(&st->start), ranks,
                ranks == 1 ? "" : "s", t->dir,
                !zp_sweep_out_has_figure(&o) ? " (no figure for more than two keys)"
                : no_gnuplot                 ? ", sweep.gp (gnuplot is not installed: no image)"
@@ -281,6 +338,7 @@ static int prepare(const sweep_args *a, zp_sweep *s, study *st, char **base) {
         return ZP_EXIT_USAGE;
     }
     s->kind = (zp_study_kind)kind;
+    st->grid = a->grid >= 0 ? a->grid : s->kind == ZP_STUDY_SEARCH;
     for (int i = 0; i < a->nvary; i++) {
         char why[1200];
         zp_sweep_vary v;
@@ -300,8 +358,9 @@ static int open_study(study *st, const sweep_args *a, zp_tx *t, int **todo, int 
     int n = st->s->npoint;
     st->rows = calloc((size_t)n, sizeof *st->rows);
     st->done = calloc((size_t)n, 1);
-    *todo = malloc(sizeof **todo * (size_t)n);
-    if (!st->rows || !st->done || !*todo) {
+    st->grid_res = calloc(1, sizeof *st->grid_res);
+    *todo = malloc(sizeof **todo * (size_t)(n + 1));
+    if (!st->rows || !st->done || !st->grid_res || !*todo) {
         fputs("zipopt sweep: out of memory; nothing was written\n", stderr);
         return ZP_EXIT_FAIL;
     }
@@ -310,14 +369,21 @@ static int open_study(study *st, const sweep_args *a, zp_tx *t, int **todo, int 
         return ZP_EXIT_FAIL;
     }
     zp_status rc = zp_sweep_checkpoint_open(&st->cp, t->dirfd, t->dir, st->s, st->base, st->np,
-                                            a->resume, st->rows, st->done, &st->ndone, err,
-                                            sizeof err);
+                                            a->resume, st->rows, st->done, &st->ndone,
+                                            st->grid_res, &st->grid_done, err, sizeof err);
     if (rc) {
         fprintf(stderr, "zipopt sweep: %s; nothing was written\n", err);
         return rc == ZP_ERR_INPUT ? ZP_EXIT_USAGE : ZP_EXIT_FAIL;
     }
     st->nresumed = st->ndone;
+    st->grid_resumed = st->grid_done;
+    const char *fault = getenv("ZIPOPT_SWEEP_FAULT_AFTER"), *how = getenv("ZIPOPT_SWEEP_FAULT");
+    st->fault_after = fault ? atoi(fault) : 0;
+    st->fault_hang = how && !strcmp(how, "hang");
     *ntodo = 0;
+    if (st->grid && !st->grid_done) {
+        (*todo)[(*ntodo)++] = n; /* the costliest item first: it overlaps the points */
+    }
     for (int p = 0; p < n; p++) {
         if (!st->done[p]) {
             (*todo)[(*ntodo)++] = p;
@@ -347,7 +413,7 @@ static int sweep(int argc, char **argv, int rank) {
     zp_tx t = {.dirfd = -1, .tmpfd = -1};
     status = rank == 0 ? open_study(&st, &a, &t, &todo, &ntodo) : 0;
     char err[256];
-    if (zp_mpi_queue_run(todo, status ? 0 : ntodo, sizeof(zp_study_row), work, done, &st, err,
+    if (zp_mpi_queue_run(todo, status ? 0 : ntodo, sizeof(item_result), work, done, &st, err,
                          sizeof err)) {
         fprintf(stderr, "zipopt sweep: %s\n", err);
         status = ZP_EXIT_FAIL;
@@ -365,6 +431,7 @@ done:
     free(todo);
     free(st.rows);
     free(st.done);
+    free(st.grid_res);
     free(st.sc);
     return status;
 }

@@ -62,6 +62,13 @@ int zp_mpi_queue_start(char *err, size_t errlen) {
 
 void zp_mpi_queue_end(void) {
     if (joined) {
+        /* a rank that is done waits for the others asleep, not spinning in MPI_Finalize: where
+           cores share their units (hyperthreads), a spinning rank slows those still at work */
+        MPI_Request barrier;
+        MPI_Ibarrier(MPI_COMM_WORLD, &barrier);
+        for (int done = 0; MPI_Test(&barrier, &done, MPI_STATUS_IGNORE) == MPI_SUCCESS && !done;) {
+            nanosleep(&(struct timespec){0, NAP_NS}, NULL);
+        }
         MPI_Finalize();
         joined = 0;
     }

@@ -40,6 +40,40 @@ static tally count(const zp_sweep_out *o) {
         }                                                                                          \
     } while (0)
 
+/* the grid schedule's sentence; the length written (as snprintf counts) */
+static size_t grid_summary(const zp_sweep_out *o, char *out, size_t cap) {
+    const zp_grid_result *g = o->grid;
+    size_t len = 0;
+    char at[512];
+    if (g->failed) {
+        ADD(" No schedule across the grid: %s.", g->message);
+        return len;
+    }
+    zp_sweep_describe(o->s, g->nominal, at, sizeof at);
+    ADD(" %s schedule that the grid's %d corner%s and its middle all survive",
+        g->found ? "Fastest" : "No", g->ncorner, g->ncorner == 1 ? "" : "s");
+    ADD(g->found ? ":" : " was found (the closest:");
+    for (int k = 0; k < g->np; k++) {
+        ADD("%s %.4g", k ? "," : "", g->force[k]);
+    }
+    ADD(" N, %.4f s at the middle, %s", g->time, at);
+    if (g->worst >= 0) {
+        zp_sweep_describe(o->s, g->worst, at, sizeof at);
+        ADD(", worst corner %s (margin %.2f deg)", at, g->worst_margin);
+    }
+    int broken = o->s->npoint - g->survived;
+    ADD("%s; it keeps the limits at %d of %d points", g->found ? "" : ")", g->survived,
+        o->s->npoint);
+    for (int p = 0, shown = 0; p < o->s->npoint && broken && broken <= 3; p++) {
+        if (!zp_grid_survived_at(g, p)) {
+            zp_sweep_describe(o->s, p, at, sizeof at);
+            ADD("%s%s", shown++ ? "; " : " (not at ", at);
+        }
+    }
+    ADD("%s.", broken && broken <= 3 ? ")" : "");
+    return len;
+}
+
 void zp_sweep_out_summary(const zp_sweep_out *o, char *out, size_t cap) {
     const zp_sweep *s = o->s;
     tally t = count(o);
@@ -77,6 +111,9 @@ void zp_sweep_out_summary(const zp_sweep_out *o, char *out, size_t cap) {
         ADD("; %d failed (the message column of sweep.csv says why)", t.failed);
     }
     ADD(".");
+    if (o->grid) {
+        len += grid_summary(o, out + len, len < cap ? cap - len : 0);
+    }
 }
 
 int zp_sweep_out_has_figure(const zp_sweep_out *o) {
@@ -171,6 +208,63 @@ void zp_sweep_out_script(FILE *f, const zp_sweep_out *o) {
     }
 }
 
+static void values_json(FILE *f, const zp_sweep *s, int p) {
+    fputs("[", f);
+    for (int v = 0; v < s->nvary; v++) {
+        fputs(v ? ", " : "", f);
+        zp_out_json_number(f, zp_sweep_value(s, v, p));
+    }
+    fputs("]", f);
+}
+
+static void forces_json(FILE *f, const double *force, int np) {
+    fputs("[", f);
+    for (int k = 0; k < np; k++) {
+        fputs(k ? ", " : "", f);
+        zp_out_json_number(f, force[k]);
+    }
+    fputs("]", f);
+}
+
+static void grid_json(FILE *f, const zp_sweep_out *o) {
+    const zp_grid_result *g = o->grid;
+    if (!g) {
+        fputs("null", f);
+        return;
+    }
+    fprintf(f, "{\"found\": %s, \"failed\": %s, \"message\": ", g->found ? "true" : "false",
+            g->failed ? "true" : "false");
+    zp_out_json_string(f, g->message);
+    fprintf(f, ",\n    \"nominal\": {\"point\": %d, \"values\": ", g->nominal);
+    values_json(f, o->s, g->nominal);
+    fputs(", \"time\": ", f);
+    zp_out_json_number(f, g->time);
+    fputs(", \"margin_deg\": ", f);
+    zp_out_json_number(f, g->margin);
+    fputs("},\n    \"forces\": ", f);
+    forces_json(f, g->force, g->failed ? 0 : g->np);
+    fputs(",\n    \"worst_corner\": ", f);
+    if (g->worst >= 0) {
+        fprintf(f, "{\"point\": %d, \"values\": ", g->worst);
+        values_json(f, o->s, g->worst);
+        fputs(", \"margin_deg\": ", f);
+        zp_out_json_number(f, g->worst_margin);
+        fputs("}", f);
+    } else {
+        fputs("null", f);
+    }
+    fprintf(f,
+            ",\n    \"corners\": %d, \"scenarios\": %d, \"evals\": %ld, \"points_survived\": "
+            "%d, \"points_broken\": [",
+            g->ncorner, g->nscen, g->evals, g->failed ? 0 : g->survived);
+    for (int p = 0, n = 0; p < o->s->npoint && !g->failed; p++) {
+        if (!zp_grid_survived_at(g, p)) {
+            fprintf(f, "%s%d", n++ ? ", " : "", p);
+        }
+    }
+    fputs("]}", f);
+}
+
 static void point_json(FILE *f, const zp_sweep_out *o, int p) {
     if (p < 0) {
         fputs("null", f);
@@ -178,17 +272,11 @@ static void point_json(FILE *f, const zp_sweep_out *o, int p) {
     }
     fprintf(f, "{\"point\": %d, \"time\": ", p);
     zp_out_json_number(f, o->rows[p].time);
-    fputs(", \"values\": [", f);
-    for (int v = 0; v < o->s->nvary; v++) {
-        fputs(v ? ", " : "", f);
-        zp_out_json_number(f, zp_sweep_value(o->s, v, p));
-    }
-    fputs("], \"forces\": [", f);
-    for (int k = 0; k < o->np; k++) {
-        fputs(k ? ", " : "", f);
-        zp_out_json_number(f, o->rows[p].force[k]);
-    }
-    fputs("]}", f);
+    fputs(", \"values\": ", f);
+    values_json(f, o->s, p);
+    fputs(", \"forces\": ", f);
+    forces_json(f, o->rows[p].force, o->np);
+    fputs("}", f);
 }
 
 void zp_sweep_out_json(FILE *f, const zp_sweep_out *o, const char *summary) {
@@ -211,6 +299,8 @@ void zp_sweep_out_json(FILE *f, const zp_sweep_out *o, const char *summary) {
     point_json(f, o, t.fastest);
     fputs(",\n  \"slowest\": ", f);
     point_json(f, o, t.slowest);
+    fputs(",\n  \"grid_schedule\": ", f);
+    grid_json(f, o);
     fputs(",\n  \"summary\": ", f);
     zp_out_json_string(f, summary);
     fputs("\n}\n", f);
