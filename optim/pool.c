@@ -5,6 +5,7 @@
 
 #include <math.h>
 #include <omp.h>
+#include <stdatomic.h>
 #include <stdlib.h>
 
 #include "robust.h"
@@ -102,31 +103,26 @@ void zp_pool_eval(zp_pool *p, const zp_objective *ob, int n, const double *f, zp
 
 /* A survivor's scenarios shared between its own thread and idle ones: positions are taken in
    the set's order, one at a time, and each is run in full; a position past the first that broke
-   is moot, so it is not started once that break is known (one started before is wasted). */
+   is moot, so it is not started once that break is known (one started before is wasted). Every
+   position before the first break is run: when it was taken, no earlier break was known. */
 typedef struct scen_share {
     const zp_objective *ob;
     const zp_schedule *sched;
-    int n;        /* positions */
-    int next;     /* the next position to take */
-    int stop;     /* the first position that broke so far; n: none */
+    int n;           /* positions */
+    atomic_int next; /* the next position to take */
+    atomic_int stop; /* the first position that broke so far (it only falls); n: none */
     double *cons; /* owned, n: the constraint of each position run */
 } scen_share;
 
 static void share_work(scen_share *sh, zp_sim *s, zp_result *r) {
     for (;;) {
-        int i, go;
-#pragma omp critical(zp_pool_share)
-        {
-            i = sh->next++;
-            go = i < sh->n && i <= sh->stop;
-        }
-        if (!go) {
+        int i = atomic_fetch_add(&sh->next, 1);
+        if (i >= sh->n || i > atomic_load(&sh->stop)) {
             return;
         }
         sh->cons[i] = zp_objective_scenario(sh->ob, i, sh->sched, s, r);
-        if (sh->cons[i] > 0) {
-#pragma omp critical(zp_pool_share)
-            sh->stop = i < sh->stop ? i : sh->stop;
+        int stop = atomic_load(&sh->stop);
+        while (sh->cons[i] > 0 && i < stop && !atomic_compare_exchange_weak(&sh->stop, &stop, i)) {
         }
     }
 }
@@ -161,10 +157,11 @@ void zp_pool_objective_eval(zp_pool *p, const zp_objective *ob, zp_sim *s, zp_re
     share_work(&sh, s, r);
 #pragma omp taskwait
     /* the serial loop's result: the constraints folded in order up to the first break */
-    int nrun = sh.stop < n ? sh.stop + 1 : n;
+    int stop = atomic_load(&sh.stop);
+    int nrun = stop < n ? stop + 1 : n;
     for (int i = 0; i < nrun; i++) {
         e->cons = fmax(e->cons, sh.cons[i]);
     }
-    zp_objective_eval_close(ob, nrun, sh.stop < n, e);
+    zp_objective_eval_close(ob, nrun, stop < n, e);
     free(sh.cons);
 }
