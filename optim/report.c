@@ -303,11 +303,13 @@ static void md_search(FILE *f, const zp_report *r) {
             "  schedule rerun with %s at rtol %g, atol %g ([solver]) and verified %gx tighter\n",
             zp_method_get(r->search->method)->name, r->search->rtol, r->search->atol, r->method,
             r->solver->rtol, r->solver->atol, ZP_ESTIMATE_FACTOR);
-    if (r->sc->accuracy > 0) {
-        double met = fabs(r->v->run->time - r->v->tight->time);
-        fprintf(f, "- accuracy: %.2g s requested ([solver] accuracy: method and rtol from the "
-                   "work-precision table), %.2g s met%s\n",
-                r->sc->accuracy, met, met <= r->sc->accuracy ? "" : " - NOT MET");
+    if (r->acc) {
+        const zp_accuracy *a = r->acc;
+        fprintf(f,
+                "- accuracy: %.2g s requested ([solver] accuracy: method and rtol from the "
+                "work-precision table), %.2g s met%s, by %s at rtol %g after %d rerun%s\n",
+                a->requested, a->met, a->ok ? "" : " - NOT MET", zp_method_get(a->method)->name,
+                a->rtol, a->reruns, a->reruns == 1 ? "" : "s");
     }
     if (s->nhist > 0) {
         fputs("- best finish time against simulations spent:", f);

@@ -32,6 +32,8 @@ typedef struct zp_report {
     const zp_scen_set *set;        /* borrowed with box: the scenarios the answer is held to */
     const zp_robust_info *rinfo;   /* borrowed with box */
     const zp_robust_check *check;  /* borrowed with box: the verification on fresh scenarios */
+    const zp_accuracy *acc;        /* borrowed, NULL: no [solver] accuracy; else what the
+                                      answer's run (at *solver) met */
 } zp_report;
 
 /* A schedule file: only [drive] forces (CONFIG.md), with comments saying what it is. */

@@ -1,6 +1,6 @@
-/* Verification of the best schedule: the same run at a 100x tighter
-   tolerance, then seeded random perturbations of every force and, force by force, the
-   smallest change that kills. */
+/* Verification of the best schedule: the same run at a 100x tighter tolerance, seeded random
+   perturbations of every force and, force by force, the smallest change that kills, all in one
+   parallel batch; and the answer rerun tighter when [solver] accuracy asks for more. */
 #include "verify.h"
 
 #include <gsl/gsl_rng.h>
@@ -50,28 +50,36 @@ static double kill_of(const zp_objective *ob, zp_sim *s, zp_result *r, const dou
     return best;
 }
 
-/* the robustness runs: ntot perturbed schedules, then one bisection per force */
-typedef struct robust_batch {
+/* The checks of one batch, longest first so no long job is left to run alone at the end: the
+   bisections (chains of runs), the tighter run, then the perturbed schedules. */
+typedef struct check_batch {
     const zp_objective *ob;
     const double *force;
-    int ntot;
+    int nkill, ntot;   /* bisections (0 without robustness) and perturbed runs */
+    zp_sim *tight_sim; /* borrowed: the tighter run's workspace */
+    const zp_input *in;
+    zp_verify *v;
+    zp_status tight_st;
     double *pf;   /* owned, ntot x nsec: the perturbed forces */
     zp_eval *pe;  /* owned, ntot */
-    double *kill; /* owned, nsec */
-} robust_batch;
+    double *kill; /* owned, nkill */
+} check_batch;
 
-static void robust_job(void *user, int i, zp_sim *s, zp_result *r) {
-    robust_batch *b = user;
+static void check_job(void *user, int i, zp_sim *s, zp_result *r) {
+    check_batch *b = user;
     int nsec = b->ob->m->nsec;
-    if (i < b->ntot) {
-        zp_objective_eval(b->ob, s, b->pf + (size_t)i * nsec, &b->pe[i], r);
+    if (i < b->nkill) {
+        b->kill[i] = kill_of(b->ob, s, r, b->force, i);
+    } else if (i == b->nkill) {
+        b->tight_st = zp_sim_run(b->ob->m, b->tight_sim, b->in, b->v->tight);
     } else {
-        b->kill[i - b->ntot] = kill_of(b->ob, s, r, b->force, i - b->ntot);
+        int k = i - b->nkill - 1;
+        zp_objective_eval(b->ob, s, b->pf + (size_t)k * nsec, &b->pe[k], r);
     }
 }
 
 /* the tally of the robustness runs, in order: survivors per level and the smallest kill */
-static void tally(zp_verify *v, const robust_batch *b, int nrobust) {
+static void tally(zp_verify *v, const check_batch *b, int nrobust) {
     int nsec = b->ob->m->nsec;
     const double *force = b->force;
     for (int i = 0; i < b->ntot; i++) {
@@ -106,43 +114,26 @@ static void tally(zp_verify *v, const robust_batch *b, int nrobust) {
     v->robust_done = 1;
 }
 
-/* seeded perturbations drawn up front, run in parallel, counted in order */
-static zp_status robustness(const zp_objective *ob, const zp_sim_opts *so, const double *force,
-                            unsigned long seed, int nrobust, int nthreads, zp_verify *v,
-                            zp_pool_done progress, void *user, char *err, size_t errlen) {
-    int nsec = ob->m->nsec, ntot = ZP_VERIFY_LEVELS * nrobust;
-    zp_sim_opts fast = *so;
-    fast.output_dt = 0;
-    fast.track_loads = 0;
-    robust_batch b = {ob,
-                      force,
-                      ntot,
-                      malloc(sizeof *b.pf * ntot * nsec),
-                      malloc(sizeof *b.pe * ntot),
-                      calloc(nsec, sizeof *b.kill)};
-    zp_pool *pool = zp_pool_create(ob->m, &fast, nthreads);
-    gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
-    zp_status ret = b.pf && b.pe && b.kill && pool && g ? ZP_OK : ZP_ERR_NOMEM;
-    if (ret == ZP_OK) {
-        gsl_rng_set(g, seed);
-        for (int i = 0; i < ntot; i++) {
-            for (int k = 0; k < nsec; k++) {
-                double u = 2 * gsl_rng_uniform(g) - 1;
-                b.pf[(size_t)i * nsec + k] = force[k] * (1 + levels[i / nrobust] * u);
-            }
+/* the seeded perturbations, drawn up front in one stream: ntot rows of nsec forces */
+static void perturb(const double *force, int nsec, unsigned long seed, int nrobust, double *pf,
+                    gsl_rng *g) {
+    gsl_rng_set(g, seed);
+    for (int i = 0; i < ZP_VERIFY_LEVELS * nrobust; i++) {
+        for (int k = 0; k < nsec; k++) {
+            double u = 2 * gsl_rng_uniform(g) - 1;
+            pf[(size_t)i * nsec + k] = force[k] * (1 + levels[i / nrobust] * u);
         }
-        /* the perturbed runs, then force by force the bisection for the smallest deadly change */
-        zp_pool_map(pool, ntot + nsec, robust_job, &b, progress, user);
-        tally(v, &b, nrobust);
-    } else {
-        snprintf(err, errlen, "out of memory for the robustness runs");
     }
-    gsl_rng_free(g);
-    zp_pool_free(pool);
-    free(b.pf);
-    free(b.pe);
-    free(b.kill);
-    return ret;
+}
+
+/* the run and the tighter run agree: same outcome, close finish times, margin kept */
+static void agree(const zp_objective *ob, zp_verify *v) {
+    double angle = 0;
+    for (int i = 0; i < ob->m->nlink; i++) {
+        angle = fmax(angle, v->tight->max_rel_angle[i]);
+    }
+    v->agree = v->run->outcome == v->tight->outcome &&
+               fabs(v->run->time - v->tight->time) <= ZP_VERIFY_DT && angle <= ob->limit;
 }
 
 void zp_verify_free(zp_verify *v) {
@@ -151,41 +142,141 @@ void zp_verify_free(zp_verify *v) {
     v->run = v->tight = NULL;
 }
 
-zp_status zp_verify_run(const zp_objective *ob, const zp_sim_opts *so, const double *force,
-                        unsigned long seed, int nrobust, int nthreads, zp_sim **sim_out,
-                        zp_verify *v, zp_pool_done progress, void *user, char *err, size_t errlen) {
+zp_status zp_verify_begin(const zp_objective *ob, const zp_sim_opts *so, const double *force,
+                          zp_sim **sim_out, zp_verify *v, char *err, size_t errlen) {
     const zp_model *m = ob->m;
     memset(v, 0, sizeof *v);
-    *sim_out = NULL;
-    zp_sim_opts to = zp_estimate_tighter(so);
-    v->rtol = to.rtol;
-    v->atol = to.atol;
+    *sim_out = zp_sim_create(m, so);
     v->run = malloc(sizeof *v->run);
     v->tight = malloc(sizeof *v->tight);
-    zp_sim *s = zp_sim_create(m, so), *st = zp_sim_create(m, &to);
-    if (!v->run || !v->tight || !s || !st) {
-        zp_sim_free(s);
-        zp_sim_free(st);
+    if (!v->run || !v->tight || !*sim_out) {
         snprintf(err, errlen, "out of memory for the verification");
         return ZP_ERR_NOMEM;
     }
-    *sim_out = s;
     zp_schedule sched = zp_objective_schedule(ob, force);
     zp_input in = {.sched = &sched};
-    if (zp_sim_run(m, s, &in, v->run) || zp_sim_run(m, st, &in, v->tight)) {
-        snprintf(err, errlen, "re-running the best schedule: %s",
-                 v->run->message[0] ? v->run->message : v->tight->message);
-        zp_sim_free(st);
+    if (zp_sim_run(m, *sim_out, &in, v->run)) {
+        snprintf(err, errlen, "re-running the best schedule: %s", v->run->message);
         return ZP_ERR_NUMERIC;
     }
-    zp_sim_free(st);
-    double angle = 0;
-    for (int i = 0; i < m->nlink; i++) {
-        angle = fmax(angle, v->tight->max_rel_angle[i]);
+    return ZP_OK;
+}
+
+zp_status zp_verify_finish(const zp_objective *ob, const zp_sim_opts *so, const double *force,
+                           unsigned long seed, int nrobust, int nthreads, zp_verify *v,
+                           zp_pool_done progress, void *user, char *err, size_t errlen) {
+    const zp_model *m = ob->m;
+    int nsec = m->nsec, ntot = ZP_VERIFY_LEVELS * nrobust;
+    zp_sim_opts to = zp_estimate_tighter(so), fast = *so;
+    v->rtol = to.rtol;
+    v->atol = to.atol;
+    fast.output_dt = 0;
+    fast.track_loads = 0;
+    zp_schedule sched = zp_objective_schedule(ob, force);
+    zp_input in = {.sched = &sched};
+    check_batch b = {.ob = ob,
+                     .force = force,
+                     .nkill = nrobust > 0 ? nsec : 0,
+                     .ntot = ntot,
+                     .tight_sim = zp_sim_create(m, &to),
+                     .in = &in,
+                     .v = v};
+    b.pf = malloc(sizeof *b.pf * (ntot + 1) * nsec);
+    b.pe = malloc(sizeof *b.pe * (ntot + 1));
+    b.kill = calloc(nsec, sizeof *b.kill);
+    /* without robustness the tighter run alone: no pool of workspaces for one job */
+    zp_pool *pool = nrobust > 0 ? zp_pool_create(m, &fast, nthreads) : NULL;
+    gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
+    zp_status ret =
+        b.tight_sim && b.pf && b.pe && b.kill && (pool || !nrobust) && g ? ZP_OK : ZP_ERR_NOMEM;
+    if (ret == ZP_OK && pool) {
+        perturb(force, nsec, seed, nrobust, b.pf, g);
+        zp_pool_map(pool, b.nkill + 1 + ntot, check_job, &b, progress, user);
+    } else if (ret == ZP_OK) {
+        check_job(&b, 0, NULL, NULL);
     }
-    v->agree = v->run->outcome == v->tight->outcome &&
-               fabs(v->run->time - v->tight->time) <= ZP_VERIFY_DT && angle <= ob->limit;
-    return nrobust > 0
-               ? robustness(ob, so, force, seed, nrobust, nthreads, v, progress, user, err, errlen)
-               : ZP_OK;
+    if (ret == ZP_OK) {
+        if (b.tight_st) {
+            snprintf(err, errlen, "re-running the best schedule: %s", v->tight->message);
+            ret = ZP_ERR_NUMERIC;
+        } else if (nrobust > 0) {
+            tally(v, &b, nrobust);
+        }
+    } else {
+        snprintf(err, errlen, "out of memory for the verification");
+    }
+    if (ret == ZP_OK) {
+        agree(ob, v);
+    }
+    gsl_rng_free(g);
+    zp_pool_free(pool);
+    zp_sim_free(b.tight_sim);
+    free(b.pf);
+    free(b.pe);
+    free(b.kill);
+    return ret;
+}
+
+zp_status zp_verify_run(const zp_objective *ob, const zp_sim_opts *so, const double *force,
+                        unsigned long seed, int nrobust, int nthreads, zp_sim **sim_out,
+                        zp_verify *v, zp_pool_done progress, void *user, char *err, size_t errlen) {
+    zp_status st = zp_verify_begin(ob, so, force, sim_out, v, err, errlen);
+    return st ? st
+              : zp_verify_finish(ob, so, force, seed, nrobust, nthreads, v, progress, user, err,
+                                 errlen);
+}
+
+/* the answer rerun from one step tighter than so until its estimate meets acc; then the
+   verification's tighter run of that answer */
+static zp_status rerun(const zp_objective *ob, const zp_sim_opts *so, const zp_input *in,
+                       double acc, zp_sim **sim_out, zp_verify *v, zp_sim_opts *answer,
+                       zp_accuracy *a, char *err, size_t errlen) {
+    const zp_model *m = ob->m;
+    zp_sim_opts t = zp_estimate_tighter(so);
+    answer->rtol = t.rtol;
+    answer->atol = t.atol;
+    zp_sim *s = NULL;
+    zp_estimate e;
+    zp_result *r = malloc(sizeof *r);
+    zp_status st = r ? zp_accuracy_run(m, answer, in, acc, &s, r, &e, a) : ZP_ERR_NOMEM;
+    if (st) {
+        snprintf(err, errlen, "re-running the best schedule for [solver] accuracy: %s",
+                 r ? r->message : "out of memory");
+        zp_sim_free(s);
+        free(r);
+        return st;
+    }
+    a->reruns++; /* the [solver] run was the first pick */
+    zp_sim_free(*sim_out);
+    *sim_out = s;
+    free(v->run);
+    v->run = r;
+    zp_sim_opts to = zp_estimate_tighter(answer);
+    v->rtol = to.rtol;
+    v->atol = to.atol;
+    zp_sim *ts = zp_sim_create(m, &to);
+    st = ts ? zp_sim_run(m, ts, in, v->tight) : ZP_ERR_NOMEM;
+    zp_sim_free(ts);
+    if (st) {
+        snprintf(err, errlen, "re-running the best schedule: %s",
+                 ts ? v->tight->message : "out of memory");
+        return st;
+    }
+    agree(ob, v);
+    return ZP_OK;
+}
+
+zp_status zp_verify_accuracy(const zp_objective *ob, const zp_sim_opts *so, const double *force,
+                             double acc, zp_sim **sim_out, zp_verify *v, zp_sim_opts *answer,
+                             zp_accuracy *a, char *err, size_t errlen) {
+    *answer = *so;
+    double met = fabs(v->run->time - v->tight->time);
+    if (v->run->outcome == v->tight->outcome && met <= acc) {
+        *a = (zp_accuracy){
+            .requested = acc, .met = met, .ok = 1, .method = so->method, .rtol = so->rtol};
+        return ZP_OK;
+    }
+    zp_schedule sched = zp_objective_schedule(ob, force);
+    zp_input in = {.sched = &sched};
+    return rerun(ob, so, &in, acc, sim_out, v, answer, a, err, errlen);
 }

@@ -5,6 +5,7 @@
 
 #include <signal.h>
 
+#include "accuracy.h"
 #include "estimate.h"
 #include "pool.h"
 
@@ -29,13 +30,33 @@ typedef struct zp_verify {
     int kill_section; /* 1-based section whose change alone kills at `kill`, 0: a random mix */
 } zp_verify;
 
-/* Checks force (N per section) with fresh workspaces from so; trajectory rows of v->run stay
-   in *sim_out (owned by the caller, freed with zp_sim_free). nrobust = 0 skips robustness;
+/* The verification in two steps, so the caller can draw the best run while the checks go:
+   begin re-runs force (N per section) at so, its trajectory rows in *sim_out (owned by the
+   caller, freed with zp_sim_free, also on error) and its result in v->run; finish runs the
+   tighter run and the robustness runs (nrobust per level, 0: none) in one parallel batch over
+   nthreads (0: OpenMP's default), progress(user, done, total) after each job (may be NULL).
+   Each returns ZP_OK, or ZP_ERR_NUMERIC / ZP_ERR_NOMEM with why in err. */
+zp_status zp_verify_begin(const zp_objective *ob, const zp_sim_opts *so, const double *force,
+                          zp_sim **sim_out, zp_verify *v, char *err, size_t errlen);
+zp_status zp_verify_finish(const zp_objective *ob, const zp_sim_opts *so, const double *force,
+                           unsigned long seed, int nrobust, int nthreads, zp_verify *v,
+                           zp_pool_done progress, void *user, char *err, size_t errlen);
+/* Both steps: checks force (N per section) with fresh workspaces from so; trajectory rows of v->run
+   stay in *sim_out (owned by the caller, freed with zp_sim_free). nrobust = 0 skips robustness;
    progress(user, done, total) after each robustness job (may be NULL). Returns ZP_OK, or
    ZP_ERR_NUMERIC / ZP_ERR_NOMEM with why in err. */
 zp_status zp_verify_run(const zp_objective *ob, const zp_sim_opts *so, const double *force,
                         unsigned long seed, int nrobust, int nthreads, zp_sim **sim_out,
                         zp_verify *v, zp_pool_done progress, void *user, char *err, size_t errlen);
 void zp_verify_free(zp_verify *v);
+/* [solver] accuracy = acc (s) after zp_verify_finish: when the verification's estimate
+   |v->run->time - v->tight->time| exceeds acc or the verdicts differ, the answer is rerun from
+   one step tighter than so until its estimate meets acc (zp_accuracy_run), and v->run,
+   *sim_out and v->tight (with v->rtol, atol, agree) become those of the new answer. *answer:
+   the options of the answer's run; *a: what it met (reruns counted from the [solver] run).
+   ZP_OK, or the failing run's status with why in err. */
+zp_status zp_verify_accuracy(const zp_objective *ob, const zp_sim_opts *so, const double *force,
+                             double acc, zp_sim **sim_out, zp_verify *v, zp_sim_opts *answer,
+                             zp_accuracy *a, char *err, size_t errlen);
 
 #endif

@@ -519,6 +519,51 @@ static void test_landscape(void) {
     zp_model_free(m);
 }
 
+/* scripts drawn several to a gnuplot process: each in a fresh session (nothing one leaves
+   behind reaches the next), and a failing one named with its own message */
+static void test_gnuplot_groups(void) {
+    enum { N = 9 };
+    for (int bad = -1; bad < N; bad += 4) { /* none fails, then the first, then one later */
+        char dir[1024], e[1400], name[N][16];
+        const char *scripts[N];
+        snprintf(dir, sizeof dir, "%s/groups%d", tmp, bad + 1);
+        zp_tx t;
+        CHECK(zp_tx_begin(&t, dir, NULL, e, sizeof e) == ZP_OK);
+        for (int i = 0; i < N; i++) {
+            snprintf(name[i], sizeof name[i], "s%d.gp", i);
+            scripts[i] = name[i];
+            FILE *f = zp_tx_open(&t, name[i], e, sizeof e);
+            CHECK(f != NULL);
+            if (f) {
+                fprintf(f,
+                        "if (exists('leak')) exit status 3\nleak = %d\n%s"
+                        "set print 's%d.txt'\nprint 'drawn'\nunset print\n",
+                        i, i == bad ? "plot no_such_variable_here\n" : "", i);
+            }
+        }
+        int missing = 0;
+        zp_status st = zp_gnuplot_run(&t, scripts, N, &missing, e, sizeof e);
+        CHECK(!missing);
+        if (bad < 0) {
+            CHECK(st == ZP_OK);
+            CHECK(zp_tx_commit(&t, e, sizeof e) == ZP_OK);
+            for (int i = 0; i < N; i++) {
+                char out[16];
+                snprintf(out, sizeof out, "s%d.txt", i);
+                CHECK(exists(dir, out));
+            }
+        } else {
+            char want[64];
+            snprintf(want, sizeof want, "gnuplot s%d.gp failed: ", bad);
+            CHECK(st == ZP_ERR_IO && strstr(e, want) == e);
+            CHECK(strstr(e, "no_such_variable_here") != NULL || strstr(e, "undefined") != NULL);
+            CHECK(strstr(e, ZP_GNUPLOT_MARK) == NULL);
+            zp_tx_abort(&t);
+            CHECK(count_files(dir) == 0);
+        }
+    }
+}
+
 int main(void) {
     snprintf(tmp, sizeof tmp, "%s/zp_plot_XXXXXX", getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp");
     if (!mkdtemp(tmp)) {
@@ -529,6 +574,7 @@ int main(void) {
     test_frame_geometry();
     test_cli();
     test_landscape();
+    test_gnuplot_groups();
     char cmd[1100];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp);
     if (system(cmd)) {

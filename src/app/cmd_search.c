@@ -242,27 +242,37 @@ static int write_outputs(zp_tx *t, const zp_report *r, zp_sim *best_sim) {
     return 0;
 }
 
-/* the best run's figures into the transaction: 1 drawn, 0 data and scripts only (no
-   gnuplot), -1 failed (said on stderr) */
-static int figures(zp_tx *t, const zp_model *m, const zp_scene *sc, const zp_schedule *shape,
-                   const zp_search_result *res, const zp_verify *v, const zp_sim *best_sim) {
+/* the best run's figures into the transaction, started: 0, or -1 failed (said on stderr) */
+static int figures_start(zp_tx *t, const zp_model *m, const zp_scene *sc, const zp_schedule *shape,
+                         const zp_search_result *res, const zp_verify *v, const zp_sim *best_sim,
+                         int procs, zp_gnuplot_job *job, zp_plot_info *info) {
     zp_plot_opts po;
     zp_plot_opts_default(&po);
+    po.procs = procs;
     po.margin = sc->margin * M_PI / 180;
     zp_schedule best = zp_schedule_with(shape, res->force);
     po.sched = &best;
-    zp_plot_info info;
     char err[1400];
-    if (zp_plot_run(t, m, best_sim, v->run, &po, &info, err, sizeof err)) {
+    if (zp_plot_start(t, m, best_sim, v->run, &po, info, job, err, sizeof err)) {
         fprintf(stderr, "zipopt: figures: %s; nothing was written\n", err);
         return -1;
     }
-    if (info.no_gnuplot) {
+    return 0;
+}
+
+/* the figures finished: 1 drawn, 0 data and scripts only (no gnuplot), -1 failed (said) */
+static int figures_finish(zp_tx *t, zp_gnuplot_job *job, zp_plot_info *info) {
+    char err[1400];
+    if (zp_plot_finish(t, job, info, err, sizeof err)) {
+        fprintf(stderr, "zipopt: figures: %s; nothing was written\n", err);
+        return -1;
+    }
+    if (info->no_gnuplot) {
         fputs("zipopt: gnuplot is not installed (apt-get install gnuplot-nox): writing the "
               "figures' data and scripts, not the images\n",
               stderr);
     }
-    return !info.no_gnuplot;
+    return !info->no_gnuplot;
 }
 
 static void print_summary(const zp_report *r) {
@@ -369,9 +379,31 @@ static int search(int argc, char **argv, const zp_spread *sp) {
     ob.set = NULL;
     zp_sim_opts solver = st.sim;
     solver.peaks = fast.peaks;
+    /* the figures of the answer are drawn while its checks run, unless [solver] accuracy may
+       still replace it */
+    int early = !a.no_plot && !(sc->accuracy > 0), drawn = 0;
+    zp_gnuplot_job job;
+    zp_plot_info info;
+    rc = zp_verify_begin(&ob, &solver, res.force, &best_sim, &v, err, sizeof err);
+    /* half the cores draw while the checks have the other half: every gnuplot start-up costs
+       about what drawing one figure does */
+    int half = zp_gnuplot_cores() / 2;
+    if (!rc && early &&
+        figures_start(&tx, m, sc, &st.sched, &res, &v, best_sim, half > 1 ? half : 1, &job,
+                      &info)) {
+        goto done;
+    }
     phase_start(&pc, "verification: the best schedule with [solver] and 100x tighter");
-    rc = zp_verify_run(&ob, &solver, res.force, st.seed, res.interrupted ? 0 : NROBUST, 0,
-                       &best_sim, &v, on_verify, &pc, err, sizeof err);
+    if (!rc) {
+        rc = zp_verify_finish(&ob, &solver, res.force, st.seed, res.interrupted ? 0 : NROBUST, 0,
+                              &v, on_verify, &pc, err, sizeof err);
+    }
+    zp_sim_opts answer = solver;
+    zp_accuracy acc;
+    if (!rc && sc->accuracy > 0) {
+        rc = zp_verify_accuracy(&ob, &solver, res.force, sc->accuracy, &best_sim, &v, &answer, &acc,
+                                err, sizeof err);
+    }
     if (pc.shown) {
         fputc('\n', stderr);
         pc.shown = 0;
@@ -393,19 +425,22 @@ static int search(int argc, char **argv, const zp_spread *sp) {
                 STUDY_FORCE, study_sim ? study.message : "out of memory");
         goto done;
     }
-    /* the figures first, so that the report links only those drawn */
+    /* the figures before the report, so that it links only those drawn */
     if (!a.no_plot) {
         phase_start(&pc, "figures: drawing the best run with gnuplot\n");
         pc.shown = 0;
+        if (!early && figures_start(&tx, m, sc, &st.sched, &res, &v, best_sim, 0, &job, &info)) {
+            goto done;
+        }
+        drawn = figures_finish(&tx, &job, &info);
     }
-    int drawn = a.no_plot ? 0 : figures(&tx, m, sc, &st.sched, &res, &v, best_sim);
     int robust = pb.robust;
     zp_report r = {sc, m, &res, &v, best_sim, &study, STUDY_FORCE,
                    zp_search_algo_get(o.algo)->name, zp_method_get(st.sim.method)->name, a.scene,
-                   tx.dir, drawn > 0, &fast, &solver, &st.sched, st.seed, st.max_evals,
+                   tx.dir, drawn > 0, &fast, &answer, &st.sched, st.seed, st.max_evals,
                    .lim = &pb.ob.lim, .box = robust ? &pb.box : NULL,
                    .set = robust ? &pb.set : NULL, .rinfo = robust ? &pb.info : NULL,
-                   .check = robust ? &pb.check : NULL};
+                   .check = robust ? &pb.check : NULL, .acc = sc->accuracy > 0 ? &acc : NULL};
     if (drawn < 0 || write_outputs(&tx, &r, best_sim) || zp_cli_out_commit(&tx, "")) {
         goto done;
     }

@@ -1,18 +1,19 @@
-/* The gnuplot runner (gnuplot.h): one process per script, run in the private folder so the
-   scripts name their data and images by relative paths and can be rerun by hand in the
-   output folder; the wait survives signals. */
+/* The gnuplot runner (gnuplot.h): a process per core, each drawing its share of the scripts,
+   run in the private folder so the scripts name their data and images by relative paths and
+   can be rerun by hand in the output folder; the wait survives signals. */
+#define _GNU_SOURCE /* sched_getaffinity, CPU_COUNT */
 #include "gnuplot.h"
 
 #include <errno.h>
 #include <fcntl.h>
+#include <limits.h>
+#include <sched.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/wait.h>
 #include <unistd.h>
-
-#define MAX_WIDTH 8 /* scripts drawn at once */
 
 int zp_gnuplot_have(const char *prog) {
     const char *path = getenv("PATH");
@@ -28,11 +29,31 @@ int zp_gnuplot_have(const char *prog) {
     return 0;
 }
 
-/* starts `gnuplot script` in the private folder, its output kept in .log.<script> there;
+int zp_gnuplot_cores(void) {
+    cpu_set_t set;
+    if (sched_getaffinity(0, sizeof set, &set) == 0 && CPU_COUNT(&set) > 0) {
+        return CPU_COUNT(&set);
+    }
+    long n = sysconf(_SC_NPROCESSORS_ONLN);
+    return n < 1 ? 1 : n > INT_MAX ? INT_MAX : (int)n;
+}
+
+/* starts one gnuplot drawing the scripts of group g (every nproc-th from g) in the private
+   folder, each after a fresh session and a marker line, the output kept in .log.<first script>;
    registered with the transaction before a signal can see it */
-static pid_t start(zp_tx *t, const char *script) {
-    char log[300];
-    snprintf(log, sizeof log, ".log.%s", script);
+static pid_t start(zp_tx *t, const zp_gnuplot_job *j, int g) {
+    char log[300], mark[ZP_GNUPLOT_MAX_SCRIPTS][300];
+    const char *argv[3 * ZP_GNUPLOT_MAX_SCRIPTS + 2] = {"gnuplot"};
+    int argc = 1;
+    for (int i = g; i < j->n; i += j->nproc) {
+        snprintf(mark[i], sizeof mark[i], "print '%s%s'; reset session", ZP_GNUPLOT_MARK,
+                 j->script[i]);
+        argv[argc++] = "-e";
+        argv[argc++] = mark[i];
+        argv[argc++] = j->script[i];
+    }
+    argv[argc] = NULL;
+    snprintf(log, sizeof log, ".log.%s", j->script[g]);
     zp_tx_block_signals(1);
     pid_t pid = fork();
     if (pid == 0) {
@@ -54,7 +75,7 @@ static pid_t start(zp_tx *t, const char *script) {
         dup2(in, STDIN_FILENO);
         dup2(fd, STDOUT_FILENO);
         dup2(fd, STDERR_FILENO);
-        execlp("gnuplot", "gnuplot", script, (char *)NULL);
+        execvp("gnuplot", (char *const *)argv);
         _exit(127);
     }
     if (pid > 0 && !zp_tx_add_child(t, pid)) {
@@ -67,19 +88,33 @@ static pid_t start(zp_tx *t, const char *script) {
     return pid;
 }
 
-/* the first lines of a script's gnuplot log, on one line, for a message */
-static void log_excerpt(const zp_tx *t, const char *script, char *buf, size_t len) {
-    char log[300];
-    snprintf(log, sizeof log, ".log.%s", script);
+/* of group g's log: the script it was drawing when it stopped (after the last marker; the
+   group's first when there is none) and that script's lines, on one line, for a message */
+static const char *failed_script(const zp_tx *t, const zp_gnuplot_job *j, int g, char *buf,
+                                 size_t len) {
+    char log[300], text[4096];
+    snprintf(log, sizeof log, ".log.%s", j->script[g]);
     int fd = openat(zp_tx_workdir(t), log, O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
-    ssize_t n = fd >= 0 ? read(fd, buf, len - 1) : 0;
-    buf[n > 0 ? n : 0] = '\0';
+    ssize_t n = fd >= 0 ? read(fd, text, sizeof text - 1) : 0;
+    text[n > 0 ? n : 0] = '\0';
     if (fd >= 0) {
         close(fd);
     }
+    const char *name = j->script[g], *from = text;
+    for (int i = g; i < j->n; i += j->nproc) {
+        char mark[300];
+        snprintf(mark, sizeof mark, "%s%s\n", ZP_GNUPLOT_MARK, j->script[i]);
+        const char *at = strstr(text, mark);
+        if (at) {
+            name = j->script[i];
+            from = at + strlen(mark);
+        }
+    }
+    snprintf(buf, len, "%s", from);
     for (char *p = buf; *p; p++) {
         *p = *p == '\n' ? ' ' : *p;
     }
+    return name;
 }
 
 /* one finished child: its status, retried through interruptions; -1 when none is left */
@@ -90,51 +125,68 @@ static pid_t reap(int *st) {
     return done;
 }
 
-zp_status zp_gnuplot_run(zp_tx *t, const char *const *scripts, int n, int *missing, char *err,
-                         size_t errlen) {
+zp_status zp_gnuplot_start(zp_tx *t, const char *const *scripts, int n, int nproc,
+                           zp_gnuplot_job *j, char *err, size_t errlen) {
+    memset(j, 0, sizeof *j);
     if (zp_tx_flush(t, err, errlen)) {
         return ZP_ERR_IO;
     }
-    *missing = !zp_gnuplot_have("gnuplot");
-    if (*missing) {
+    if (n > ZP_GNUPLOT_MAX_SCRIPTS) {
+        snprintf(err, errlen, "too many gnuplot scripts (%d)", n);
+        return ZP_ERR_IO;
+    }
+    j->missing = !zp_gnuplot_have("gnuplot");
+    if (j->missing) {
         return ZP_OK;
     }
-    long ncpu = sysconf(_SC_NPROCESSORS_ONLN);
-    int width = ncpu < 1 ? 1 : ncpu > MAX_WIDTH ? MAX_WIDTH : (int)ncpu;
-    pid_t pid[64];
-    int next = 0, running = 0, failed = -1;
-    while (next < n || running) {
-        if (next < n && next < 64 && running < width && failed < 0) {
-            pid[next] = start(t, scripts[next]);
-            if (pid[next] < 0) {
-                snprintf(err, errlen, "cannot start gnuplot: %s", strerror(errno));
-                failed = next;
-            } else {
-                running++;
-            }
-            next++;
-            continue;
+    /* a process per core: each start-up (fonts, terminal) costs about what drawing one does */
+    int ncpu = nproc > 0 ? nproc : zp_gnuplot_cores();
+    j->n = n;
+    j->nproc = ncpu > ZP_GNUPLOT_MAX_PROC ? ZP_GNUPLOT_MAX_PROC : ncpu;
+    j->nproc = j->nproc < n ? j->nproc : n;
+    for (int i = 0; i < n; i++) {
+        j->script[i] = scripts[i];
+    }
+    for (int g = 0; g < j->nproc; g++) {
+        j->pid[g] = start(t, j, g);
+        if (j->pid[g] < 0) {
+            snprintf(err, errlen, "cannot start gnuplot: %s", strerror(errno));
+            return ZP_ERR_IO; /* the caller's abort ends those started */
         }
+        j->running++;
+    }
+    return ZP_OK;
+}
+
+zp_status zp_gnuplot_wait(zp_tx *t, zp_gnuplot_job *j, char *err, size_t errlen) {
+    int failed = 0;
+    while (j->running > 0) {
         int st;
-        pid_t done = running ? reap(&st) : -1;
+        pid_t done = reap(&st);
         if (done < 0) {
             break;
         }
         zp_tx_drop_child(t, done);
-        running--;
-        for (int i = 0; i < next; i++) {
-            if (pid[i] == done && !(WIFEXITED(st) && WEXITSTATUS(st) == 0) && failed < 0) {
+        for (int g = 0; g < j->nproc; g++) {
+            if (j->pid[g] != done) {
+                continue;
+            }
+            j->running--;
+            if (!(WIFEXITED(st) && WEXITSTATUS(st) == 0) && !failed) {
                 char log[600];
-                log_excerpt(t, scripts[i], log, sizeof log);
-                snprintf(err, errlen, "gnuplot %s failed: %s", scripts[i],
-                         *log ? log : "no message");
-                failed = i;
+                const char *name = failed_script(t, j, g, log, sizeof log);
+                snprintf(err, errlen, "gnuplot %s failed: %s", name, *log ? log : "no message");
+                failed = 1;
             }
         }
     }
-    if (failed < 0 && next < n) {
-        snprintf(err, errlen, "too many gnuplot scripts (%d)", n);
-        failed = next;
-    }
-    return failed < 0 ? ZP_OK : ZP_ERR_IO;
+    return failed ? ZP_ERR_IO : ZP_OK;
+}
+
+zp_status zp_gnuplot_run(zp_tx *t, const char *const *scripts, int n, int *missing, char *err,
+                         size_t errlen) {
+    zp_gnuplot_job j;
+    zp_status st = zp_gnuplot_start(t, scripts, n, 0, &j, err, errlen);
+    *missing = j.missing;
+    return st ? st : zp_gnuplot_wait(t, &j, err, errlen);
 }

@@ -7,13 +7,38 @@
 
 #include "out_file.h"
 
+#include <sys/types.h>
+
+#define ZP_GNUPLOT_MAX_SCRIPTS 16
+#define ZP_GNUPLOT_MAX_PROC 8
+/* the line each process prints to its log before a script (the one that failed is the last) */
+#define ZP_GNUPLOT_MARK "zipopt: drawing "
+
+/* Scripts being drawn: one gnuplot process per core (at most ZP_GNUPLOT_MAX_PROC), process g
+   drawing scripts g, g + nproc, ... in a fresh session each. */
+typedef struct zp_gnuplot_job {
+    const char *script[ZP_GNUPLOT_MAX_SCRIPTS]; /* borrowed names in the private folder */
+    int n, nproc, running;
+    pid_t pid[ZP_GNUPLOT_MAX_PROC];
+    int missing; /* 1: gnuplot is not on PATH; nothing runs */
+} zp_gnuplot_job;
+
+/* The cores this process may run on (its CPU affinity), at least 1. */
+int zp_gnuplot_cores(void);
 /* 1 when an executable named prog is on PATH. */
 int zp_gnuplot_have(const char *prog);
-/* Closes the transaction's open files, then runs gnuplot on each of the n scripts (names in
-   the private folder) a few at a time, each in its own process group (a Ctrl-C at the
-   terminal is the transaction's to handle, not gnuplot's). When gnuplot is not on PATH,
-   *missing = 1 and ZP_OK. A write error or a failing script: ZP_ERR_IO with the cause
+/* Closes the transaction's open files, then starts gnuplot on the n scripts (names in the
+   private folder, kept by the caller until the wait) in nproc processes (0: one per core of
+   zp_gnuplot_cores), each in its own process group (a Ctrl-C at the terminal is the transaction's
+   to handle, not gnuplot's) and registered with the transaction (its abort ends them). When gnuplot
+   is not on PATH, j->missing = 1 and ZP_OK. A write error or a failed start: ZP_ERR_IO with why in
+   err; the caller then aborts the transaction. */
+zp_status zp_gnuplot_start(zp_tx *t, const char *const *scripts, int n, int nproc,
+                           zp_gnuplot_job *j, char *err, size_t errlen);
+/* Waits for j's processes. A failing script: ZP_ERR_IO with its name and its part of the log
    (gnuplot's own message) in err; the caller then aborts the transaction. */
+zp_status zp_gnuplot_wait(zp_tx *t, zp_gnuplot_job *j, char *err, size_t errlen);
+/* Both: *missing = 1 when gnuplot is not on PATH. */
 zp_status zp_gnuplot_run(zp_tx *t, const char *const *scripts, int n, int *missing, char *err,
                          size_t errlen);
 

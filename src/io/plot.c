@@ -334,8 +334,10 @@ static FILE *open_file(zp_tx *t, const char *name, const char **scripts, int *ns
     return zp_tx_open(t, name, err, errlen);
 }
 
-zp_status zp_plot_run(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_result *r,
-                      const zp_plot_opts *o, zp_plot_info *info, char *err, size_t errlen) {
+zp_status zp_plot_start(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_result *r,
+                        const zp_plot_opts *o, zp_plot_info *info, zp_gnuplot_job *j, char *err,
+                        size_t errlen) {
+    memset(j, 0, sizeof *j);
     memset(info, 0, sizeof *info);
     int n;
     const zp_row *rows = zp_sim_rows(s, &n);
@@ -391,11 +393,25 @@ zp_status zp_plot_run(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_res
         info->mp4 = zp_gnuplot_have("ffmpeg");
         zp_plot_anim(ag, ad, al, m, rows, n, r, o, cb, info->mp4, info);
     }
-    zp_status st = zp_gnuplot_run(t, scripts, ns, &info->no_gnuplot, err, errlen);
+    zp_status st = zp_gnuplot_start(t, scripts, ns, o->procs, j, err, errlen);
+    info->no_gnuplot = j->missing;
+    return st;
+}
+
+zp_status zp_plot_finish(zp_tx *t, zp_gnuplot_job *j, zp_plot_info *info, char *err,
+                         size_t errlen) {
+    zp_status st = zp_gnuplot_wait(t, j, err, errlen);
     if (info->mp4) { /* ffmpeg's own failure does not stop the other figures */
         struct stat sb;
         info->mp4 = !info->no_gnuplot &&
                     fstatat(zp_tx_workdir(t), "run.mp4", &sb, AT_SYMLINK_NOFOLLOW) == 0;
     }
     return st;
+}
+
+zp_status zp_plot_run(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_result *r,
+                      const zp_plot_opts *o, zp_plot_info *info, char *err, size_t errlen) {
+    zp_gnuplot_job j;
+    zp_status st = zp_plot_start(t, m, s, r, o, info, &j, err, errlen);
+    return st ? st : zp_plot_finish(t, &j, info, err, errlen);
 }

@@ -4,6 +4,7 @@
 #ifndef ZP_PLOT_H
 #define ZP_PLOT_H
 
+#include "gnuplot.h"
 #include "out_file.h"
 #include "sim.h"
 
@@ -22,6 +23,7 @@ typedef struct zp_plot_opts {
     int width, height;                   /* px, animation size; height 0: from the course's shape */
     double speedup;                      /* simulated seconds shown per second of animation */
     const zp_schedule *sched; /* borrowed, may be NULL: each section's drive in the labels */
+    int procs; /* gnuplot processes, 0: one per core (fewer when the caller computes meanwhile) */
 } zp_plot_opts;
 
 /* What zp_plot_run made. */
@@ -54,5 +56,12 @@ int zp_plot_parse_size(const char *text, zp_plot_opts *o, char *why, size_t whyl
    Single-threaded: it evaluates m->course. */
 zp_status zp_plot_run(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_result *r,
                       const zp_plot_opts *o, zp_plot_info *info, char *err, size_t errlen);
+/* zp_plot_run in two steps, so the caller can work while gnuplot draws: start writes every
+   file and starts gnuplot (s and r may go after it), finish waits and completes info. The
+   transaction must not be committed between them; its abort ends the drawing. */
+zp_status zp_plot_start(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_result *r,
+                        const zp_plot_opts *o, zp_plot_info *info, zp_gnuplot_job *j, char *err,
+                        size_t errlen);
+zp_status zp_plot_finish(zp_tx *t, zp_gnuplot_job *j, zp_plot_info *info, char *err, size_t errlen);
 
 #endif
