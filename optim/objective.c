@@ -71,33 +71,49 @@ zp_schedule zp_objective_schedule(const zp_objective *ob, const double *p) {
     return zp_schedule_sections(ob->m->nsec, p, -INFINITY, INFINITY);
 }
 
+int zp_objective_eval_nominal(const zp_objective *ob, zp_sim *s, const zp_schedule *sched,
+                              zp_eval *e, zp_result *r) {
+    zp_input in = {.sched = sched};
+    zp_objective_eval_run(ob, ob->m, s, &in, e, r);
+    return ob->set && ob->set->n > 0 && zp_objective_feasible(e);
+}
+
+double zp_objective_scenario(const zp_objective *ob, int i, const zp_schedule *sched, zp_sim *s,
+                             zp_result *r) {
+    const zp_scen_set *set = ob->set;
+    int j = set->order[i];
+    const zp_objective *oj = set->judge && set->judge[j].m ? &set->judge[j] : ob;
+    zp_input in = {.sched = sched, .force_scale = set->sc[j].force, .start = &set->start[j]};
+    zp_eval ej;
+    zp_objective_eval_run(oj, &set->m[j], s, &in, &ej, r);
+    return zp_objective_scenario_cons(oj, &ej);
+}
+
+void zp_objective_eval_close(const zp_objective *ob, int nrun, int broke, zp_eval *e) {
+    zp_scen_set *set = ob->set;
+#pragma omp atomic
+    set->runs += nrun;
+    if (broke) {
+        e->scenario = set->order[nrun - 1];
+#pragma omp atomic
+        set->fails[e->scenario]++;
+    }
+    set_score(ob, e);
+}
+
 void zp_objective_eval(const zp_objective *ob, zp_sim *s, const double *p, zp_eval *e,
                        zp_result *r) {
     zp_schedule sched = zp_objective_schedule(ob, p);
-    zp_input in = {.sched = &sched};
-    zp_objective_eval_run(ob, ob->m, s, &in, e, r);
-    if (ob->set && zp_objective_feasible(e)) {
-        zp_scen_set *set = ob->set;
-        for (int i = 0; i < set->n; i++) {
-            int j = set->order[i];
-            const zp_objective *oj = set->judge && set->judge[j].m ? &set->judge[j] : ob;
-            zp_eval ej;
-            in = (zp_input){.sched = &sched, .force_scale = set->sc[j].force,
-                            .start = &set->start[j]};
-            zp_objective_eval_run(oj, &set->m[j], s, &in, &ej, r);
-            double cons = zp_objective_scenario_cons(oj, &ej);
-            e->cons = fmax(e->cons, cons);
-#pragma omp atomic
-            set->runs++;
-            if (cons > 0) {
-                e->scenario = j;
-#pragma omp atomic
-                set->fails[j]++;
-                break;
-            }
-        }
+    if (!zp_objective_eval_nominal(ob, s, &sched, e, r)) {
+        return;
     }
-    set_score(ob, e);
+    int i = 0, broke = 0;
+    while (i < ob->set->n && !broke) {
+        double cons = zp_objective_scenario(ob, i++, &sched, s, r);
+        e->cons = fmax(e->cons, cons);
+        broke = cons > 0;
+    }
+    zp_objective_eval_close(ob, i, broke, e);
 }
 
 int zp_objective_feasible(const zp_eval *e) {

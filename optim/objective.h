@@ -44,6 +44,16 @@ zp_schedule zp_objective_schedule(const zp_objective *ob, const double *p);
    that breaks the margin or a limit; cons is the worst over the runs. r receives the last run. */
 void zp_objective_eval(const zp_objective *ob, zp_sim *s, const double *p, zp_eval *e,
                        zp_result *r);
+/* The parts of zp_objective_eval, for a caller that shares a survivor's scenarios out: the
+   nominal run of sched scored into e (1: a survivor with a set, the scenarios follow); the
+   constraint of the scenario at position i of the set's order; and, once positions [0, nrun)
+   ran with their constraints folded into e->cons in order (broke: the last one broke), the
+   counts and the score as the serial loop leaves them. */
+int zp_objective_eval_nominal(const zp_objective *ob, zp_sim *s, const zp_schedule *sched,
+                              zp_eval *e, zp_result *r);
+double zp_objective_scenario(const zp_objective *ob, int i, const zp_schedule *sched, zp_sim *s,
+                             zp_result *r);
+void zp_objective_eval_close(const zp_objective *ob, int nrun, int broke, zp_eval *e);
 /* One run of in on model m (ob->m or a scenario's model), scored without the set. */
 void zp_objective_eval_run(const zp_objective *ob, const zp_model *m, zp_sim *s,
                            const zp_input *in, zp_eval *e, zp_result *r);

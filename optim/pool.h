@@ -16,6 +16,9 @@ typedef void (*zp_pool_done)(void *user, int done, int total);
    are not thread-safe). NULL when out of memory. */
 zp_pool *zp_pool_create(const zp_model *m, const zp_sim_opts *o, int nthreads);
 void zp_pool_free(zp_pool *p);
+/* A second workspace per thread (from m and o), with which a thread idle at a batch's end helps
+   another run a survivor's scenarios (zp_pool_objective_eval). 0, or -1 when out of memory. */
+int zp_pool_help(zp_pool *p, const zp_model *m, const zp_sim_opts *o);
 int zp_pool_threads(const zp_pool *p);
 
 /* Runs job(user, i, ...) for every i in [0, n) over the pool's threads; done(done_user, ..)
@@ -27,5 +30,12 @@ void zp_pool_map(zp_pool *p, int n, zp_pool_job job, void *user, zp_pool_done do
    parallel. */
 void zp_pool_eval(zp_pool *p, const zp_objective *ob, int n, const double *f, zp_eval *e,
                   zp_pool_done done, void *done_user);
+
+/* zp_objective_eval of parameters f from inside a job of p (s and r: its workspace), the
+   survivor's scenarios run in parallel by the threads idle at the batch's end when p has
+   helpers: e, the set's counts and fails come out bit for bit as the serial loop gives them
+   (r then holds some run of the schedule). */
+void zp_pool_objective_eval(zp_pool *p, const zp_objective *ob, zp_sim *s, zp_result *r,
+                            const double *f, zp_eval *e);
 
 #endif

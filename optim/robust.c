@@ -323,7 +323,7 @@ static void scen_job(void *user, int i, zp_sim *s, zp_result *r) {
     scen_judge(sb->ob, sb->b, sb->c0, s, r, sb->sched, sb->u + (size_t)i * sb->b->d, &sb->pw[i]);
 }
 
-/* the polishes of the adversary, one after another on one workspace */
+/* the polishes of the adversary, in parallel: polish k from point top[k] into its own best */
 typedef struct polish_batch {
     const zp_objective *ob;
     const zp_box *b;
@@ -331,37 +331,30 @@ typedef struct polish_batch {
     const zp_schedule *sched;
     const zp_robust_worst *pw;
     const int *top;
-    zp_robust_worst *worst;
-    long *sims;
+    adv_ctx *a; /* ADV_POLISH */
 } polish_batch;
 
-static void polish_job(void *user, int i, zp_sim *s, zp_result *r) {
+static void polish_job(void *user, int k, zp_sim *s, zp_result *r) {
     polish_batch *pb = user;
     int d = pb->b->d;
     double lo[ZP_BOX_MAX], hi[ZP_BOX_MAX];
-    (void)i;
     for (int c = 0; c < d; c++) {
         lo[c] = -1;
         hi[c] = 1;
     }
-    for (int k = 0; k < ADV_POLISH; k++) {
-        adv_ctx a = {pb->ob, pb->b, pb->c0, s, r, pb->sched, pb->pw[pb->top[k]], 0};
-        nlopt_opt opt = nlopt_create(d > 1 ? NLOPT_LN_BOBYQA : NLOPT_LN_COBYLA, d);
-        double x[ZP_BOX_MAX], val;
-        memcpy(x, pb->pw[pb->top[k]].u, sizeof *x * d);
-        if (opt) {
-            nlopt_set_max_objective(opt, adv_obj, &a);
-            nlopt_set_lower_bounds(opt, lo);
-            nlopt_set_upper_bounds(opt, hi);
-            nlopt_set_maxeval(opt, ADV_EVALS);
-            nlopt_set_initial_step1(opt, 0.25);
-            nlopt_optimize(opt, x, &val);
-            nlopt_destroy(opt);
-        }
-        *pb->sims += a.sims;
-        if (a.best.cons > pb->worst->cons) {
-            *pb->worst = a.best;
-        }
+    adv_ctx *a = &pb->a[k];
+    *a = (adv_ctx){pb->ob, pb->b, pb->c0, s, r, pb->sched, pb->pw[pb->top[k]], 0};
+    nlopt_opt opt = nlopt_create(d > 1 ? NLOPT_LN_BOBYQA : NLOPT_LN_COBYLA, d);
+    double x[ZP_BOX_MAX], val;
+    memcpy(x, pb->pw[pb->top[k]].u, sizeof *x * d);
+    if (opt) {
+        nlopt_set_max_objective(opt, adv_obj, a);
+        nlopt_set_lower_bounds(opt, lo);
+        nlopt_set_upper_bounds(opt, hi);
+        nlopt_set_maxeval(opt, ADV_EVALS);
+        nlopt_set_initial_step1(opt, 0.25);
+        nlopt_optimize(opt, x, &val);
+        nlopt_destroy(opt);
     }
 }
 
@@ -403,8 +396,15 @@ static void adversary(const zp_objective *ob, const zp_box *b, zp_pool *w, const
             *worst = pw[top[k]];
         }
     }
-    polish_batch pb = {ob, b, &c0, &sched, pw, top, worst, sims};
-    zp_pool_map(w, 1, polish_job, &pb, NULL, NULL);
+    adv_ctx a[ADV_POLISH];
+    polish_batch pb = {ob, b, &c0, &sched, pw, top, a};
+    zp_pool_map(w, ADV_POLISH, polish_job, &pb, NULL, NULL);
+    for (int k = 0; k < ADV_POLISH; k++) {
+        *sims += a[k].sims;
+        if (a[k].best.cons > worst->cons) {
+            *worst = a[k].best;
+        }
+    }
 out:
     free(u);
     free(pw);
@@ -424,7 +424,12 @@ zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts 
     }
     zp_status st = ZP_OK;
     for (;;) {
-        st = zp_search_run(ob, so, lo, hi, o, res, err, errlen);
+        /* after the first round, a warm restart from what the last one found; a full search
+           only when none of its starts can be made to survive the grown set */
+        st = info->rounds ? zp_search_warm(ob, so, lo, hi, o, res, err, errlen) : ZP_OK;
+        if (!st && (!info->rounds || (!res->found && !res->interrupted))) {
+            st = zp_search_run(ob, so, lo, hi, o, res, err, errlen);
+        }
         info->rounds++;
         if (st || !res->found || res->interrupted || b->d == 0) {
             break;

@@ -83,7 +83,7 @@ typedef struct zp_robust_worst {
 } zp_robust_worst;
 
 typedef struct zp_robust_info {
-    int rounds;        /* searches run (1 + scenarios added by the adversary) */
+    int rounds;        /* rounds run (1 + scenarios added by the adversary) */
     int added;         /* scenarios the adversary added */
     long sims;         /* simulations of the adversary */
     zp_robust_worst worst; /* of the answer, from the last adversarial search */
@@ -91,7 +91,8 @@ typedef struct zp_robust_info {
 
 /* The robust search: ob (with ob->set built) searched as zp_search_run does; then, while the
    answer exists and the adversary finds a scenario of b that breaks it, that scenario joins
-   the set and the search reruns (at most max_rounds searches). */
+   the set and the search restarts warm from what it found (zp_search_warm; afresh only when
+   no warm start survives the grown set), at most max_rounds rounds in all. */
 zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
                            const double *lo, const double *hi, const zp_search_opts *o,
                            int max_rounds, zp_search_result *res, zp_robust_info *info, char *err,
@@ -119,7 +120,7 @@ typedef struct zp_robust_problem {
     const zp_spread *spread;
 } zp_robust_problem;
 
-#define ZP_ROBUST_ROUNDS 4 /* searches at most: the adversary adds up to 3 scenarios */
+#define ZP_ROBUST_ROUNDS 4 /* rounds at most: the adversary adds up to 3 scenarios */
 
 /* p for sc and m: the objective (limit: rad, the largest joint angle allowed; shape: the
    schedule kind the parameters fill; t_max of the [solver] options so), and fast = search (the

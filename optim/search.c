@@ -104,7 +104,7 @@ void zp_search_report(zp_search *S, int improved) {
 }
 
 void zp_search_eval(zp_search *S, zp_sim *s, zp_result *r, const double *f, zp_eval *e) {
-    zp_objective_eval(S->ob, s, f, e, r);
+    zp_pool_objective_eval(S->pool, S->ob, s, r, f, e);
 #pragma omp critical
     {
         zp_search_result *res = S->res;
@@ -204,6 +204,7 @@ static void base_scan(zp_search *S, int n0) {
             res->base_found = 1;
             res->base = *e;
             res->base_force = zp_archive_f(S, i)[0];
+            memcpy(res->base_p, zp_archive_f(S, i), sizeof *res->base_p * S->n);
         }
     }
 }
@@ -274,6 +275,7 @@ static zp_status polish_round(zp_search *S, char *err, size_t errlen) {
         res->base_found = 1;
         res->base = base_rec.e;
         res->base_force = base_rec.end[0];
+        memcpy(res->base_p, base_rec.end, sizeof *res->base_p * S->n);
     }
     return st;
 }
@@ -295,6 +297,35 @@ static void evidence(zp_search *S) {
         res->nbasins += isnew;
         res->nreached += res->found && p->e.time <= res->best.time * (1 + ZP_SEARCH_REACH);
     }
+}
+
+/* the distinct survivable polish ends, best first, for a warm restart */
+static void keep_ends(zp_search *S) {
+    zp_search_result *res = S->res;
+    res->nends = 0;
+    int *used = calloc(S->npol ? S->npol : 1, sizeof *used);
+    while (used && res->nends < ZP_SEARCH_ENDS) {
+        int b = -1;
+        for (int j = 0; j < S->npol; j++) {
+            const zp_polish_rec *p = &S->pol[j];
+            int ok = !used[j] && p->n > 0 && zp_objective_feasible(&p->e);
+            for (int i = 0; ok && i < res->nends; i++) {
+                ok = distinct(S, p->end, res->ends[i]);
+            }
+            used[j] |= !ok;
+            if (ok &&
+                (b < 0 || zp_search_ahead(&p->e, p->end, &S->pol[b].e, S->pol[b].end, S->n))) {
+                b = j;
+            }
+        }
+        if (b < 0) {
+            break;
+        }
+        used[b] = 1;
+        memcpy(res->ends[res->nends], S->pol[b].end, sizeof *S->pol[b].end * S->n);
+        res->ends_time[res->nends++] = S->pol[b].e.time;
+    }
+    free(used);
 }
 
 static double best_time(const zp_search_result *res) {
@@ -332,7 +363,7 @@ static zp_status start(zp_search *S, const zp_sim_opts *so, char *err, size_t er
     S->q =
         S->n <= 40 ? gsl_qrng_alloc(gsl_qrng_sobol, S->n) : gsl_qrng_alloc(gsl_qrng_halton, S->n);
     gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
-    if (!S->pool || !S->q || !g) {
+    if (!S->pool || !S->q || !g || (S->ob->set && zp_pool_help(S->pool, S->ob->m, so))) {
         gsl_rng_free(g);
         snprintf(err, errlen, "out of memory creating the search's workspaces");
         return ZP_ERR_NOMEM;
@@ -346,9 +377,9 @@ static zp_status start(zp_search *S, const zp_sim_opts *so, char *err, size_t er
     return ZP_OK;
 }
 
-zp_status zp_search_run(const zp_objective *ob, const zp_sim_opts *so, const double *lo,
-                        const double *hi, const zp_search_opts *o, zp_search_result *res, char *err,
-                        size_t errlen) {
+/* a search's state over res, its clock started */
+static zp_search begin(const zp_objective *ob, const double *lo, const double *hi,
+                       const zp_search_opts *o, zp_search_result *res) {
     memset(res, 0, sizeof *res);
     /* the parameters: today one force per section */
     zp_search S = {.ob = ob,
@@ -362,26 +393,150 @@ zp_status zp_search_run(const zp_objective *ob, const zp_sim_opts *so, const dou
                    .diag_from = -1,
                    .phase = "scan"};
     clock_gettime(CLOCK_MONOTONIC, &S.t0);
+    return S;
+}
+
+/* how the search ended, and its state freed */
+static void end(zp_search *S) {
+    zp_search_result *res = S->res;
+    const zp_search_opts *o = S->o;
+    res->nthreads = S->pool ? zp_pool_threads(S->pool) : 0;
+    res->interrupted = o->stop && *o->stop;
+    res->timed_out =
+        !res->interrupted && !res->converged && o->max_time > 0 && zp_search_since(S) > o->max_time;
+    res->budget_out =
+        !res->converged && !res->interrupted && !res->timed_out && zp_search_halted(S);
+    res->wall_s = zp_search_since(S);
+    zp_pool_free(S->pool);
+    if (S->q) {
+        gsl_qrng_free(S->q);
+    }
+    free(S->a.f);
+    free(S->a.e);
+    free(S->pol);
+    free(S->lined);
+    free(S->lined_k);
+}
+
+zp_status zp_search_run(const zp_objective *ob, const zp_sim_opts *so, const double *lo,
+                        const double *hi, const zp_search_opts *o, zp_search_result *res, char *err,
+                        size_t errlen) {
+    zp_search S = begin(ob, lo, hi, o, res);
     zp_status st = start(&S, so, err, errlen);
     if (st == ZP_OK) {
         st = rounds(&S, err, errlen);
         evidence(&S);
+        keep_ends(&S);
     }
-    res->nthreads = S.pool ? zp_pool_threads(S.pool) : 0;
-    res->interrupted = o->stop && *o->stop;
-    res->timed_out = !res->interrupted && !res->converged && o->max_time > 0 &&
-                     zp_search_since(&S) > o->max_time;
-    res->budget_out =
-        !res->converged && !res->interrupted && !res->timed_out && zp_search_halted(&S);
-    res->wall_s = zp_search_since(&S);
-    zp_pool_free(S.pool);
-    if (S.q) {
-        gsl_qrng_free(S.q);
+    end(&S);
+    return st;
+}
+
+/* design note: after the adversary adds a scenario the answer breaks by a hair, so the best of
+   the grown set lies next to it (or next to another end nearly as fast): short polishes from
+   there, with small first steps, find it at a fraction of a full search's cost */
+#define WARM_BUDGET 60  /* simulations per warm polish */
+#define WARM_STEP 0.002 /* its first step, share of the box */
+
+/* the warm polishes' starts: the answer, then the good ends distinct from it */
+static int warm_starts(const zp_search *S, const zp_search_result *prev, const double **x) {
+    int n = 0;
+    x[n++] = prev->force;
+    for (int i = 0; i < prev->nends && n < NSTARTS; i++) {
+        if (distinct(S, prev->ends[i], prev->force) &&
+            prev->ends_time[i] <= prev->best.time * (1 + ZP_SEARCH_WARM_REACH)) {
+            x[n++] = prev->ends[i];
+        }
     }
-    free(S.a.f);
-    free(S.a.e);
-    free(S.pol);
-    free(S.lined);
-    free(S.lined_k);
+    return n;
+}
+
+/* the previous best constant push kept when it survives the grown set, else polished again */
+static int warm_base(zp_search *S, const zp_search_result *prev, zp_polish_job *job, double *step) {
+    zp_search_result *res = S->res;
+    if (!prev->base_found) {
+        return 0;
+    }
+    zp_eval e;
+    zp_pool_eval(S->pool, S->ob, 1, prev->base_p, &e, NULL, NULL);
+    S->spent++; /* counted in res->evals after the polishes (the first counted sets the best) */
+    if (zp_objective_feasible(&e)) {
+        res->base_found = 1;
+        res->base = e;
+        res->base_force = prev->base_force;
+        memcpy(res->base_p, prev->base_p, sizeof *res->base_p * S->n);
+        return 0;
+    }
+    *step = DIAG_STEP;
+    *job = (zp_polish_job){prev->base_p, step, 1, BASE_BUDGET, NULL};
+    return 1;
+}
+
+static zp_status warm(zp_search *S, const zp_search_result *prev, char *err, size_t errlen) {
+    zp_polish_rec rec[NSTARTS + 1];
+    zp_polish_job jobs[NSTARTS + 1];
+    double step[ZP_SCHED_MAX_PARAMS], diag_step;
+    for (int k = 0; k < S->n; k++) {
+        step[k] = WARM_STEP * (S->hi[k] - S->lo[k]);
+    }
+    S->phase = "polish";
+    int nj = warm_base(S, prev, &jobs[0], &diag_step);
+    const double *x[NSTARTS];
+    int nstart = warm_starts(S, prev, x);
+    for (int i = 0; i < nstart; i++) {
+        jobs[nj++] = (zp_polish_job){x[i], step, 0, WARM_BUDGET, NULL};
+    }
+    for (int i = 0; i < nj; i++) {
+        jobs[i].out = &rec[i];
+    }
+    zp_status st = zp_polish_batch(S, algos[S->o->algo].local, jobs, nj, err, errlen);
+    int base = nj > nstart;
+    S->res->evals += prev->base_found;
+    if (base && rec[0].n > 0 && zp_objective_feasible(&rec[0].e)) {
+        S->res->base_found = 1;
+        S->res->base = rec[0].e;
+        S->res->base_force = rec[0].end[0];
+        memcpy(S->res->base_p, rec[0].end, sizeof *S->res->base_p * S->n);
+    }
+    S->pol = malloc(sizeof *S->pol * nstart);
+    if (S->pol) {
+        memcpy(S->pol, rec + base, sizeof *S->pol * nstart);
+        S->npol = nstart;
+        keep_ends(S);
+    }
+    return st;
+}
+
+zp_status zp_search_warm(const zp_objective *ob, const zp_sim_opts *so, const double *lo,
+                         const double *hi, const zp_search_opts *o, zp_search_result *res,
+                         char *err, size_t errlen) {
+    zp_search_result *prev = malloc(sizeof *prev);
+    if (!prev) {
+        snprintf(err, errlen, "out of memory for the warm restart");
+        return ZP_ERR_NOMEM;
+    }
+    *prev = *res;
+    zp_search S = begin(ob, lo, hi, o, res);
+    zp_status st = start(&S, so, err, errlen);
+    if (st == ZP_OK) {
+        st = warm(&S, prev, err, errlen);
+    }
+    /* the evidence of convergence stays the full search's: its polishes, what they reached */
+    res->nrounds = prev->nrounds;
+    res->nbasins = prev->nbasins;
+    res->nreached = prev->nreached;
+    res->converged = prev->converged;
+    res->last_gain = prev->last_gain;
+    res->nhist = prev->nhist;
+    memcpy(res->hist, prev->hist, sizeof *res->hist * prev->nhist);
+    end(&S);
+    res->budget_out = prev->budget_out;
+    res->timed_out = prev->timed_out;
+    res->nstarts = prev->nstarts;
+    res->evals += prev->evals;
+    res->nfeasible += prev->nfeasible;
+    res->nfailed += prev->nfailed;
+    res->wall_s += prev->wall_s;
+    free(prev);
     return st;
 }

@@ -10,6 +10,7 @@
 #define ZP_SEARCH_HIST 256   /* improvements kept in the history */
 #define ZP_SEARCH_REACH 1e-4 /* a polish ending this close (relative time) reached the best */
 #define ZP_SEARCH_CONV 1e-6  /* a round improving the best less than this (relative) converged */
+#define ZP_SEARCH_ENDS 4     /* survivable polish ends kept for a warm restart */
 
 /* The strategies the search offers: a global phase, then a local polish. */
 typedef struct zp_search_algo {
@@ -59,6 +60,10 @@ typedef struct zp_search_result {
     int base_found;    /* a survivable constant push was found */
     double base_force; /* N, the best constant push */
     zp_eval base;
+    double base_p[ZP_SCHED_MAX_PARAMS]; /* its parameters */
+    int nends;                          /* distinct survivable polish ends, best first */
+    double ends[ZP_SEARCH_ENDS][ZP_SCHED_MAX_PARAMS];
+    double ends_time[ZP_SEARCH_ENDS]; /* s, their finish times */
     long evals;              /* simulations spent */
     long nfeasible, nfailed; /* runs that survived, runs the integrator gave up on */
     int nthreads, nstarts;   /* workspaces used, local polishes run */
@@ -87,5 +92,18 @@ long zp_search_default_budget(int n);
 zp_status zp_search_run(const zp_objective *ob, const zp_sim_opts *so, const double *lo,
                         const double *hi, const zp_search_opts *o, zp_search_result *res, char *err,
                         size_t errlen);
+
+/* A warm restart after ob's scenario set grew: res holds a search's result for the smaller set
+   (zp_search_run's or this one's) and receives this one's. COBYLA (the algorithm's polish) runs
+   from the answer and from the distinct survivable polish ends within ZP_SEARCH_WARM_REACH of
+   its time, each with a budget fixed in advance, all in parallel; the best constant push is
+   kept while it survives the grown set, else polished again from where it was. found = 0: no
+   start was made survivable (the caller searches afresh). The answer, its counts (added to the
+   earlier ones) and the ends are the warm ones; the evidence of convergence (rounds, polishes,
+   basins, history) stays the full search's. Same seed and set, same bits on any thread count. */
+#define ZP_SEARCH_WARM_REACH 1e-3
+zp_status zp_search_warm(const zp_objective *ob, const zp_sim_opts *so, const double *lo,
+                         const double *hi, const zp_search_opts *o, zp_search_result *res,
+                         char *err, size_t errlen);
 
 #endif

@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "pool.h"
 #include "robust.h"
 #include "testutil.h"
 
@@ -172,8 +173,8 @@ static double largest_push(const zp_model *m, const zp_sim_opts *o, double limit
 
 static zp_search_result res, res2;
 
-static void robust_search(zp_objective *ob, const zp_scene *sc, const zp_sim_opts *o,
-                          int nthreads, zp_search_result *r, zp_robust_info *info) {
+static void robust_search(zp_objective *ob, const zp_scene *sc, const zp_sim_opts *o, int nthreads,
+                          zp_search_result *r, zp_robust_info *info, long *runs) {
     zp_box b;
     zp_box_from_scene(sc, ob->m, &b);
     zp_scen_set set;
@@ -187,6 +188,7 @@ static void robust_search(zp_objective *ob, const zp_scene *sc, const zp_sim_opt
         hi[k] = sc->force_max;
     }
     CHECK(zp_robust_search(ob, &b, o, lo, hi, &so, 4, r, info, err, sizeof err) == ZP_OK);
+    *runs = set.runs;
     ob->set = NULL;
     zp_scen_set_free(&set);
 }
@@ -201,7 +203,8 @@ static void monotone(void) {
     sc.force_error = 100 * p;
     sc.robust_samples = 8;
     zp_robust_info info;
-    robust_search(&ob, &sc, &o, 2, &res, &info);
+    long runs;
+    robust_search(&ob, &sc, &o, 2, &res, &info, &runs);
     zp_schedule sch = tu_sched(m, (double[1]){top / (1 + p)});
     double *f = sch.p;
     zp_input in = {.sched = &sch};
@@ -237,7 +240,8 @@ static void monotone(void) {
     zp_model_free(m);
 }
 
-/* several uncertain quantities: the same seed gives the same bits on 1 and 2 threads */
+/* several uncertain quantities: the same seed gives the same bits on 1, 2 and 3 threads (the
+   answer, the scenarios the adversary added, the scenario runs and the verification) */
 static void threads(void) {
     zp_scene sc;
     zp_model *m = tu_model(tu_swing, &sc);
@@ -247,17 +251,86 @@ static void threads(void) {
     sc.mass_range[0] = 90;
     sc.mass_range[1] = 110;
     sc.start_angle = 2;
-    sc.robust_samples = 12;
+    sc.robust_samples = 4; /* few: the adversary adds a scenario, and the warm restart runs */
     sc.max_g = 3;
     zp_limits_from_scene(&sc, &ob.lim);
     o.peaks = 1;
-    zp_robust_info i1, i2;
-    robust_search(&ob, &sc, &o, 2, &res, &i2);
-    robust_search(&ob, &sc, &o, 1, &res2, &i1);
-    CHECK(res.found);
-    CHECK(!memcmp(res.force, res2.force, sizeof res.force));
-    CHECK(res.evals == res2.evals && res.best.time == res2.best.time);
-    CHECK(i1.rounds == i2.rounds && i1.added == i2.added && i1.worst.cons == i2.worst.cons);
+    zp_box b;
+    zp_box_from_scene(&sc, m, &b);
+    zp_robust_info info[3];
+    long runs[3];
+    zp_robust_check c[3];
+    for (int t = 0; t < 3; t++) {
+        zp_search_result *r = t ? &res2 : &res;
+        robust_search(&ob, &sc, &o, t + 1, r, &info[t], &runs[t]);
+        CHECK(r->found);
+        CHECK(zp_robust_verify(&ob, &b, &o, r->force, 200, sc.seed, t + 1, NULL, &c[t]) == ZP_OK);
+        if (t == 0) {
+            continue;
+        }
+        CHECK(!memcmp(res.force, res2.force, sizeof res.force));
+        CHECK(res.evals == res2.evals && res.best.time == res2.best.time);
+        CHECK(info[t].rounds == info[0].rounds && info[t].added == info[0].added);
+        CHECK(info[t].worst.cons == info[0].worst.cons && runs[t] == runs[0]);
+        CHECK(!memcmp(&c[t], &c[0], sizeof c[0]));
+    }
+    CHECK(info[0].added >= 1); /* the warm restart ran */
+    zp_model_free(m);
+}
+
+/* a survivor's scenarios shared out over 3 threads give what a brute-force loop over the set's
+   order gives: the constraint folded up to the first scenario that breaks, that scenario, and
+   the runs and fails counted up to it */
+static void shared_scenarios(void) {
+    zp_scene sc;
+    zp_model *m = tu_model(tu_swing, &sc);
+    zp_sim_opts o = tu_opts(&sc, 1e-8);
+    zp_objective ob = tu_objective(m, &sc, &o);
+    sc.force_error = 5;
+    sc.start_angle = 3;
+    zp_box b;
+    zp_box_from_scene(&sc, m, &b);
+    zp_scen_set set;
+    CHECK(zp_scen_set_build(&set, &b, m, 24, 3) == ZP_OK);
+    ob.set = &set;
+    zp_pool *p = zp_pool_create(m, &o, 3);
+    CHECK(p && zp_pool_help(p, m, &o) == 0);
+    zp_sim *s = zp_sim_create(m, &o);
+    zp_result r;
+    int broke_late = 0, survived = 0;
+    for (int k = 0; k < 40; k++) {
+        double f = 10 * k; /* N: from easy pushes to ones most scenarios break */
+        long runs = set.runs, fails[64];
+        memcpy(fails, set.fails, sizeof *fails * set.n);
+        zp_eval e;
+        zp_pool_eval(p, &ob, 1, &f, &e, NULL, NULL);
+        zp_schedule sch = tu_sched(m, &f);
+        zp_input in = {.sched = &sch};
+        zp_eval want;
+        zp_objective_eval_run(&ob, m, s, &in, &want, &r);
+        int nrun = 0, scen = -1;
+        for (int i = 0; zp_objective_feasible(&want) && i < set.n && scen < 0; i++) {
+            int j = set.order[i];
+            in = (zp_input){.sched = &sch, .force_scale = set.sc[j].force, .start = &set.start[j]};
+            zp_eval ej;
+            zp_objective_eval_run(&ob, &set.m[j], s, &in, &ej, &r);
+            double c = zp_objective_scenario_cons(&ob, &ej);
+            want.cons = fmax(want.cons, c);
+            nrun++;
+            scen = c > 0 ? j : -1;
+        }
+        CHECK(e.cons == want.cons && e.scenario == scen && e.time == want.time);
+        CHECK(set.runs - runs == nrun);
+        for (int j = 0; j < set.n; j++) {
+            CHECK(set.fails[j] - fails[j] == (j == scen));
+        }
+        broke_late += scen >= 0 && nrun > 1;
+        survived += zp_objective_feasible(&want) && scen < 0;
+    }
+    CHECK(broke_late > 0 && survived > 0);
+    zp_sim_free(s);
+    zp_pool_free(p);
+    zp_scen_set_free(&set);
     zp_model_free(m);
 }
 
@@ -293,6 +366,7 @@ int main(void) {
     kink_dv();
     exact_peaks();
     monotone();
+    shared_scenarios();
     threads();
     return CHECK_DONE();
 }
