@@ -47,6 +47,10 @@ int zp_grid_survived_at(const zp_grid_result *g, int p) {
     return (g->ok[p / 8] >> (p % 8)) & 1;
 }
 
+int zp_grid_added_at(const zp_grid_result *g, int p) {
+    return (g->added[p / 8] >> (p % 8)) & 1;
+}
+
 /* the distinct corners of s other than point skip, into out (2^nvary at most); their count */
 static int corners(const zp_sweep *s, int skip, int *out) {
     int n = 0;
@@ -117,88 +121,97 @@ static int same_kind(const zp_model *a, const zp_model *b) {
            zp_events_count(a) == zp_events_count(b);
 }
 
-/* pt[0] the nominal, pt[1..n-1] the corners: loaded, checked alike, and their scenarios in
-   set (the corners first, then every point's [robust] scenarios); lo/hi the bounds all keep */
-static int setup(const zp_sweep *s, const char *base, const char *path, zp_scene *sc, gpoint *pt,
-                 int n, search_cfg *cfg, zp_scen_set *set, double *lo, double *hi, char *why,
-                 size_t whylen) {
-    for (int i = 0; i < n; i++) {
-        if (load_point(s, base, path, sc, 1, &pt[i], why, whylen)) {
-            return -1;
-        }
-        if (i == 0) {
-            *cfg = (search_cfg){zp_method_find(sc->search_method), sc->search_rtol, sc->max_evals,
-                                sc->seed};
-        }
-        char at[256];
-        zp_sweep_describe(s, pt[i].p, at, sizeof at);
-        if (!same_kind(pt[i].m, pt[0].m) || pt[i].sched.np != pt[0].sched.np) {
-            snprintf(why, whylen,
-                     "the corner at %s is another kind of model than the middle point's "
-                     "([physics] effects or kinks differ)",
+/* the search and what it is held to, over the rounds */
+typedef struct grid_run {
+    const zp_sweep *s;
+    const char *base, *path; /* the scene text and its file name */
+    zp_scene *sc;            /* scratch */
+    gpoint *pt;  /* npoint: [0] the nominal, then the corners, then the points added; the set
+                    borrows their models and criteria, so they never move */
+    int n;       /* points held to */
+    search_cfg cfg;
+    zp_scen_set set;
+    double lo[ZP_SCHED_MAX_PARAMS], hi[ZP_SCHED_MAX_PARAMS]; /* the bounds all keep */
+    zp_search_result *res; /* the last search's */
+    char why[512];
+} grid_run;
+
+/* pt[r->n] (its p set) loaded, checked against the nominal and held to: its model as a
+   scenario with its own criteria (not the nominal's: that is the search's objective), then
+   its [robust] scenarios; 0, or -1 with why */
+static int hold(grid_run *r) {
+    int i = r->n++; /* freed with the others from here on, loaded or not */
+    gpoint *q = &r->pt[i], *nom = &r->pt[0];
+    if (load_point(r->s, r->base, r->path, r->sc, 1, q, r->why, sizeof r->why)) {
+        return -1;
+    }
+    if (i == 0) {
+        r->cfg = (search_cfg){zp_method_find(r->sc->search_method), r->sc->search_rtol,
+                              r->sc->max_evals, r->sc->seed};
+    }
+    char at[256];
+    zp_sweep_describe(r->s, q->p, at, sizeof at);
+    if (!same_kind(q->m, nom->m) || q->sched.np != nom->sched.np) {
+        snprintf(r->why, sizeof r->why,
+                 "the point at %s is another kind of model than the middle point's "
+                 "([physics] effects or kinks differ)",
+                 at);
+        return -1;
+    }
+    for (int k = 0; k < nom->sched.np; k++) {
+        r->lo[k] = i ? fmax(r->lo[k], q->sched.lo[k]) : q->sched.lo[k];
+        r->hi[k] = i ? fmin(r->hi[k], q->sched.hi[k]) : q->sched.hi[k];
+        if (r->lo[k] > r->hi[k]) {
+            snprintf(r->why, sizeof r->why, "the drive bounds at %s do not overlap the others'",
                      at);
             return -1;
-        }
-        for (int k = 0; k < pt[0].sched.np; k++) {
-            lo[k] = i ? fmax(lo[k], pt[i].sched.lo[k]) : pt[i].sched.lo[k];
-            hi[k] = i ? fmin(hi[k], pt[i].sched.hi[k]) : pt[i].sched.hi[k];
-            if (lo[k] > hi[k]) {
-                snprintf(why, whylen, "the drive bounds at %s do not overlap the others'", at);
-                return -1;
-            }
         }
     }
     zp_scenario nominal;
     zp_scenario_nominal(&nominal);
-    zp_status st = ZP_OK;
-    for (int i = 1; i < n && !st; i++) {
-        st = zp_scen_set_add_model(set, pt[i].m, &nominal, NULL, &pt[i].ob);
-    }
-    for (int i = 0; i < n && !st; i++) {
-        for (int j = 0; j < pt[i].set.n && !st; j++) {
-            st = zp_scen_set_add_model(set, &pt[i].set.m[j], &pt[i].set.sc[j], &pt[i].set.start[j],
-                                       &pt[i].ob);
-        }
+    zp_status st = i ? zp_scen_set_add_model(&r->set, q->m, &nominal, NULL, &q->ob) : ZP_OK;
+    for (int j = 0; j < q->set.n && !st; j++) {
+        st = zp_scen_set_add_model(&r->set, &q->set.m[j], &q->set.sc[j], &q->set.start[j],
+                                   &q->ob);
     }
     if (st) {
-        snprintf(why, whylen, "out of memory for the scenarios");
+        snprintf(r->why, sizeof r->why, "out of memory for the scenarios");
         return -1;
     }
     return 0;
 }
 
-/* the search at the nominal held to set; 0, or -1 with why */
-static int search(gpoint *pt, int n, const search_cfg *cfg, zp_scen_set *set, const double *lo,
-                  const double *hi, zp_grid_result *g, char *why, size_t whylen) {
-    zp_search_result *res = malloc(sizeof *res); /* large: off the stack */
-    if (!res) {
-        snprintf(why, whylen, "out of memory for the search");
-        return -1;
-    }
+/* one more search held to the set: the first from scratch, the later ones warm from the last
+   answer (afresh when none of its starts survives the grown set); 0, or -1 with why */
+static int search(grid_run *r, zp_grid_result *g) {
     /* the search's runs as a point's: no trajectory, no load peaks unless a limit needs them,
        the [optimize] integrator and tolerance */
-    zp_sim_opts fast = pt[0].so;
+    zp_sim_opts fast = r->pt[0].so;
     fast.track_loads = 0;
-    fast.method = cfg->method;
-    fast.rtol = cfg->rtol;
-    fast.atol = cfg->rtol / 100;
+    fast.method = r->cfg.method;
+    fast.rtol = r->cfg.rtol;
+    fast.atol = r->cfg.rtol / 100;
     fast.peaks = 0;
-    for (int i = 0; i < n; i++) {
-        fast.peaks |= zp_limits_need_peaks(&pt[i].ob.lim);
+    for (int i = 0; i < r->n; i++) {
+        fast.peaks |= zp_limits_need_peaks(&r->pt[i].ob.lim);
     }
-    zp_objective ob = pt[0].ob;
-    ob.set = set;
-    zp_search_opts o = {.max_evals = cfg->max_evals, .seed = cfg->seed};
-    int rc = zp_search_run(&ob, &fast, lo, hi, &o, res, why, whylen) ? -1 : 0;
-    if (!rc) {
-        g->found = res->found;
-        g->evals = res->evals;
-        memcpy(g->force, res->force, sizeof *g->force * (size_t)g->np);
+    zp_objective ob = r->pt[0].ob;
+    ob.set = &r->set;
+    zp_search_opts o = {.max_evals = r->cfg.max_evals, .seed = r->cfg.seed};
+    zp_status st = ZP_OK;
+    long before = g->rounds ? r->res->evals : 0; /* the warm restart adds to the counts */
+    if (g->rounds) {
+        st = zp_search_warm(&ob, &fast, r->lo, r->hi, &o, r->res, r->why, sizeof r->why);
+        g->evals += r->res->evals - before;
     }
-    free(res);
-    return rc;
+    if (!st && (!g->rounds || !r->res->found)) {
+        st = zp_search_run(&ob, &fast, r->lo, r->hi, &o, r->res, r->why, sizeof r->why);
+        g->evals += r->res->evals;
+    }
+    g->rounds++;
+    g->last_found = r->res->found;
+    return st ? -1 : 0;
 }
-
 /* MODEL.md's survivable: finished with the margin and every [limits] value kept (without the
    search's slack: this is the answer's judgement, not the search's) */
 static int survives(const gpoint *q, const zp_eval *e, const zp_result *r, int *which) {
@@ -206,39 +219,112 @@ static int survives(const gpoint *q, const zp_eval *e, const zp_result *r, int *
            (!zp_limits_any(&q->ob.lim) || zp_limits_excess(&q->ob.lim, q->m, r, which) <= 0);
 }
 
-/* the answer simulated at every point with the point's [solver] */
-static void check(const zp_sweep *s, const char *base, const char *path, zp_scene *sc,
-                  const int *corner, int ncorner, zp_grid_result *g) {
-    zp_result *r = malloc(sizeof *r); /* large: off the stack */
+/* an answer and how it fares at every point */
+typedef struct answer {
+    int found;
+    double force[ZP_SCHED_MAX_PARAMS];
+    double time, margin; /* at the nominal */
+    int worst;           /* the corner nearest to breaking it */
+    double worst_margin;
+    int survived;
+    unsigned char ok[(ZP_SWEEP_MAX_POINTS + 7) / 8];
+} answer;
+
+/* the answer a->force simulated at every point with the point's [solver]; the corners are
+   pt[1..ncorner] */
+static void check(grid_run *r, int ncorner, answer *a) {
+    zp_result *res = malloc(sizeof *res); /* large: off the stack */
     double worst_cons = -INFINITY;
-    for (int p = 0; r && p < s->npoint; p++) {
+    a->survived = 0;
+    a->worst = -1;
+    a->time = a->margin = a->worst_margin = NAN;
+    memset(a->ok, 0, sizeof a->ok);
+    for (int p = 0; res && p < r->s->npoint; p++) {
         gpoint q = {.p = p};
         char why[256];
         zp_sim *sim = NULL;
-        if (!load_point(s, base, path, sc, 0, &q, why, sizeof why) &&
+        if (!load_point(r->s, r->base, r->path, r->sc, 0, &q, why, sizeof why) &&
             (sim = zp_sim_create(q.m, &q.so)) != NULL) {
             zp_eval e;
-            zp_objective_eval(&q.ob, sim, g->force, &e, r);
-            int which, ok = survives(&q, &e, r, &which);
-            g->survived += ok;
-            g->ok[p / 8] |= (unsigned char)(ok << (p % 8));
+            zp_objective_eval(&q.ob, sim, a->force, &e, res);
+            int which, ok = survives(&q, &e, res, &which);
+            a->survived += ok;
+            a->ok[p / 8] |= (unsigned char)(ok << (p % 8));
             double margin = q.death_angle - e.angle * DEG;
-            if (p == g->nominal) {
-                g->time = e.time;
-                g->margin = margin;
+            if (p == r->pt[0].p) {
+                a->time = e.time;
+                a->margin = margin;
             }
-            for (int c = 0; c < ncorner; c++) {
-                if (corner[c] == p && e.cons > worst_cons) {
+            for (int c = 1; c <= ncorner; c++) {
+                if (r->pt[c].p == p && e.cons > worst_cons) {
                     worst_cons = e.cons;
-                    g->worst = p;
-                    g->worst_margin = margin;
+                    a->worst = p;
+                    a->worst_margin = margin;
                 }
             }
         }
         zp_sim_free(sim);
         free_point(&q);
     }
-    free(r);
+    free(res);
+}
+
+/* the points a breaks that are not held to yet, held to from the next search on; how many */
+static int hold_broken(grid_run *r, const answer *a, zp_grid_result *g) {
+    int added = 0;
+    for (int p = 0; p < r->s->npoint; p++) {
+        int held = 0;
+        for (int i = 0; i < r->n && !held; i++) {
+            held = r->pt[i].p == p;
+        }
+        if (!held && !((a->ok[p / 8] >> (p % 8)) & 1)) {
+            r->pt[r->n].p = p;
+            if (hold(r)) {
+                return -1;
+            }
+            g->added[p / 8] |= (unsigned char)(1u << (p % 8));
+            added++;
+        }
+    }
+    g->nadded += added;
+    return added;
+}
+
+/* the searches and checks, round after round; 0, or -1 with r->why */
+static int rounds(grid_run *r, int ncorner, zp_grid_result *g) {
+    answer *a = malloc(sizeof *a);
+    int rc = a ? 0 : -1;
+    while (!rc && !(rc = search(r, g))) {
+        if (!r->res->found && g->kept) {
+            break; /* held to more points, none survives all: the answer before stands */
+        }
+        a->found = r->res->found;
+        memcpy(a->force, r->res->force, sizeof *a->force * (size_t)g->np);
+        check(r, ncorner, a);
+        g->kept = g->rounds;
+        g->nheld = g->nadded;
+        g->nscen = r->set.n;
+        g->found = a->found;
+        memcpy(g->force, a->force, sizeof g->force);
+        g->time = a->time;
+        g->margin = a->margin;
+        g->worst = a->worst;
+        g->worst_margin = a->worst_margin;
+        g->survived = a->survived;
+        memcpy(g->ok, a->ok, sizeof g->ok);
+        if (!a->found || a->survived == r->s->npoint || g->rounds >= ZP_GRID_SEARCHES) {
+            break;
+        }
+        /* worst first, as the robust search orders its set between rounds */
+        zp_scen_set_reorder(&r->set);
+        int added = hold_broken(r, a, g);
+        rc = added < 0 ? -1 : 0;
+        if (!added) {
+            break; /* it breaks only points held to: the search's slack, or their [solver] */
+        }
+    }
+    free(a);
+    return rc;
 }
 
 void zp_grid_run(const zp_sweep *s, const char *base, const char *path, zp_grid_result *g) {
@@ -247,33 +333,30 @@ void zp_grid_run(const zp_sweep *s, const char *base, const char *path, zp_grid_
     g->worst = -1;
     g->time = g->margin = g->worst_margin = NAN;
     int corner[1 << ZP_SWEEP_MAX_VARY];
-    int nc = corners(s, g->nominal, corner), n = nc + 1;
+    int nc = corners(s, g->nominal, corner);
     g->ncorner = nc;
-    gpoint *pt = calloc((size_t)n, sizeof *pt);
-    zp_scene *sc = malloc(sizeof *sc); /* large: off the stack */
-    zp_scen_set set = {0};
-    search_cfg cfg;
-    double lo[ZP_SCHED_MAX_PARAMS], hi[ZP_SCHED_MAX_PARAMS];
-    char why[512] = "out of memory";
-    int rc = pt && sc ? 0 : -1;
-    for (int i = 0; !rc && i < n; i++) {
-        pt[i].p = i ? corner[i - 1] : g->nominal;
+    grid_run r = {.s = s, .base = base, .path = path, .why = "out of memory"};
+    r.pt = calloc((size_t)s->npoint, sizeof *r.pt); /* each point held to at most once */
+    r.sc = malloc(sizeof *r.sc);                   /* large: off the stack */
+    r.res = malloc(sizeof *r.res);
+    int rc = r.pt && r.sc && r.res ? 0 : -1;
+    for (int i = 0; !rc && i <= nc; i++) {
+        r.pt[r.n].p = i ? corner[i - 1] : g->nominal;
+        rc = hold(&r);
     }
-    if (!rc && !(rc = setup(s, base, path, sc, pt, n, &cfg, &set, lo, hi, why, sizeof why))) {
-        g->np = pt[0].sched.np;
-        g->nscen = set.n;
-        rc = search(pt, n, &cfg, &set, lo, hi, g, why, sizeof why);
+    if (!rc) {
+        g->np = r.pt[0].sched.np;
+        rc = rounds(&r, nc, g);
     }
-    zp_scen_set_free(&set); /* before the points: it borrows their models */
-    for (int i = 0; pt && i < n; i++) {
-        free_point(&pt[i]);
+    zp_scen_set_free(&r.set); /* before the points: it borrows their models */
+    for (int i = 0; i < r.n; i++) {
+        free_point(&r.pt[i]);
     }
-    free(pt);
+    free(r.pt);
+    free(r.sc);
+    free(r.res);
     if (rc) {
         g->failed = 1;
-        snprintf(g->message, sizeof g->message, "%.*s", (int)sizeof g->message - 1, why);
-    } else {
-        check(s, base, path, sc, corner, nc, g);
+        snprintf(g->message, sizeof g->message, "%.*s", (int)sizeof g->message - 1, r.why);
     }
-    free(sc);
 }

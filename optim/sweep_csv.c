@@ -13,7 +13,7 @@
 
 #define NFIXED 8 /* result columns before the forces: status .. evals */
 #define LINE_MAX_BYTES 16384 /* a row or grid line is shorter (a grid line of 10000 points:
-                                2500 hex digits) */
+                                twice 2500 hex digits, with 256 forces) */
 
 void zp_sweep_csv_header(FILE *f, const zp_sweep *s, int np) {
     fputs("point", f);
@@ -137,11 +137,35 @@ int zp_sweep_csv_parse(const char *line, const zp_sweep *s, int np, int *p, zp_s
     return strcmp(res[0], "ok") ? -1 : parse_result(res, np, r);
 }
 
-#define GRID_FIXED 12 /* the grid line's fields before the forces: "grid" .. survived */
+#define GRID_FIXED 17 /* the grid line's fields before the forces: "grid" .. survived */
+#define GRID_WHOLE 13 /* of them, whole numbers (the others: time, margin, worst margin) */
+
+static void put_bits(FILE *f, const unsigned char *bits, int npoint) {
+    fputc(',', f);
+    for (int i = 0; i < (npoint + 7) / 8; i++) {
+        fprintf(f, "%02x", bits[i]);
+    }
+}
+
+static int parse_bits(const char *hex, unsigned char *bits, int npoint) {
+    int nbyte = (npoint + 7) / 8;
+    if (strlen(hex) != 2 * (size_t)nbyte) {
+        return -1;
+    }
+    for (int i = 0; i < nbyte; i++) {
+        char two[3] = {hex[2 * i], hex[2 * i + 1], 0}, *end;
+        bits[i] = (unsigned char)strtoul(two, &end, 16);
+        if (*end) {
+            return -1;
+        }
+    }
+    return 0;
+}
 
 void zp_sweep_csv_grid(FILE *f, const zp_grid_result *g, int npoint) {
-    fprintf(f, "grid,%d,%d,%d,%d,%d,%ld", g->failed, g->found, g->nominal, g->ncorner, g->nscen,
-            g->evals);
+    fprintf(f, "grid,%d,%d,%d,%d,%d,%ld,%d,%d,%d,%d,%d", g->failed, g->found, g->nominal,
+            g->ncorner, g->nscen, g->evals, g->rounds, g->kept, g->nheld, g->nadded,
+            g->last_found);
     put_num(f, g->time);
     put_num(f, g->margin);
     fprintf(f, ",%d", g->worst);
@@ -150,49 +174,43 @@ void zp_sweep_csv_grid(FILE *f, const zp_grid_result *g, int npoint) {
     for (int k = 0; k < g->np; k++) {
         put_num(f, g->force[k]);
     }
-    fputc(',', f);
-    for (int i = 0; i < (npoint + 7) / 8; i++) {
-        fprintf(f, "%02x", g->ok[i]);
-    }
+    put_bits(f, g->ok, npoint);
+    put_bits(f, g->added, npoint);
     put_message(f, g->message);
 }
 
 int zp_sweep_csv_grid_parse(const char *line, int np, int npoint, zp_grid_result *g) {
-    enum { MAXF = GRID_FIXED + ZP_SCHED_MAX_PARAMS + 2 };
-    char buf[8192], *fld[MAXF], *end;
+    enum { MAXF = GRID_FIXED + ZP_SCHED_MAX_PARAMS + 3 };
+    char buf[LINE_MAX_BYTES], *fld[MAXF], *end;
     snprintf(buf, sizeof buf, "%s", line);
-    int n = split(buf, fld, MAXF), nbyte = (npoint + 7) / 8;
+    int n = split(buf, fld, MAXF);
     memset(g, 0, sizeof *g);
-    if (n != GRID_FIXED + np + 2 || strcmp(fld[0], "grid") ||
-        strlen(fld[n - 2]) != 2 * (size_t)nbyte) {
-        return -1;
+    if (n != GRID_FIXED + np + 3 || strcmp(fld[0], "grid")) {
+        return -1; /* another study's, or a line of an older zipopt (fewer fields) */
     }
-    long v[8];
-    const int at[8] = {1, 2, 3, 4, 5, 6, 9, 11}; /* the whole numbers */
+    long v[GRID_WHOLE];
+    const int at[GRID_WHOLE] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 14, 16}; /* whole numbers */
     int bad = 0;
-    for (int i = 0; i < 8; i++) {
+    for (int i = 0; i < GRID_WHOLE; i++) {
         v[i] = strtol(fld[at[i]], &end, 10);
         bad |= end == fld[at[i]] || *end;
     }
-    g->failed = (int)v[0];
-    g->found = (int)v[1];
-    g->nominal = (int)v[2];
-    g->ncorner = (int)v[3];
-    g->nscen = (int)v[4];
+    int *whole[] = {&g->failed, &g->found,   &g->nominal, &g->ncorner, &g->nscen,
+                    NULL,       &g->rounds,  &g->kept,    &g->nheld,   &g->nadded,
+                    &g->last_found, &g->worst, &g->survived};
+    for (int i = 0; i < GRID_WHOLE; i++) {
+        if (whole[i]) {
+            *whole[i] = (int)v[i];
+        }
+    }
     g->evals = v[5];
-    g->worst = (int)v[6];
-    g->survived = (int)v[7];
     g->np = np;
-    bad |= num_field(fld[7], &g->time) || num_field(fld[8], &g->margin) ||
-           num_field(fld[10], &g->worst_margin);
+    bad |= num_field(fld[12], &g->time) || num_field(fld[13], &g->margin) ||
+           num_field(fld[15], &g->worst_margin);
     for (int k = 0; k < np && !bad; k++) {
         bad = num_field(fld[GRID_FIXED + k], &g->force[k]);
     }
-    for (int i = 0; i < nbyte && !bad; i++) {
-        char hex[3] = {fld[n - 2][2 * i], fld[n - 2][2 * i + 1], 0};
-        g->ok[i] = (unsigned char)strtoul(hex, &end, 16);
-        bad = *end != '\0';
-    }
+    bad = bad || parse_bits(fld[n - 3], g->ok, npoint) || parse_bits(fld[n - 2], g->added, npoint);
     snprintf(g->message, sizeof g->message, "%s", fld[n - 1]);
     return bad ? -1 : 0;
 }
@@ -231,7 +249,7 @@ static long read_rows(const char *old, const char *head, const zp_sweep *s, int 
         return strncmp(old, head, strlen(old)) ? -1 : 0;
     }
     size_t pos = hl;
-    char line[8192];
+    char line[LINE_MAX_BYTES];
     for (;;) {
         size_t len = strcspn(old + pos, "\n");
         int p;

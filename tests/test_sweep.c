@@ -54,10 +54,11 @@ static void grid_line(void) {
     zp_grid_result g = {.found = 1, .nominal = 10, .ncorner = 4, .nscen = 260, .evals = 4321,
                         .np = 3, .force = {1.0 / 3, 500, 0}, .time = 9.045890546185342,
                         .margin = 10.000999951619107, .worst = 20, .worst_margin = NAN,
-                        .survived = 20},
+                        .survived = 20, .rounds = 3, .kept = 2, .nheld = 1, .nadded = 2},
                    back;
     for (int p = 0; p < 21; p++) {
         g.ok[p / 8] |= (unsigned char)((p != 7) << (p % 8));
+        g.added[p / 8] |= (unsigned char)((p == 7 || p == 19) << (p % 8));
     }
     snprintf(g.message, sizeof g.message, "%s", "a, b");
     char *l1 = NULL, *l2 = NULL;
@@ -68,11 +69,13 @@ static void grid_line(void) {
     l1[strcspn(l1, "\n")] = '\0';
     CHECK(zp_sweep_csv_grid_parse(l1, 3, 21, &back) == 0);
     CHECK(back.found && back.nominal == 10 && back.ncorner == 4 && back.nscen == 260 &&
-          back.evals == 4321 && back.worst == 20 && back.survived == 20);
+          back.evals == 4321 && back.worst == 20 && back.survived == 20 && back.rounds == 3 &&
+          back.kept == 2 && back.nheld == 1 && back.nadded == 2 && !back.last_found);
     CHECK(back.force[0] == 1.0 / 3 && back.time == g.time && back.margin == g.margin &&
           isnan(back.worst_margin));
     for (int p = 0; p < 21; p++) {
         CHECK(zp_grid_survived_at(&back, p) == (p != 7));
+        CHECK(zp_grid_added_at(&back, p) == (p == 7 || p == 19));
     }
     f = open_memstream(&l2, &n2);
     zp_sweep_csv_grid(f, &back, 21);
@@ -81,6 +84,11 @@ static void grid_line(void) {
     CHECK(!strcmp(l1, l2));
     CHECK(zp_sweep_csv_grid_parse(l1, 2, 21, &back) == -1); /* another study's width */
     CHECK(zp_sweep_csv_grid_parse(l1, 3, 30, &back) == -1); /* another study's points */
+    /* the line of a zipopt before the rounds (no rounds, no points added) is refused: the
+       checkpoint is kept up to it and the grid schedule searched again */
+    const char *old = "grid,0,1,10,4,260,4321,9.045890546185342,10.000999951619107,20,nan,20,"
+                      "0.33333333333333331,500,0,7fff1f,a; b";
+    CHECK(zp_sweep_csv_grid_parse(old, 3, 21, &back) == -1);
     free(l1);
     free(l2);
 }

@@ -40,6 +40,35 @@ static tally count(const zp_sweep_out *o) {
         }                                                                                          \
     } while (0)
 
+/* the points with bit set in g (up to max of them, else their count): "A; B; C" */
+static size_t points_list(const zp_sweep_out *o, int (*bit)(const zp_grid_result *, int),
+                          int want, int max, char *out, size_t cap) {
+    size_t len = 0;
+    int n = 0;
+    char at[512];
+    for (int p = 0; p < o->s->npoint; p++) {
+        n += bit(o->grid, p) == want;
+    }
+    if (n > max) {
+        ADD("%d points", n);
+        return len;
+    }
+    for (int p = 0, shown = 0; p < o->s->npoint; p++) {
+        if (bit(o->grid, p) == want) {
+            zp_sweep_describe(o->s, p, at, sizeof at);
+            ADD("%s%s", shown++ ? "; " : "", at);
+        }
+    }
+    return len;
+}
+
+/* why the rounds ended with points broken */
+static const char *why_broken(const zp_grid_result *g) {
+    return !g->last_found                 ? "held to the points it breaks too, the search found none"
+           : g->rounds >= ZP_GRID_SEARCHES ? "the searches ran out"
+                                          : "it breaks only points held to already";
+}
+
 /* the grid schedule's sentence; the length written (as snprintf counts) */
 static size_t grid_summary(const zp_sweep_out *o, char *out, size_t cap) {
     const zp_grid_result *g = o->grid;
@@ -50,8 +79,13 @@ static size_t grid_summary(const zp_sweep_out *o, char *out, size_t cap) {
         return len;
     }
     zp_sweep_describe(o->s, g->nominal, at, sizeof at);
-    ADD(" %s schedule that the grid's %d corner%s and its middle all survive",
-        g->found ? "Fastest" : "No", g->ncorner, g->ncorner == 1 ? "" : "s");
+    ADD(" %s schedule that the grid's %d corner%s", g->found ? "Fastest" : "No", g->ncorner,
+        g->ncorner == 1 ? "" : "s");
+    if (g->nheld) {
+        ADD(", its middle and %d point%s added all survive", g->nheld, g->nheld == 1 ? "" : "s");
+    } else {
+        ADD(" and its middle all survive");
+    }
     ADD(g->found ? ":" : " was found (the closest:");
     for (int k = 0; k < g->np; k++) {
         ADD("%s %.4g", k ? "," : "", g->force[k]);
@@ -64,13 +98,20 @@ static size_t grid_summary(const zp_sweep_out *o, char *out, size_t cap) {
     int broken = o->s->npoint - g->survived;
     ADD("%s; it keeps the limits at %d of %d points", g->found ? "" : ")", g->survived,
         o->s->npoint);
-    for (int p = 0, shown = 0; p < o->s->npoint && broken && broken <= 3; p++) {
-        if (!zp_grid_survived_at(g, p)) {
-            zp_sweep_describe(o->s, p, at, sizeof at);
-            ADD("%s%s", shown++ ? "; " : " (not at ", at);
-        }
+    if (broken && broken <= 3) {
+        ADD(" (not at ");
+        len += points_list(o, zp_grid_survived_at, 0, 3, out + len, len < cap ? cap - len : 0);
+        ADD(")");
     }
-    ADD("%s.", broken && broken <= 3 ? ")" : "");
+    if (g->rounds > 1) {
+        ADD(", after %d searches (added as an answer broke them: ", g->rounds);
+        len += points_list(o, zp_grid_added_at, 1, 4, out + len, len < cap ? cap - len : 0);
+        ADD(")");
+    }
+    if (broken && g->found) {
+        ADD("; no schedule was found for all %d points: %s", o->s->npoint, why_broken(g));
+    }
+    ADD(".");
     return len;
 }
 
@@ -226,6 +267,18 @@ static void forces_json(FILE *f, const double *force, int np) {
     fputs("]", f);
 }
 
+/* the points p with bit(p) == want, as a JSON array (empty for a failed grid schedule) */
+static void points_json(FILE *f, const zp_sweep_out *o, int (*bit)(const zp_grid_result *, int),
+                        int want) {
+    fputc('[', f);
+    for (int p = 0, n = 0; p < o->s->npoint && !o->grid->failed; p++) {
+        if (bit(o->grid, p) == want) {
+            fprintf(f, "%s%d", n++ ? ", " : "", p);
+        }
+    }
+    fputc(']', f);
+}
+
 static void grid_json(FILE *f, const zp_sweep_out *o) {
     const zp_grid_result *g = o->grid;
     if (!g) {
@@ -254,15 +307,14 @@ static void grid_json(FILE *f, const zp_sweep_out *o) {
         fputs("null", f);
     }
     fprintf(f,
-            ",\n    \"corners\": %d, \"scenarios\": %d, \"evals\": %ld, \"points_survived\": "
-            "%d, \"points_broken\": [",
-            g->ncorner, g->nscen, g->evals, g->failed ? 0 : g->survived);
-    for (int p = 0, n = 0; p < o->s->npoint && !g->failed; p++) {
-        if (!zp_grid_survived_at(g, p)) {
-            fprintf(f, "%s%d", n++ ? ", " : "", p);
-        }
-    }
-    fputs("]}", f);
+            ",\n    \"corners\": %d, \"scenarios\": %d, \"evals\": %ld, \"rounds\": %d, "
+            "\"answer_round\": %d, \"added\": ",
+            g->ncorner, g->nscen, g->evals, g->rounds, g->kept);
+    points_json(f, o, zp_grid_added_at, 1);
+    fprintf(f, ",\n    \"points_survived\": %d, \"points_broken\": ",
+            g->failed ? 0 : g->survived);
+    points_json(f, o, zp_grid_survived_at, 0);
+    fputs("}", f);
 }
 
 static void point_json(FILE *f, const zp_sweep_out *o, int p) {
