@@ -126,13 +126,13 @@ typedef struct grid_run {
     const zp_sweep *s;
     const char *base, *path; /* the scene text and its file name */
     zp_scene *sc;            /* scratch */
-    gpoint *pt;  /* npoint: [0] the nominal, then the corners, then the points added; the set
-                    borrows their models and criteria, so they never move */
-    int n;       /* points held to */
+    gpoint *pt; /* npoint: [0] the nominal, then the corners, then the points added; the set
+                   borrows their models and criteria, so they never move */
+    int n;      /* points held to */
     search_cfg cfg;
     zp_scen_set set;
     double lo[ZP_SCHED_MAX_PARAMS], hi[ZP_SCHED_MAX_PARAMS]; /* the bounds all keep */
-    zp_search_result *res; /* the last search's */
+    zp_search_result *res;                                   /* the last search's */
     char why[512];
 } grid_run;
 
@@ -171,8 +171,7 @@ static int hold(grid_run *r) {
     zp_scenario_nominal(&nominal);
     zp_status st = i ? zp_scen_set_add_model(&r->set, q->m, &nominal, NULL, &q->ob) : ZP_OK;
     for (int j = 0; j < q->set.n && !st; j++) {
-        st = zp_scen_set_add_model(&r->set, &q->set.m[j], &q->set.sc[j], &q->set.start[j],
-                                   &q->ob);
+        st = zp_scen_set_add_model(&r->set, &q->set.m[j], &q->set.sc[j], &q->set.start[j], &q->ob);
     }
     if (st) {
         snprintf(r->why, sizeof r->why, "out of memory for the scenarios");
@@ -337,7 +336,7 @@ void zp_grid_run(const zp_sweep *s, const char *base, const char *path, zp_grid_
     g->ncorner = nc;
     grid_run r = {.s = s, .base = base, .path = path, .why = "out of memory"};
     r.pt = calloc((size_t)s->npoint, sizeof *r.pt); /* each point held to at most once */
-    r.sc = malloc(sizeof *r.sc);                   /* large: off the stack */
+    r.sc = malloc(sizeof *r.sc);                    /* large: off the stack */
     r.res = malloc(sizeof *r.res);
     int rc = r.pt && r.sc && r.res ? 0 : -1;
     for (int i = 0; !rc && i <= nc; i++) {

@@ -10,21 +10,21 @@
 
 /* What the grid schedule came to. Plain data (no pointers): copied as bytes between ranks. */
 typedef struct zp_grid_result {
-    int failed;  /* 1: it could not be searched for; message says why */
-    int found;   /* a schedule keeps the limits at the nominal, every corner and the points
-                    its search was held to */
-    int nominal; /* the grid point whose finish time is minimised: the middle one */
-    int ncorner; /* distinct corners held to, the nominal not counted */
-    int nscen;   /* scenarios its search was held to: the corners and points added, with
-                    their [robust] scenarios */
-    long evals;  /* candidates the searches ran, all rounds */
-    int rounds;  /* searches run: 1 + the rounds that added broken points */
-    int kept;    /* the search (1-based) whose answer this is: the last one, unless it found
-                    none where an earlier one had */
-    int nheld;   /* points added to the corners before that search */
-    int nadded;  /* points added in all, the last search's too */
+    int failed;     /* 1: it could not be searched for; message says why */
+    int found;      /* a schedule keeps the limits at the nominal, every corner and the points
+                       its search was held to */
+    int nominal;    /* the grid point whose finish time is minimised: the middle one */
+    int ncorner;    /* distinct corners held to, the nominal not counted */
+    int nscen;      /* scenarios its search was held to: the corners and points added, with
+                       their [robust] scenarios */
+    long evals;     /* candidates the searches ran, all rounds */
+    int rounds;     /* searches run: 1 + the rounds that added broken points */
+    int kept;       /* the search (1-based) whose answer this is: the last one, unless it found
+                       none where an earlier one had */
+    int nheld;      /* points added to the corners before that search */
+    int nadded;     /* points added in all, the last search's too */
     int last_found; /* the last search found a schedule for all it was held to */
-    int np;      /* the parameters of the scene's kind of schedule */
+    int np;         /* the parameters of the scene's kind of schedule */
     double force[ZP_SCHED_MAX_PARAMS]; /* the answer's (or closest candidate's) parameters */
     double time;   /* s, its finish (or stop) at the nominal point with that point's [solver] */
     double margin; /* deg there: death_angle minus the largest |relative joint angle| */

@@ -12,8 +12,9 @@
 #include "out_file.h"
 
 #define NFIXED 8 /* result columns before the forces: status .. evals */
-#define LINE_MAX_BYTES 16384 /* a row or grid line is shorter (a grid line of 10000 points:
-                                twice 2500 hex digits, with 256 forces) */
+#define LINE_MAX_BYTES                                                                             \
+    16384 /* a row or grid line is shorter (a grid line of 10000 points:                           \
+             twice 2500 hex digits, with 256 forces) */
 
 void zp_sweep_csv_header(FILE *f, const zp_sweep *s, int np) {
     fputs("point", f);
@@ -117,8 +118,7 @@ int zp_sweep_csv_parse(const char *line, const zp_sweep *s, int np, int *p, zp_s
     r->np = np;
     char *end;
     long pl = strtol(fld[0], &end, 10);
-    if (n != 1 + s->nvary + NFIXED + np + 1 || end == fld[0] || *end || pl < 0 ||
-        pl >= s->npoint) {
+    if (n != 1 + s->nvary + NFIXED + np + 1 || end == fld[0] || *end || pl < 0 || pl >= s->npoint) {
         return -1;
     }
     *p = (int)pl;
@@ -164,8 +164,7 @@ static int parse_bits(const char *hex, unsigned char *bits, int npoint) {
 
 void zp_sweep_csv_grid(FILE *f, const zp_grid_result *g, int npoint) {
     fprintf(f, "grid,%d,%d,%d,%d,%d,%ld,%d,%d,%d,%d,%d", g->failed, g->found, g->nominal,
-            g->ncorner, g->nscen, g->evals, g->rounds, g->kept, g->nheld, g->nadded,
-            g->last_found);
+            g->ncorner, g->nscen, g->evals, g->rounds, g->kept, g->nheld, g->nadded, g->last_found);
     put_num(f, g->time);
     put_num(f, g->margin);
     fprintf(f, ",%d", g->worst);
@@ -195,9 +194,9 @@ int zp_sweep_csv_grid_parse(const char *line, int np, int npoint, zp_grid_result
         v[i] = strtol(fld[at[i]], &end, 10);
         bad |= end == fld[at[i]] || *end;
     }
-    int *whole[] = {&g->failed, &g->found,   &g->nominal, &g->ncorner, &g->nscen,
-                    NULL,       &g->rounds,  &g->kept,    &g->nheld,   &g->nadded,
-                    &g->last_found, &g->worst, &g->survived};
+    int *whole[] = {&g->failed,     &g->found,  &g->nominal, &g->ncorner, &g->nscen,
+                    NULL,           &g->rounds, &g->kept,    &g->nheld,   &g->nadded,
+                    &g->last_found, &g->worst,  &g->survived};
     for (int i = 0; i < GRID_WHOLE; i++) {
         if (whole[i]) {
             *whole[i] = (int)v[i];
@@ -254,15 +253,17 @@ static long read_rows(const char *old, const char *head, const zp_sweep *s, int 
         size_t len = strcspn(old + pos, "\n");
         int p;
         zp_study_row r;
+        zp_grid_result g;
         if (!old[pos + len] || len >= sizeof line) {
             break; /* the last line, torn by a kill */
         }
         snprintf(line, sizeof line, "%.*s", (int)len, old + pos);
         if (!strncmp(line, "grid,", 5)) {
-            if (zp_sweep_csv_grid_parse(line, np, s->npoint, grid)) {
-                break;
+            /* one an older zipopt wrote (without the rounds) is passed over: searched again */
+            if (!zp_sweep_csv_grid_parse(line, np, s->npoint, &g)) {
+                *grid = g;
+                *grid_done = 1;
             }
-            *grid_done = 1;
         } else if (zp_sweep_csv_parse(line, s, np, &p, &r)) {
             break;
         } else {
@@ -314,15 +315,13 @@ zp_status zp_sweep_checkpoint_open(zp_sweep_checkpoint *c, int dirfd, const char
     snprintf(c->path, sizeof c->path, "%s/checkpoint.csv", dir);
     char *head = study_head(s, base, np), *old = NULL;
     /* never through a link planted at the name: the file is opened in the folder itself */
-    int fd = head ? openat(dirfd, "checkpoint.csv", O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC,
-                           0644)
+    int fd = head ? openat(dirfd, "checkpoint.csv", O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644)
                   : -1;
     size_t len = 0;
     long keep = -2;
     if (fd >= 0 && resume && (old = read_fd(fd, &len)) != NULL && len > 0) {
-        keep = strlen(old) == len
-                   ? read_rows(old, head, s, np, rows, done, ndone, grid, grid_done)
-                   : -1;
+        keep = strlen(old) == len ? read_rows(old, head, s, np, rows, done, ndone, grid, grid_done)
+                                  : -1;
     }
     free(old);
     if (keep == -1) {

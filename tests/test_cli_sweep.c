@@ -2,7 +2,8 @@
    is the same run as `zipopt simulate` (or the search `zipopt SCENE`) of a scene file written
    here by hand with that value; a study killed mid-way and resumed gives the same sweep.csv
    as one never stopped; a checkpoint of another study is refused; the schedule that survives
-   across the grid survives each point's scene written by hand, run by `zipopt simulate`. */
+   across the grid survives each point's scene written by hand, run by `zipopt simulate`, also
+   where the corners do not bound survival (the points an answer breaks searched again). */
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -143,13 +144,13 @@ static int json_array(const char *text, const char *from, const char *key, doubl
     return p ? 0 : -1;
 }
 
-/* `zipopt simulate --force f` of the small scene with that trolley mass: 1 when it finishes
-   with the margin kept (60 deg death angle, 10 deg margin); its finish time in *t */
-static int survives(const char *trolley, const double *f, double *t) {
+/* `zipopt simulate --force f` of the small scene with that trolley and link masses: 1 when it
+   finishes with the margin kept (60 deg death angle, 10 deg margin); its finish time in *t */
+static int survives(const char *trolley, const char *masses, const double *f, double *t) {
     char cmd[2048];
-    const char *one = scene("one", trolley, "5, 2", 100);
-    snprintf(cmd, sizeof cmd, "%s simulate %s --force %.17g,%.17g --json --out %s/one", ZP_EXE,
-             one, f[0], f[1], dir);
+    const char *one = scene("one", trolley, masses, 100);
+    snprintf(cmd, sizeof cmd, "%s simulate %s --force %.17g,%.17g --json --out %s/one", ZP_EXE, one,
+             f[0], f[1], dir);
     CHECK(run(cmd) == 0);
     double angle[2];
     CHECK(json_array(out, "{", "max_rel_angle", angle, 2) == 0);
@@ -178,12 +179,12 @@ static void grid_schedule(void) {
     const char *trolley[] = {"10", "26.666666666666668", "43.333333333333336", "60"};
     int heavy_ok = 1;
     for (int p = 0; p < 4; p++) {
-        CHECK(survives(trolley[p], f, &t));
+        CHECK(survives(trolley[p], "5, 2", f, &t));
         if (p == 1) { /* the middle: the same run, the same bits */
             CHECK(t == json_num(strstr(json, "\"nominal\""), "time"));
             CHECK(t >= field(csv, 2, 5));
         }
-        heavy_ok &= survives(trolley[p], heavy, &t);
+        heavy_ok &= survives(trolley[p], "5, 2", heavy, &t);
     }
     CHECK(!heavy_ok);
 
@@ -201,6 +202,88 @@ static void grid_schedule(void) {
     CHECK(tu_slurp(path, again, sizeof again) > 0 && !strcmp(json, again));
     snprintf(path, sizeof path, "%s/gridcut/sweep.csv", dir);
     CHECK(tu_slurp(path, again, sizeof again) > 0 && !strcmp(csv, again));
+}
+
+/* the JSON array of point indices after "key": [ in text, as a bit per point (up to 64) */
+static unsigned long long json_points(const char *text, const char *key) {
+    char pat[64];
+    snprintf(pat, sizeof pat, "\"%s\": [", key);
+    const char *p = strstr(text, pat);
+    unsigned long long bits = 0;
+    for (p = p ? p + strlen(pat) : NULL; p && *p != ']';) {
+        char *end;
+        long i = strtol(p, &end, 10);
+        CHECK(end != p && i >= 0 && i < 64);
+        bits |= 1ull << i;
+        p = *end == ',' ? end + 1 : end;
+    }
+    return bits;
+}
+
+/* the link masses scaled x0.5 to x3: the corners do not bound survival, the answer held to
+   them and the middle breaks points between. Those points
+   are added and searched again; the answer then survives every point, each run by hand, and
+   the points added are exactly those the first answer breaks (that answer is the grid
+   schedule of the 3-point grid of the same corners and middle) */
+static void grid_rounds(void) {
+    char cmd[2048], csv[8192], json[65536], path[600], base[512];
+    snprintf(base, sizeof base, "%s", scene("base", "30", "5, 2", 1000)); /* scene() reuses */
+    double first[2], f[2], t;
+    snprintf(cmd, sizeof cmd,
+             "%s sweep %s --vary body.masses=0.5:3:3 --run simulate --grid-schedule --out "
+             "%s/rounds3 --json",
+             ZP_EXE, base, dir);
+    CHECK(run(cmd) == 0);
+    CHECK(json_array(out, "grid_schedule", "forces", first, 2) == 0);
+    CHECK(json_num(out, "rounds") == 1);
+    snprintf(cmd, sizeof cmd,
+             "%s sweep %s --vary body.masses=0.5:3:7 --run simulate --grid-schedule --out "
+             "%s/rounds",
+             ZP_EXE, base, dir);
+    CHECK(run(cmd) == 0);
+    CHECK(strstr(out, "its middle and ") && strstr(out, "all survive"));
+    CHECK(strstr(out, "it keeps the limits at 7 of 7 points, after 2 searches (added as an "
+                      "answer broke them: body.masses x"));
+    snprintf(path, sizeof path, "%s/rounds/sweep.csv", dir);
+    CHECK(tu_slurp(path, csv, sizeof csv) > 0);
+    snprintf(path, sizeof path, "%s/rounds/summary.json", dir);
+    CHECK(tu_slurp(path, json, sizeof json) > 0);
+    CHECK(strstr(json, "\"grid_schedule\": {\"found\": true") != NULL);
+    CHECK(json_num(json, "rounds") == 2 && json_num(json, "points_survived") == 7);
+    CHECK(json_array(json, "grid_schedule", "forces", f, 2) == 0);
+    unsigned long long added = json_points(json, "added"), broke = 0;
+    CHECK(added != 0);
+    for (int p = 0; p < 7; p++) {
+        double x = field(csv, p + 1, 1);
+        char masses[64];
+        snprintf(masses, sizeof masses, "%.17g, %.17g", 5 * x, 2 * x);
+        CHECK(survives("30", masses, f, &t));
+        broke |= (unsigned long long)!survives("30", masses, first, &t) << p;
+    }
+    CHECK(broke == added);
+
+    /* a checkpoint whose grid line an older zipopt wrote (no rounds, no points added): its rows
+       are kept, the grid schedule is searched again, the outputs are the study's never stopped */
+    const char *vary = "--vary body.masses=0.5:3:7 --run simulate --grid-schedule";
+    snprintf(cmd, sizeof cmd,
+             "ZIPOPT_SWEEP_FAULT_AFTER=2 %s sweep %s %s --out %s/roundscut >/dev/null 2>&1", ZP_EXE,
+             base, vary, dir);
+    CHECK(run(cmd) != 0);
+    char cp[8192], *grid = NULL, *eol = NULL;
+    snprintf(path, sizeof path, "%s/roundscut/checkpoint.csv", dir);
+    CHECK(tu_slurp(path, cp, sizeof cp) > 0 && (grid = strstr(cp, "\ngrid,")) != NULL &&
+          (eol = strchr(grid + 1, '\n')) != NULL);
+    FILE *fp = fopen(path, "w");
+    fprintf(fp, "%.*s\ngrid,0,1,3,2,2,872,4.2,12.9,0,10.0,3,151.2,161.7,07,%s", (int)(grid - cp),
+            cp, eol);
+    fclose(fp);
+    snprintf(cmd, sizeof cmd, "%s sweep %s %s --out %s/roundscut --resume", ZP_EXE, base, vary,
+             dir);
+    CHECK(run(cmd) == 0);
+    CHECK(strstr(out, "(2 from the checkpoint) and the grid schedule in"));
+    static char again[65536];
+    snprintf(path, sizeof path, "%s/roundscut/summary.json", dir);
+    CHECK(tu_slurp(path, again, sizeof again) > 0 && !strcmp(json, again));
 }
 
 /* killed after some rows, resumed: the same sweep.csv as a study never stopped */
@@ -256,6 +339,7 @@ int main(void) {
     same_as_simulate();
     same_as_search();
     grid_schedule();
+    grid_rounds();
     kill_and_resume();
     char cmd[600];
     snprintf(cmd, sizeof cmd, "rm -rf %s", dir);

@@ -51,10 +51,22 @@ static void bad_vary(const char *text, const char *says) {
 
 /* the grid schedule's line written, read back and written again: the same line, the same bits */
 static void grid_line(void) {
-    zp_grid_result g = {.found = 1, .nominal = 10, .ncorner = 4, .nscen = 260, .evals = 4321,
-                        .np = 3, .force = {1.0 / 3, 500, 0}, .time = 9.045890546185342,
-                        .margin = 10.000999951619107, .worst = 20, .worst_margin = NAN,
-                        .survived = 20, .rounds = 3, .kept = 2, .nheld = 1, .nadded = 2},
+    zp_grid_result g = {.found = 1,
+                        .nominal = 10,
+                        .ncorner = 4,
+                        .nscen = 260,
+                        .evals = 4321,
+                        .np = 3,
+                        .force = {1.0 / 3, 500, 0},
+                        .time = 9.045890546185342,
+                        .margin = 10.000999951619107,
+                        .worst = 20,
+                        .worst_margin = NAN,
+                        .survived = 20,
+                        .rounds = 3,
+                        .kept = 2,
+                        .nheld = 1,
+                        .nadded = 2},
                    back;
     for (int p = 0; p < 21; p++) {
         g.ok[p / 8] |= (unsigned char)((p != 7) << (p % 8));
@@ -84,8 +96,8 @@ static void grid_line(void) {
     CHECK(!strcmp(l1, l2));
     CHECK(zp_sweep_csv_grid_parse(l1, 2, 21, &back) == -1); /* another study's width */
     CHECK(zp_sweep_csv_grid_parse(l1, 3, 30, &back) == -1); /* another study's points */
-    /* the line of a zipopt before the rounds (no rounds, no points added) is refused: the
-       checkpoint is kept up to it and the grid schedule searched again */
+    /* the line of a zipopt before the rounds (no rounds, no points added) is refused (a
+       resumed study searches the grid schedule again) */
     const char *old = "grid,0,1,10,4,260,4321,9.045890546185342,10.000999951619107,20,nan,20,"
                       "0.33333333333333331,500,0,7fff1f,a; b";
     CHECK(zp_sweep_csv_grid_parse(old, 3, 21, &back) == -1);

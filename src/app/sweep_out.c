@@ -41,8 +41,8 @@ static tally count(const zp_sweep_out *o) {
     } while (0)
 
 /* the points with bit set in g (up to max of them, else their count): "A; B; C" */
-static size_t points_list(const zp_sweep_out *o, int (*bit)(const zp_grid_result *, int),
-                          int want, int max, char *out, size_t cap) {
+static size_t points_list(const zp_sweep_out *o, int (*bit)(const zp_grid_result *, int), int want,
+                          int max, char *out, size_t cap) {
     size_t len = 0;
     int n = 0;
     char at[512];
@@ -64,9 +64,9 @@ static size_t points_list(const zp_sweep_out *o, int (*bit)(const zp_grid_result
 
 /* why the rounds ended with points broken */
 static const char *why_broken(const zp_grid_result *g) {
-    return !g->last_found                 ? "held to the points it breaks too, the search found none"
+    return !g->last_found ? "held to the points it breaks too, the search found none"
            : g->rounds >= ZP_GRID_SEARCHES ? "the searches ran out"
-                                          : "it breaks only points held to already";
+                                           : "it breaks only points held to already";
 }
 
 /* the grid schedule's sentence; the length written (as snprintf counts) */
@@ -311,8 +311,7 @@ static void grid_json(FILE *f, const zp_sweep_out *o) {
             "\"answer_round\": %d, \"added\": ",
             g->ncorner, g->nscen, g->evals, g->rounds, g->kept);
     points_json(f, o, zp_grid_added_at, 1);
-    fprintf(f, ",\n    \"points_survived\": %d, \"points_broken\": ",
-            g->failed ? 0 : g->survived);
+    fprintf(f, ",\n    \"points_survived\": %d, \"points_broken\": ", g->failed ? 0 : g->survived);
     points_json(f, o, zp_grid_survived_at, 0);
     fputs("}", f);
 }
