@@ -261,6 +261,15 @@ static void grid_rounds(void) {
         broke |= (unsigned long long)!survives("30", masses, first, &t) << p;
     }
     CHECK(broke == added);
+    /* on one thread: the same rounds, the same bits */
+    static char one[65536];
+    snprintf(cmd, sizeof cmd,
+             "OMP_NUM_THREADS=1 %s sweep %s --vary body.masses=0.5:3:7 --run simulate "
+             "--grid-schedule --out %s/rounds1 >/dev/null",
+             ZP_EXE, base, dir);
+    CHECK(run(cmd) == 0);
+    snprintf(path, sizeof path, "%s/rounds1/summary.json", dir);
+    CHECK(tu_slurp(path, one, sizeof one) > 0 && !strcmp(json, one));
 
     /* a checkpoint whose grid line an older zipopt wrote (no rounds, no points added): its rows
        are kept, the grid schedule is searched again, the outputs are the study's never stopped */

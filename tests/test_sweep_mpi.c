@@ -1,8 +1,8 @@
-/* `mpirun -np 2 zipopt sweep`: the same sweep.csv and summary.json (the grid schedule in it),
-   bit for bit, as the study without MPI; and so after the job lost rank 0 (a node) mid-way, or
-   was stopped by SIGTERM to mpirun while a rank hung, and was resumed with --resume. The faults
-   come where the test says (ZIPOPT_SWEEP_FAULT_AFTER), not after a guessed sleep. Skipped (77)
-   when zipopt is built without MPI or mpirun is missing. */
+/* `mpirun -np 2 zipopt sweep`: the same sweep.csv and summary.json (the grid schedule in it,
+   also one searched again in rounds), bit for bit, as the study without MPI; and so after the job
+   lost rank 0 (a node) mid-way, or was stopped by SIGTERM to mpirun while a rank hung, and was
+   resumed with --resume. The faults come where the test says (ZIPOPT_SWEEP_FAULT_AFTER), not after
+   a guessed sleep. Skipped (77) when zipopt is built without MPI or mpirun is missing. */
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -46,8 +46,8 @@ static void resume_same(const char *scene, const char *sub, int k) {
     FILE *f = fopen(cmd, "a"); /* as a kill inside a write would leave it: cut on resume */
     fputs("5,26.6666,1.25,ok,1,fini", f);
     fclose(f);
-    snprintf(cmd, sizeof cmd, "%s %s %s sweep %s %s --out %s/%s --resume", ZP_MPIEXEC, mpi,
-             ZP_EXE, scene, vary, dir, sub);
+    snprintf(cmd, sizeof cmd, "%s %s %s sweep %s %s --out %s/%s --resume", ZP_MPIEXEC, mpi, ZP_EXE,
+             scene, vary, dir, sub);
     CHECK(run(cmd) == 0);
     snprintf(says, sizeof says, "(%d from the checkpoint)", k);
     CHECK(strstr(out, says) != NULL);
@@ -132,6 +132,19 @@ int main(void) {
         CHECK(tu_slurp(cmd, two, sizeof two) > 0);
         CHECK(!strcmp(one, two));
     }
+    /* a grid whose corners do not bound survival: the same rounds, the same bits */
+    const char *rounds = "--vary body.masses=0.5:3:7 --run simulate --grid-schedule";
+    snprintf(cmd, sizeof cmd, "%s sweep %s %s --out %s/r1 >/dev/null", ZP_EXE, path, rounds, dir);
+    CHECK(run(cmd) == 0);
+    snprintf(cmd, sizeof cmd, "%s %s %s sweep %s %s --out %s/r2", mpirun, mpi, ZP_EXE, path, rounds,
+             dir);
+    CHECK(run(cmd) == 0);
+    CHECK(strstr(out, "after 2 searches") != NULL);
+    snprintf(cmd, sizeof cmd, "%s/r1/summary.json", dir);
+    CHECK(tu_slurp(cmd, one, sizeof one) > 0);
+    snprintf(cmd, sizeof cmd, "%s/r2/summary.json", dir);
+    CHECK(tu_slurp(cmd, two, sizeof two) > 0);
+    CHECK(!strcmp(one, two));
     lost_node(path);
     stopped(path);
 
