@@ -211,6 +211,7 @@ static int search(grid_run *r, zp_grid_result *g) {
     g->last_found = r->res->found;
     return st ? -1 : 0;
 }
+
 /* MODEL.md's survivable: finished with the margin and every [limits] value kept (without the
    search's slack: this is the answer's judgement, not the search's) */
 static int survives(const gpoint *q, const zp_eval *e, const zp_result *r, int *which) {
@@ -218,47 +219,38 @@ static int survives(const gpoint *q, const zp_eval *e, const zp_result *r, int *
            (!zp_limits_any(&q->ob.lim) || zp_limits_excess(&q->ob.lim, q->m, r, which) <= 0);
 }
 
-/* an answer and how it fares at every point */
-typedef struct answer {
-    int found;
-    double force[ZP_SCHED_MAX_PARAMS];
-    double time, margin; /* at the nominal */
-    int worst;           /* the corner nearest to breaking it */
-    double worst_margin;
-    int survived;
-    unsigned char ok[(ZP_SWEEP_MAX_POINTS + 7) / 8];
-} answer;
-
-/* the answer a->force simulated at every point with the point's [solver]; the corners are
-   pt[1..ncorner] */
-static void check(grid_run *r, int ncorner, answer *a) {
+/* g's answer simulated at every point with the point's [solver]; the corners are
+   pt[1..ncorner]; each point's constraint value (> 0: broken) into cons */
+static void check(grid_run *r, int ncorner, zp_grid_result *g, double *cons) {
     zp_result *res = malloc(sizeof *res); /* large: off the stack */
     double worst_cons = -INFINITY;
-    a->survived = 0;
-    a->worst = -1;
-    a->time = a->margin = a->worst_margin = NAN;
-    memset(a->ok, 0, sizeof a->ok);
+    g->survived = 0;
+    g->worst = -1;
+    g->time = g->margin = g->worst_margin = NAN;
+    memset(g->ok, 0, sizeof g->ok);
     for (int p = 0; res && p < r->s->npoint; p++) {
         gpoint q = {.p = p};
         char why[256];
         zp_sim *sim = NULL;
+        cons[p] = INFINITY; /* a point that cannot run breaks it most */
         if (!load_point(r->s, r->base, r->path, r->sc, 0, &q, why, sizeof why) &&
             (sim = zp_sim_create(q.m, &q.so)) != NULL) {
             zp_eval e;
-            zp_objective_eval(&q.ob, sim, a->force, &e, res);
+            zp_objective_eval(&q.ob, sim, g->force, &e, res);
             int which, ok = survives(&q, &e, res, &which);
-            a->survived += ok;
-            a->ok[p / 8] |= (unsigned char)(ok << (p % 8));
+            g->survived += ok;
+            g->ok[p / 8] |= (unsigned char)(ok << (p % 8));
+            cons[p] = e.cons;
             double margin = q.death_angle - e.angle * DEG;
-            if (p == r->pt[0].p) {
-                a->time = e.time;
-                a->margin = margin;
+            if (p == g->nominal) {
+                g->time = e.time;
+                g->margin = margin;
             }
             for (int c = 1; c <= ncorner; c++) {
                 if (r->pt[c].p == p && e.cons > worst_cons) {
                     worst_cons = e.cons;
-                    a->worst = p;
-                    a->worst_margin = margin;
+                    g->worst = p;
+                    g->worst_margin = margin;
                 }
             }
         }
@@ -268,61 +260,71 @@ static void check(grid_run *r, int ncorner, answer *a) {
     free(res);
 }
 
-/* the points a breaks that are not held to yet, held to from the next search on; how many */
-static int hold_broken(grid_run *r, const answer *a, zp_grid_result *g) {
-    int added = 0;
+/* the points g's answer breaks that are not held to yet (the ZP_GRID_ADD_MAX it breaks most,
+   by cons, when more), held to from the next search on, in the grid's order; how many */
+static int hold_broken(grid_run *r, zp_grid_result *g, const double *cons) {
+    int pick[ZP_GRID_ADD_MAX], npick = 0;
     for (int p = 0; p < r->s->npoint; p++) {
         int held = 0;
         for (int i = 0; i < r->n && !held; i++) {
             held = r->pt[i].p == p;
         }
-        if (!held && !((a->ok[p / 8] >> (p % 8)) & 1)) {
-            r->pt[r->n].p = p;
-            if (hold(r)) {
-                return -1;
+        if (held || zp_grid_survived_at(g, p)) {
+            continue;
+        }
+        /* an insertion into pick, kept sorted by cons, most first (ties: the earlier point) */
+        int k = npick < ZP_GRID_ADD_MAX ? npick++ : ZP_GRID_ADD_MAX;
+        for (; k > 0 && cons[p] > cons[pick[k - 1]]; k--) {
+            if (k < ZP_GRID_ADD_MAX) {
+                pick[k] = pick[k - 1];
             }
-            g->added[p / 8] |= (unsigned char)(1u << (p % 8));
-            added++;
+        }
+        if (k < ZP_GRID_ADD_MAX) {
+            pick[k] = p;
         }
     }
-    g->nadded += added;
-    return added;
+    for (int p = 0; p < r->s->npoint; p++) {
+        for (int k = 0; k < npick; k++) {
+            if (pick[k] == p) {
+                r->pt[r->n].p = p;
+                if (hold(r)) {
+                    return -1;
+                }
+                g->added[p / 8] |= (unsigned char)(1u << (p % 8));
+            }
+        }
+    }
+    g->nadded += npick;
+    return npick;
 }
 
 /* the searches and checks, round after round; 0, or -1 with r->why */
 static int rounds(grid_run *r, int ncorner, zp_grid_result *g) {
-    answer *a = malloc(sizeof *a);
-    int rc = a ? 0 : -1;
+    double *cons = malloc(sizeof *cons * (size_t)r->s->npoint);
+    int rc = cons ? 0 : -1;
     while (!rc && !(rc = search(r, g))) {
         if (!r->res->found && g->kept) {
             break; /* held to more points, none survives all: the answer before stands */
         }
-        a->found = r->res->found;
-        memcpy(a->force, r->res->force, sizeof *a->force * (size_t)g->np);
-        check(r, ncorner, a);
+        g->found = r->res->found;
+        memcpy(g->force, r->res->force, sizeof *g->force * (size_t)g->np);
         g->kept = g->rounds;
         g->nheld = g->nadded;
         g->nscen = r->set.n;
-        g->found = a->found;
-        memcpy(g->force, a->force, sizeof g->force);
-        g->time = a->time;
-        g->margin = a->margin;
-        g->worst = a->worst;
-        g->worst_margin = a->worst_margin;
-        g->survived = a->survived;
-        memcpy(g->ok, a->ok, sizeof g->ok);
-        if (!a->found || a->survived == r->s->npoint || g->rounds >= ZP_GRID_SEARCHES) {
+        check(r, ncorner, g, cons);
+        if (!g->found || g->survived == r->s->npoint || g->rounds >= ZP_GRID_SEARCHES) {
             break;
         }
         /* worst first, as the robust search orders its set between rounds */
         zp_scen_set_reorder(&r->set);
-        int added = hold_broken(r, a, g);
-        rc = added < 0 ? -1 : 0;
-        if (!added) {
-            break; /* it breaks only points held to: the search's slack, or their [solver] */
+        int added = hold_broken(r, g, cons);
+        if (added <= 0) {
+            rc = added; /* none: it breaks only points held to (the search's slack, their
+                           [solver]) */
+            break;
         }
     }
-    free(a);
+    free(cons);
     return rc;
 }
 

@@ -7,6 +7,7 @@
 #include "sweep.h"
 
 #define ZP_GRID_SEARCHES 4 /* searches in all: the corners', then one per round of points added */
+#define ZP_GRID_ADD_MAX 16 /* points added in one round: those broken most when more break */
 
 /* What the grid schedule came to. Plain data (no pointers): copied as bytes between ranks. */
 typedef struct zp_grid_result {
@@ -43,12 +44,13 @@ int zp_grid_nominal(const zp_sweep *s);
    of the grid, that point's margin and [limits]; with a [robust] scene, also at each of those
    points' robust scenarios. The search's budget, seed and integrator are the nominal's. Then
    the answer is simulated at every point with the point's [solver]; while some point breaks it
-   and fewer than ZP_GRID_SEARCHES searches ran, the broken points (each its own model and
-   criteria, with its robust scenarios) join those held to, the search restarts warm and the
-   answer is checked again. The answer kept: the last search's, or when that found none, the
-   one before it (with its own check). base is the scene text
-   (path names it in messages); the result depends on nothing else, never on the process or
-   the thread count. A failure is a result with failed = 1. */
+   and fewer than ZP_GRID_SEARCHES searches ran, the broken points not yet held to (the
+   ZP_GRID_ADD_MAX broken most when more; each its own model and criteria, with its robust
+   scenarios) join those held to, the search restarts warm (zp_search_warm; afresh when that
+   finds none) and the answer is checked again. The answer kept: the last search's, or when
+   that found none, the one before it. base is the scene text (path names it in messages); the
+   result depends on nothing else, never on the process or the thread count. A failure is a
+   result with failed = 1. */
 void zp_grid_run(const zp_sweep *s, const char *base, const char *path, zp_grid_result *g);
 int zp_grid_survived_at(const zp_grid_result *g, int p);
 int zp_grid_added_at(const zp_grid_result *g, int p);
