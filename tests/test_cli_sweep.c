@@ -236,10 +236,8 @@ static void grid_rounds(void) {
     CHECK(run(cmd) == 0);
     CHECK(json_array(out, "grid_schedule", "forces", first, 2) == 0);
     CHECK(json_num(out, "rounds") == 1);
-    snprintf(cmd, sizeof cmd,
-             "%s sweep %s --vary body.masses=0.5:3:7 --run simulate --grid-schedule --out "
-             "%s/rounds",
-             ZP_EXE, base, dir);
+    const char *vary = "--vary body.masses=0.5:3:7 --run simulate --grid-schedule";
+    snprintf(cmd, sizeof cmd, "%s sweep %s %s --out %s/rounds", ZP_EXE, base, vary, dir);
     CHECK(run(cmd) == 0);
     CHECK(strstr(out, "its middle and ") && strstr(out, "all survive"));
     CHECK(strstr(out, "it keeps the limits at 7 of 7 points, after 2 searches (added as an "
@@ -262,18 +260,15 @@ static void grid_rounds(void) {
     }
     CHECK(broke == added);
     /* on one thread: the same rounds, the same bits */
-    static char one[65536];
-    snprintf(cmd, sizeof cmd,
-             "OMP_NUM_THREADS=1 %s sweep %s --vary body.masses=0.5:3:7 --run simulate "
-             "--grid-schedule --out %s/rounds1 >/dev/null",
-             ZP_EXE, base, dir);
+    static char again[65536];
+    snprintf(cmd, sizeof cmd, "OMP_NUM_THREADS=1 %s sweep %s %s --out %s/rounds1 >/dev/null",
+             ZP_EXE, base, vary, dir);
     CHECK(run(cmd) == 0);
     snprintf(path, sizeof path, "%s/rounds1/summary.json", dir);
-    CHECK(tu_slurp(path, one, sizeof one) > 0 && !strcmp(json, one));
+    CHECK(tu_slurp(path, again, sizeof again) > 0 && !strcmp(json, again));
 
     /* a checkpoint whose grid line an older zipopt wrote (no rounds, no points added): its rows
        are kept, the grid schedule is searched again, the outputs are the study's never stopped */
-    const char *vary = "--vary body.masses=0.5:3:7 --run simulate --grid-schedule";
     snprintf(cmd, sizeof cmd,
              "ZIPOPT_SWEEP_FAULT_AFTER=2 %s sweep %s %s --out %s/roundscut >/dev/null 2>&1", ZP_EXE,
              base, vary, dir);
@@ -290,7 +285,6 @@ static void grid_rounds(void) {
              dir);
     CHECK(run(cmd) == 0);
     CHECK(strstr(out, "(2 from the checkpoint) and the grid schedule in"));
-    static char again[65536];
     snprintf(path, sizeof path, "%s/roundscut/summary.json", dir);
     CHECK(tu_slurp(path, again, sizeof again) > 0 && !strcmp(json, again));
 }

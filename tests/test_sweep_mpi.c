@@ -101,13 +101,34 @@ static void stopped(const char *scene) {
     resume_same(scene, "stop", 2);
 }
 
+/* the study of args without MPI into a/, under mpirun -np 2 into b/ (its output left in out):
+   the same sweep.csv and summary.json */
+static void same_on_two_ranks(const char *mpirun, const char *scene, const char *args,
+                              const char *a, const char *b) {
+    char cmd[4096];
+    static char one[1 << 15], two[1 << 15];
+    snprintf(cmd, sizeof cmd, "%s sweep %s %s --out %s/%s", ZP_EXE, scene, args, dir, a);
+    CHECK(run(cmd) == 0);
+    snprintf(cmd, sizeof cmd, "%s %s %s sweep %s %s --out %s/%s", mpirun, mpi, ZP_EXE, scene, args,
+             dir, b);
+    CHECK(run(cmd) == 0);
+    CHECK(strstr(out, "on 2 ranks") != NULL);
+    const char *files[] = {"sweep.csv", "summary.json"};
+    for (int i = 0; i < 2; i++) {
+        snprintf(cmd, sizeof cmd, "%s/%s/%s", dir, a, files[i]);
+        CHECK(tu_slurp(cmd, one, sizeof one) > 0);
+        snprintf(cmd, sizeof cmd, "%s/%s/%s", dir, b, files[i]);
+        CHECK(tu_slurp(cmd, two, sizeof two) > 0);
+        CHECK(!strcmp(one, two));
+    }
+}
+
 int main(void) {
     const char *mpirun = tu_mpirun();
     if (!mpirun) {
         return 77;
     }
     char cmd[4096], path[600];
-    static char one[1 << 15], two[1 << 15];
     CHECK(mkdtemp(dir) != NULL);
     snprintf(path, sizeof path, "%s/s.ini", dir);
     FILE *f = fopen(path, "w");
@@ -118,33 +139,11 @@ int main(void) {
           f);
     fclose(f);
 
-    snprintf(cmd, sizeof cmd, "%s sweep %s %s --out %s/one", ZP_EXE, path, vary, dir);
-    CHECK(run(cmd) == 0);
-    snprintf(cmd, sizeof cmd, "%s %s %s sweep %s %s --out %s/two", mpirun, mpi, ZP_EXE, path, vary,
-             dir);
-    CHECK(run(cmd) == 0);
-    CHECK(strstr(out, "on 2 ranks") != NULL);
-    const char *files[] = {"sweep.csv", "summary.json"};
-    for (int i = 0; i < 2; i++) {
-        snprintf(cmd, sizeof cmd, "%s/one/%s", dir, files[i]);
-        CHECK(tu_slurp(cmd, one, sizeof one) > 0);
-        snprintf(cmd, sizeof cmd, "%s/two/%s", dir, files[i]);
-        CHECK(tu_slurp(cmd, two, sizeof two) > 0);
-        CHECK(!strcmp(one, two));
-    }
+    same_on_two_ranks(mpirun, path, vary, "one", "two");
     /* a grid whose corners do not bound survival: the same rounds, the same bits */
-    const char *rounds = "--vary body.masses=0.5:3:7 --run simulate --grid-schedule";
-    snprintf(cmd, sizeof cmd, "%s sweep %s %s --out %s/r1 >/dev/null", ZP_EXE, path, rounds, dir);
-    CHECK(run(cmd) == 0);
-    snprintf(cmd, sizeof cmd, "%s %s %s sweep %s %s --out %s/r2", mpirun, mpi, ZP_EXE, path, rounds,
-             dir);
-    CHECK(run(cmd) == 0);
+    same_on_two_ranks(mpirun, path, "--vary body.masses=0.5:3:7 --run simulate --grid-schedule",
+                      "r1", "r2");
     CHECK(strstr(out, "after 2 searches") != NULL);
-    snprintf(cmd, sizeof cmd, "%s/r1/summary.json", dir);
-    CHECK(tu_slurp(cmd, one, sizeof one) > 0);
-    snprintf(cmd, sizeof cmd, "%s/r2/summary.json", dir);
-    CHECK(tu_slurp(cmd, two, sizeof two) > 0);
-    CHECK(!strcmp(one, two));
     lost_node(path);
     stopped(path);
 
