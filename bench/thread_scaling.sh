@@ -25,7 +25,7 @@ studies=(
   "seed|config/seed.ini --no-plot"
   "seed_figures|config/seed.ini"
   "multi8|config/multi8.ini --no-plot"
-  "human_3000|config/human.ini --no-plot --max-evals 3000"
+  "human_1000|config/human.ini --no-plot --max-evals 1000"
   "seed_pm5_robust|config/seed_pm5.ini --no-plot"
   "landscape|landscape config/seed.ini --slice 1,2"
 )
