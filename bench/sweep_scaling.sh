@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The scaling of `zipopt sweep` over MPI ranks: a 64-point study of the seed (body.masses
-# x0.8..x1.2 by body.damping x0.5..x2, 8 x 8), once in one process without mpirun, then under
+# x0.8..x1.2 by body.damping x0.5..x2, 8 x 8; SIDE x SIDE points), once in one process without mpirun, then under
 # mpirun on each rank count given; prints the wall and CPU time, speed-up and parallel
 # efficiency of each (against the first count), and checks that every run's sweep.csv and
 # summary.json (the grid schedule in it) equal the one-process files bit for bit.
@@ -11,6 +11,7 @@
 #          THREADS  OpenMP threads per rank (default 1: each rank on one core)
 #          GRID     0: without the grid schedule (--no-grid-schedule); default with it, one
 #                   item of about 7 points' cost that bounds the wall time at 16 ranks
+#          SIDE     values per key (default 8: 64 points)
 #          HOSTFILE a hostfile for mpirun (a cluster: one line per node, `node01 slots=16`)
 #          MPIRUN_ARGS more mpirun options (default --oversubscribe; as root --allow-run-as-root
 #                   is added)
@@ -29,7 +30,8 @@ if [ -n "${EVALS:-}" ]; then
 else
   cp config/seed.ini "$scene"
 fi
-vary=(--vary body.masses=0.8:1.2:8 --vary body.damping=0.5:2:8)
+side=${SIDE:-8} # values per key: side^2 points
+vary=(--vary body.masses=0.8:1.2:$side --vary body.damping=0.5:2:$side)
 [ "${GRID:-1}" != 0 ] || vary+=(--no-grid-schedule)
 export OMP_NUM_THREADS=${THREADS:-1}
 read -r -a mpi <<<"${MPIRUN_ARGS:---oversubscribe}"
@@ -46,7 +48,7 @@ timed() {
 read -r w0 c0 < <(timed "$zipopt" sweep "$scene" "${vary[@]}" --run "$run" --out "$out/plain")
 echo "ranks,wall_s,cpu_s,speedup,efficiency" >"$out/scaling.csv"
 printf '%-7s %9s %9s %8s %11s  %s\n' ranks wall_s cpu_s speedup efficiency \
-  "(64 points, $run, $OMP_NUM_THREADS thread(s) per rank, $(hostname))"
+  "($((side * side)) points, $run, $OMP_NUM_THREADS thread(s) per rank, $(hostname))"
 printf '%-7s %9.2f %9.2f\n' "plain" "$w0" "$c0"
 w1=
 for n in "${ranks[@]}"; do

@@ -5,7 +5,7 @@
 # bit in summary.json).
 #   usage: bench/thread_scaling.sh [THREADS..]   (default: 1 2; e.g. 1 2 4 8 16 on a big machine)
 #   env:   ZIPOPT  the binary (default: zipopt on PATH, else build/zipopt)
-#          REPS    runs per point (default 3; the robust study runs once)
+#          REPS    runs per point (default 3; the robust and human studies REPS_LONG, default 1)
 #          ONLY    the studies to run, by name (default all)
 # Writes out/bench/thread_scaling/scaling.csv (study, threads, wall_s, cpu_s, speedup,
 # efficiency, and for the searches search_s, search_speedup: the search phase alone, summary.json
@@ -25,7 +25,7 @@ studies=(
   "seed|config/seed.ini --no-plot"
   "seed_figures|config/seed.ini"
   "multi8|config/multi8.ini --no-plot"
-  "human_3000|config/human.ini --no-plot --max-evals 3000"
+  "human_1000|config/human.ini --no-plot --max-evals 1000"
   "seed_pm5_robust|config/seed_pm5.ini --no-plot"
   "landscape|landscape config/seed.ini --slice 1,2"
 )
@@ -62,7 +62,7 @@ for s in "${studies[@]}"; do
   [ -z "${ONLY:-}" ] || [[ " $ONLY " == *" $name "* ]] || continue
   read -r -a args <<<"${s#*|}"
   n=$reps
-  case $name in seed_pm5_robust | human_*) n=1 ;; esac
+  case $name in seed_pm5_robust | human_*) n=${REPS_LONG:-1} ;; esac
   w1= s1=
   for t in "${threads[@]}"; do
     walls=() cpus=() searches=()
