@@ -11,6 +11,7 @@
 #include "cli.h"
 #include "gnuplot.h"
 #include "mpi_queue.h"
+#include "mpi_spread.h"
 #include "scene_read.h"
 #include "sweep_csv.h"
 #include "sweep_out.h"
@@ -439,18 +440,11 @@ done:
     return status;
 }
 
+/* every rank runs the study; rank 0 speaks for it and writes */
+static int sweep_on_rank(int argc, char **argv, const zp_spread *sp) {
+    return sweep(argc, argv, sp->rank);
+}
+
 int zp_cmd_sweep(int argc, char **argv) {
-    char err[256];
-    if (zp_mpi_queue_start(err, sizeof err)) {
-        fprintf(stderr, "zipopt sweep: %s\n", err);
-        return ZP_EXIT_FAIL;
-    }
-    int rank = zp_mpi_queue_rank();
-    if (rank != 0) { /* rank 0 speaks for the study */
-        freopen("/dev/null", "w", stdout);
-        freopen("/dev/null", "w", stderr);
-    }
-    int status = sweep(argc, argv, rank);
-    zp_mpi_queue_end();
-    return status;
+    return zp_mpi_spread_main("sweep", sweep_on_rank, argc, argv);
 }
