@@ -111,7 +111,7 @@ typedef struct scen_share {
     int n;           /* positions */
     atomic_int next; /* the next position to take */
     atomic_int stop; /* the first position that broke so far (it only falls); n: none */
-    double *cons; /* owned, n: the constraint of each position run */
+    double *cons;    /* owned, n: the constraint of each position run */
 } scen_share;
 
 static void share_work(scen_share *sh, zp_sim *s, zp_result *r) {
