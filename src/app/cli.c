@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "formulation.h"
+#include "gnuplot.h"
 #include "method.h"
 #include "numtext.h"
 
@@ -157,6 +158,17 @@ int zp_cli_out_commit(zp_tx *t, const char *cmd) {
         return -1;
     }
     return 0;
+}
+
+int zp_cli_out_draw_commit(zp_tx *t, const char *cmd, const char *const *scripts, int n,
+                           int *missing) {
+    char err[1400];
+    if (zp_gnuplot_run(t, scripts, n, missing, err, sizeof err)) {
+        zp_tx_abort(t);
+        fprintf(stderr, "zipopt %s: %s; nothing was written\n", cmd, err);
+        return -1;
+    }
+    return zp_cli_out_commit(t, cmd);
 }
 
 void zp_cli_print_registries(FILE *f) {

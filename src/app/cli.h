@@ -49,6 +49,11 @@ int zp_cli_out_begin(zp_tx *t, const char *cmd, const char *folder, const char *
 /* Commits t (then t->dir and t->written say what was written), or says why and "nothing was
    written" on stderr for `zipopt <cmd>`. 0 or -1. */
 int zp_cli_out_commit(zp_tx *t, const char *cmd);
+/* Draws the n gnuplot scripts in t (gnuplot.h; *missing: gnuplot is not installed, so only the
+   data and scripts are there), then commits t; on either failure aborts t and says why and
+   "nothing was written" for `zipopt <cmd>`. 0 or -1. */
+int zp_cli_out_draw_commit(zp_tx *t, const char *cmd, const char *const *scripts, int n,
+                           int *missing);
 /* The registries' names and docs, for --help. */
 void zp_cli_print_registries(FILE *f);
 void zp_cli_usage(FILE *f);

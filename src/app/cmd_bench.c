@@ -9,7 +9,6 @@
 #include <string.h>
 
 #include "cli.h"
-#include "gnuplot.h"
 #include "out_json.h"
 #include "setup.h"
 #include "sim.h"
@@ -503,12 +502,7 @@ int zp_cmd_bench(int argc, char **argv) {
     write_gnuplot(gp);
     const char *script = "trade.gp";
     int missing;
-    if (zp_gnuplot_run(&set, &script, 1, &missing, err, sizeof err)) {
-        zp_tx_abort(&set);
-        fprintf(stderr, "zipopt bench trade: %s; nothing was written\n", err);
-        return ZP_EXIT_FAIL;
-    }
-    if (zp_cli_out_commit(&set, "bench trade")) {
+    if (zp_cli_out_draw_commit(&set, "bench trade", &script, 1, &missing)) {
         return ZP_EXIT_FAIL;
     }
     if (a.json) {

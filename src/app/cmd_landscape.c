@@ -9,7 +9,6 @@
 
 #include "cli.h"
 #include "fig_landscape.h"
-#include "gnuplot.h"
 #include "landscape.h"
 #include "mpi_spread.h"
 #include "out_json.h"
@@ -402,12 +401,7 @@ static int landscape(int argc, char **argv, const zp_spread *sp) {
     }
     const char *scripts[] = {"landscape.gp", "landscape_slice.gp"};
     int missing;
-    if (zp_gnuplot_run(&t, scripts, n2 ? 2 : 1, &missing, err, sizeof err)) {
-        zp_tx_abort(&t);
-        fprintf(stderr, "zipopt landscape: %s; nothing was written\n", err);
-        goto done;
-    }
-    if (zp_cli_out_commit(&t, "landscape")) {
+    if (zp_cli_out_draw_commit(&t, "landscape", scripts, n2 ? 2 : 1, &missing)) {
         goto done;
     }
     if (a.json) {

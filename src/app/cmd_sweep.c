@@ -9,7 +9,6 @@
 #include <unistd.h>
 
 #include "cli.h"
-#include "gnuplot.h"
 #include "mpi_queue.h"
 #include "mpi_spread.h"
 #include "scene_read.h"
@@ -273,12 +272,7 @@ static int write_outputs(zp_tx *t, const zp_sweep_out *o, const char *summary,
     }
     const char *scripts[] = {"sweep.gp"};
     *no_gnuplot = 0;
-    if (zp_gnuplot_run(t, scripts, fig, no_gnuplot, err, sizeof err)) {
-        zp_tx_abort(t);
-        fprintf(stderr, "zipopt sweep: %s; nothing was written\n", err);
-        return -1;
-    }
-    return zp_cli_out_commit(t, "sweep");
+    return zp_cli_out_draw_commit(t, "sweep", scripts, fig, no_gnuplot);
 }
 
 /* rank 0, once every point is done: the files, then the summary on stdout */

@@ -7,7 +7,6 @@
 #include <string.h>
 
 #include "cli.h"
-#include "gnuplot.h"
 #include "out_json.h"
 #include "robust.h"
 #include "setup.h"
@@ -267,12 +266,7 @@ int zp_cmd_tradeoff(int argc, char **argv) {
     write_plot(gp);
     write_md(md, sc, L, n);
     const char *scripts[] = {"tradeoff.gp"};
-    if (zp_gnuplot_run(&t, scripts, 1, &missing, err, sizeof err)) {
-        zp_tx_abort(&t);
-        fprintf(stderr, "zipopt tradeoff: %s; nothing was written\n", err);
-        goto done;
-    }
-    if (zp_cli_out_commit(&t, "tradeoff")) {
+    if (zp_cli_out_draw_commit(&t, "tradeoff", scripts, 1, &missing)) {
         goto done;
     }
     for (int i = 1; i < n && !json; i++) {
