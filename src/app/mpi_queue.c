@@ -1,6 +1,7 @@
 /* The queue over MPI (mpi_queue.h), compiled only with MPI: on rank 0 a dispatcher thread
    answers the other ranks while the main thread computes items like any rank. */
 #include "mpi_queue.h"
+#include "mpi_wait.h"
 
 #include <mpi.h>
 #include <pthread.h>
@@ -65,12 +66,24 @@ void zp_mpi_queue_end(void) {
         /* a rank that is done waits for the others asleep, not spinning in MPI_Finalize: where
            cores share their units (hyperthreads), a spinning rank slows those still at work */
         MPI_Request barrier;
-        MPI_Ibarrier(MPI_COMM_WORLD, &barrier);
-        for (int done = 0; MPI_Test(&barrier, &done, MPI_STATUS_IGNORE) == MPI_SUCCESS && !done;) {
-            nanosleep(&(struct timespec){0, NAP_NS}, NULL);
+        if (MPI_Ibarrier(MPI_COMM_WORLD, &barrier) == MPI_SUCCESS) {
+            zp_mpi_wait_napping(&barrier);
         }
         MPI_Finalize();
         joined = 0;
+    }
+}
+
+int zp_mpi_wait_napping(MPI_Request *req) {
+    for (;;) {
+        int flag = 0;
+        if (MPI_Test(req, &flag, MPI_STATUS_IGNORE) != MPI_SUCCESS) {
+            return -1;
+        }
+        if (flag) {
+            return 0;
+        }
+        nanosleep(&(struct timespec){0, NAP_NS}, NULL);
     }
 }
 

@@ -6,25 +6,9 @@
 #include <mpi.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <time.h>
 
 #include "mpi_queue.h"
-
-#define NAP_NS 1000000 /* 1 ms between polls: the most a wait overruns */
-
-/* 0 when req completed, napping between tests */
-static int wait_napping(MPI_Request *req) {
-    for (;;) {
-        int flag = 0;
-        if (MPI_Test(req, &flag, MPI_STATUS_IGNORE) != MPI_SUCCESS) {
-            return -1;
-        }
-        if (flag) {
-            return 0;
-        }
-        nanosleep(&(struct timespec){0, NAP_NS}, NULL);
-    }
-}
+#include "mpi_wait.h"
 
 static int allgather(void *user, void *all, const int *count, size_t rec) {
     (void)user;
@@ -50,7 +34,7 @@ static int allgather(void *user, void *all, const int *count, size_t rec) {
     MPI_Type_commit(&t);
     int ok = MPI_Iallgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, all, count, displ, t,
                              MPI_COMM_WORLD, &req) == MPI_SUCCESS &&
-             !wait_napping(&req);
+             !zp_mpi_wait_napping(&req);
     MPI_Type_free(&t);
     free(displ);
     return ok ? 0 : -1;
@@ -60,7 +44,7 @@ static int bcast(void *user, void *buf, size_t len) {
     (void)user;
     MPI_Request req;
     return MPI_Ibcast(buf, (int)len, MPI_BYTE, 0, MPI_COMM_WORLD, &req) == MPI_SUCCESS
-               ? wait_napping(&req)
+               ? zp_mpi_wait_napping(&req)
                : -1;
 }
 
