@@ -27,6 +27,10 @@ comp=$(find "$prefix/share" -path '*bash-completion/completions/zipopt' -type f)
 [ -f "$prefix/share/zipopt/scenes/seed.ini" ] || fail "no example scenes in share/zipopt/scenes"
 [ -n "$comp" ] || fail "no completion in share/bash-completion/completions/zipopt"
 [ -f "$man" ] || fail "no man page at share/man/man1/zipopt.1"
+# the docs the man page and --help send users to are installed beside them
+for d in model.md scene-file.md commands.md; do
+    [ -f "$prefix/share/doc/zipopt/$d" ] || fail "no share/doc/zipopt/$d"
+done
 [ "$failures" = 0 ] || exit 1
 
 # the installed program runs an installed scene
@@ -35,6 +39,7 @@ comp=$(find "$prefix/share" -path '*bash-completion/completions/zipopt' -type f)
 # the man page is zipopt(1) and documents every command's options ('-' is '\-' in roff)
 grep -q '^\.TH ZIPOPT "*1' "$man" || fail "the man page is not zipopt(1)"
 manual=$(sed 's/\\-/-/g' "$man")
+case $manual in *"share/doc/zipopt"*) ;; *) fail "the man page does not name share/doc/zipopt" ;; esac
 
 # COMPREPLY of the installed completion for the words given (the last is being completed)
 offers() {

@@ -225,8 +225,12 @@ void zp_cli_usage(FILE *f) {
           "\n"
           "Exit status: 0 done (a spy that dies is a result, not an error); 2 bad input\n"
           "(command line or scene file, with FILE:LINE: [section] key: messages on stderr);\n"
-          "1 anything else. Scene files: see CONFIG.md; config/ (installed: share/zipopt/\n"
-          "scenes/) holds examples.\n"
+          "3 the search found no schedule that keeps the margin, the [limits] and the\n"
+          "[robust] scenarios (the closest candidate is still written, marked); 1 anything\n"
+          "else.\n"
+          "Documentation: docs/model.md (the physics), docs/scene-file.md (every scene key),\n"
+          "docs/commands.md (commands, files, JSON keys), installed in share/doc/zipopt/;\n"
+          "example scenes in config/ (installed: share/zipopt/scenes/).\n"
           "\n",
           f);
     zp_cli_print_registries(f);

@@ -152,7 +152,7 @@ static void usage(FILE *f) {
           "(default 5) and rhs evaluations. Writes trade.csv, trade.gp and trade.png in DIR\n"
           "(default out/<scene name>/bench/) and prints the fastest method and tolerance\n"
           "reaching a finish or death time error of 1e-3, 1e-6 and 1e-9 s; with --json, one\n"
-          "JSON object instead (keys: README).\n",
+          "JSON object instead (keys: docs/commands.md).\n",
           f);
 }
 

@@ -15,14 +15,14 @@
 
 static void usage(FILE *f) {
     fputs("usage: zipopt check SCENE.ini [--json]\n"
-          "Validates a scene file against every rule of CONFIG.md (all problems are listed on\n"
+          "Validates a scene file against every rule of docs/scene-file.md (all problems are listed on\n"
           "stderr as FILE:LINE: [section] key: what; expected, with exit status 2) and prints\n"
           "the scene: each course section with f(x) and f, f', f'' at its ends; each boundary\n"
           "between sections with its height, slope jump and whether it is a kink; the trolley\n"
           "and the body's links (length, mass, inertia, damping); the drive, solver and search\n"
           "settings; every key zipopt added with its value. Warns on stderr when a force lies\n"
           "outside [min, max]. Writes no files.\n"
-          "  --json   print the scene as one JSON object instead (keys: README)\n",
+          "  --json   print the scene as one JSON object instead (keys: docs/commands.md)\n",
           f);
 }
 

@@ -35,7 +35,7 @@ static void usage(FILE *f) {
         "  --schedule FILE     the base schedule from a schedule file, e.g. the search's\n"
         "                      schedule.ini: the slice then passes through the best schedule\n"
         "  --out DIR           the output folder (default out/<scene name>/landscape/)\n"
-        "  --json              print the result as one JSON object (keys: README)\n"
+        "  --json              print the result as one JSON object (keys: docs/commands.md)\n"
         "Each image comes with its gnuplot script (.gp); the CSV files are its data. Prints\n"
         "the survival windows of the constant push on stdout.\n"
         "Under `mpirun -np N zipopt landscape ..` the runs are dealt out over the N ranks\n"

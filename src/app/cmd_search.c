@@ -48,7 +48,7 @@ static void usage(FILE *f) {
           "                    so far (then the answer depends on the machine's speed)\n"
           "  --no-plot         skip the figures\n"
           "  --json            print summary.json's object on stdout instead of the text\n"
-          "                    summary (keys: README, CLI.md)\n"
+          "                    summary (keys: docs/commands.md)\n"
           "Under `mpirun -np N zipopt SCENE.ini ..` rank 0 searches on its threads while the\n"
           "other ranks wait without spinning, then the N ranks share the robust verification's\n"
           "fresh scenarios; rank 0 alone prints and writes, bit for bit as without mpirun.\n"

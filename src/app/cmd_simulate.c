@@ -26,7 +26,7 @@ static void usage(FILE *f) {
           "or stalled (why).\n"
           "  --force F1,..       the schedule, overriding [drive] forces\n"
           "  --schedule FILE     a schedule file ([drive] forces) laid over the scene\n"
-          "  --json              print the result as one JSON object (keys: README, CLI.md)\n"
+          "  --json              print the result as one JSON object (keys: docs/commands.md)\n"
           "  --sample-times T,.. also report the state at these times (s)\n"
           "  --out DIR           write trajectory.csv and summary.json in DIR itself\n"
           "                      (default out/<scene name>/simulate/)\n"

@@ -22,7 +22,7 @@ static void usage(FILE *f) {
           "against the level, the nominal optimum marked) and report.md (what each level\n"
           "costs against the nominal optimum) to out/<scene name>/tradeoff/ (or DIR).\n"
           "  --levels P1,..  force error levels in % (default 0,1,2,5,10), each in [0, 100)\n"
-          "  --json          print the levels as one JSON object (keys: README)\n"
+          "  --json          print the levels as one JSON object (keys: docs/commands.md)\n"
           "  --out DIR       output folder\n",
           f);
 }
