@@ -144,6 +144,7 @@ typedef struct trade_study {
 
 static void usage(FILE *f) {
     fputs("usage: zipopt bench trade [SCENE.ini] [--repeats N] [--json] [--out DIR]\n"
+          "\n"
           "Work-precision study: every method at rtol 1e-3 .. 1e-12 (atol = rtol/100) on the\n"
           "scene (default: the built-in seed) at 10 N everywhere (survives), 100 N (dies) and\n"
           "100 N with joint damping 1e4 N m s/rad (stiff). Errors of the finish/death time,\n"

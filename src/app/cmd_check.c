@@ -15,6 +15,7 @@
 
 static void usage(FILE *f) {
     fputs("usage: zipopt check SCENE.ini [--json]\n"
+          "\n"
           "Validates a scene file against every rule of docs/scene-file.md (all problems\n"
           "are listed on stderr as FILE:LINE: [section] key: what; expected, with exit\n"
           "status 2) and prints the scene: each course section with f(x) and f, f', f'' at\n"

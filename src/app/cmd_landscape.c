@@ -22,6 +22,7 @@ static void usage(FILE *f) {
         "usage: zipopt landscape SCENE.ini [--force-range A:B:N] [--slice I,J]\n"
         "                        [--range A:B:N[,C:D:M]] [--force F1,..|--schedule FILE]\n"
         "                        [--out DIR] [--json]\n"
+        "\n"
         "Runs many schedules in parallel (OpenMP; OMP_NUM_THREADS sets the threads) and\n"
         "draws the outcome over the forces:\n"
         "  landscape.csv, landscape.png   one constant push in every section, N points from\n"
@@ -38,6 +39,7 @@ static void usage(FILE *f) {
         "  --json              print the result as one JSON object (keys: docs/commands.md)\n"
         "Each image comes with its gnuplot script (.gp); the CSV files are its data. Prints\n"
         "the survival windows of the constant push on stdout.\n"
+        "\n"
         "Under `mpirun -np N zipopt landscape ..` the runs are dealt out over the N ranks\n"
         "(each on its OpenMP threads; e.g. -x OMP_NUM_THREADS=1 for one core per rank);\n"
         "rank 0 alone prints and writes, and the files are bit for bit those without mpirun.\n",

@@ -29,6 +29,7 @@ static volatile sig_atomic_t interrupted;
 static void usage(FILE *f) {
     fputs("usage: zipopt [SCENE.ini] [--out DIR] [--algorithm NAME] [--seed N] [--max-evals N]\n"
           "              [--max-time S] [--no-plot] [--json]\n"
+          "\n"
           "Searches for the fastest schedule of drive forces, one per course section within\n"
           "[drive] min, max, that brings the spy to the end alive with every relative joint\n"
           "angle at least [optimize] margin below death_angle. With no file: the built-in seed\n"
@@ -49,9 +50,11 @@ static void usage(FILE *f) {
           "  --no-plot         skip the figures\n"
           "  --json            print summary.json's object on stdout instead of the text\n"
           "                    summary (keys: docs/commands.md)\n"
+          "\n"
           "Under `mpirun -np N zipopt SCENE.ini ..` rank 0 searches on its threads while the\n"
           "other ranks wait without spinning, then the N ranks share the robust verification's\n"
           "fresh scenarios; rank 0 alone prints and writes, bit for bit as without mpirun.\n"
+          "\n"
           "strategies:\n",
           f);
     for (int i = 0; i < zp_search_algo_count(); i++) {

@@ -21,6 +21,7 @@ static void usage(FILE *f) {
           "                       [--sample-times T1,T2,..] [--out DIR]\n"
           "                       [--plot] [--frames-at x=X1,.. | t=T1,..] [--animate]\n"
           "                       [--fps N] [--size WxH] [--speedup S]\n"
+          "\n"
           "Runs one schedule of drive forces (one per course section, N) through the\n"
           "simulator and reports the outcome: finished (finish time), died (time, x, link)\n"
           "or stalled (why).\n"
@@ -34,13 +35,15 @@ static void usage(FILE *f) {
           "                      course.png (course, sections, kinks, every centre-of-mass\n"
           "                      path), energy.png, angles.png (death angle and search\n"
           "                      margin), loads.png; each with its .gp script and data\n"
-          "  --frames-at x=X,..  still frames of the body: frame_x<X>.png where the trolley\n"
-          "  --frames-at t=T,..  first reaches x = X (m), or frame_t<T>.png at time T (s)\n"
+          "  --frames-at x=X,..|t=T,..\n"
+          "                      still frames of the body: frame_x<X>.png where the trolley\n"
+          "                      first reaches x = X (m), or frame_t<T>.png at time T (s)\n"
           "  --animate           run.gif (and run.mp4 when ffmpeg is installed)\n"
           "  --fps N             animation frames per second, 1..100 (default 25)\n"
           "  --size WxH          animation size in px (default 960 wide, height to fit)\n"
           "  --speedup S         simulated seconds per second of animation (default 1)\n"
-          "                      --frames-at and --animate imply --plot\n",
+          "\n"
+          "--frames-at and --animate imply --plot.\n",
           f);
 }
 

@@ -22,6 +22,7 @@ static void usage(FILE *f) {
     fputs("usage: zipopt sweep SCENE.ini --vary SECTION.KEY=A:B:N [--vary ..]\n"
           "                    [--run search|simulate] [--out DIR] [--resume] [--json]\n"
           "                    [--grid-schedule | --no-grid-schedule]\n"
+          "\n"
           "A design study: the scene at every point of the grid of the varied keys (N values\n"
           "from A to B for each --vary, the first varying fastest; up to 4 keys). A list key\n"
           "(body.masses, body.lengths, body.damping, drive.forces, ..) is scaled as a whole:\n"
@@ -46,6 +47,7 @@ static void usage(FILE *f) {
           "most 16 points added a round, those broken most). In the summary and\n"
           "summary.json. On by default with --run search; --no-grid-schedule skips it,\n"
           "--grid-schedule adds it to a --run simulate study.\n"
+          "\n"
           "Under `mpirun -np N zipopt sweep ..` the points go to the N ranks by a work queue\n"
           "(each rank with its OpenMP threads); the results are the same bits as without.\n",
           f);

@@ -16,6 +16,7 @@
 
 static void usage(FILE *f) {
     fputs("usage: zipopt tradeoff SCENE.ini [--levels P1,P2,..] [--json] [--out DIR]\n"
+          "\n"
           "Runs the robust search (zipopt SCENE.ini) at each force error level P (%, each\n"
           "section's force off by up to +/-P %; the scene's other [robust] ranges and [limits]\n"
           "as given) and writes tradeoff.csv, tradeoff.png (finish time and arrival speed\n"
