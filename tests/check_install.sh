@@ -113,6 +113,16 @@ if [ -n "$src" ]; then
         py_t=$(cd "$prefix" && PYTHONPATH=${init%/zipopt/__init__.py} LD_LIBRARY_PATH=$libdir \
             "$py" -c "import zipopt; print(repr(zipopt.simulate('$seed', [10, 10, 10]).time))")
         same "$py_t" "$exe_t" || fail "the installed module's time '$py_t' is not zipopt's '$exe_t'"
+        # the module alone finds its library and scenes in its own prefix, from any folder,
+        # and the installed notebook example runs there
+        py_t=$(cd / && env -u LD_LIBRARY_PATH -u ZIPOPT_LIB PYTHONPATH=${init%/zipopt/__init__.py} \
+            "$py" -c "import zipopt; print(repr(zipopt.simulate(zipopt.example_scene('seed.ini'), [10, 10, 10]).time))")
+        same "$py_t" "$exe_t" || fail "the module without LD_LIBRARY_PATH: '$py_t', not '$exe_t'"
+        nb=$prefix/share/zipopt/examples/notebook.py
+        mkdir -p "$prefix/nb"
+        (cd "$prefix/nb" && env -u LD_LIBRARY_PATH -u ZIPOPT_LIB PYTHONPATH=${init%/zipopt/__init__.py} \
+            ZIPOPT_EVALS=60 MPLBACKEND=Agg "$py" "$nb" >"$prefix/nb/log" 2>&1) ||
+            fail "the installed notebook example: $(tail -3 "$prefix/nb/log")"
     elif [ -n "$init" ]; then
         echo "check_install: numpy is missing (apt-get install python3-numpy): module not run"
     fi
