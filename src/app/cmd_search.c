@@ -12,6 +12,7 @@
 #include "mpi_spread.h"
 #include "out_csv.h"
 #include "out_file.h"
+#include "out_html.h"
 #include "plot.h"
 #include "report.h"
 #include "robust.h"
@@ -219,7 +220,7 @@ static void on_verify(void *user, int done, int total) {
     }
 }
 
-/* report.md, schedule.ini, summary.json and trajectory.csv into the transaction */
+/* report.md, report.html, schedule.ini, summary.json and trajectory.csv into the transaction */
 static int write_outputs(zp_tx *t, const zp_report *r, zp_sim *best_sim) {
     char err[1400] = "", note[200];
     FILE *md = zp_tx_open(t, "report.md", err, sizeof err);
@@ -242,6 +243,13 @@ static int write_outputs(zp_tx *t, const zp_report *r, zp_sim *best_sim) {
     int nrows;
     const zp_row *rows = zp_sim_rows(best_sim, &nrows);
     zp_out_csv_trajectory(csv, r->m, rows, nrows);
+    /* report.html: report.md as one page a person can share, its figures inside it */
+    char title[300];
+    snprintf(title, sizeof title, "zipopt: best forcing, %s", r->sc->name);
+    if (zp_out_html_report(t, "report.md", "report.html", title, err, sizeof err)) {
+        fprintf(stderr, "zipopt: %s; nothing was written\n", err);
+        return -1;
+    }
     return 0;
 }
 
