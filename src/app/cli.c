@@ -3,6 +3,7 @@
 #include "cli.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -134,6 +135,17 @@ int zp_cli_whole(const char *cmd, const char *opt, const char *text, unsigned lo
     if (!digits || errno || v < lo || v > hi) {
         zp_cli_error(cmd, "%s: '%s' is %s; expected a whole number from %lu to %lu", opt, text,
                      digits ? "out of range" : "not a whole number", lo, hi);
+        return -1;
+    }
+    *out = v;
+    return 0;
+}
+
+int zp_cli_seconds(const char *cmd, const char *opt, const char *text, double *out) {
+    char *end;
+    double v = strtod(text, &end);
+    if (end == text || *end || !(v > 0) || !isfinite(v)) {
+        zp_cli_error(cmd, "%s: '%s' is not a time; expected seconds > 0", opt, text);
         return -1;
     }
     *out = v;

@@ -85,17 +85,6 @@ static const struct option options[] = {
     {NULL, 0, NULL, 0},
 };
 
-/* seconds > 0 for opt; -1 (reported) otherwise */
-static int parse_seconds(const char *opt, const char *text, double *v) {
-    char *end;
-    *v = strtod(text, &end);
-    if (end == text || *end || !(*v > 0) || !isfinite(*v)) {
-        fprintf(stderr, "zipopt: %s '%s': expected seconds > 0\n", opt, text);
-        return -1;
-    }
-    return 0;
-}
-
 /* 1: --help was shown; -1: a mistake (reported) */
 static int parse_args(int argc, char **argv, search_args *a) {
     *a = (search_args){0};
@@ -129,7 +118,7 @@ static int parse_args(int argc, char **argv, search_args *a) {
             }
             break;
         case O_MAX_TIME:
-            if (parse_seconds("--max-time", optarg, &a->max_time)) {
+            if (zp_cli_seconds("", "--max-time", optarg, &a->max_time)) {
                 return -1;
             }
             break;
