@@ -178,7 +178,7 @@ static void print_text(const zp_model *m, const zp_result *r) {
         printf("drag work: %.6g J, friction work: %.6g J\n", r->w_drag, r->w_fric);
     }
     printf("energy audit residual: %.3g J\n", r->e_final - r->e_initial - r->w_drive + r->w_damp +
-                                                  r->e_impulse + r->w_drag + r->w_fric);
+                                                   r->e_impulse + r->w_drag + r->w_fric);
     printf("steps: %ld, rhs evaluations: %ld, wall: %.4f s\n", r->steps, r->rhs_evals, r->wall_s);
 }
 
@@ -192,8 +192,8 @@ static void print_estimate(const zp_result *r, const zp_estimate *e) {
                "depends on the tolerance\n",
                e->rtol, zp_sim_outcome_name(e->outcome), e->time, zp_sim_outcome_name(r->outcome));
     } else {
-        printf("time error estimate: %.2g s (difference from a run at rtol %.0e)\n", e->time_error,
-               e->rtol);
+        printf("time error estimate: %.2g s (difference from a run at rtol %.0e)\n",
+               e->time_error, e->rtol);
     }
     if (e->ok && e->energy_large) {
         printf("SUSPECT: the energy audit residual %.3g J is large against the energies of the "
@@ -290,17 +290,16 @@ static int anim_fits(const zp_result *r, const zp_plot_opts *po) {
 }
 
 /* the figures of the run into the transaction; 0, or -1 with why on stderr */
-static int draw(zp_tx *t, const zp_model *m, zp_sim *s, const zp_result *r, const zp_plot_opts *po,
-                zp_plot_info *info) {
+static int draw(zp_tx *t, const zp_model *m, zp_sim *s, const zp_result *r,
+                const zp_plot_opts *po, zp_plot_info *info) {
     char err[1400];
     if (zp_plot_run(t, m, s, r, po, info, err, sizeof err)) {
         fprintf(stderr, "zipopt simulate: figures: %s; nothing was written\n", err);
         return -1;
     }
     if (info->nskipped) {
-        fprintf(stderr,
-                "zipopt simulate: %d of the still frames asked for lie beyond the end of "
-                "the run (t = %.2f s, x = %.2f m) and were not drawn\n",
+        fprintf(stderr, "zipopt simulate: %d of the still frames asked for lie beyond the end of "
+                        "the run (t = %.2f s, x = %.2f m) and were not drawn\n",
                 info->nskipped, r->time, r->x);
     }
     return 0;
@@ -310,10 +309,9 @@ static int draw(zp_tx *t, const zp_model *m, zp_sim *s, const zp_result *r, cons
 static int say_figures(const char *dir, const zp_plot_opts *po, const zp_plot_info *info,
                        FILE *say) {
     if (info->no_gnuplot) {
-        fprintf(stderr,
-                "zipopt simulate: gnuplot is not installed (apt-get install gnuplot-nox): "
-                "no images were drawn; the plot data and the .gp scripts are in %s, run "
-                "`gnuplot course.gp` (and the other scripts) there once it is\n",
+        fprintf(stderr, "zipopt simulate: gnuplot is not installed (apt-get install gnuplot-nox): "
+                        "no images were drawn; the plot data and the .gp scripts are in %s, run "
+                        "`gnuplot course.gp` (and the other scripts) there once it is\n",
                 dir);
         return ZP_EXIT_FAIL;
     }
@@ -329,8 +327,9 @@ static int say_figures(const char *dir, const zp_plot_opts *po, const zp_plot_in
 }
 
 /* the answer's run and its error estimate; with [solver] accuracy, tightened until it is met */
-static zp_status run_answer(const zp_model *m, double accuracy, zp_sim_opts *o, const zp_input *in,
-                            zp_sim **s, zp_result *r, zp_estimate *e, zp_accuracy *a) {
+static zp_status run_answer(const zp_model *m, double accuracy, zp_sim_opts *o,
+                            const zp_input *in, zp_sim **s, zp_result *r, zp_estimate *e,
+                            zp_accuracy *a) {
     if (accuracy > 0) {
         return zp_accuracy_run(m, o, in, accuracy, s, r, e, a);
     }
@@ -348,9 +347,9 @@ static zp_status run_answer(const zp_model *m, double accuracy, zp_sim_opts *o, 
 
 /* what a request for accuracy met, and what it cost */
 static void print_accuracy(const zp_accuracy *a) {
-    printf("accuracy: %.2g s requested, %.2g s met%s (%s at rtol %.0e, %d rerun%s)\n", a->requested,
-           a->met, a->ok ? "" : " - NOT MET", zp_method_get(a->method)->name, a->rtol, a->reruns,
-           a->reruns == 1 ? "" : "s");
+    printf("accuracy: %.2g s requested, %.2g s met%s (%s at rtol %.0e, %d rerun%s)\n",
+           a->requested, a->met, a->ok ? "" : " - NOT MET", zp_method_get(a->method)->name,
+           a->rtol, a->reruns, a->reruns == 1 ? "" : "s");
 }
 
 int zp_cmd_simulate(int argc, char **argv) {
@@ -373,8 +372,8 @@ int zp_cmd_simulate(int argc, char **argv) {
     int nsample = 0;
     if (a.sample_text) {
         samples = malloc(sizeof *samples * MAX_SAMPLES);
-        nsample =
-            samples ? zp_cli_parse_list(a.sample_text, samples, MAX_SAMPLES, why, sizeof why) : -1;
+        nsample = samples ? zp_cli_parse_list(a.sample_text, samples, MAX_SAMPLES, why, sizeof why)
+                          : -1;
         for (int i = 0; i < nsample; i++) {
             if (samples[i] < 0) {
                 snprintf(why, sizeof why, "%g is negative", samples[i]);
@@ -410,16 +409,9 @@ int zp_cmd_simulate(int argc, char **argv) {
     }
     int nsmp;
     const zp_row *smp = zp_sim_samples(s, &nsmp);
-    zp_run_meta meta = {st.sc.name,
-                        zp_method_get(o.method)->name,
-                        zp_formulation_get(o.formulation)->name,
-                        o.rtol,
-                        o.atol,
-                        &st.sched,
-                        &est,
-                        samples + nsmp,
-                        nsample - nsmp,
-                        &lim,
+    zp_run_meta meta = {st.sc.name, zp_method_get(o.method)->name,
+                        zp_formulation_get(o.formulation)->name, o.rtol, o.atol, &st.sched, &est,
+                        samples + nsmp, nsample - nsmp, &lim,
                         st.sc.accuracy > 0 ? &acc : NULL};
     zp_tx t;
     zp_plot_info info;
