@@ -54,16 +54,10 @@ static pid_t start(zp_tx *t, const zp_gnuplot_job *j, int g) {
     }
     argv[argc] = NULL;
     snprintf(log, sizeof log, ".log.%s", j->script[g]);
-    zp_tx_block_signals(1);
+    zp_tx_lock();
     pid_t pid = fork();
     if (pid == 0) {
-        struct sigaction dfl = {.sa_handler = SIG_DFL};
-        sigemptyset(&dfl.sa_mask);
-        const int sigs[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
-        for (int i = 0; i < 4; i++) {
-            sigaction(sigs[i], &dfl, NULL);
-        }
-        zp_tx_block_signals(0);
+        zp_tx_child_signals();
         setpgid(0, 0);
         int fd = fchdir(zp_tx_workdir(t)) ? -1
                                           : openat(zp_tx_workdir(t), log,
@@ -84,7 +78,7 @@ static pid_t start(zp_tx *t, const zp_gnuplot_job *j, int g) {
         pid = -1;
         errno = EAGAIN;
     }
-    zp_tx_block_signals(0);
+    zp_tx_unlock();
     return pid;
 }
 
