@@ -84,6 +84,40 @@ static void bad_input(void) {
     CHECK(!tu_exists(path));
 }
 
+/* the scene is read as every command reads it: a NUL byte is refused with its line (not a
+   scene cut short there), a file over 1 MiB is refused (not read until memory runs out) */
+static void bad_files(void) {
+    char path[600], cmd[2048];
+    snprintf(path, sizeof path, "%s/nul.ini", dir);
+    FILE *f = fopen(path, "wb");
+    static const char nul_scene[] =
+        "[scene]\nname = nul\n[course]\nx_start = 0\nsection = 6 : 6 - x/2\n[trolley]\n"
+        "mass = 20\n[body]\nlengths = 0.5\nmasses = 2\n[drive]\nforces = 10\0, 20\n";
+    CHECK(f && fwrite(nul_scene, 1, sizeof nul_scene - 1, f) == sizeof nul_scene - 1);
+    fclose(f);
+    snprintf(cmd, sizeof cmd,
+             "%s sweep %s --vary trolley.mass=10:20:2 --run simulate --out %s/nul 2>&1", ZP_EXE,
+             path, dir);
+    CHECK(run(cmd) == 2 && strstr(out, "nul.ini:12:") && strstr(out, "NUL byte"));
+    snprintf(path, sizeof path, "%s/nul", dir);
+    CHECK(!tu_exists(path));
+    /* a valid scene after 2 MiB of comment lines */
+    snprintf(path, sizeof path, "%s/huge.ini", dir);
+    f = fopen(path, "w");
+    for (int i = 0; f && i < 2 * 1024 * 1024 / 16; i++) {
+        fputs("; padding line\n", f);
+    }
+    fclose(f);
+    snprintf(cmd, sizeof cmd, "cat %s >> %s", scene("huge-tail", "30", "5, 2", 100), path);
+    CHECK(run(cmd) == 0);
+    snprintf(cmd, sizeof cmd,
+             "%s sweep %s --vary trolley.mass=10:20:2 --run simulate --out %s/huge 2>&1", ZP_EXE,
+             path, dir);
+    CHECK(run(cmd) == 2 && strstr(out, "larger than 1 MiB"));
+    snprintf(path, sizeof path, "%s/huge", dir);
+    CHECK(!tu_exists(path));
+}
+
 /* every point of a simulate study is `zipopt simulate` of the scene written with its values */
 static void same_as_simulate(void) {
     char cmd[2048], csv[8192], path[600];
@@ -339,6 +373,7 @@ static void kill_and_resume(void) {
 int main(void) {
     CHECK(mkdtemp(dir) != NULL);
     bad_input();
+    bad_files();
     same_as_simulate();
     same_as_search();
     grid_schedule();
