@@ -316,7 +316,7 @@ static int prepare(const sweep_args *a, zp_sweep *s, study *st, char **base) {
     st->base = *base;
     st->path = a->scene;
     zp_model *m = NULL;
-    if (*base && zp_scene_load_text(*base, len, a->scene, st->sc, &d) == ZP_OK) {
+    if (*base && zp_scene_load_text(*base, len, a->scene, 1, st->sc, &d) == ZP_OK) {
         m = zp_model_build(st->sc, &d);
     }
     zp_diag_print(&d, stderr);

@@ -88,6 +88,7 @@ typedef struct parse_ctx {
     const char *file; /* borrowed: the name in messages */
     zp_diag *d;
     int schedule;     /* a schedule file: only [drive] forces */
+    int need_name;    /* the scene must name a plain folder (a command writes under it) */
     const char *text; /* borrowed: the whole file */
     size_t len;       /* its length: a NUL before it is an error, not the end */
     size_t pos;

@@ -92,9 +92,9 @@ static void read_sections(parse_ctx *c, zp_scene *sc) {
     zp_scene_rules(c, sc);
 }
 
-/* text of len bytes (a NUL inside is reported) */
-static zp_status load_text(const char *text, size_t len, const char *path, zp_scene *sc,
-                           zp_diag *d) {
+/* text of len bytes (a NUL inside is reported); need_name: see zp_scene_load_text */
+static zp_status load_text(const char *text, size_t len, const char *path, int need_name,
+                           zp_scene *sc, zp_diag *d) {
     set_defaults(sc, path);
     parse_ctx *c = calloc(1, sizeof *c);
     if (!c) {
@@ -103,6 +103,7 @@ static zp_status load_text(const char *text, size_t len, const char *path, zp_sc
     }
     c->file = path;
     c->d = d;
+    c->need_name = need_name;
     zp_scene_parse_text(c, text, len);
     read_sections(c, sc);
     for (int k = 0; k < K_COUNT; k++) {
@@ -115,25 +116,29 @@ static zp_status load_text(const char *text, size_t len, const char *path, zp_sc
     return nbad ? ZP_ERR_INPUT : ZP_OK;
 }
 
-zp_status zp_scene_load_text(const char *text, size_t len, const char *path, zp_scene *sc,
-                             zp_diag *d) {
-    return load_text(text, len, path, sc, d);
+zp_status zp_scene_load_text(const char *text, size_t len, const char *path, int need_name,
+                             zp_scene *sc, zp_diag *d) {
+    return load_text(text, len, path, need_name, sc, d);
 }
 
 zp_status zp_scene_load_string(const char *text, const char *path, zp_scene *sc, zp_diag *d) {
-    return load_text(text, strlen(text), path ? path : "<string>", sc, d);
+    return load_text(text, strlen(text), path ? path : "<string>", 1, sc, d);
 }
 
-zp_status zp_scene_load(const char *path, zp_scene *sc, zp_diag *d) {
+zp_status zp_scene_load_file(const char *path, int need_name, zp_scene *sc, zp_diag *d) {
     size_t len;
     char *text = zp_scene_read_file(path, &len, d);
     if (!text) {
         set_defaults(sc, path);
         return ZP_ERR_INPUT;
     }
-    zp_status st = load_text(text, len, path, sc, d);
+    zp_status st = load_text(text, len, path, need_name, sc, d);
     free(text);
     return st;
+}
+
+zp_status zp_scene_load(const char *path, zp_scene *sc, zp_diag *d) {
+    return zp_scene_load_file(path, 1, sc, d);
 }
 
 void zp_scene_seed(zp_scene *sc) {
