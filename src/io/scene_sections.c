@@ -159,7 +159,7 @@ int zp_scene_read_forces(parse_ctx *c, int nsec, zp_schedule *s) {
         return 0;
     }
     char why[LINE_CAP + 64];
-    int rc = zp_schedule_parse(c->val[K_FORCES], nsec, s, why, sizeof why);
+    int rc = zp_schedule_parse(c->forces_val, nsec, s, why, sizeof why);
     if (rc == -2) {
         c->key_bad[K_FORCES] = 1;
         zp_scene_bad(c, c->key_line[K_FORCES], "drive", zp_scene_keys[K_FORCES].name, "%s", why);
