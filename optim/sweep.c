@@ -3,7 +3,6 @@
 #include "sweep.h"
 
 #include <ctype.h>
-#include <errno.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -341,40 +340,4 @@ void zp_sweep_describe(const zp_sweep *s, int p, char *out, size_t cap) {
                                 va->key, va->kind == ZP_VARY_SCALE ? "x" : "",
                                 zp_sweep_value(s, v, p));
     }
-}
-
-char *zp_sweep_read_file(const char *path, size_t *len) {
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        return NULL;
-    }
-    char *text = NULL;
-    size_t cap = 0;
-    *len = 0;
-    for (;;) {
-        if (*len + 65536 + 1 > cap) {
-            char *t = realloc(text, cap = 2 * cap + 65536 + 1);
-            if (!t) {
-                free(text);
-                fclose(f);
-                errno = ENOMEM;
-                return NULL;
-            }
-            text = t;
-        }
-        size_t got = fread(text + *len, 1, cap - *len - 1, f);
-        *len += got;
-        if (got == 0) {
-            break;
-        }
-    }
-    int bad = ferror(f);
-    fclose(f);
-    text[*len] = '\0';
-    if (bad) {
-        free(text);
-        errno = EIO;
-        return NULL;
-    }
-    return text;
 }

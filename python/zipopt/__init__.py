@@ -11,11 +11,22 @@ The library is found through the environment variable ZIPOPT_LIB (a path), else 
 module, else in the library folder of the prefix the module was installed into, else by the
 system loader (libzipopt.so.0). example_scene("seed.ini") finds the example scenes the same
 way (the repository's config/ or the installed share/zipopt/scenes/).
+
+Re-entrancy: a progress function runs inside the library's search, which holds the library's
+one lock (libmatheval and NLopt keep process-wide state). From inside it, loading a scene or
+starting a search would wait for that lock forever, so both raise ValueError there; so do
+closing, re-forcing, simulating or searching the Scene being searched. Simulating another
+Scene is fine. Other threads may load and search; they wait their turn.
+
+Bad arguments raise ValueError before anything reaches the library: a closed Scene, a NUL
+byte in scene text, a name or a path (C would cut the text there), and whole numbers (max_evals,
+seed) outside a C long (they would wrap).
 """
 
 import ctypes
 import math
 import os
+import threading
 
 import numpy as np
 
@@ -107,6 +118,37 @@ for _name, _res, _args in [
     _f.argtypes = _args
 
 
+_LONG_BITS = 8 * ctypes.sizeof(ctypes.c_long)
+_in_progress = threading.local()  # .depth: progress functions running in this thread
+
+
+def _c_long(name, value):
+    """value as a C long, or ValueError: ctypes would wrap it silently."""
+    if isinstance(value, bool) or not isinstance(value, int):
+        try:
+            value = value.__index__()
+        except AttributeError:
+            raise ValueError(f"{name} must be a whole number, not {value!r}") from None
+    if not -(1 << (_LONG_BITS - 1)) <= value < (1 << (_LONG_BITS - 1)):
+        raise ValueError(f"{name} = {value} does not fit a C long ({_LONG_BITS} bits)")
+    return value
+
+
+def _c_text(what, text):
+    """text as bytes for C, or ValueError when a NUL byte would cut it short there."""
+    data = text if isinstance(text, bytes) else str(text).encode()
+    at = data.find(b"\0")
+    if at >= 0:
+        raise ValueError(f"{what} contains a NUL byte at {at}; C would stop there")
+    return data
+
+
+def _not_in_progress(what):
+    if getattr(_in_progress, "depth", 0):
+        raise ValueError(f"{what} from inside a progress function: the library's search holds "
+                         "its lock there (see the module's notes on re-entrancy)")
+
+
 def library_version():
     """The loaded library's version, e.g. "0.1.0"."""
     return _lib.zipopt_version().decode()
@@ -132,12 +174,15 @@ class Scene:
     """A loaded scene (a file path, or scene text with text=True); forces override [drive]."""
 
     def __init__(self, source, forces=None, text=False, name=None):
+        self._h = None
+        self._searching = False
+        _not_in_progress("loading a scene")
         err = ctypes.create_string_buffer(_ERR)
         if text:
-            h = _lib.zipopt_scene_load_string(source.encode(), (name or "<string>").encode(),
-                                              err, _ERR)
+            h = _lib.zipopt_scene_load_string(_c_text("the scene text", source),
+                                              _c_text("the name", name or "<string>"), err, _ERR)
         else:
-            h = _lib.zipopt_scene_load(os.fspath(source).encode(), err, _ERR)
+            h = _lib.zipopt_scene_load(_c_text("the path", os.fsencode(source)), err, _ERR)
         if not h:
             raise ZipoptError(err.value.decode(errors="replace"))
         self._h = h
@@ -145,11 +190,26 @@ class Scene:
             self.forces = forces
 
     def close(self):
+        """Frees the scene; later use raises ValueError. Not while it is being searched."""
+        if getattr(self, "_searching", False):
+            raise ValueError("cannot close a Scene while it is being searched")
         if getattr(self, "_h", None):
             _lib.zipopt_scene_free(self._h)
             self._h = None
 
-    __del__ = close
+    def __del__(self):
+        if not getattr(self, "_searching", False):
+            self.close()
+
+    def _handle(self, changes=False):
+        """The library's handle, or ValueError for a closed Scene (or one being searched, when
+        the call changes or runs it)."""
+        if not getattr(self, "_h", None):
+            raise ValueError("the Scene is closed")
+        if changes and self._searching:
+            raise ValueError("the Scene is being searched: its forces cannot change and it "
+                             "cannot run until the search returns")
+        return self._h
 
     def __enter__(self):
         return self
@@ -159,32 +219,35 @@ class Scene:
 
     @property
     def name(self):
-        return _lib.zipopt_scene_name(self._h).decode()
+        """[scene] name, or the file's stem; "" when neither gives one."""
+        return _lib.zipopt_scene_name(self._handle()).decode()
 
     @property
     def sections(self):
-        return _lib.zipopt_scene_sections(self._h)
+        return _lib.zipopt_scene_sections(self._handle())
 
     @property
     def links(self):
-        return _lib.zipopt_scene_links(self._h)
+        return _lib.zipopt_scene_links(self._handle())
 
     @property
     def forces(self):
         """N, one per section."""
-        return _doubles(_lib.zipopt_scene_forces, self._h, self.sections)
+        return _doubles(_lib.zipopt_scene_forces, self._handle(), self.sections)
 
     @forces.setter
     def forces(self, values):
+        h = self._handle(changes=True)
         f = np.ascontiguousarray(values, dtype=float).ravel()
         err = ctypes.create_string_buffer(_ERR)
-        if _lib.zipopt_scene_set_forces(self._h, f.ctypes.data_as(_DP), len(f), err, _ERR):
+        if _lib.zipopt_scene_set_forces(h, f.ctypes.data_as(_DP), len(f), err, _ERR):
             raise ZipoptError(err.value.decode(errors="replace"))
 
     def simulate(self):
         """One run of the current forces with the scene's [solver] settings."""
+        sh = self._handle(changes=True)
         err = ctypes.create_string_buffer(_ERR)
-        h = _lib.zipopt_simulate(self._h, err, _ERR)
+        h = _lib.zipopt_simulate(sh, err, _ERR)
         if not h:
             raise ZipoptError(err.value.decode(errors="replace"))
         try:
@@ -202,14 +265,26 @@ class Scene:
         def on_progress(_user, evals, wall_s, found, time, force, n, improved):
             try:
                 f = np.array(force[:n], dtype=float)
-                return 1 if progress(evals, wall_s, bool(found), time, f, bool(improved)) else 0
+                _in_progress.depth = getattr(_in_progress, "depth", 0) + 1
+                try:
+                    stop = progress(evals, wall_s, bool(found), time, f, bool(improved))
+                finally:
+                    _in_progress.depth -= 1
+                return 1 if stop else 0
             except BaseException as e:  # raised again once the library returns
                 state["error"] = e
                 return 1
 
+        max_evals, seed = _c_long("max_evals", max_evals), _c_long("seed", seed)
+        _not_in_progress("a search")
+        sh = self._handle(changes=True)
         cb = _PROGRESS(on_progress) if progress else _PROGRESS()
         err = ctypes.create_string_buffer(_ERR)
-        h = _lib.zipopt_search_run(self._h, int(max_evals), int(seed), cb, None, None, err, _ERR)
+        self._searching = True
+        try:
+            h = _lib.zipopt_search_run(sh, max_evals, seed, cb, None, None, err, _ERR)
+        finally:
+            self._searching = False
         if state["error"] is not None:
             if h:
                 _lib.zipopt_search_free(h)

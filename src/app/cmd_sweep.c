@@ -310,18 +310,15 @@ static int finish(study *st, const sweep_args *a, zp_tx *t, int ranks) {
 /* the scene, the grid and every point checked; 0, or the exit status */
 static int prepare(const sweep_args *a, zp_sweep *s, study *st, char **base) {
     size_t len;
-    *base = zp_sweep_read_file(a->scene, &len);
-    if (!*base) {
-        fprintf(stderr, "zipopt sweep: cannot read %s: %s; nothing was written\n", a->scene,
-                strerror(errno));
-        return ZP_EXIT_USAGE;
-    }
-    st->base = *base;
-    st->path = a->scene;
     zp_diag d;
     zp_diag_init(&d);
+    /* the reader every command uses: capped, and a NUL byte refused with its line (the
+       points' scenes are made from this text as a string) */
+    *base = zp_scene_read_file(a->scene, &len, &d);
+    st->base = *base;
+    st->path = a->scene;
     zp_model *m = NULL;
-    if (zp_scene_load_string(*base, a->scene, st->sc, &d) == ZP_OK) {
+    if (*base && zp_scene_load_text(*base, len, a->scene, 1, st->sc, &d) == ZP_OK) {
         m = zp_model_build(st->sc, &d);
     }
     zp_diag_print(&d, stderr);

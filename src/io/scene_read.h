@@ -12,6 +12,17 @@
 zp_status zp_scene_load(const char *path, zp_scene *sc, zp_diag *d);
 /* The same from text in memory; path only names it in messages. */
 zp_status zp_scene_load_string(const char *text, const char *path, zp_scene *sc, zp_diag *d);
+/* The file as zp_scene_load reads it: whole, at most 1 MiB, NUL-terminated after len bytes
+   (caller frees); NULL with the reason in d. A NUL byte inside is left for the loader. */
+char *zp_scene_read_file(const char *path, size_t *len, zp_diag *d);
+/* zp_scene_load_string of len bytes: a NUL byte inside is reported with its line. With
+   need_name (every command: it writes under out/<name>/), a scene must give a plain folder
+   name, its [scene] name or its file's stem, as zp_scene_load and zp_scene_load_string
+   require; without (the library), a missing one leaves sc->name empty when the stem is none. */
+zp_status zp_scene_load_text(const char *text, size_t len, const char *path, int need_name,
+                             zp_scene *sc, zp_diag *d);
+/* zp_scene_load with the choice of need_name (zp_scene_load_text). */
+zp_status zp_scene_load_file(const char *path, int need_name, zp_scene *sc, zp_diag *d);
 /* The built-in seed scene (CONFIG.md's example). */
 void zp_scene_seed(zp_scene *sc);
 /* Lays a schedule file (only [drive] forces) over sc. */
