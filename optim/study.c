@@ -85,7 +85,7 @@ static void fill(const zp_scene *sc, const zp_model *m, const zp_schedule *sh, c
 }
 
 static void run_search(const zp_scene *sc, const zp_model *m, const zp_schedule *sched,
-                       const zp_sim_opts *so, zp_study_row *row) {
+                       const zp_sim_opts *so, double max_time, zp_study_row *row) {
     /* the search's runs as `zipopt SCENE.ini` makes them: no trajectory, no load peaks, the
        [optimize] integrator and tolerance */
     zp_sim_opts search = *so, fast;
@@ -94,7 +94,7 @@ static void run_search(const zp_scene *sc, const zp_model *m, const zp_schedule 
     search.method = zp_method_find(sc->search_method);
     search.rtol = sc->search_rtol;
     search.atol = sc->search_rtol / 100;
-    zp_search_opts o = {.max_evals = sc->max_evals, .seed = sc->seed};
+    zp_search_opts o = {.max_evals = sc->max_evals, .seed = sc->seed, .max_time = max_time};
     zp_search_result *res = malloc(sizeof *res);
     zp_robust_problem *pb = malloc(sizeof *pb); /* large: off the stack */
     char err[512] = "";
@@ -155,7 +155,7 @@ static void run_simulate(const zp_scene *sc, const zp_model *m, const zp_objecti
     free(r);
 }
 
-void zp_study_run(const zp_scene *sc, zp_study_kind kind, zp_study_row *row) {
+void zp_study_run(const zp_scene *sc, zp_study_kind kind, double max_time, zp_study_row *row) {
     memset(row, 0, sizeof *row);
     zp_schedule sched = zp_schedule_of_scene(sc);
     row->np = sched.np;
@@ -170,7 +170,7 @@ void zp_study_run(const zp_scene *sc, zp_study_kind kind, zp_study_row *row) {
     }
     so.output_dt = 0; /* outcomes only: output requests never change the integrator's steps */
     if (kind == ZP_STUDY_SEARCH) {
-        run_search(sc, m, &sched, &so, row);
+        run_search(sc, m, &sched, &so, max_time, row);
     } else {
         /* the limit exactly as the search command sets it */
         zp_objective ob = {.m = m, .limit = m->phi_max - sc->margin * M_PI / 180,

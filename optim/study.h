@@ -38,9 +38,10 @@ int zp_study_kind_find(const char *name);
 /* Runs the point: builds sc's model, then the search over the scene's schedule (its [drive]
    kind and bounds; the [optimize] budget and seed; OpenMP threads inside) with its answer
    re-run at the scene's tolerance and checked 100x tighter, or one simulation of sc's [drive]
-   forces. The row depends only on sc, never on the
+   forces. max_time > 0 stops the search after that many seconds of wall time (the row then
+   depends on the machine's speed); with 0 the row depends only on sc, never on the
    process or the thread count. A failure (bad model, integrator breakdown, no memory) is a row
    with failed = 1, not an error of the study. */
-void zp_study_run(const zp_scene *sc, zp_study_kind kind, zp_study_row *row);
+void zp_study_run(const zp_scene *sc, zp_study_kind kind, double max_time, zp_study_row *row);
 
 #endif

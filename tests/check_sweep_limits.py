@@ -3,6 +3,7 @@
 with an arrival-speed limit, each sweep.csv row's found flag, binding limit and limited
 quantities agree with `zipopt simulate` of the same forces (an independent run through another
 command): a push that arrives too fast is not "found", and its row names max_arrival_speed.
+--force and --schedule fix every point's forces, --max-evals bounds every point's search.
 
 usage: check_sweep_limits.py ZIPOPT_EXE SOURCE_DIR"""
 import csv
@@ -57,6 +58,30 @@ with tempfile.TemporaryDirectory() as tmp:
               "F = %s: arrival %s vs simulate %g" % (forces, r["arrival_kmh"], arrival))
         check(float(r["peak_g"]) > 1, "F = %s: peak_g %s" % (forces, r["peak_g"]))
     check("max_arrival_speed" in seen, "a point must break the arrival limit: %s" % seen)
+
+    # --schedule then --force over the scene's forces, --max-evals over its budget
+    sched = os.path.join(tmp, "s.ini")
+    with open(sched, "w") as f:
+        f.write("[drive]\nforces = 25, 25, 25\n")
+    for opt in (["--schedule", sched], ["--force", "25,25,25"]):
+        o = os.path.join(tmp, "f" + opt[0][2:])
+        q = subprocess.run([exe, "sweep", scene, "--vary", "body.damping=1:2:2", "--run",
+                            "simulate", "--out", o] + opt, capture_output=True, text=True)
+        check(q.returncode == 0, "%s: exit %d: %s" % (opt, q.returncode, q.stderr[-300:]))
+        with open(os.path.join(o, "sweep.csv")) as f:
+            got = [[r["F%d_N" % k] for k in (1, 2, 3)] for r in csv.DictReader(f)]
+        check(got == [["25"] * 3] * 2, "%s: the points ran %s" % (opt, got))
+    o = os.path.join(tmp, "evals")
+    q = subprocess.run([exe, "sweep", scene, "--vary", "body.damping=1:2:2", "--max-evals", "40",
+                        "--no-grid-schedule", "--out", o], capture_output=True, text=True)
+    check(q.returncode == 0, "--max-evals: exit %d: %s" % (q.returncode, q.stderr[-300:]))
+    with open(os.path.join(o, "sweep.csv")) as f:
+        evals = [int(r["evals"]) for r in csv.DictReader(f)]
+    check(len(evals) == 2 and all(0 < e <= 40 for e in evals), "--max-evals 40: %s" % evals)
+    q = subprocess.run([exe, "sweep", scene, "--vary", "drive.forces=1:2:2", "--force", "1,2,3",
+                        "--out", os.path.join(tmp, "no")], capture_output=True, text=True)
+    check(q.returncode == 2 and not os.path.exists(os.path.join(tmp, "no")),
+          "--force with a varied drive.forces is refused: %d" % q.returncode)
 
 print("check_sweep_limits: %d problems" % len(failures))
 sys.exit(1 if failures else 0)

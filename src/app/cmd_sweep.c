@@ -1,6 +1,7 @@
 /* `zipopt sweep`: a design study over a grid of scene values (CLI.md). Under mpirun the points
    are spread over the ranks; rank 0 checkpoints each row as it comes and writes the outputs. */
 #include <errno.h>
+#include <limits.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -21,7 +22,8 @@
 static void usage(FILE *f) {
     fputs("usage: zipopt sweep SCENE.ini --vary SECTION.KEY=A:B:N [--vary ..]\n"
           "                    [--run search|simulate] [--out DIR] [--resume] [--json]\n"
-          "                    [--grid-schedule | --no-grid-schedule]\n"
+          "                    [--grid-schedule | --no-grid-schedule] [--max-evals N]\n"
+          "                    [--max-time S] [--schedule FILE | --force F1,..]\n"
           "\n"
           "A design study: the scene at every point of the grid of the varied keys (N values\n"
           "from A to B for each --vary, the first varying fastest; up to 4 keys). A list key\n"
@@ -39,6 +41,11 @@ static void usage(FILE *f) {
           "DIR), and prints the summary. Each finished row is appended to checkpoint.csv there\n"
           "at once; after Ctrl-C or a killed job, --resume skips every finished point.\n"
           "  --json            print summary.json on stdout instead of the text\n"
+          "  --max-evals N     overrides [optimize] max_evals at every point\n"
+          "  --max-time S      stops each point's search after S seconds (the rows then\n"
+          "                    depend on the machine's speed)\n"
+          "  --schedule FILE   a schedule ([drive] forces) laid over the scene: what\n"
+          "  --force F1,..     --run simulate runs at every point\n"
           "Besides, the schedule that survives across the whole grid: the search for the\n"
           "fastest schedule at the middle point that keeps the limits at every corner of the\n"
           "grid (each corner's scene as it is, with its [robust] scenarios when the scene has\n"
@@ -56,12 +63,26 @@ static void usage(FILE *f) {
 
 typedef struct sweep_args {
     const char *scene, *out, *run;
+    const char *force, *schedule, *max_evals; /* laid over the scene before the grid */
+    double max_time;                          /* s per point's search, 0: no limit */
     int resume, json, nvary;
     int grid; /* the grid schedule: 1 on, 0 off, -1 as --run decides */
     const char *vary[MAX_ARGS_VARY];
 } sweep_args;
 
-enum { O_VARY = ZP_OPT_FIRST, O_RUN, O_OUT, O_RESUME, O_JSON, O_GRID, O_NO_GRID };
+enum {
+    O_VARY = ZP_OPT_FIRST,
+    O_RUN,
+    O_OUT,
+    O_RESUME,
+    O_JSON,
+    O_GRID,
+    O_NO_GRID,
+    O_MAX_EVALS,
+    O_MAX_TIME,
+    O_SCHEDULE,
+    O_FORCE
+};
 static const struct option options[] = {
     {"help", no_argument, NULL, 'h'},
     {"vary", required_argument, NULL, O_VARY},
@@ -71,6 +92,10 @@ static const struct option options[] = {
     {"json", no_argument, NULL, O_JSON},
     {"grid-schedule", no_argument, NULL, O_GRID},
     {"no-grid-schedule", no_argument, NULL, O_NO_GRID},
+    {"max-evals", required_argument, NULL, O_MAX_EVALS},
+    {"max-time", required_argument, NULL, O_MAX_TIME},
+    {"schedule", required_argument, NULL, O_SCHEDULE},
+    {"force", required_argument, NULL, O_FORCE},
     {NULL, 0, NULL, 0},
 };
 
@@ -106,6 +131,25 @@ static int parse_args(int argc, char **argv, sweep_args *a) {
         case O_GRID:
         case O_NO_GRID:
             a->grid = c == O_GRID;
+            break;
+        case O_MAX_EVALS: {
+            unsigned long n;
+            if (zp_cli_whole("sweep", "--max-evals", optarg, 1, LONG_MAX, &n)) {
+                return -1;
+            }
+            a->max_evals = optarg;
+            break;
+        }
+        case O_MAX_TIME:
+            if (zp_cli_seconds("sweep", "--max-time", optarg, &a->max_time)) {
+                return -1;
+            }
+            break;
+        case O_SCHEDULE:
+            a->schedule = optarg;
+            break;
+        case O_FORCE:
+            a->force = optarg;
             break;
         default:
             return -1;
@@ -144,6 +188,8 @@ typedef struct study {
     int fault_after, fault_hang;
     int appended;
     int tty;
+    int lines; /* rank 0 under mpirun, its stderr no terminal: a progress line per point */
+    double max_time; /* s per point's search, 0: no limit */
     struct timespec start;
 } study;
 
@@ -189,7 +235,7 @@ static void work(void *user, int p, void *result) {
                  d.n ? d.text[0] : "bad scene");
         return;
     }
-    zp_study_run(st->sc, st->s->kind, row);
+    zp_study_run(st->sc, st->s->kind, st->max_time, row);
 }
 
 /* rank 0 dies (or hangs) at once: no handler runs, nothing more is written */
@@ -223,9 +269,9 @@ static void done(void *user, int p, const void *result) {
     if (!grid && !st->cp_failed && st->fault_after > 0 && ++st->appended >= st->fault_after) {
         inject_fault(st);
     }
-    if (st->tty) {
-        fprintf(stderr, "\rzipopt sweep: %d/%d points, %.1f s   ", st->ndone, st->s->npoint,
-                since(&st->start));
+    if (st->tty || st->lines) {
+        fprintf(stderr, "%szipopt sweep: %d/%d points, %.1f s%s", st->tty ? "\r" : "",
+                st->ndone, st->s->npoint, since(&st->start), st->tty ? "   " : "\n");
     }
 }
 
@@ -308,6 +354,45 @@ static int finish(study *st, const sweep_args *a, zp_tx *t, int ranks) {
     return ZP_EXIT_OK;
 }
 
+/* --schedule, --force and --max-evals laid over the scene's text, so that every point, the
+   grid schedule and the checkpoint's identity see them as scene lines; 0, or -1 (said) */
+static int overlay(const sweep_args *a, study *st, char **base) {
+    char value[ZP_SWEEP_LINE_MAX] = "", why[256];
+    zp_diag d;
+    zp_diag_init(&d);
+    if (a->schedule && zp_scene_overlay_schedule(a->schedule, st->sc, &d) == ZP_OK) {
+        zp_schedule sh = zp_schedule_of_scene(st->sc);
+        zp_schedule_format(&sh, value, sizeof value);
+    }
+    if (a->force) {
+        zp_schedule sh;
+        if (zp_schedule_parse(a->force, st->sc->nsec, &sh, why, sizeof why)) {
+            zp_diag_add(&d, NULL, 0, NULL, NULL, "zipopt sweep: --force: %s", why);
+        } else {
+            zp_schedule_format(&sh, value, sizeof value);
+        }
+    }
+    zp_diag_print(&d, stderr);
+    if (d.n) {
+        return -1;
+    }
+    const char *sec[] = {"drive", "optimize"}, *key[] = {"forces", "max_evals"};
+    const char *val[] = {value[0] ? value : NULL, a->max_evals};
+    for (int i = 0; i < 2; i++) {
+        char *next = val[i] ? zp_sweep_set_text(*base, sec[i], key[i], val[i]) : *base;
+        if (!next) {
+            fputs("zipopt sweep: out of memory; nothing was written\n", stderr);
+            return -1;
+        }
+        if (next != *base) {
+            free(*base);
+            *base = next;
+        }
+    }
+    st->base = *base;
+    return 0;
+}
+
 /* the scene, the grid and every point checked; 0, or the exit status */
 static int prepare(const sweep_args *a, zp_sweep *s, study *st, char **base) {
     size_t len;
@@ -319,7 +404,16 @@ static int prepare(const sweep_args *a, zp_sweep *s, study *st, char **base) {
     st->base = *base;
     st->path = a->scene;
     zp_model *m = NULL;
-    if (*base && zp_scene_load_text(*base, len, a->scene, 1, st->sc, &d) == ZP_OK) {
+    int read = *base && zp_scene_load_text(*base, len, a->scene, 1, st->sc, &d) == ZP_OK;
+    if (read && (a->force || a->schedule || a->max_evals)) {
+        zp_diag_print(&d, stderr);
+        zp_diag_init(&d);
+        if (overlay(a, st, base)) {
+            return ZP_EXIT_USAGE;
+        }
+        read = zp_scene_load_text(*base, strlen(*base), a->scene, 1, st->sc, &d) == ZP_OK;
+    }
+    if (read) {
         m = zp_model_build(st->sc, &d);
     }
     zp_diag_print(&d, stderr);
@@ -336,10 +430,17 @@ static int prepare(const sweep_args *a, zp_sweep *s, study *st, char **base) {
         return ZP_EXIT_USAGE;
     }
     s->kind = (zp_study_kind)kind;
+    st->max_time = a->max_time;
     st->grid = a->grid >= 0 ? a->grid : s->kind == ZP_STUDY_SEARCH;
     for (int i = 0; i < a->nvary; i++) {
         char why[1200];
         zp_sweep_vary v;
+        if (i < MAX_ARGS_VARY && !zp_sweep_vary_parse(a->vary[i], &v, why, sizeof why) &&
+            (a->force || a->schedule) && !strcmp(v.section, "drive") && !strcmp(v.key, "forces")) {
+            snprintf(why, sizeof why, "varies the forces --force or --schedule fixes; give one");
+            fprintf(stderr, "zipopt sweep: --vary %s: %s; nothing was written\n", a->vary[i], why);
+            return ZP_EXIT_USAGE;
+        }
         if (i >= MAX_ARGS_VARY || zp_sweep_vary_parse(a->vary[i], &v, why, sizeof why) ||
             zp_sweep_add(s, &v, why, sizeof why)) {
             fprintf(stderr, "zipopt sweep: --vary %s: %s; nothing was written\n",
@@ -398,6 +499,7 @@ static int sweep(int argc, char **argv, int rank) {
     }
     zp_sweep s = {0};
     study st = {.tty = rank == 0 && isatty(STDERR_FILENO), .cp = {.dirfd = -1}};
+    st.lines = rank == 0 && !st.tty && zp_mpi_queue_size() > 1;
     clock_gettime(CLOCK_MONOTONIC, &st.start);
     char *base = NULL;
     int *todo = NULL, ntodo = 0;
