@@ -68,6 +68,11 @@ ZIPOPT_API int zipopt_scene_forces(const zipopt_scene *s, double *force, int n);
    why in err (a wrong count, a value that is not finite); the scene is unchanged then. */
 ZIPOPT_API int zipopt_scene_set_forces(zipopt_scene *s, const double *force, int n, char *err,
                                        size_t errlen);
+/* Lays a schedule file (a scene file with only [drive] forces, as the search writes
+   schedule.ini) over the scene's drive forces, as `zipopt simulate --schedule FILE` does. 0, or
+   -1 with every problem in err (FILE:LINE: [drive] forces: ...); the scene is unchanged then. */
+ZIPOPT_API int zipopt_scene_load_schedule(zipopt_scene *s, const char *path, char *err,
+                                          size_t errlen);
 
 /* Simulates the scene's forces with its [solver] settings, exactly as `zipopt simulate` does
    (same bits). NULL when the integrator broke down (err says where and why) or memory ran out.

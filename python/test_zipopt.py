@@ -1,6 +1,7 @@
 """The Python module over libzipopt.so: the seed scene at 10 N finishes at the very time
 `zipopt simulate --json` prints (bit for bit: the same library code), the energy audit closes,
-the trajectory's columns keep their definitions, a bad scene raises with its file and line,
+the trajectory's columns keep their definitions, a schedule file gives the program's bits,
+a bad scene raises with its file and line,
 and a search keeps its budget and stops when its progress function asks. Misuse raises
 ValueError instead of crashing, hanging or being misread (each case in a child interpreter,
 so a crash or a hang fails that case alone): a closed Scene, one closed inside a progress
@@ -39,6 +40,27 @@ class Simulate(unittest.TestCase):
         self.assertEqual(r.time, prog["time"])  # bit for bit: JSON keeps 17 digits
         self.assertEqual(r.x, prog["x"])
         self.assertEqual(r.kinks, len(prog["kinks"]))
+
+    def test_schedule_file_equals_the_program(self):
+        # the schedule.ini `zipopt simulate --schedule` reads gives the program's bits here too
+        with tempfile.TemporaryDirectory() as out:
+            sched = os.path.join(out, "schedule.ini")
+            with open(sched, "w") as f:
+                f.write("[drive]\nforces = 12.5, 30, 7\n")
+            js = subprocess.run([os.environ["ZIPOPT_EXE"], "simulate", SEED, "--schedule",
+                                 sched, "--json", "--out", out],
+                                check=True, capture_output=True, text=True).stdout
+            r = zipopt.simulate(SEED, schedule=sched)
+            with zipopt.Scene(SEED) as s:
+                s.load_schedule(sched)
+                self.assertEqual(list(s.forces), [12.5, 30, 7])
+                with open(sched, "w") as f:
+                    f.write("[drive]\nforces = 1, 2\n")
+                with self.assertRaises(zipopt.ZipoptError) as e:
+                    s.load_schedule(sched)
+                self.assertIn("schedule.ini:2: [drive] forces", str(e.exception))
+                self.assertEqual(list(s.forces), [12.5, 30, 7])
+        self.assertEqual(r.time, json.loads(js)["time"])
 
     def test_energy_and_trajectory(self):
         r = zipopt.simulate(SEED, forces=[10, 10, 10])

@@ -4,7 +4,8 @@
    closed-form acceleration (F cos a - M g sin a) / M whatever the chain does; the energy audit
    closes; handles in two threads give the sequential bits; bad input and a stopped search come
    back as values, with nothing printed (not even the interpreted-course notice); NULL handles
-   and output arrays are refused as zipopt.h says; scene text without a name loads. */
+   and output arrays are refused as zipopt.h says; scene text without a name loads; a schedule
+   file gives the bits of the same forces set by hand. */
 #include <math.h>
 #include <pthread.h>
 #include <stdio.h>
@@ -309,8 +310,44 @@ static void check_search(void) {
     zipopt_scene_free(s);
 }
 
+/* a schedule file (what the search writes as schedule.ini) gives the bits of the same forces
+   set by hand; a bad one is refused naming its file and line, the scene left as it was */
+static void check_schedule(void) {
+    char err[1024], dir[] = "/tmp/zp_lib_XXXXXX", good[64], bad[64];
+    CHECK(mkdtemp(dir) != NULL);
+    snprintf(good, sizeof good, "%s/schedule.ini", dir);
+    snprintf(bad, sizeof bad, "%s/bad.ini", dir);
+    FILE *f = fopen(good, "w"), *g = fopen(bad, "w");
+    CHECK(f && g);
+    if (!f || !g) {
+        return;
+    }
+    fputs("; best schedule of the search\n[drive]\nforces = 10, 20.5, 30\n", f);
+    fputs("[drive]\nforces = 10, 20\n", g);
+    fclose(f);
+    fclose(g);
+    zipopt_scene *s = zipopt_scene_load(SEED, err, sizeof err);
+    double want[3] = {10, 20.5, 30}, got[3];
+    CHECK(s && zipopt_scene_load_schedule(s, good, err, sizeof err) == 0);
+    CHECK(zipopt_scene_forces(s, got, 3) == 3 && !memcmp(got, want, sizeof got));
+    zipopt_run *a = zipopt_simulate(s, err, sizeof err);
+    CHECK(zipopt_scene_load_schedule(s, bad, err, sizeof err) == -1);
+    CHECK(strstr(err, "bad.ini:2: [drive] forces") != NULL);
+    CHECK(zipopt_scene_forces(s, got, 3) == 3 && !memcmp(got, want, sizeof got));
+    zipopt_run *b = run_forces(s, want, 3);
+    CHECK(a && b && same_run(a, b));
+    CHECK(zipopt_scene_load_schedule(s, NULL, err, sizeof err) == -1);
+    zipopt_run_free(a);
+    zipopt_run_free(b);
+    zipopt_scene_free(s);
+    remove(good);
+    remove(bad);
+    rmdir(dir);
+}
+
 int main(void) {
     CHECK(!strcmp(zipopt_version(), "0.1.0") || strchr(zipopt_version(), '.'));
+    check_schedule();
     check_seed();
     check_slope();
     check_threads();

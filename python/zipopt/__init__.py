@@ -93,6 +93,7 @@ for _name, _res, _args in [
     ("zipopt_scene_links", _I, [_P]),
     ("zipopt_scene_forces", _I, [_P, _DP, _I]),
     ("zipopt_scene_set_forces", _I, [_P, _DP, _I, _S, _Z]),
+    ("zipopt_scene_load_schedule", _I, [_P, _S, _S, _Z]),
     ("zipopt_simulate", _P, [_P, _S, _Z]),
     ("zipopt_run_free", None, [_P]),
     ("zipopt_run_outcome", _I, [_P]),
@@ -243,6 +244,14 @@ class Scene:
         if _lib.zipopt_scene_set_forces(h, f.ctypes.data_as(_DP), len(f), err, _ERR):
             raise ZipoptError(err.value.decode(errors="replace"))
 
+    def load_schedule(self, path):
+        """Lays a schedule file (the search's schedule.ini: [drive] forces) over the forces,
+        as `zipopt simulate --schedule` does; a bad file raises ZipoptError, forces unchanged."""
+        h = self._handle(changes=True)
+        err = ctypes.create_string_buffer(_ERR)
+        if _lib.zipopt_scene_load_schedule(h, _c_text("the path", os.fsencode(path)), err, _ERR):
+            raise ZipoptError(err.value.decode(errors="replace"))
+
     def simulate(self):
         """One run of the current forces with the scene's [solver] settings."""
         sh = self._handle(changes=True)
@@ -353,14 +362,17 @@ class Search:
         return f"<zipopt.Search {t}, forces {self.forces.tolist()}, {self.evals} simulations>"
 
 
-def simulate(scene, forces=None):
-    """Simulates a scene file (or a Scene) with its forces or the ones given (N per section)."""
+def simulate(scene, forces=None, schedule=None):
+    """Simulates a scene file (or a Scene) with its forces, or a schedule file's (schedule.ini),
+    or the forces given (N per section), the last given winning as on the command line."""
     if isinstance(scene, Scene):
+        if schedule is not None:
+            scene.load_schedule(schedule)
         if forces is not None:
             scene.forces = forces
         return scene.simulate()
-    with Scene(scene, forces=forces) as s:
-        return s.simulate()
+    with Scene(scene) as s:
+        return simulate(s, forces, schedule)
 
 
 def search(scene, max_evals=0, seed=-1, progress=None):

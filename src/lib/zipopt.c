@@ -14,6 +14,7 @@
 
 #include "prep.h"
 #include "robust.h"
+#include "scene_read.h"
 #include "search.h"
 
 /* the stop flag is handed to the search as its sig_atomic_t flag */
@@ -187,6 +188,31 @@ int zipopt_scene_set_forces(zipopt_scene *s, const double *force, int n, char *e
     }
     s->st.sched = zp_schedule_with(sh, force);
     return 0;
+}
+
+int zipopt_scene_load_schedule(zipopt_scene *s, const char *path, char *err, size_t errlen) {
+    if (!s || !path) {
+        say(err, errlen, "%s", !s ? "no scene given" : "no schedule file given");
+        return -1;
+    }
+    /* read onto a copy, so that a bad file leaves the scene as it was */
+    zp_scene *sc = malloc(sizeof *sc);
+    zp_diag d;
+    zp_diag_init(&d);
+    if (!sc) {
+        say(err, errlen, "out of memory");
+        return -1;
+    }
+    *sc = s->st.sc;
+    int rc = zp_scene_overlay_schedule(path, sc, &d) == ZP_OK ? 0 : -1;
+    if (rc) {
+        diag_text(&d, err, errlen);
+    } else {
+        zp_schedule given = zp_schedule_of_scene(sc);
+        s->st.sched = zp_schedule_with(&s->st.sched, given.p);
+    }
+    free(sc);
+    return rc;
 }
 
 /* the trajectory columns (zipopt.h): names, then one row's values */
