@@ -230,10 +230,12 @@ static void script_course(FILE *f, const zp_model *m, const zp_result *r, const 
 static void script_energy(FILE *f, const zp_model *m, const zp_result *r, const kinks *kk) {
     zp_plot_head_png(f, m, "energy", "energy terms and cumulative work against time", FIG_W, 560,
                      0);
-    fputs("set title 'Energy: kinetic + potential = E(0) + drive work − damper and kink losses'\n"
-          "set xlabel 't (s)'\nset ylabel 'energy (J)'\n"
-          "set key outside right top box lc rgb '#cccccc'\n",
-          f);
+    /* the title names every term of the balance the figure draws */
+    fprintf(f,
+            "set title 'Energy: kinetic + potential = E(0) + drive work − damper%s and kink "
+            "losses'\nset xlabel 't (s)'\nset ylabel 'energy (J)'\n"
+            "set key outside right top box lc rgb '#cccccc'\n",
+            m->physics ? ", drag, friction" : "");
     kink_lines(f, kk);
     death_line(f, r);
     fputs("plot 'plot_run.dat' using 't':'kinetic' with lines lw 2 lc rgb '#1f77b4' "
