@@ -172,7 +172,7 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
     zp_events_directions(m, dir);
     int state_only[3 + 2 * ZP_MAX_LINKS];
     zp_events_state_only(m, state_only);
-    zp_method_opts mo = {o->rtol, o->atol, o->max_steps, state_only};
+    zp_method_opts mo = {o->rtol, o->atol, o->max_steps, state_only, s->w0 / 2};
     s->mwork = s->meth->create(s->n, s->nroot, dir,
                                m->physics & ZP_PHYS_ROUNDED ? sim_rhs_rounded : zp_sim_rhs,
                                m->physics & ZP_PHYS_ROLLING ? sim_root_rolling : sim_root, s,
