@@ -110,6 +110,9 @@ static void check_method(int id) {
     long steps = 0, evals = 0;
     me->stats(w, &steps, &evals);
     CHECK(steps > 0 && evals >= steps);
+    long rejected = -1;
+    me->rejections(w, &rejected);
+    CHECK(rejected >= 0);
 
     /* reset: the same run again gives the same first root, bit for bit */
     double t_a = 0, t_b = 0;

@@ -544,10 +544,14 @@ static zp_status fail(zp_sim *s, zp_result *r, double t, const char *why) {
 }
 
 static void add_stats(zp_sim *s, zp_result *r) {
-    long steps = 0, evals = 0;
+    long steps = 0, evals = 0, rejected = 0;
     s->meth->stats(s->mwork, &steps, &evals);
+    if (s->meth->rejections) {
+        s->meth->rejections(s->mwork, &rejected);
+    }
     r->steps += steps;
     r->rhs_evals += evals;
+    r->rejected += rejected;
 }
 
 /* where the integrator stops next: the schedule's next break after t, or t_max */

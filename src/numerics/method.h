@@ -46,6 +46,9 @@ typedef struct zp_method {
     /* Steps and rhs evaluations since the last reset. */
     void (*stats)(void *w, long *steps, long *rhs_evals);
     void (*free)(void *w);
+    /* Steps the error test rejected since the last reset (each cost a step's evaluations and
+       was taken again shorter); NULL where a method does not count them. */
+    void (*rejections)(void *w, long *rejected);
 } zp_method;
 
 /* ZP_METHOD_<ID> for every line of methods.def */

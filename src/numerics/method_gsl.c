@@ -24,6 +24,7 @@
    are one-step methods, so a landing step leaves no history behind (msbdf would). */
 
 #define NEWTON_MAX 3 /* landing steps after the first: each gains the interpolant's accuracy */
+#define FIRST_STEP_PROBES 3 /* estimates of the first step, each probing 100x further */
 
 typedef struct gsl_work {
     int n, nroot;
@@ -167,10 +168,13 @@ static void *rk4imp_create(int n, int nroot, const int *rootdir, zp_rhs_fn rhs, 
 
 /* the first step of a run or restart, from the rates at two points (Hairer, Norsett and
    Wanner, Solving ODEs I, II.4): sized so the method's leading error term is about the
-   tolerance; 1e-6 s when the rates fail. Two rhs evaluations against the handful of
-   rejected-free doublings from a tiny step it replaces. */
+   tolerance; 1e-6 s when the rates fail. Where the estimate is capped at 100x the probe
+   step (a probe of 1e-6 s when y0 or its rates are all but zero, as at a start from rest),
+   it is made again with the capped step as the probe, up to FIRST_STEP_PROBES times: one rhs
+   evaluation each, against the steps of 13 evaluations that would grow from the tiny one
+   (the seed's start: 4 steps). */
 static double first_step(gsl_work *w, double t0, const double *y0) {
-    double d0 = 0, d1 = 0, d2 = 0, *f0 = w->fj, *f1 = w->fj + w->n;
+    double d0 = 0, d1 = 0, *f0 = w->fj, *f1 = w->fj + w->n;
     if (g_rhs(t0, y0, f0, w)) {
         return 1e-6;
     }
@@ -180,22 +184,28 @@ static double first_step(gsl_work *w, double t0, const double *y0) {
         d1 += (f0[i] / sc) * (f0[i] / sc);
     }
     double h0 = d0 < 1e-10 || d1 < 1e-10 ? 1e-6 : 0.01 * sqrt(d0 / d1);
-    for (int i = 0; i < w->n; i++) {
-        w->ytmp[i] = y0[i] + h0 * f0[i];
-    }
-    if (g_rhs(t0 + h0, w->ytmp, f1, w)) {
-        return 1e-6;
-    }
-    for (int i = 0; i < w->n; i++) {
-        double sc = w->atol + w->rtol * fabs(y0[i]);
-        d2 += ((f1[i] - f0[i]) / sc) * ((f1[i] - f0[i]) / sc);
-    }
     d1 = sqrt(d1 / w->n);
-    d2 = sqrt(d2 / w->n) / h0;
     int order = (int)gsl_odeiv2_step_order(w->run->s);
-    double h1 =
-        fmax(d1, d2) <= 1e-15 ? fmax(1e-6, h0 * 1e-3) : pow(0.01 / fmax(d1, d2), 1.0 / (order + 1));
-    return fmin(100 * h0, h1);
+    for (int probe = 0;; probe++) {
+        double d2 = 0;
+        for (int i = 0; i < w->n; i++) {
+            w->ytmp[i] = y0[i] + h0 * f0[i];
+        }
+        if (g_rhs(t0 + h0, w->ytmp, f1, w)) {
+            return probe ? h0 : 1e-6;
+        }
+        for (int i = 0; i < w->n; i++) {
+            double sc = w->atol + w->rtol * fabs(y0[i]);
+            d2 += ((f1[i] - f0[i]) / sc) * ((f1[i] - f0[i]) / sc);
+        }
+        d2 = sqrt(d2 / w->n) / h0;
+        double h1 = fmax(d1, d2) <= 1e-15 ? fmax(1e-6, h0 * 1e-3)
+                                          : pow(0.01 / fmax(d1, d2), 1.0 / (order + 1));
+        if (h1 <= 100 * h0 || probe + 1 == FIRST_STEP_PROBES) {
+            return fmin(100 * h0, h1);
+        }
+        h0 *= 100;
+    }
 }
 
 static int gsl_reset(void *work, double t0, const double *y0, double t_stop) {
@@ -436,6 +446,11 @@ static void gsl_stats(void *work, long *steps, long *rhs_evals) {
     *rhs_evals = w->evals;
 }
 
+static void gsl_rejections(void *work, long *rejected) {
+    gsl_work *w = work;
+    *rejected = (long)w->run->e->failed_steps;
+}
+
 const zp_method zp_method_gsl_rk8pd = {
     .name = "gsl-rk8pd",
     .doc = "GSL explicit Runge-Kutta Prince-Dormand 8(9): non-stiff runs at tight tolerances",
@@ -445,6 +460,7 @@ const zp_method zp_method_gsl_rk8pd = {
     .interpolate = gsl_interpolate,
     .stats = gsl_stats,
     .free = gsl_free_work,
+    .rejections = gsl_rejections,
 };
 
 const zp_method zp_method_gsl_rk4imp = {
@@ -456,4 +472,5 @@ const zp_method zp_method_gsl_rk4imp = {
     .interpolate = gsl_interpolate,
     .stats = gsl_stats,
     .free = gsl_free_work,
+    .rejections = gsl_rejections,
 };
