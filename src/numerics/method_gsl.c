@@ -34,10 +34,11 @@ typedef struct gsl_work {
     zp_root_fn root;
     void *user; /* borrowed, handed to rhs and root */
     gsl_odeiv2_system sys;
-    gsl_odeiv2_driver *run;  /* owned: step, control and evolve of the integration */
-    gsl_odeiv2_driver *land; /* owned: a second stepper of the same type for root states */
-    gsl_root_fsolver *brent; /* owned */
-    double t_stop, h;        /* s: end of the run, next step size */
+    gsl_odeiv2_driver *run;      /* owned: step and evolve of the integration (not its control) */
+    gsl_odeiv2_control *control; /* owned: step_control_type */
+    gsl_odeiv2_driver *land;     /* owned: a second stepper of the same type for root states */
+    gsl_root_fsolver *brent;     /* owned */
+    double t_stop, h;            /* s: end of the run, next step size */
     double rtol, atol; /* the requested tolerances (rtol: how well a root's time need be known) */
     long steps, evals;
     /* the last step [t0, t1] with states and (when computed) rates at both ends */
@@ -83,6 +84,67 @@ static int g_jac(double t, const double y[], double *dfdy, double dfdt[], void *
     return st;
 }
 
+/* Step size control: GSL's standard one (accept at error <= 1.1, shrink by at most 5x, grow
+   by at most 5x below 0.5, safety 0.9), except that the tolerance of a component scales with
+   the larger of its magnitudes at the step's two ends, as in Hairer's codes and SciPy.
+   Design note: GSL scales with the end alone, so a joint angle or rate that ends a step near
+   zero gets a tolerance near atol; most of the seed's rejected steps were such ends, and the
+   steps around them were cut short too. Seed at 10 N, rtol 1e-5: 104 steps and 31 rejected
+   became 97 and 28, 1826 evaluations 1696. */
+typedef struct step_control {
+    double atol, rtol;
+    const double *y_start; /* borrowed, n: the step's start (gsl_work.y0) */
+} step_control;
+
+static void *control_alloc(void) {
+    return calloc(1, sizeof(step_control));
+}
+
+static int control_init(void *p, double eps_abs, double eps_rel, double a_y, double a_dydt) {
+    step_control *c = p;
+    c->atol = eps_abs;
+    c->rtol = eps_rel;
+    (void)a_y;
+    (void)a_dydt;
+    return GSL_SUCCESS;
+}
+
+static int control_hadjust(void *p, size_t dim, unsigned int ord, const double y[],
+                           const double yerr[], const double yp[], double *h) {
+    const step_control *c = p;
+    double rmax = DBL_MIN;
+    for (size_t i = 0; i < dim; i++) {
+        double scale = fmax(fabs(y[i]), fabs(c->y_start[i]));
+        rmax = fmax(rmax, fabs(yerr[i]) / (c->atol + c->rtol * scale));
+    }
+    (void)yp;
+    if (!(rmax <= 1.1)) {
+        /* shrink, a share S more than the scaling suggests, and at most 5x */
+        *h *= fmax(0.9 / pow(rmax, 1.0 / ord), 0.2);
+        return GSL_ODEIV_HADJ_DEC;
+    }
+    if (rmax < 0.5) {
+        *h *= fmin(fmax(0.9 / pow(rmax, 1.0 / (ord + 1.0)), 1.0), 5.0);
+        return GSL_ODEIV_HADJ_INC;
+    }
+    return GSL_ODEIV_HADJ_NIL;
+}
+
+/* the error level of one component at its end value, as GSL's standard control has it */
+static int control_errlevel(void *p, const double y, const double dydt, const double h,
+                            const size_t ind, double *errlev) {
+    const step_control *c = p;
+    *errlev = c->atol + c->rtol * fabs(y);
+    (void)dydt;
+    (void)h;
+    (void)ind;
+    return GSL_SUCCESS;
+}
+
+static const gsl_odeiv2_control_type step_control_type = {
+    "zp_both_ends", control_alloc, control_init, control_hadjust, control_errlevel, NULL, free,
+};
+
 static void gsl_free_work(void *work) {
     gsl_work *w = work;
     if (!w) {
@@ -90,6 +152,9 @@ static void gsl_free_work(void *work) {
     }
     if (w->run) {
         gsl_odeiv2_driver_free(w->run);
+    }
+    if (w->control) {
+        gsl_odeiv2_control_free(w->control);
     }
     if (w->land) {
         gsl_odeiv2_driver_free(w->land);
@@ -131,6 +196,7 @@ static void *gsl_create(const gsl_odeiv2_step_type *type, int n, int nroot, cons
     w->run = gsl_odeiv2_driver_alloc_y_new(&w->sys, type, 1e-6, o->atol, o->rtol);
     w->land = gsl_odeiv2_driver_alloc_y_new(&w->sys, type, 1e-6, o->atol, o->rtol);
     w->brent = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    w->control = gsl_odeiv2_control_alloc(&step_control_type);
     size_t nr = nroot > 0 ? nroot : 1;
     w->dir = calloc(nr, sizeof *w->dir);
     w->state_only = calloc(nr, sizeof *w->state_only);
@@ -144,8 +210,9 @@ static void *gsl_create(const gsl_odeiv2_step_type *type, int n, int nroot, cons
     w->ytmp = calloc(n, sizeof(double));
     w->yerr = calloc(n, sizeof(double));
     w->fj = calloc(2 * (size_t)n, sizeof(double));
-    if (!w->run || !w->land || !w->brent || !w->dir || !w->state_only || !w->glo || !w->g1 ||
-        !w->gtmp || !w->y0 || !w->y1 || !w->f0 || !w->f1 || !w->ytmp || !w->yerr || !w->fj) {
+    if (!w->run || !w->land || !w->brent || !w->control || !w->dir || !w->state_only || !w->glo ||
+        !w->g1 || !w->gtmp || !w->y0 || !w->y1 || !w->f0 || !w->f1 || !w->ytmp || !w->yerr ||
+        !w->fj) {
         gsl_free_work(w);
         return NULL;
     }
@@ -153,6 +220,11 @@ static void *gsl_create(const gsl_odeiv2_step_type *type, int n, int nroot, cons
         w->dir[i] = rootdir ? rootdir[i] : 0;
         w->state_only[i] = o->root_state_only ? o->root_state_only[i] : 0;
     }
+    if (gsl_odeiv2_control_init(w->control, o->atol, o->rtol, 1, 0)) {
+        gsl_free_work(w);
+        return NULL;
+    }
+    ((step_control *)w->control->state)->y_start = w->y0;
     return w;
 }
 
@@ -400,7 +472,7 @@ static zp_adv gsl_advance(void *work, double *t, double *y, int *roots, char *er
         w->have_f1 = 0;
         w->t0 = w->tlo = w->t1;
         double tt = w->t0;
-        int st = gsl_odeiv2_evolve_apply(w->run->e, w->run->c, w->run->s, &w->sys, &tt, w->t_stop,
+        int st = gsl_odeiv2_evolve_apply(w->run->e, w->control, w->run->s, &w->sys, &tt, w->t_stop,
                                          &w->h, w->y1);
         if (st != GSL_SUCCESS) {
             memcpy(w->y1, w->y0, sizeof(double) * w->n);
