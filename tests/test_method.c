@@ -178,6 +178,7 @@ static void check_positions(int id) {
     double y0[2] = {1, 0}, y[2], yi[2], t = 0, step_start = 0, t_end = 20;
     CHECK(me->reset(w, 0, y0, t_end) == 0);
     int roots[1], nroot = 0, bad = 0;
+    double root_dev = 0; /* the largest ||y0| - 1| at the roots inside the step under way */
     for (int guard = 0; guard < 100000; guard++) {
         char err[256] = "";
         zp_adv a = me->advance(w, &t, y, roots, err, sizeof err);
@@ -186,17 +187,20 @@ static void check_positions(int id) {
             break;
         }
         if (a == ZP_ADV_ROOT) {
-            /* y0 = cos t is stationary at the root: its value is +-1 whatever the time */
-            double h = t - step_start, tol = K_RTOL * RTOL + pow(h, 6) / 46080;
-            CHECK_NEAR(fabs(y[0]), 1, tol);
+            /* y0 = cos t is stationary there: +-1 whatever the time (found on the
+               interpolant's rate, O(h^4) off, which moves y0 by O(h^8)); checked against
+               the bound of the whole step once its end is reported */
+            root_dev = fmax(root_dev, fabs(fabs(y[0]) - 1));
             nroot++;
             continue;
         }
         double h = t - step_start, tm = t - 0.3 * h;
         double tol = K_RTOL * RTOL + pow(h, 6) / 46080;
+        CHECK(root_dev <= tol);
         if (me->interpolate(w, tm, yi) != 0 || fabs(yi[0] - cos(tm)) > tol) {
             bad++;
         }
+        root_dev = 0;
         step_start = t;
         if (a == ZP_ADV_STOP) {
             break;

@@ -18,8 +18,8 @@
    angle extrema: the angle is stationary there) it is the interpolant's, O(h^6) in the
    angle. Elsewhere (section ends, death) the state is "landed" by one GSL step of the same
    type from the step's start, with Newton corrections of the time. Rejected: landing the
-   extrema too (one step each: 30 % of a run's evaluations on the seed, for angles 1e-4 deg
-   better than the quintic's), and restarting after a kink from an interpolated state, whose
+   extrema too (a step each: ~30 % of a run's evaluations on the seed, for largest angles at
+   most ~1e-3 deg closer), and restarting after a kink from an interpolated state, whose
    O(h^4) velocities would cap the 8th-order method at ~1e-6 s on finish times. Both steppers
    are one-step methods, so a landing step leaves no history behind (msbdf would). */
 
@@ -264,7 +264,7 @@ static double first_step(gsl_work *w, double t0, const double *y0) {
             w->ytmp[i] = y0[i] + h0 * f0[i];
         }
         if (g_rhs(t0 + h0, w->ytmp, f1, w)) {
-            return probe ? h0 : 1e-6;
+            return probe ? h0 : 1e-6; /* h0: the last good probe's answer, its cap */
         }
         for (int i = 0; i < w->n; i++) {
             double sc = w->atol + w->rtol * fabs(y0[i]);
