@@ -10,9 +10,9 @@
 
 /* docs/trade.md, seed scene, one machine: for each method and rtol (atol = rtol / 100) the
    finish/death time error in s and the median wall time in ms (the least of three runs of the
-   study: the machine was shared). Non-stiff: the worse of the
-   survive (10 N) and die (100 N) cases' errors, survive's time; stiff: 100 N with joint
-   damping 1e4 N m s/rad. Update it with `zipopt bench trade` when a method changes. */
+   study: the machine was shared). Non-stiff: the worse of the survive (10 N) and die (100 N)
+   cases' errors, survive's time; stiff: 100 N with joint damping 1e4 N m s/rad. Update it
+   with `zipopt bench trade` when a method changes. */
 typedef struct {
     int method;
     double rtol;
