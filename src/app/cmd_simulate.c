@@ -179,7 +179,8 @@ static void print_text(const zp_model *m, const zp_result *r) {
     }
     printf("energy audit residual: %.3g J\n", r->e_final - r->e_initial - r->w_drive + r->w_damp +
                                                    r->e_impulse + r->w_drag + r->w_fric);
-    printf("steps: %ld, rhs evaluations: %ld, wall: %.4f s\n", r->steps, r->rhs_evals, r->wall_s);
+    printf("steps: %ld (and %ld rejected), rhs evaluations: %ld, wall: %.4f s\n", r->steps,
+           r->rejected, r->rhs_evals, r->wall_s);
 }
 
 /* the error estimate beside the answer (docs/trade.md) */

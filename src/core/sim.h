@@ -98,6 +98,7 @@ typedef struct zp_result {
     double constraint_residual;         /* m */
     zp_load_peaks peaks;                /* the kink impulses are in zp_sim_crossings */
     long steps, rhs_evals;
+    long rejected; /* steps the integrator's error test rejected (each cost a step's rhs_evals) */
     double wall_s;
     char message[256]; /* why a run failed (status ZP_ERR_NUMERIC) */
 } zp_result;
