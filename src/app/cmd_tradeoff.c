@@ -176,16 +176,20 @@ static int parse_levels(const char *text, double *lv) {
         memcpy(got, (double[]){1, 2, 5, 10}, sizeof(double) * 4);
     }
     if (n < 1) {
-        fprintf(stderr, "zipopt tradeoff: --levels '%s': %s; expected levels in %% such as "
-                        "0,1,2,5,10; nothing was written\n", text, *why ? why : "bad list");
+        zp_cli_error("tradeoff",
+                     "--levels '%s': %s; expected levels in %% such as 0,1,2,5,10; nothing was "
+                     "written",
+                     text, *why ? why : "bad list");
         return -1;
     }
     int m = 1;
     lv[0] = 0;
     for (int i = 0; i < n; i++) {
         if (!(got[i] >= 0 && got[i] < 100)) {
-            fprintf(stderr, "zipopt tradeoff: --levels: %g is not a level; expected each in "
-                            "[0, 100) %%; nothing was written\n", got[i]);
+            zp_cli_error("tradeoff",
+                         "--levels: %g is not a level; expected each in [0, 100) %%; nothing was "
+                         "written",
+                         got[i]);
             return -1;
         }
         if (got[i] > 0) {
@@ -243,7 +247,7 @@ int zp_cmd_tradeoff(int argc, char **argv) {
     int status = ZP_EXIT_FAIL;
     for (int i = 0; i < n; i++) {
         if (solve_level(&su, lv[i], &L[i], err, sizeof err)) {
-            fprintf(stderr, "zipopt tradeoff: level %g %%: %s; nothing was written\n", lv[i], err);
+            zp_cli_error("tradeoff", "level %g %%: %s; nothing was written", lv[i], err);
             goto done;
         }
         fprintf(stderr, "tradeoff: +/-%g %%: %s %.4f s\n", lv[i], L[i].found ? "" : "(none)",
@@ -259,7 +263,7 @@ int zp_cmd_tradeoff(int argc, char **argv) {
     int missing = 0;
     if (!md) {
         zp_tx_abort(&t);
-        fprintf(stderr, "zipopt tradeoff: %s; nothing was written\n", err);
+        zp_cli_error("tradeoff", "%s; nothing was written", err);
         goto done;
     }
     write_csv(csv, L, n, su.m->nsec);
@@ -277,7 +281,9 @@ int zp_cmd_tradeoff(int argc, char **argv) {
     if (json) {
         write_json(stdout, sc, L, n, su.m->nsec);
     }
-    fprintf(json ? stderr : stdout, "wrote in %s: %s%s\n", t.dir, t.written,
+    char shown[4 * sizeof t.dir];
+    fprintf(json ? stderr : stdout, "wrote in %s: %s%s\n", zp_cli_shown(t.dir, shown, sizeof shown),
+            t.written,
            missing ? " (no gnuplot: tradeoff.gp without its image)" : "");
     status = ZP_EXIT_OK;
 done:
