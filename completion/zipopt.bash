@@ -53,7 +53,7 @@ _zipopt() {
     landscape) opts="--force-range --slice --range --force --schedule --out --json --help" ;;
     sweep) opts="--vary --run --out --resume --json --grid-schedule --no-grid-schedule --help" ;;
     bench) opts="--repeats --json --out --help" ;;
-    tradeoff) opts="--levels --json --out --help" ;;
+    tradeoff) opts="--levels --max-evals --max-time --schedule --force --json --out --help" ;;
     *) opts="--out --algorithm --seed --max-evals --max-time --no-plot --json --help --help-all
              --version" ;;
     esac

@@ -48,7 +48,7 @@ typedef struct zipopt_search zipopt_search; /* one search's answer */
 /* "0.1.0": the library's version. */
 ZIPOPT_API const char *zipopt_version(void);
 
-/* Loads a scene file (CONFIG.md). NULL on bad input with every problem in err, one per line,
+/* Loads a scene file (docs/scene-file.md). NULL on bad input with every problem in err, one per line,
    each "FILE:LINE: [section] key: what is wrong; what is expected" (truncated to errlen). */
 ZIPOPT_API zipopt_scene *zipopt_scene_load(const char *path, char *err, size_t errlen);
 /* The same from scene text in memory; name stands for the file in messages (NULL: "<string>"). */

@@ -4,6 +4,7 @@
 #define ZP_STUDY_H
 
 #include "drive.h"
+#include "scenario.h"
 #include "sim.h"
 
 typedef enum { ZP_STUDY_SEARCH, ZP_STUDY_SIMULATE, ZP_STUDY_KIND_COUNT } zp_study_kind;
@@ -16,9 +17,12 @@ typedef struct zp_study_row {
     zp_outcome outcome; /* of the answer's run at the scene's tolerance */
     double time;        /* s: finish, death or stall of that run */
     double margin;      /* deg: death_angle minus the largest |relative joint angle| */
-    char limit[32];     /* found: the limits active at the answer ("margin", "drive.max", joined
-                           by '+', or "none"); else the first one broken ("margin", "death",
-                           "t_max") */
+    char limit[64];     /* found: the limits active at the answer ("margin", "drive.max", a
+                           [limits] key reached within 0.1 %, joined by '+', or "none"); else
+                           the first one broken ("death", "t_max", "margin", or the [limits]
+                           key exceeded most) */
+    double reached[ZP_LIMIT_COUNT]; /* what the answer's run reached of each [limits] quantity
+                                       (g, N, km/h, m/s), peaks located exactly, set or not */
     int verified;       /* search: the answer agrees at a 100x tighter tolerance; simulate: 0 */
     long evals;         /* simulations the point spent */
     int np;                            /* the parameters of the scene's kind of schedule */

@@ -14,10 +14,17 @@
 
 #include "out_file.h"
 
-#define NFIXED 8 /* result columns before the forces: status .. evals */
+#define NFIXED 12 /* result columns before the forces: status .. evals, the limited quantities */
 #define LINE_MAX_BYTES                                                                             \
     16384 /* a row or grid line is shorter (a grid line of 10000 points:                           \
              twice 2500 hex digits, with 256 forces) */
+
+const char *zp_sweep_csv_limit_column(int i) {
+    static const char *const columns[ZP_LIMIT_COUNT] = {
+        [ZP_LIMIT_G] = "peak_g", [ZP_LIMIT_JOINT] = "peak_joint_force_N",
+        [ZP_LIMIT_ARRIVAL] = "arrival_kmh", [ZP_LIMIT_KINK_DV] = "max_kink_dv_m_s"};
+    return columns[i];
+}
 
 void zp_sweep_csv_header(FILE *f, const zp_sweep *s, int np) {
     fputs("point", f);
@@ -27,6 +34,9 @@ void zp_sweep_csv_header(FILE *f, const zp_sweep *s, int np) {
         fprintf(f, ",%s", col);
     }
     fputs(",status,found,outcome,time_s,margin_deg,limit,verified,evals", f);
+    for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
+        fprintf(f, ",%s", zp_sweep_csv_limit_column(i));
+    }
     for (int k = 1; k <= np; k++) {
         fprintf(f, ",F%d_N", k);
     }
@@ -55,7 +65,7 @@ void zp_sweep_csv_row(FILE *f, const zp_sweep *s, int p, const zp_study_row *r) 
         put_num(f, zp_sweep_value(s, v, p));
     }
     if (r->failed) {
-        fputs(",failed,,,,,,,", f);
+        fputs(",failed,,,,,,,,,,,", f);
         for (int k = 0; k < r->np; k++) {
             fputc(',', f);
         }
@@ -64,6 +74,9 @@ void zp_sweep_csv_row(FILE *f, const zp_sweep *s, int p, const zp_study_row *r) 
         put_num(f, r->time);
         put_num(f, r->margin);
         fprintf(f, ",%s,%d,%ld", r->limit, r->verified, r->evals);
+        for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
+            put_num(f, r->reached[i]);
+        }
         for (int k = 0; k < r->np; k++) {
             put_num(f, r->force[k]);
         }
@@ -128,6 +141,9 @@ static int parse_result(char **fld, int np, zp_study_row *r) {
               finite_field(fld[3], 0, HUGE_VAL, &r->time) ||
               finite_field(fld[4], -HUGE_VAL, HUGE_VAL, &r->margin) || limit_field(fld[5]) ||
               flag_field(fld[6], &r->verified) || whole_field(fld[7], 0, LONG_MAX, &r->evals);
+    for (int i = 0; i < ZP_LIMIT_COUNT && !bad; i++) {
+        bad = finite_field(fld[8 + i], 0, HUGE_VAL, &r->reached[i]);
+    }
     for (int k = 0; k < np && !bad; k++) {
         bad = finite_field(fld[NFIXED + k], -HUGE_VAL, HUGE_VAL, &r->force[k]);
     }

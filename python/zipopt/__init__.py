@@ -8,7 +8,9 @@ A thin ctypes layer over libzipopt.so (include/zipopt.h); units are SI and radia
     best = zipopt.search("config/seed.ini", max_evals=2000, progress=print)
 
 The library is found through the environment variable ZIPOPT_LIB (a path), else next to this
-module, else by the system loader (libzipopt.so.0).
+module, else in the library folder of the prefix the module was installed into, else by the
+system loader (libzipopt.so.0). example_scene("seed.ini") finds the example scenes the same
+way (the repository's config/ or the installed share/zipopt/scenes/).
 
 Re-entrancy: a progress function runs inside the library's search, which holds the library's
 one lock (libmatheval and NLopt keep process-wide state). From inside it, loading a scene or
@@ -28,7 +30,8 @@ import threading
 
 import numpy as np
 
-__all__ = ["Scene", "Run", "Search", "ZipoptError", "simulate", "search", "library_version"]
+__all__ = ["Scene", "Run", "Search", "ZipoptError", "simulate", "search", "library_version",
+           "example_scene"]
 
 _SONAME = "libzipopt.so.0"
 _ERR = 8192  # bytes of error text: every problem of a scene, one per line
@@ -38,14 +41,37 @@ class ZipoptError(Exception):
     """A scene or a run zipopt refused; str() is its message, file:line: [section] key: ..."""
 
 
+_HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def _installed(name):
+    """A folder of the installation, relative to this module (the install writes _install.py:
+    the module, the library and the data move together under any prefix); None from a source
+    tree."""
+    try:
+        from . import _install
+    except ImportError:
+        return None
+    return os.path.normpath(os.path.join(_HERE, getattr(_install, name)))
+
+
 def _load_library():
     path = os.environ.get("ZIPOPT_LIB")
     if path:
         return ctypes.CDLL(path)
-    here = os.path.join(os.path.dirname(os.path.abspath(__file__)), _SONAME)
-    if os.path.exists(here):
-        return ctypes.CDLL(here)
+    for folder in (_HERE, _installed("LIBDIR")):
+        if folder and os.path.exists(os.path.join(folder, _SONAME)):
+            return ctypes.CDLL(os.path.join(folder, _SONAME))
     return ctypes.CDLL(_SONAME)
+
+
+def example_scene(name):
+    """The path of one of zipopt's example scenes ("seed.ini", "human.ini", ...): the
+    installed share/zipopt/scenes/, or config/ of the source tree this module lies in."""
+    for folder in (_installed("SCENEDIR"), os.path.join(_HERE, "..", "..", "config")):
+        if folder and os.path.isfile(os.path.join(folder, name)):
+            return os.path.normpath(os.path.join(folder, name))
+    raise ZipoptError("no example scene %r next to this zipopt module" % name)
 
 
 _lib = _load_library()

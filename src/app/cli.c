@@ -3,6 +3,7 @@
 #include "cli.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -157,6 +158,17 @@ int zp_cli_whole(const char *cmd, const char *opt, const char *text, unsigned lo
     return 0;
 }
 
+int zp_cli_seconds(const char *cmd, const char *opt, const char *text, double *out) {
+    char *end;
+    double v = strtod(text, &end);
+    if (end == text || *end || !(v > 0) || !isfinite(v)) {
+        zp_cli_error(cmd, "%s: '%s' is not a time; expected seconds > 0", opt, text);
+        return -1;
+    }
+    *out = v;
+    return 0;
+}
+
 int zp_cli_out_begin(zp_tx *t, const char *cmd, const char *folder, const char *out,
                      const zp_scene *sc) {
     char sub[2 * ZP_NAME_MAX], err[1400];
@@ -206,7 +218,7 @@ void zp_cli_usage(FILE *f) {
           "  or:  zipopt simulate SCENE.ini [OPTION]...\n"
           "  or:  zipopt check SCENE.ini [--json]\n"
           "  or:  zipopt landscape SCENE.ini [OPTION]...\n"
-          "  or:  zipopt tradeoff SCENE.ini [--levels P1,P2,..] [--out DIR]\n"
+          "  or:  zipopt tradeoff SCENE.ini [--levels P1,P2,..] [OPTION]...\n"
           "  or:  zipopt sweep SCENE.ini --vary SECTION.KEY=A:B:N [OPTION]...\n"
           "  or:  zipopt bench trade [SCENE.ini] [OPTION]...\n"
           "  or:  zipopt --help | --help-all | --version\n"
@@ -242,8 +254,12 @@ void zp_cli_usage(FILE *f) {
           "\n"
           "Exit status: 0 done (a spy that dies is a result, not an error); 2 bad input\n"
           "(command line or scene file, with FILE:LINE: [section] key: messages on stderr);\n"
-          "1 anything else. Scene files: see CONFIG.md; config/ (installed: share/zipopt/\n"
-          "scenes/) holds examples.\n"
+          "3 the search found no schedule that keeps the margin, the [limits] and the\n"
+          "[robust] scenarios (the closest candidate is still written, marked); 1 anything\n"
+          "else.\n"
+          "Documentation: docs/model.md (the physics), docs/scene-file.md (every scene key),\n"
+          "docs/commands.md (commands, files, JSON keys), installed in share/doc/zipopt/;\n"
+          "example scenes in config/ (installed: share/zipopt/scenes/).\n"
           "\n",
           f);
     zp_cli_print_registries(f);

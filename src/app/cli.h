@@ -44,6 +44,8 @@ int zp_cli_path_ok(const char *cmd, const char *opt, const char *path);
    of range, or not a whole number). */
 int zp_cli_whole(const char *cmd, const char *opt, const char *text, unsigned long lo,
                  unsigned long hi, unsigned long *out);
+/* A time in seconds > 0 for opt (--max-time); 0, or -1 with the one message. */
+int zp_cli_seconds(const char *cmd, const char *opt, const char *text, double *out);
 /* Begins the command's one transaction (out_file.h) in --out DIR itself when out is given,
    else in out/<scene name>/<folder> (CLI.md "Files"); says why on stderr for `zipopt <cmd>`
    and returns -1 on failure. */

@@ -144,6 +144,7 @@ typedef struct trade_study {
 
 static void usage(FILE *f) {
     fputs("usage: zipopt bench trade [SCENE.ini] [--repeats N] [--json] [--out DIR]\n"
+          "\n"
           "Work-precision study: every method at rtol 1e-3 .. 1e-12 (atol = rtol/100) on the\n"
           "scene (default: the built-in seed) at 10 N everywhere (survives), 100 N (dies) and\n"
           "100 N with joint damping 1e4 N m s/rad (stiff). Errors of the finish/death time,\n"
@@ -152,7 +153,7 @@ static void usage(FILE *f) {
           "(default 5) and rhs evaluations. Writes trade.csv, trade.gp and trade.png in DIR\n"
           "(default out/<scene name>/bench/) and prints the fastest method and tolerance\n"
           "reaching a finish or death time error of 1e-3, 1e-6 and 1e-9 s; with --json, one\n"
-          "JSON object instead (keys: README).\n",
+          "JSON object instead (keys: docs/commands.md).\n",
           f);
 }
 

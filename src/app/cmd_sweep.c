@@ -22,6 +22,7 @@ static void usage(FILE *f) {
     fputs("usage: zipopt sweep SCENE.ini --vary SECTION.KEY=A:B:N [--vary ..]\n"
           "                    [--run search|simulate] [--out DIR] [--resume] [--json]\n"
           "                    [--grid-schedule | --no-grid-schedule]\n"
+          "\n"
           "A design study: the scene at every point of the grid of the varied keys (N values\n"
           "from A to B for each --vary, the first varying fastest; up to 4 keys). A list key\n"
           "(body.masses, body.lengths, body.damping, drive.forces, ..) is scaled as a whole:\n"
@@ -31,7 +32,8 @@ static void usage(FILE *f) {
           "                    its answer re-run at the scene's tolerance (default)\n"
           "  --run simulate    one run of the scene's [drive] forces\n"
           "Writes sweep.csv (one row per point: the varied values, found, outcome, finish\n"
-          "time, margin, the binding limit, forces; a failed point says why and the study goes\n"
+          "time, margin, the binding limit of the margin and [limits], peak g, peak joint\n"
+          "force, arrival speed, kink dv, forces; a failed point says why and the study goes\n"
           "on), sweep.png with its gnuplot script (a line for one key, a heat map for two,\n"
           "points without a schedule marked) and summary.json to out/<scene name>/sweep/ (or\n"
           "DIR), and prints the summary. Each finished row is appended to checkpoint.csv there\n"
@@ -46,6 +48,7 @@ static void usage(FILE *f) {
           "most 16 points added a round, those broken most). In the summary and\n"
           "summary.json. On by default with --run search; --no-grid-schedule skips it,\n"
           "--grid-schedule adds it to a --run simulate study.\n"
+          "\n"
           "Under `mpirun -np N zipopt sweep ..` the points go to the N ranks by a work queue\n"
           "(each rank with its OpenMP threads); the results are the same bits as without.\n",
           f);

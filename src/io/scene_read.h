@@ -36,4 +36,10 @@ int zp_scene_parse_list(const char *text, double *out, int max, char *why, size_
    how many keys were added. */
 int zp_scene_print_added(const zp_scene *sc, FILE *f, const char *indent);
 
+/* Writes the settings of [limits], [robust] and [physics]: the keys given (every [robust] key
+   of a robust scene, defaults included). Text: one line per section, `limits: max_g = 12;
+   max_arrival_speed = 90` or `limits: none`. JSON (json != 0): the members `"limits": {..},
+   "robust": {..}, "physics": {..}` of an object, numbers and lists as JSON numbers. */
+void zp_scene_print_optional(const zp_scene *sc, FILE *f, int json);
+
 #endif
