@@ -1,8 +1,9 @@
 /* jit.c's on-disk cache is used through descriptors: while another thread keeps swapping the
    cache folder with a link to someone else's folder, nothing is ever written there and every
    compiled course evaluates to its closed form; a relative XDG_CACHE_HOME is ignored (XDG
-   spec); no folder is created in a tree another user owns. The expectations are the
-   folders' contents, read after the fact, and the closed forms of the expressions. */
+   spec); no folder is created in a tree another user owns; several courses loaded at once
+   each load their own file. The expectations are the folders' contents and inodes, read
+   after the fact, and the closed forms of the expressions. */
 #define _GNU_SOURCE /* renameat2's RENAME_EXCHANGE */
 #include <dirent.h>
 #include <fcntl.h>
@@ -133,6 +134,57 @@ static void test_swapped_folder(const char *root) {
     remove_tree(victim);
 }
 
+/* the inode of each visible file of the folder path, in name order, into ino (at most max);
+   their count */
+static int inodes(const char *path, ino_t *ino, int max) {
+    struct dirent **list = NULL;
+    int n = scandir(path, &list, NULL, alphasort), k = 0;
+    for (int i = 0; i < n; i++) {
+        if (list[i]->d_name[0] != '.' && k < max) {
+            ino[k++] = list[i]->d_ino;
+        }
+        free(list[i]);
+    }
+    free(list);
+    return k;
+}
+
+/* several courses loaded at once each load their own cache file: a second round of the same
+   courses, the first round's still loaded, compiles nothing (every file keeps its inode) and
+   evaluates the closed forms */
+static void test_several_loaded(const char *root) {
+    enum { N = 4 };
+    char base[1100], dir[1200];
+    snprintf(base, sizeof base, "%s/several", root);
+    snprintf(dir, sizeof dir, "%s/zipopt", base);
+    CHECK(mkdir(base, 0700) == 0);
+    setenv("XDG_CACHE_HOME", base, 1);
+    zp_course *built[2][N] = {{NULL}}, *c[2][N] = {{NULL}};
+    ino_t ino[2][N];
+    for (int round = 0; round < 2; round++) {
+        for (int k = 0; k < N; k++) {
+            char text[64];
+            snprintf(text, sizeof text, "cosh(x/11) + %d", 3000 + k);
+            const char *expr[] = {text};
+            zp_course_err err;
+            built[round][k] = zp_course_create(1, expr, &err);
+            c[round][k] = built[round][k] ? zp_course_for_thread(built[round][k], &err) : NULL;
+            CHECK(c[round][k] && zp_course_compiled(c[round][k]));
+            CHECK(c[round][k] &&
+                  zp_course_eval(c[round][k], 0, 2.5).f == cosh(2.5 / 11) + 3000 + k);
+        }
+        CHECK(inodes(dir, ino[round], N) == N);
+    }
+    CHECK(!memcmp(ino[0], ino[1], sizeof ino[0]));
+    for (int round = 0; round < 2; round++) {
+        for (int k = 0; k < N; k++) {
+            zp_course_free(c[round][k]);
+            zp_course_free(built[round][k]);
+        }
+    }
+    remove_tree(base);
+}
+
 /* XDG_CACHE_HOME=relative is ignored: $HOME/.cache is used, nothing under the working folder */
 static void test_relative_xdg(const char *root) {
     char home[1100], cwd[1100], saved[4096];
@@ -181,6 +233,7 @@ int main(void) {
     char root[] = "/tmp/zp_test_jit_XXXXXX";
     CHECK(mkdtemp(root) != NULL);
     test_swapped_folder(root);
+    test_several_loaded(root);
     test_relative_xdg(root);
     test_other_users_tree(root);
     remove_tree(root);

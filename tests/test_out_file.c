@@ -133,7 +133,7 @@ static void test_signal_to_worker_in_commit(const char *dir) {
 int main(void) {
     char dir[] = "/tmp/zp_test_out_file_XXXXXX";
     CHECK(mkdtemp(dir) != NULL);
-    for (int round = 0; round < 3; round++) {
+    for (int round = 0; round < 2; round++) {
         test_signal_to_worker_in_commit(dir);
     }
     char cmd[256];

@@ -142,8 +142,8 @@ static void hand_edited(void) {
     row[strcspn(row, "\n")] = '\0';
     int p;
     CHECK(zp_sweep_csv_parse(row, &s, 2, &p, &back) == 0);
-    /* point, trolley.mass, status, found, outcome, time, margin, limit, verified, evals, F1,
-       F2, message */
+    /* point, trolley.mass, status, found, outcome, time, margin, limit, verified, evals, the
+       four limited quantities, F1, F2, message */
     const struct {
         int k;
         const char *value;
@@ -160,8 +160,10 @@ static void hand_edited(void) {
                    {9, "-5"},
                    {9, "1e3"},
                    {9, "99999999999999999999999"},
-                   {10, "nan"},
-                   {11, "inf"}};
+                   {10, "-1"},
+                   {13, "inf"},
+                   {14, "nan"},
+                   {15, "inf"}};
     for (size_t i = 0; i < sizeof bad_row / sizeof bad_row[0]; i++) {
         edit_field(row, bad_row[i].k, bad_row[i].value, edited, sizeof edited);
         if (zp_sweep_csv_parse(edited, &s, 2, &p, &back) != -1) {

@@ -36,6 +36,19 @@ void zp_cli_error(const char *cmd, const char *fmt, ...) {
     free(text);
 }
 
+const char *zp_cli_shown(const char *text, char *buf, size_t len) {
+    FILE *f = fmemopen(buf, len, "w");
+    if (!f) {
+        snprintf(buf, len, "?");
+        return buf;
+    }
+    setvbuf(f, NULL, _IONBF, 0); /* what fits stays when the text is longer than buf */
+    zp_diag_put_escaped(f, text);
+    fclose(f);
+    buf[len - 1] = '\0';
+    return buf;
+}
+
 void zp_cli_opts_begin(void) {
     optind = 0; /* glibc: 0 starts a fresh scan */
     opterr = 0; /* the messages are ours: one per mistake */
@@ -103,6 +116,10 @@ int zp_cli_opts_next(const char *cmd, int argc, char **argv, const struct option
 
 int zp_cli_path_ok(const char *cmd, const char *opt, const char *path) {
     size_t n = strlen(path);
+    if (n == 0) { /* '' would be the current folder, or no file at all */
+        zp_cli_error(cmd, "%s%san empty path; expected a name", opt, *opt ? ": " : "");
+        return -1;
+    }
     if (n > ZP_CLI_PATH_MAX) {
         zp_cli_error(cmd, "%s%sthe path is %zu characters long; at most %d are supported", opt,
                      *opt ? ": " : "", n, ZP_CLI_PATH_MAX);

@@ -23,6 +23,9 @@ enum { ZP_OPT_FIRST = 256 };
 
 /* Prints "zipopt <cmd>: <message>" on stderr (cmd may be ""), control bytes escaped. */
 void zp_cli_error(const char *cmd, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* text as zp_cli_error shows it (control bytes escaped, zp_diag_put_escaped) in buf (len
+   bytes, cut to fit), for a user's text (a path, an argument) in a line printed otherwise. */
+const char *zp_cli_shown(const char *text, char *buf, size_t len);
 /* Starts a parse of argv (getopt_long keeps its place in globals: one parse at a time). */
 void zp_cli_opts_begin(void);
 /* The next option of `zipopt <cmd>` by getopt_long: options and operands in any order,

@@ -116,11 +116,19 @@ static int parse_args(int argc, char **argv, land_args *a) {
     return 0;
 }
 
+/* N: the largest |force| drawn. gnuplot pads and ticks its axes in doubles and fails (inf)
+   long before 1e308; no push on a zip line comes near this. */
+#define FORCE_DRAWN_MAX 1e12
+
+static int drawable(const range *r) {
+    return fabs(r->a) <= FORCE_DRAWN_MAX && fabs(r->b) <= FORCE_DRAWN_MAX;
+}
+
 /* "A:B:N" at text; returns the characters read, or -1 */
 static int parse_range(const char *text, range *r, int max) {
     int used = 0;
     if (sscanf(text, "%lf:%lf:%d%n", &r->a, &r->b, &r->n, &used) != 3 || !isfinite(r->a) ||
-        !isfinite(r->b) || !(r->a < r->b) || r->n < 2 || r->n > max) {
+        !isfinite(r->b) || !(r->a < r->b) || !drawable(r) || r->n < 2 || r->n > max) {
         return -1;
     }
     return used;
@@ -338,9 +346,9 @@ static int landscape(int argc, char **argv, const zp_spread *sp) {
     range r1 = {st.sched.lo[0], st.sched.hi[0], 201};
     if (a.range1_text && parse_range(a.range1_text, &r1, MAX_1D) != (int)strlen(a.range1_text)) {
         zp_cli_error("landscape",
-                     "--force-range: '%s' is not A:B:N; expected forces A < B (N) and 2 to %d "
-                     "points",
-                     a.range1_text, MAX_1D);
+                     "--force-range: '%s' is not A:B:N; expected forces A < B (N, within "
+                     "+/-%g) and 2 to %d points",
+                     a.range1_text, FORCE_DRAWN_MAX, MAX_1D);
         goto done;
     }
     int si = -1, sj = -1;
@@ -367,11 +375,19 @@ static int landscape(int argc, char **argv, const zp_spread *sp) {
         }
         if (used != (int)strlen(t)) {
             zp_cli_error("landscape",
-                         "--range: '%s' is not A:B:N or A:B:N,C:D:M; expected forces A < B (N) "
-                         "and 2 to %d points per axis",
-                         t, MAX_2D);
+                         "--range: '%s' is not A:B:N or A:B:N,C:D:M; expected forces A < B (N, "
+                         "within +/-%g) and 2 to %d points per axis",
+                         t, FORCE_DRAWN_MAX, MAX_2D);
             goto done;
         }
+    }
+    /* the scene's [drive] min:max, where no option replaced them */
+    if (!drawable(&r1) || !drawable(&rx) || !drawable(&ry)) {
+        zp_cli_error("landscape",
+                     "%s: [drive] min, max: forces beyond +/-%g N cannot be drawn; give "
+                     "--force-range (and --range with --slice) within it",
+                     sc->path, FORCE_DRAWN_MAX);
+        goto done;
     }
     zp_sim_opts o = st.sim;
     o.output_dt = 0; /* outcomes only */

@@ -261,10 +261,10 @@ static void done(void *user, int p, const void *result) {
     if (!st->cp_failed && (grid ? zp_sweep_checkpoint_add_grid(&st->cp, st->s, st->grid_res)
                                 : zp_sweep_checkpoint_add(&st->cp, st->s, p, &st->rows[p]))) {
         st->cp_failed = 1;
-        fprintf(stderr,
-                "\nzipopt sweep: cannot append to %s; the study goes on, but a rerun "
-                "would start afresh\n",
-                st->cp.path);
+        fputc('\n', stderr);
+        zp_cli_error("sweep",
+                     "cannot append to %s; the study goes on, but a rerun would start afresh",
+                     st->cp.path);
     }
     if (!grid && !st->cp_failed && st->fault_after > 0 && ++st->appended >= st->fault_after) {
         inject_fault(st);
@@ -289,7 +289,7 @@ static int check_points(study *st) {
         if (d.n || d.dropped) {
             char at[512];
             zp_sweep_describe(st->s, p, at, sizeof at);
-            fprintf(stderr, "zipopt sweep: the scene at point %d (%s) is not valid:\n", p, at);
+            zp_cli_error("sweep", "the scene at point %d (%s) is not valid:", p, at);
             zp_diag_print(&d, stderr);
             fputs("zipopt sweep: nothing was written\n", stderr);
             return -1;
@@ -308,7 +308,7 @@ static int write_outputs(zp_tx *t, const zp_sweep_out *o, const char *summary,
     FILE *gp = js && fig ? zp_tx_open(t, "sweep.gp", err, sizeof err) : js;
     if (!gp) {
         zp_tx_abort(t);
-        fprintf(stderr, "zipopt sweep: %s; nothing was written\n", err);
+        zp_cli_error("sweep", "%s; nothing was written", err);
         return -1;
     }
     zp_sweep_csv_header(csv, o->s, o->np);
@@ -331,14 +331,14 @@ static int finish(study *st, const sweep_args *a, zp_tx *t, int ranks) {
     zp_sweep_out_summary(&o, summary, sizeof summary);
     int no_gnuplot = 0;
     if (write_outputs(t, &o, summary, &no_gnuplot)) {
-        fprintf(stderr, "zipopt sweep: the finished rows stay in %s; rerun with --resume\n",
-                st->cp.path);
+        zp_cli_error("sweep", "the finished rows stay in %s; rerun with --resume", st->cp.path);
         return ZP_EXIT_FAIL;
     }
     zp_sweep_checkpoint_close(&st->cp, 1); /* sweep.csv holds every row */
     if (a->json) {
         zp_sweep_out_json(stdout, &o, summary);
     } else {
+        char shown[4 * sizeof t->dir];
         printf("%s\n%d points (%d from the checkpoint)%s in %.2f s on %d rank%s; wrote "
                "%s/sweep.csv, summary.json%s\n",
                summary, st->s->npoint, st->nresumed,
@@ -346,7 +346,7 @@ static int finish(study *st, const sweep_args *a, zp_tx *t, int ranks) {
                : st->grid_resumed ? " and the grid schedule (from the checkpoint)"
                                    : " and the grid schedule",
                since(&st->start), ranks,
-               ranks == 1 ? "" : "s", t->dir,
+               ranks == 1 ? "" : "s", zp_cli_shown(t->dir, shown, sizeof shown),
                !zp_sweep_out_has_figure(&o) ? " (no figure for more than two keys)"
                : no_gnuplot                 ? ", sweep.gp (gnuplot is not installed: no image)"
                                             : ", sweep.png");
@@ -419,14 +419,14 @@ static int prepare(const sweep_args *a, zp_sweep *s, study *st, char **base) {
     zp_diag_print(&d, stderr);
     zp_model_free(m);
     if (!m) {
-        fprintf(stderr, "zipopt sweep: %s is not a valid scene; nothing was written\n", a->scene);
+        zp_cli_error("sweep", "%s is not a valid scene; nothing was written", a->scene);
         return ZP_EXIT_USAGE;
     }
     snprintf(st->name, sizeof st->name, "%s", st->sc->name);
     st->np = zp_schedule_of_scene(st->sc).np;
     int kind = zp_study_kind_find(a->run);
     if (kind < 0) {
-        fprintf(stderr, "zipopt sweep: --run '%s': expected search or simulate\n", a->run);
+        zp_cli_error("sweep", "--run '%s': expected search or simulate", a->run);
         return ZP_EXIT_USAGE;
     }
     s->kind = (zp_study_kind)kind;
@@ -443,8 +443,8 @@ static int prepare(const sweep_args *a, zp_sweep *s, study *st, char **base) {
         }
         if (i >= MAX_ARGS_VARY || zp_sweep_vary_parse(a->vary[i], &v, why, sizeof why) ||
             zp_sweep_add(s, &v, why, sizeof why)) {
-            fprintf(stderr, "zipopt sweep: --vary %s: %s; nothing was written\n",
-                    i < MAX_ARGS_VARY ? a->vary[i] : "", i < MAX_ARGS_VARY ? why : "too many");
+            zp_cli_error("sweep", "--vary %s: %s; nothing was written",
+                         i < MAX_ARGS_VARY ? a->vary[i] : "", i < MAX_ARGS_VARY ? why : "too many");
             return ZP_EXIT_USAGE;
         }
     }
@@ -471,7 +471,7 @@ static int open_study(study *st, const sweep_args *a, zp_tx *t, int **todo, int 
                                             a->resume, st->rows, st->done, &st->ndone,
                                             st->grid_res, &st->grid_done, err, sizeof err);
     if (rc) {
-        fprintf(stderr, "zipopt sweep: %s; nothing was written\n", err);
+        zp_cli_error("sweep", "%s; nothing was written", err);
         return rc == ZP_ERR_INPUT ? ZP_EXIT_USAGE : ZP_EXIT_FAIL;
     }
     st->nresumed = st->ndone;
@@ -515,7 +515,7 @@ static int sweep(int argc, char **argv, int rank) {
     char err[256];
     if (zp_mpi_queue_run(todo, status ? 0 : ntodo, sizeof(item_result), work, done, &st, err,
                          sizeof err)) {
-        fprintf(stderr, "zipopt sweep: %s\n", err);
+        zp_cli_error("sweep", "%s", err);
         status = ZP_EXIT_FAIL;
     }
     if (st.tty && ntodo) {

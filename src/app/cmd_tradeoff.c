@@ -325,20 +325,20 @@ static int parse_levels(const char *text, double *lv) {
         memcpy(got, (double[]){1, 2, 5, 10}, sizeof(double) * 4);
     }
     if (n < 1) {
-        fprintf(stderr,
-                "zipopt tradeoff: --levels '%s': %s; expected levels in %% such as "
-                "0,1,2,5,10; nothing was written\n",
-                text, *why ? why : "bad list");
+        zp_cli_error("tradeoff",
+                     "--levels '%s': %s; expected levels in %% such as 0,1,2,5,10; nothing was "
+                     "written",
+                     text, *why ? why : "bad list");
         return -1;
     }
     int m = 1;
     lv[0] = 0;
     for (int i = 0; i < n; i++) {
         if (!(got[i] >= 0 && got[i] < 100)) {
-            fprintf(stderr,
-                    "zipopt tradeoff: --levels: %g is not a level; expected each in "
-                    "[0, 100) %%; nothing was written\n",
-                    got[i]);
+            zp_cli_error("tradeoff",
+                         "--levels: %g is not a level; expected each in [0, 100) %%; nothing was "
+                         "written",
+                         got[i]);
             return -1;
         }
         if (got[i] > 0) {
@@ -429,7 +429,7 @@ static int write_files(zp_tx *t, const tradeoff *T, int complete) {
     FILE *md = gp ? zp_tx_open(t, "report.md", err, sizeof err) : NULL;
     if (!md) {
         zp_tx_abort(t);
-        fprintf(stderr, "zipopt tradeoff: %s; nothing was written\n", err);
+        zp_cli_error("tradeoff", "%s; nothing was written", err);
         return -1;
     }
     write_csv(csv, T->L, T->ndone, T->su->sched.np);
@@ -472,7 +472,7 @@ int zp_cmd_tradeoff(int argc, char **argv) {
     for (int i = 0; i < n && !interrupted; i++) {
         zp_status st = solve_level(&T, i, err, sizeof err);
         if (st) {
-            fprintf(stderr, "zipopt tradeoff: level %g %%: %s; nothing was written\n", lv[i], err);
+            zp_cli_error("tradeoff", "level %g %%: %s; nothing was written", lv[i], err);
             goto done;
         }
         if (!T.L[i].done) {
@@ -489,7 +489,7 @@ int zp_cmd_tradeoff(int argc, char **argv) {
         goto done;
     }
     if (exchange_answers(&T, err, sizeof err)) {
-        fprintf(stderr, "zipopt tradeoff: %s; nothing was written\n", err);
+        zp_cli_error("tradeoff", "%s; nothing was written", err);
         goto done;
     }
     int missing = 0;
@@ -506,7 +506,9 @@ int zp_cmd_tradeoff(int argc, char **argv) {
     if (a.json) {
         write_json(stdout, sc, T.L, T.ndone, su.sched.np, complete);
     }
-    fprintf(a.json ? stderr : stdout, "wrote in %s: %s%s\n", t.dir, t.written,
+    char shown[4 * sizeof t.dir];
+    fprintf(a.json ? stderr : stdout, "wrote in %s: %s%s\n",
+            zp_cli_shown(t.dir, shown, sizeof shown), t.written,
             missing ? " (no gnuplot: tradeoff.gp without its image)" : "");
     status = complete ? ZP_EXIT_OK : ZP_EXIT_FAIL;
     if (!complete) {

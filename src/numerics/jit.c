@@ -88,6 +88,9 @@ static int open_api(char *err, size_t errlen) {
 struct zp_jit {
     gcc_jit_result *result; /* owned: code compiled in memory, or */
     void *dl;               /* owned: the cache file loaded */
+    int fd;                 /* owned: that file, open while it is loaded, -1 if none; dlopen
+                               knows it by its /proc/self/fd name, and glibc returns a loaded
+                               object of the same name, so the number is not reused before */
     int nfn;
     zp_jit_fn fn[]; /* nfn */
 };
@@ -322,17 +325,18 @@ static int load_cached(zp_jit *j, int dir, const char *name, const char *key, in
         snprintf(self, sizeof self, "/proc/self/fd/%d", fd);
         dl = dlopen(self, RTLD_NOW | RTLD_LOCAL);
     }
-    if (fd >= 0) {
-        close(fd);
-    }
     const char *const *stored = dl ? dlsym(dl, "zp_expr_key") : NULL;
     if (!stored || strcmp(*stored, key) || resolve(j, nfn, dlsym, dl)) {
         if (dl) {
             dlclose(dl);
         }
+        if (fd >= 0) {
+            close(fd);
+        }
         return -1;
     }
     j->dl = dl;
+    j->fd = fd;
     return 0;
 }
 
@@ -407,6 +411,7 @@ zp_jit *zp_jit_compile(const zp_expr *e, int nfn, int nout, const int *roots, ch
         snprintf(err, errlen, "out of memory");
         return NULL;
     }
+    j->fd = -1;
     char name[64], key[40];
     cache_names(e, nfn, nout, roots, name, sizeof name, key, sizeof key);
     int dir = open_cache_dir();
@@ -458,6 +463,9 @@ void zp_jit_free(zp_jit *j) {
     }
     if (j->dl) {
         dlclose(j->dl);
+    }
+    if (j->fd >= 0) {
+        close(j->fd);
     }
     free(j);
 }
