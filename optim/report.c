@@ -285,6 +285,9 @@ static void md_survivable(FILE *f, const zp_report *r) {
         fprintf(f, " (%s).\n", w->cons > 0 ? "**broken**: the search ran out of rounds"
                                              : "kept");
     }
+    if (r->diag) {
+        zp_report_diagnosis_md(f, r->diag);
+    }
 }
 
 static void md_search(FILE *f, const zp_report *r) {

@@ -5,6 +5,7 @@
 
 #include <stdio.h>
 
+#include "diagnose.h"
 #include "robust.h"
 #include "search.h"
 #include "verify.h"
@@ -34,6 +35,7 @@ typedef struct zp_report {
     const zp_robust_check *check;  /* borrowed with box: the verification on fresh scenarios */
     const zp_accuracy *acc;        /* borrowed, NULL: no [solver] accuracy; else what the
                                       answer's run (at *solver) met */
+    const zp_diagnosis *diag;      /* borrowed, NULL: the answer keeps every fresh scenario */
 } zp_report;
 
 /* A schedule file: only [drive] forces (CONFIG.md), with comments saying what it is. */
@@ -44,5 +46,8 @@ void zp_report_write_json(FILE *f, const zp_report *r);
    budget is likely to help. */
 void zp_report_convergence(char *buf, size_t n, const zp_search_result *s);
 void zp_report_write_md(FILE *f, const zp_report *r);
+/* The scenarios the answer fails (report_diag.c): a report.md section, summary.json's value. */
+void zp_report_diagnosis_md(FILE *f, const zp_diagnosis *d);
+void zp_report_diagnosis_json(FILE *f, const zp_diagnosis *d);
 
 #endif

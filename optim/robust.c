@@ -453,6 +453,12 @@ zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts 
 zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
                            const double *p, int n, unsigned long seed, int nthreads,
                            const zp_spread *sp, zp_robust_check *c) {
+    return zp_robust_verify_each(ob, b, so, p, n, seed, nthreads, sp, c, NULL);
+}
+
+zp_status zp_robust_verify_each(const zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
+                                const double *p, int n, unsigned long seed, int nthreads,
+                                const zp_spread *sp, zp_robust_check *c, zp_robust_worst *each) {
     zp_schedule sched = zp_objective_schedule(ob, p);
     memset(c, 0, sizeof *c);
     c->samples = n;
@@ -488,6 +494,9 @@ zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim
         }
     }
     c->lower_95 = zp_clopper_pearson_lower(c->all_kept, n, 0.05);
+    if (each && !st) {
+        memcpy(each, pw, sizeof *pw * (size_t)n);
+    }
     zp_pool_free(w);
     free(u);
     free(pw);

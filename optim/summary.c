@@ -84,7 +84,12 @@ static void json_scenarios(FILE *f, const zp_report *r) {
                "\"margin_kept\": %d, \"limits_kept\": %d, \"all_kept\": %d, \"lower_95\": ",
             r->set->runs, c->samples, c->survived, c->margin_kept, c->limits_kept, c->all_kept);
     zp_out_json_number(f, c->lower_95);
-    fputs("}}", f);
+    fputs("}", f);
+    if (r->diag) {
+        fputs(", \"diagnosis\": ", f);
+        zp_report_diagnosis_json(f, r->diag);
+    }
+    fputs("}", f);
 }
 
 void zp_report_write_json(FILE *f, const zp_report *r) {

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "estimate.h"
 #include "mpi_spread.h"
 #include "out_csv.h"
 #include "out_file.h"
@@ -207,6 +208,25 @@ static void on_verify(void *user, int done, int total) {
                 total, el / done * (total - done));
         c->shown = 1;
     }
+}
+
+/* The fresh scenarios the answer fails, when it fails any, told apart by what breaks and
+   where: the verification's scenarios run again with its options, each verdict kept. 0, or -1
+   without memory (then no diagnosis). */
+static int diagnose(const zp_robust_problem *pb, const zp_scene *sc, const zp_sim_opts *fast,
+                    const double *p, zp_diagnosis *d) {
+    int n = pb->check.samples;
+    zp_robust_worst *each = malloc(sizeof *each * (size_t)n);
+    zp_sim_opts to = zp_estimate_tighter(fast); /* as zp_robust_solve verified */
+    to.track_loads = 0;
+    zp_robust_check c;
+    int bad = !each || zp_robust_verify_each(&pb->ob, &pb->box, &to, p, n, sc->seed, 0, NULL,
+                                             &c, each);
+    if (!bad) {
+        zp_diagnose(&pb->box, &pb->ob, each, n, d);
+    }
+    free(each);
+    return bad ? -1 : 0;
 }
 
 /* report.md, report.html, schedule.ini, summary.json and trajectory.csv into the transaction */
@@ -435,12 +455,19 @@ static int search(int argc, char **argv, const zp_spread *sp) {
         drawn = figures_finish(&tx, &job, &info);
     }
     int robust = pb.robust;
+    static zp_diagnosis diag;
+    int failing = robust && pb.check.samples > 0 && pb.check.all_kept < pb.check.samples;
+    if (failing) {
+        phase_start(&pc, "diagnosis: the fresh scenarios the answer fails\n");
+        failing = !diagnose(&pb, sc, &fast, res.force, &diag);
+    }
     zp_report r = {sc, m, &res, &v, best_sim, &study, STUDY_FORCE,
                    zp_search_algo_get(o.algo)->name, zp_method_get(st.sim.method)->name, a.scene,
                    tx.dir, drawn > 0, &fast, &answer, &st.sched, st.seed, st.max_evals,
                    .lim = &pb.ob.lim, .box = robust ? &pb.box : NULL,
                    .set = robust ? &pb.set : NULL, .rinfo = robust ? &pb.info : NULL,
-                   .check = robust ? &pb.check : NULL, .acc = sc->accuracy > 0 ? &acc : NULL};
+                   .check = robust ? &pb.check : NULL, .acc = sc->accuracy > 0 ? &acc : NULL,
+                   .diag = failing ? &diag : NULL};
     if (drawn < 0 || write_outputs(&tx, &r, best_sim) || zp_cli_out_commit(&tx, "")) {
         goto done;
     }
