@@ -222,7 +222,10 @@ static void md_limits(FILE *f, const zp_report *r) {
     zp_limits_reached(r->m, r->v->run, v);
     fputs("\n## Limits\n\n| limit | reached | allowed | |\n|---|---|---|---|\n", f);
     for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
-        if (r->lim->max[i] > 0) {
+        if (r->lim->max[i] > 0 && !zp_limit_reached_in(r->v->run, i)) {
+            fprintf(f, "| %s | not reached (did not arrive) | %g %s | |\n", zp_limit_name(i),
+                    r->lim->max[i], zp_limit_unit(i));
+        } else if (r->lim->max[i] > 0) {
             fprintf(f, "| %s | %.4g %s | %g %s | %s |\n", zp_limit_name(i), v[i],
                     zp_limit_unit(i), r->lim->max[i], zp_limit_unit(i),
                     v[i] <= r->lim->max[i] ? "kept" : "**broken**");

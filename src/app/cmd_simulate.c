@@ -153,7 +153,9 @@ static void print_limits(const zp_model *m, const zp_result *r, const zp_limits 
     double v[ZP_LIMIT_COUNT];
     zp_limits_reached(m, r, v);
     for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
-        if (lim->max[i] > 0) {
+        if (lim->max[i] > 0 && !zp_limit_reached_in(r, i)) {
+            printf("limit %s: not reached (the trolley did not arrive)\n", zp_limit_name(i));
+        } else if (lim->max[i] > 0) {
             printf("limit %s: reached %.4g %s of %g (%s)\n", zp_limit_name(i), v[i],
                    zp_limit_unit(i), lim->max[i], v[i] <= lim->max[i] ? "kept" : "BROKEN");
         }

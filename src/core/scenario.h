@@ -36,6 +36,9 @@ int zp_limits_need_peaks(const zp_limits *l);
 /* The key name of limit i ("max_g", ...) and its unit. */
 const char *zp_limit_name(int i);
 const char *zp_limit_unit(int i);
+/* 0 when run r never reached what limit i measures (the arrival speed of a ride that did not
+   arrive): neither kept nor broken there. */
+int zp_limit_reached_in(const zp_result *r, int i);
 /* What run r reached, in each limit's unit: the largest felt acceleration and joint force
    (over links and the run), the arrival speed (0 unless finished), the largest kink dv. */
 void zp_limits_reached(const zp_model *m, const zp_result *r, double v[ZP_LIMIT_COUNT]);

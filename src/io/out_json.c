@@ -66,6 +66,12 @@ void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp
     for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
         double max = lim ? lim->max[i] : 0;
         fprintf(f, "\"%s\": {", zp_limit_name(i));
+        if (!zp_limit_reached_in(r, i)) { /* never measured: neither kept nor broken */
+            fputs("\"reached\": null, ", f);
+            key_num(f, "limit", max > 0 ? max : NAN, max > 0 ? ", \"kept\": null}" : "}");
+            fputs(i + 1 < ZP_LIMIT_COUNT ? ", " : "}", f);
+            continue;
+        }
         key_num(f, "reached", v[i], ", ");
         if (max > 0) {
             key_num(f, "limit", max, "");
