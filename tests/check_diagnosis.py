@@ -11,16 +11,9 @@ import subprocess
 import sys
 import tempfile
 
+from checklib import check, done
+
 exe, src = sys.argv[1], sys.argv[2]
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-        print("FAIL:", what)
-
-
 with open(os.path.join(src, "config", "seed.ini")) as f:
     seed = f.read().replace("max_evals = 5000", "max_evals = 300")
 # held to one scenario only, checked on 200: a wide population the answer cannot keep
@@ -64,5 +57,4 @@ with tempfile.TemporaryDirectory() as tmp:
                   "%s halves: %s" % (r["range"], r))
         check(d["ranges"][1]["edges"] == [30, 165, 300], "mass edges %s" % d["ranges"][1])
 
-print("check_diagnosis: %d problems" % len(failures))
-sys.exit(1 if failures else 0)
+done("check_diagnosis")

@@ -14,16 +14,9 @@ import subprocess
 import sys
 import tempfile
 
+from checklib import check, done
+
 exe, src = sys.argv[1], sys.argv[2]
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-        print("FAIL:", what)
-
-
 ARRIVAL = 42.0  # km/h: the seed at 20 N arrives under it, at 25 N over it, at 30 N it dies
 with open(os.path.join(src, "config", "seed.ini")) as f:
     seed = f.read()
@@ -92,5 +85,4 @@ with tempfile.TemporaryDirectory() as tmp:
     check(q.returncode == 2 and not os.path.exists(os.path.join(tmp, "no")),
           "--force with a varied drive.forces is refused: %d" % q.returncode)
 
-print("check_sweep_limits: %d problems" % len(failures))
-sys.exit(1 if failures else 0)
+done("check_sweep_limits")
