@@ -177,21 +177,30 @@ static void md_arcs(FILE *f, const zp_report *r) {
     }
 }
 
+/* the kinks crossed; section ends where the slopes agree knock nothing and are no kinks */
 static void md_kinks(FILE *f, const zp_report *r) {
     fputs("## Kink impulses\n\n", f);
-    int n;
+    int n, nkink = 0;
     const zp_crossing *cross = zp_sim_crossings(r->best, &n);
-    if (n == 0) {
-        fputs("No kinks crossed.\n", f);
-        return;
-    }
-    fputs("| t (s) | x (m) | sections | impulse (N s) | energy lost (J) |\n"
-          "|---|---|---|---|---|\n",
-          f);
     for (int i = 0; i < n; i++) {
         const zp_crossing *c = &cross[i];
+        if (!zp_model_is_kink(r->m, c->from < c->to ? c->from : c->to)) {
+            continue;
+        }
+        if (!nkink++) {
+            fputs("| t (s) | x (m) | sections | impulse (N s) | energy lost (J) |\n"
+                  "|---|---|---|---|---|\n",
+                  f);
+        }
         fprintf(f, "| %.4f | %g | %d -> %d | %.3f | %.2f |\n", c->t, c->x, c->from + 1, c->to + 1,
                 c->impulse, c->energy_lost);
+    }
+    if (!nkink) {
+        fputs("No kinks crossed.\n", f);
+    }
+    if (nkink < n) {
+        fprintf(f, "%s%d crossing%s of section ends where the slopes agree (no impulse).\n",
+                nkink ? "\n" : "", n - nkink, n - nkink == 1 ? "" : "s");
     }
 }
 
@@ -332,15 +341,17 @@ static void md_search(FILE *f, const zp_report *r) {
             sentence + 1);
 }
 
-static void md_robustness(FILE *f, const zp_verify *v) {
+static void md_robustness(FILE *f, const zp_verify *v, const zp_limits *lim) {
     fputs("\n## Robustness\n\n", f);
     if (!v->robust_done) {
         fputs("Not measured (the search was interrupted).\n", f);
         return;
     }
-    fputs("Every force scaled by 1 + p u, u uniform in [-1, 1] (seeded):\n\n"
-          "| p | runs | finished alive | margin kept |\n|---|---|---|---|\n",
-          f);
+    /* a run counts as kept when it keeps what the search kept: the margin, and the limits */
+    fprintf(f,
+            "Every force scaled by 1 + p u, u uniform in [-1, 1] (seeded):\n\n"
+            "| p | runs | finished alive | margin%s kept |\n|---|---|---|---|\n",
+            lim && zp_limits_any(lim) ? " and every limit" : "");
     for (int i = 0; i < ZP_VERIFY_LEVELS; i++) {
         const zp_robust *rb = &v->rob[i];
         fprintf(f, "| %g %% | %d | %.1f %% | %.1f %% |\n", 100 * rb->level, rb->n,
@@ -395,6 +406,6 @@ void zp_report_write_md(FILE *f, const zp_report *r) {
         md_survivable(f, r);
     }
     md_search(f, r);
-    md_robustness(f, r->v);
+    md_robustness(f, r->v, r->lim);
     md_figures_rerun(f, r);
 }

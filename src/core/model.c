@@ -285,6 +285,15 @@ zp_model *zp_model_build(const zp_scene *sc, zp_diag *d) {
     return m;
 }
 
+int zp_model_is_kink(const zp_model *m, int left) {
+    for (int i = 0; i < m->nkink; i++) {
+        if (m->kink[i].left == left) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
 void zp_model_free(zp_model *m) {
     if (!m) {
         return;
