@@ -109,6 +109,20 @@ static void md_margins(FILE *f, const zp_report *r) {
     }
 }
 
+void zp_report_breaks(const zp_report *r, const zp_result *run, char *out, size_t cap) {
+    double angle = 0;
+    for (int i = 0; i < r->m->nlink; i++) {
+        angle = fmax(angle, run->max_rel_angle[i]);
+    }
+    int which = -1;
+    double excess = r->lim ? zp_limits_excess(r->lim, r->m, run, &which) : -1;
+    snprintf(out, cap, "%s", run->outcome == ZP_OUTCOME_DIED      ? "death"
+                             : run->outcome == ZP_OUTCOME_STALLED ? "a stall"
+                             : angle > r->m->phi_max - r->sc->margin * M_PI / 180 ? "the margin"
+                             : which >= 0 && excess > 0 ? zp_limit_name(which)
+                                                        : "");
+}
+
 static void md_gains(FILE *f, const zp_report *r) {
     const zp_search_result *s = r->res;
     const zp_result *run = r->v->run, *study = r->study;
@@ -124,13 +138,24 @@ static void md_gains(FILE *f, const zp_report *r) {
               "margin)\n",
               f);
     }
+    if (!study) {
+        return;
+    }
+    char forces[256] = "", breaks[64];
+    for (int k = 0, len = 0; k < r->shape->np && len < (int)sizeof forces; k++) {
+        len += snprintf(forces + len, sizeof forces - (size_t)len, "%s%g", k ? ", " : "",
+                        r->shape->p[k]);
+    }
+    zp_report_breaks(r, study, breaks, sizeof breaks);
     if (fin && study->outcome == ZP_OUTCOME_FINISHED) {
-        char what[128];
-        snprintf(what, sizeof what, "the study's %g N (%.4f s)", r->study_force, study->time);
+        char what[400];
+        snprintf(what, sizeof what, "the scene's own [drive] forces (%s N: %.4f s%s%s)", forces,
+                 study->time, breaks[0] ? ", breaks " : "", breaks);
         md_gain(f, what, run->time, study->time);
     } else {
-        fprintf(f, "- the study's %g N everywhere does not finish: %s at t = %.3f s, x = %.2f m",
-                r->study_force, zp_sim_outcome_name(study->outcome), study->time, study->x);
+        fprintf(f, "- the scene's own [drive] forces (%s N) do not finish: %s at t = %.3f s, x = "
+                   "%.2f m",
+                forces, zp_sim_outcome_name(study->outcome), study->time, study->x);
         if (study->died_link) {
             fprintf(f, " (joint of link %d looped)", study->died_link);
         }

@@ -2,7 +2,8 @@
 """report.md fits the scene it reports: its kink table lists exactly the crossings of the
 boundaries `zipopt check --json` calls kinks (the best run's crossings from `zipopt simulate`
 of the same schedule), section ends where the slopes agree are counted apart; the robustness
-table says it counts the limits when the scene has [limits] (the seed with max_g).
+table says it counts the limits when the scene has [limits] (the seed with max_g); the gain
+over the scene's own [drive] forces says what those break.
 
 usage: check_report_text.py ZIPOPT_EXE SOURCE_DIR"""
 import json
@@ -19,7 +20,8 @@ with tempfile.TemporaryDirectory() as tmp:
     with open(os.path.join(src, "config", "seed.ini")) as f:
         limited = os.path.join(tmp, "limited.ini")
         with open(limited, "w") as g:
-            g.write(f.read() + "\n[limits]\nmax_g = 30\n")
+            g.write(f.read().replace("forces = 100, 100, 100", "forces = 20, 20, 20") +
+                    "\n[limits]\nmax_g = 11.5\n")
     for name, limits in (("multi6", False), ("limited", True)):
         scene = limited if limits else os.path.join(src, "config", name + ".ini")
         out = os.path.join(tmp, name)
@@ -50,6 +52,16 @@ with tempfile.TemporaryDirectory() as tmp:
             check("slopes agree" not in section, "%s: %s" % (name, section))
         check(("margin and every limit kept |" in md) == limits,
               "%s: the robustness table's header" % name)
+        if limits:  # the scene's own 20 N finishes over max_g: the comparison says so
+            own = json.loads(subprocess.run([exe, "simulate", scene, "--json", "--out",
+                                             os.path.join(tmp, "o")], capture_output=True,
+                                            text=True).stdout)
+            summary = json.load(open(os.path.join(out, "summary.json")))
+            broken = own["outcome"] == "finished" and not own["limits"]["max_g"]["kept"]
+            check(broken and summary["scene_forces"]["breaks"] == "max_g"
+                  and "the scene's own [drive] forces (20, 20, 20 N: " in md and
+                  "breaks max_g)" in md, "%s: the scene's forces: %s" % (name,
+                                                                         summary["scene_forces"]))
     check(len(kinks) == 2, "the seed has two kinks: %s" % kinks)
 
 done("check_report_text")

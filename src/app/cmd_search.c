@@ -21,7 +21,6 @@
 #include "setup.h"
 #include "verify.h"
 
-#define STUDY_FORCE 100 /* N per section: the original study's push */
 #define NROBUST 200     /* robustness runs per perturbation level */
 
 /* set by the first Ctrl-C (the transaction's handler): the search stops cleanly; a second
@@ -432,17 +431,16 @@ static int search(int argc, char **argv, const zp_spread *sp) {
         fprintf(stderr, "zipopt: %s; nothing was written\n", err);
         goto done;
     }
-    zp_result study;
-    double study_f[ZP_MAX_SECTIONS];
-    for (int k = 0; k < m->nsec; k++) {
-        study_f[k] = STUDY_FORCE;
-    }
-    study_sim = zp_sim_create(m, &st.search);
-    zp_schedule study_sched = zp_schedule_sections(m->nsec, study_f, 0, 0);
-    zp_input in = {.sched = &study_sched};
-    if (!study_sim || zp_sim_run(m, study_sim, &in, &study)) {
-        fprintf(stderr, "zipopt: the study's %d N run failed: %s; nothing was written\n",
-                STUDY_FORCE, study_sim ? study.message : "out of memory");
+    /* the scene's own [drive] forces, judged as the search judges (peaks where limits need
+       them), for the report's comparison */
+    static zp_result study;
+    int given = sc->nforce > 0;
+    study_sim = given ? zp_sim_create(m, &fast) : NULL;
+    zp_input in = {.sched = &st.sched};
+    if (given && (!study_sim || zp_sim_run(m, study_sim, &in, &study))) {
+        fprintf(stderr, "zipopt: the run of the scene's [drive] forces failed: %s; nothing was "
+                        "written\n",
+                study_sim ? study.message : "out of memory");
         goto done;
     }
     /* the figures before the report, so that it links only those drawn */
@@ -461,7 +459,7 @@ static int search(int argc, char **argv, const zp_spread *sp) {
         phase_start(&pc, "diagnosis: the fresh scenarios the answer fails\n");
         failing = !diagnose(&pb, sc, &fast, res.force, &diag);
     }
-    zp_report r = {sc, m, &res, &v, best_sim, &study, STUDY_FORCE,
+    zp_report r = {sc, m, &res, &v, best_sim, given ? &study : NULL,
                    zp_search_algo_get(o.algo)->name, zp_method_get(st.sim.method)->name, a.scene,
                    tx.dir, drawn > 0, &fast, &answer, &st.sched, st.seed, st.max_evals,
                    .lim = &pb.ob.lim, .box = robust ? &pb.box : NULL,
