@@ -14,6 +14,10 @@
 /* The work integrals at the state's end (zp_model.nwork of them). */
 enum { ZP_W_DRIVE, ZP_W_DAMP, ZP_W_DRAG, ZP_W_FRICTION, ZP_W_MAX };
 
+/* An rhs status: sliding friction and the normal force contradict each other (Painleve's
+   paradox: every sign of N gives the other sign back); see form_lagrange.c. */
+#define ZP_RHS_FRICTION_INCONSISTENT 2
+
 /* The drive and the course under the trolley at this instant (set by the simulator). */
 typedef struct zp_drive_now {
     zp_track tr;    /* course at the trolley's x, on the current section */
@@ -46,7 +50,8 @@ typedef struct zp_formulation {
     /* Relative joint angles phi_i (rad) and rates w_i (rad/s): the root functions' inputs. */
     void (*relative)(const zp_model *m, const double *y, double *phi, double *w);
     /* Rates of every state entry. Returns 0, or >0 when y gives non-finite rates (the
-       integrator may retry with a smaller step). loads may be NULL. */
+       integrator may retry with a smaller step): ZP_RHS_FRICTION_INCONSISTENT where rolling
+       resistance has no consistent normal force, 1 otherwise. loads may be NULL. */
     int (*rhs)(const zp_model *m, void *work, const zp_drive_now *dn, const double *y,
                double *ydot, zp_loads *loads);
     /* Largest violation of the formulation's own position constraints (m), tr the course at

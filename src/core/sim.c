@@ -11,6 +11,7 @@
 
 #include "accuracy.h"
 #include "events.h"
+#include "friction.h"
 #include "impulse.h"
 
 /* ZP_ZENO_RUN crossings of one kink in a row, each closer than ZP_ZENO_DT (s) to the one
@@ -20,6 +21,10 @@
 #define ZP_ZENO_RUN 4
 /* an output time this close (s) to an event shows the state after the event */
 #define ZP_EVENT_TIME_EPS 1e-9
+/* this many steps in a row, each refused a trial stage for want of a consistent friction,
+   mean the run is closing in on the Painleve boundary, where it would crawl for ever (the
+   normal force grows without bound there) */
+#define ZP_PAINLEVE_STEPS 10
 /* a load peak inside a step is located to this share of its time (Brent's method) */
 #define ZP_PEAK_RTOL 1e-10
 #define ZP_PEAK_ITER 60
@@ -59,6 +64,9 @@ struct zp_sim {
 
     /* [physics] */
     track_fn track; /* the course with its arcs, or the plain course (chosen at create) */
+    double inconsistent_t, inconsistent_x; /* s, m: the last evaluation since the last step
+                                              where friction had no solution (NaN: none) */
+    int inconsistent_steps; /* steps in a row that met such an evaluation */
     int w0;         /* index of the first work integral in the state */
     zp_arc_peaks arc_peaks[ZP_MAX_SECTIONS]; /* load peaks on each arc */
 };
@@ -108,6 +116,19 @@ static int sim_root(double t, const double *y, double *g, void *user) {
     s->form->relative(s->m, y, phi, w);
     zp_events_eval(s->m, s->sec, y[0], phi, w, g);
     return 0;
+}
+
+/* with rolling resistance: where the friction has no consistent solution, noted for the
+   failure's message */
+static int sim_rhs_rolling(double t, const double *y, double *ydot, void *user) {
+    zp_sim *s = user;
+    zp_drive_now dn = drive_now(s, t, y[0]);
+    int rc = s->form->rhs(s->m, s->fwork, &dn, y, ydot, NULL);
+    if (rc == ZP_RHS_FRICTION_INCONSISTENT) {
+        s->inconsistent_t = t;
+        s->inconsistent_x = y[0];
+    }
+    return rc;
 }
 
 /* with rolling resistance also the trolley's x' (the state contract puts it at w0 / 2) */
@@ -173,8 +194,10 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
     int state_only[3 + 2 * ZP_MAX_LINKS];
     zp_events_state_only(m, state_only);
     zp_method_opts mo = {o->rtol, o->atol, o->max_steps, state_only};
-    s->mwork = s->meth->create(s->n, s->nroot, dir,
-                               m->physics & ZP_PHYS_ROUNDED ? sim_rhs_rounded : zp_sim_rhs,
+    zp_rhs_fn rhs = m->physics & ZP_PHYS_ROLLING   ? sim_rhs_rolling
+                    : m->physics & ZP_PHYS_ROUNDED ? sim_rhs_rounded
+                                                   : zp_sim_rhs;
+    s->mwork = s->meth->create(s->n, s->nroot, dir, rhs,
                                m->physics & ZP_PHYS_ROLLING ? sim_root_rolling : sim_root, s,
                                &mo);
     if (o->peaks) {
@@ -323,19 +346,6 @@ static int departure(zp_sim *s, double t, const double *y) {
     zp_row r = row_of(s, t, y);
     double v = r.c.v[0] != 0 ? r.c.v[0] : r.loads.acc[0][0];
     return (v > 0) - (v < 0);
-}
-
-/* with rolling resistance, at rest: whether static friction holds the trolley (MODEL.md:
-   the tangential force that keeps x'' = 0 within mu |N| then) */
-static int held(zp_sim *s, double t, const double *y) {
-    if (!(s->m->physics & ZP_PHYS_ROLLING)) {
-        return 0;
-    }
-    zp_drive_now dn = drive_now(s, t, y[0]);
-    dn.hold = 1;
-    zp_loads ld;
-    return s->form->rhs(s->m, s->fwork, &dn, y, s->ydot, &ld) == 0 &&
-           fabs(ld.hold) <= s->m->mu * fabs(ld.normal);
 }
 
 /* where the outputs of a run stand: the next row's time, the next sample and frame */
@@ -534,6 +544,14 @@ static void finish_result(zp_sim *s, zp_result *r, double t, zp_outcome o, zp_st
 }
 
 static zp_status fail(zp_sim *s, zp_result *r, double t, const char *why) {
+    if (isfinite(s->inconsistent_t)) {
+        snprintf(r->message, sizeof r->message,
+                 "rolling resistance has no consistent normal force at t = %.9g s, x = %.9g m "
+                 "(Painleve's paradox: mu = %g is too large for this trolley and chain; the rigid "
+                 "model of MODEL.md has no motion there)",
+                 s->inconsistent_t, s->inconsistent_x, s->m->mu);
+        return ZP_ERR_NUMERIC;
+    }
     char where[64] = "";
     if (isfinite(s->y[0])) {
         snprintf(where, sizeof where, ", x = %.9g m", s->y[0]);
@@ -541,6 +559,36 @@ static zp_status fail(zp_sim *s, zp_result *r, double t, const char *why) {
     snprintf(r->message, sizeof r->message, "numerical failure at t = %.9g s%s: %.180s", t, where,
              why);
     return ZP_ERR_NUMERIC;
+}
+
+/* the trolley put at rest exactly, the chain keeping its rates: a residual x' of a root's
+   tolerance would set the friction against the wrong way and bring the root straight back */
+static void snap_rest(zp_sim *s) {
+    zp_chain rest = chain_of(s, s->y);
+    rest.v[0] = rest.v[1] = 0;
+    double wk[ZP_W_MAX];
+    memcpy(wk, s->y + s->w0, sizeof *wk * s->m->nwork);
+    s->form->from_chain(s->m, &rest, wk, s->y);
+}
+
+/* the stick rule (MODEL.md) for the trolley at rest at t (the start or a stop): held
+   (|F_t| <= mu |N|), the run ends, stalled; otherwise it moves off toward -F_t, *dir (the
+   stick rule's way, not the sliding equations', which Painleve's regime can turn round).
+   Returns 1 when the run ended, -1 when the forces cannot be computed (or sliding friction
+   has no consistent normal force), 0 to go on. */
+static int stick_rule(zp_sim *s, double t, zp_result *r, int *dir) {
+    snap_rest(s);
+    zp_friction_hold h;
+    if (zp_friction_hold_at(s->m, s->form, s->fwork, drive_now(s, t, s->y[0]), s->y, s->ydot,
+                            &h)) {
+        return -1;
+    }
+    if (h.margin >= 0) {
+        finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_HELD_BY_FRICTION);
+        return 1;
+    }
+    *dir = h.tangential > 0 ? -1 : 1;
+    return sim_rhs_rolling(t, s->y, s->ydot, s) == ZP_RHS_FRICTION_INCONSISTENT ? -1 : 0;
 }
 
 static void add_stats(zp_sim *s, zp_result *r) {
@@ -574,14 +622,21 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
 
     double t = 0;
     out_cursor oc = {0};
+    s->inconsistent_t = NAN;
+    s->inconsistent_steps = 0;
     emit_outputs(s, in, t, 0, &oc);
     frames_at_x_here(s, in, t, s->y[0], &oc);
-    if (held(s, t, s->y)) {
-        finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_HELD_BY_FRICTION);
-        return ZP_OK;
+    int dir;
+    if (m->physics & ZP_PHYS_ROLLING && c.v[0] == 0) {
+        int end = stick_rule(s, t, r, &dir);
+        if (end) {
+            return end < 0 ? fail(s, r, t, "the forces at rest cannot be computed") : ZP_OK;
+        }
+    } else {
+        dir = departure(s, t, s->y);
     }
     /* a root finder ignores a root at t0: a start that rolls back at once is caught here */
-    if (departure(s, t, s->y) < 0) {
+    if (dir < 0) {
         finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_ROLLED_BACK);
         return ZP_OK;
     }
@@ -609,6 +664,12 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             }
             return fail(s, r, t, err);
         }
+        s->inconsistent_steps = isfinite(s->inconsistent_t) ? s->inconsistent_steps + 1 : 0;
+        if (s->inconsistent_steps >= ZP_PAINLEVE_STEPS) {
+            add_stats(s, r);
+            return fail(s, r, t, "");
+        }
+        s->inconsistent_t = NAN; /* a step was taken: what a trial stage met is past */
         track_extremes(s, t, s->y, r);
         frames_at_x_in_step(s, in, t, &oc);
         if (s->o.peaks) {
@@ -648,18 +709,12 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
         }
         add_stats(s, r);
         if (ev == ZP_EVENT_REST) {
-            /* held, or off the other way: friction turns round, the integrator restarts */
-            if (held(s, t, s->y)) {
-                finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_HELD_BY_FRICTION);
-                return ZP_OK;
+            /* a stop: held, or off the other way (friction turns round, the integrator
+               restarts) */
+            int end = stick_rule(s, t, r, &dir);
+            if (end) {
+                return end < 0 ? fail(s, r, t, "the forces at rest cannot be computed") : ZP_OK;
             }
-            /* at rest exactly: a residual x' of the root's tolerance would set the friction
-               against the wrong way and bring the root straight back, at the same t */
-            zp_chain rest = chain_of(s, s->y);
-            rest.v[0] = rest.v[1] = 0;
-            double wk[ZP_W_MAX];
-            memcpy(wk, s->y + s->w0, sizeof *wk * m->nwork);
-            s->form->from_chain(m, &rest, wk, s->y);
             if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
                 return fail(s, r, t, "the integrator could not restart at rest");
             }
