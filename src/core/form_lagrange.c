@@ -207,15 +207,16 @@ static inline int friction_terms(const zp_model *m, const zp_drive_now *dn, doub
         q = -qdd[0] / u[0];
         *hold = q / sq;
     } else {
-        double dir = xd != 0 ? xd : qdd[0]; /* from rest: against the motion it starts */
+        /* the simulator's way, else x''s, from rest against the motion it starts */
+        double dir = dn->slide ? dn->slide : xd != 0 ? xd : qdd[0];
         double cf = -m->mu * ((dir > 0) - (dir < 0)) * sq;
         /* N >= 0 needs 1 - cf nu > 0, N < 0 needs 1 + cf nu > 0: the one solution of the
            regular regime, which continues into Painleve's where the other sign appears too */
-        double den = n0 >= 0 ? 1 - cf * nu : 1 + cf * nu;
-        if (!(den > 0)) {
+        double den = n0 >= 0 ? 1 - cf * nu : 1 + cf * nu, N = n0 / den;
+        if (!(den > 0) || fabs(N) > ZP_FRICTION_NORMAL_MAX * m->mtot) {
             return ZP_RHS_FRICTION_INCONSISTENT;
         }
-        q = cf * fabs(n0 / den);
+        q = cf * fabs(N);
     }
     for (int i = 0; i <= n; i++) {
         qdd[i] += q * u[i];

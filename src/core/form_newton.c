@@ -209,8 +209,8 @@ static int newton_solve(newton_work *nw, int *sgn) {
     return 0;
 }
 
-/* A z = b with the course row of rolling resistance: against x' (from rest, against the
-   motion the frictionless system starts), or held. The friction changes A by one row, so
+/* A z = b with the course row of rolling resistance: against the way it slides (dn->slide,
+   else x', from rest against the motion the frictionless system starts), or held. The friction changes A by one row, so
    det A / det A_frictionless is lagrange's 1 - cf nu for the normal part's sign tried (+ first)
    and the choice is friction_terms' (form_lagrange.c): the solution that continues the
    frictionless regime, ZP_RHS_FRICTION_INCONSISTENT where it does not exist. 0, or 1 when a
@@ -219,7 +219,7 @@ static int newton_friction(const zp_model *m, newton_work *nw, const zp_drive_no
                            double xd) {
     const int rn = npos(m) + 2 * m->nlink;
     const double fp = dn->tr.fp, *z = gsl_vector_const_ptr(nw->z, 0);
-    double dir = xd;
+    double dir = dn->slide ? dn->slide : xd;
     int sgn = 0;
     if (dn->hold || dir == 0 || !nw->sgn_free) {
         course_row(nw->A, rn, fp, 0, 1, dn->hold);
@@ -237,10 +237,11 @@ static int newton_friction(const zp_model *m, newton_work *nw, const zp_drive_no
     if (newton_solve(nw, &sgn)) {
         return 1;
     }
-    double normal = -fp * z[rn] + z[rn + 1];
+    double normal = -fp * z[rn] + z[rn + 1], normal_max = ZP_FRICTION_NORMAL_MAX * m->mtot;
+    normal_max *= sqrt(1 + fp * fp); /* normal is |(-f', 1)| times N */
     int gain_below_1 = sgn == nw->sgn_free; /* 1 - cf nu > 0 */
-    if (gain_below_1 ? normal >= 0 : normal > 0) {
-        return 0;
+    if (gain_below_1 && normal >= 0) {
+        return normal > normal_max ? ZP_RHS_FRICTION_INCONSISTENT : 0; /* n0 >= 0 */
     }
     if (!gain_below_1 && normal <= 0) {
         return ZP_RHS_FRICTION_INCONSISTENT; /* n0 >= 0 with 1 - cf nu <= 0 */
@@ -249,7 +250,8 @@ static int newton_friction(const zp_model *m, newton_work *nw, const zp_drive_no
     if (newton_solve(nw, &sgn)) {
         return 1;
     }
-    return -fp * z[rn] + z[rn + 1] > 0 ? ZP_RHS_FRICTION_INCONSISTENT : 0;
+    normal = -fp * z[rn] + z[rn + 1];
+    return normal > 0 || -normal > normal_max ? ZP_RHS_FRICTION_INCONSISTENT : 0;
 }
 
 /* phys constant where inlined (always: a copy per set of effects) */

@@ -17,6 +17,10 @@ enum { ZP_W_DRIVE, ZP_W_DAMP, ZP_W_DRAG, ZP_W_FRICTION, ZP_W_MAX };
 /* An rhs status: sliding friction and the normal force contradict each other (Painleve's
    paradox: every sign of N gives the other sign back); see form_lagrange.c. */
 #define ZP_RHS_FRICTION_INCONSISTENT 2
+/* kg m/s^2 per kg of the whole body: sliding friction's normal force beyond this times the
+   total mass counts as Painleve's boundary too; N grows without bound as it is approached and
+   an integrator would crawl towards it for ever (1e6 standard weights) */
+#define ZP_FRICTION_NORMAL_MAX (1e6 * 9.80665)
 
 /* The drive and the course under the trolley at this instant (set by the simulator). */
 typedef struct zp_drive_now {
@@ -24,6 +28,10 @@ typedef struct zp_drive_now {
     double fx, fy;  /* N, drive force on the trolley */
     int hold;       /* with rolling resistance, 1: rates and loads with the trolley held at rest
                        (x'' = 0), the holding tangential force in zp_loads.hold */
+    int slide;      /* with rolling resistance, +1 or -1: the way the trolley slides, which
+                       friction opposes whatever the sign of x' (the simulator keeps it from
+                       one stop to the next, so friction never flips inside a step); 0: the
+                       sign of x', or from rest of the frictionless x'' */
 } zp_drive_now;
 
 /* Loads, computed on request (outputs, not the hot path). */

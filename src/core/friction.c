@@ -16,3 +16,14 @@ int zp_friction_hold_at(const zp_model *m, const zp_formulation *form, void *fwo
     }
     return rc;
 }
+
+int zp_friction_settled(const zp_model *m, const zp_chain *c) {
+    /* design note: not the kinetic energy alone, which a swinging link passes through zero
+       at every turning point; the motion energy above the hanging rest only decays */
+    double motion = zp_state_energy(m, c).kinetic, length = 0;
+    for (int j = 0; j < m->nlink; j++) {
+        motion += m->g * m->B[j] * (1 - cos(c->q[2 + j]));
+        length += m->len[j];
+    }
+    return motion < ZP_FRICTION_SETTLED * m->mtot * m->g * length;
+}

@@ -21,9 +21,9 @@
 #define ZP_ZENO_RUN 4
 /* an output time this close (s) to an event shows the state after the event */
 #define ZP_EVENT_TIME_EPS 1e-9
-/* this many steps in a row, each refused a trial stage for want of a consistent friction,
-   mean the run is closing in on the Painleve boundary, where it would crawl for ever (the
-   normal force grows without bound there) */
+/* this many steps in a row, each refused a trial stage for want of a consistent friction (or
+   one such step that no longer advances the time), mean the run is closing in on Painleve's
+   boundary, where it would crawl for ever */
 #define ZP_PAINLEVE_STEPS 10
 /* a load peak inside a step is located to this share of its time (Brent's method) */
 #define ZP_PEAK_RTOL 1e-10
@@ -64,6 +64,9 @@ struct zp_sim {
 
     /* [physics] */
     track_fn track; /* the course with its arcs, or the plain course (chosen at create) */
+    int stuck;      /* rolling resistance: 1 while static friction holds the trolley */
+    int slide;      /* +1, -1: the way it slides since the last stop, kink or start */
+    double hold_t;  /* s, when that hold began */
     double inconsistent_t, inconsistent_x; /* s, m: the last evaluation since the last step
                                               where friction had no solution (NaN: none) */
     int inconsistent_steps; /* steps in a row that met such an evaluation */
@@ -79,7 +82,7 @@ static zp_track plain_track(const zp_model *m, const zp_course *c, int sec, doub
 /* course and drive at time t and the trolley's x on the current section; track a constant
    where inlined */
 static inline zp_drive_now drive_at(const zp_sim *s, track_fn track, double t, double x) {
-    zp_drive_now dn = {track(s->m, s->course, s->sec, x), 0, 0, 0};
+    zp_drive_now dn = {track(s->m, s->course, s->sec, x), 0, 0, 0, 0};
     double F = zp_schedule_force(s->sched, t, x, s->sec);
     if (s->m->drive == ZP_DRIVE_TANGENT) {
         double norm = sqrt(1 + dn.tr.fp * dn.tr.fp);
@@ -91,8 +94,12 @@ static inline zp_drive_now drive_at(const zp_sim *s, track_fn track, double t, d
     return dn;
 }
 
+/* the drive now, for outputs and decisions: held, the trolley's rates and loads at rest */
 static zp_drive_now drive_now(const zp_sim *s, double t, double x) {
-    return drive_at(s, s->track, t, x);
+    zp_drive_now dn = drive_at(s, s->track, t, x);
+    dn.hold = s->stuck;
+    dn.slide = s->slide;
+    return dn;
 }
 
 /* the equations of motion as the integrator sees them: on the plain course, or with arcs */
@@ -118,8 +125,8 @@ static int sim_root(double t, const double *y, double *g, void *user) {
     return 0;
 }
 
-/* with rolling resistance: where the friction has no consistent solution, noted for the
-   failure's message */
+/* with rolling resistance: held or sliding as the stick rule says, and where the friction
+   has no consistent solution noted for the failure's message */
 static int sim_rhs_rolling(double t, const double *y, double *ydot, void *user) {
     zp_sim *s = user;
     zp_drive_now dn = drive_now(s, t, y[0]);
@@ -131,11 +138,19 @@ static int sim_rhs_rolling(double t, const double *y, double *ydot, void *user) 
     return rc;
 }
 
-/* with rolling resistance also the trolley's x' (the state contract puts it at w0 / 2) */
+/* with rolling resistance also the trolley's x' (the state contract puts it at w0 / 2): a
+   stop; held, instead the hold's margin mu |N| - |F_t|: a release */
 static int sim_root_rolling(double t, const double *y, double *g, void *user) {
     zp_sim *s = user;
     sim_root(t, y, g, user);
-    g[zp_events_rest(s->m)] = y[s->w0 / 2];
+    double *rest = &g[zp_events_rest(s->m)];
+    zp_friction_hold h;
+    if (!s->stuck) {
+        *rest = y[s->w0 / 2];
+    } else if (zp_friction_hold_at(s->m, s->form, s->fwork, drive_now(s, t, y[0]), y, s->ydot,
+                                   &h) == 0) {
+        *rest = h.margin;
+    }
     return 0;
 }
 
@@ -571,24 +586,57 @@ static void snap_rest(zp_sim *s) {
     s->form->from_chain(s->m, &rest, wk, s->y);
 }
 
-/* the stick rule (MODEL.md) for the trolley at rest at t (the start or a stop): held
-   (|F_t| <= mu |N|), the run ends, stalled; otherwise it moves off toward -F_t, *dir (the
-   stick rule's way, not the sliding equations', which Painleve's regime can turn round).
-   Returns 1 when the run ended, -1 when the forces cannot be computed (or sliding friction
-   has no consistent normal force), 0 to go on. */
+/* a hold that lasted: stalled, held_by_friction, at the time the hold began (MODEL.md) */
+static void finish_held(zp_sim *s, zp_result *r, double t) {
+    finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_HELD_BY_FRICTION);
+    r->time = s->hold_t;
+}
+
+/* whether the chain under the held trolley has settled, which ends the hold */
+static int hold_settled(zp_sim *s) {
+    zp_chain c = chain_of(s, s->y);
+    return zp_friction_settled(s->m, &c);
+}
+
+/* the hold at the current state, at rest at t; 0, or -1 when it cannot be computed */
+static int hold_now(zp_sim *s, double t, zp_friction_hold *h) {
+    return zp_friction_hold_at(s->m, s->form, s->fwork, drive_now(s, t, s->y[0]), s->y, s->ydot,
+                               h)
+               ? -1
+               : 0;
+}
+
+/* MODEL.md's stick rule for the trolley at rest at t (the start, a stop, a jump of the drive
+   while held): held (|F_t| <= mu |N|), it stays while the chain swings on (s->stuck) and the
+   run ends at once when the chain has settled; otherwise it slides off toward -F_t, *dir.
+   Returns 1 when the run ended, -1 when the hold cannot be computed or sliding friction has
+   no consistent motion there (Painleve), 0 to go on. */
 static int stick_rule(zp_sim *s, double t, zp_result *r, int *dir) {
+    s->stuck = 0;
     snap_rest(s);
     zp_friction_hold h;
-    if (zp_friction_hold_at(s->m, s->form, s->fwork, drive_now(s, t, s->y[0]), s->y, s->ydot,
-                            &h)) {
+    if (hold_now(s, t, &h)) {
         return -1;
     }
-    if (h.margin >= 0) {
-        finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_HELD_BY_FRICTION);
-        return 1;
+    s->stuck = h.margin >= 0;
+    *dir = s->stuck ? 0 : h.tangential > 0 ? -1 : 1;
+    if (s->stuck) {
+        s->hold_t = t;
+        if (hold_settled(s)) {
+            finish_held(s, r, t);
+            return 1;
+        }
+        return 0;
     }
-    *dir = h.tangential > 0 ? -1 : 1;
-    return sim_rhs_rolling(t, s->y, s->ydot, s) == ZP_RHS_FRICTION_INCONSISTENT ? -1 : 0;
+    /* sliding off: friction needs a consistent normal force here, and must leave the trolley
+       going that way (Painleve's regime can turn it round) */
+    s->slide = *dir;
+    int rc = sim_rhs_rolling(t, s->y, s->ydot, s);
+    if (rc == 0 && s->ydot[s->w0 / 2] * *dir < 0) {
+        s->inconsistent_t = t;
+        s->inconsistent_x = s->y[0];
+    }
+    return rc || s->ydot[s->w0 / 2] * *dir < 0 ? -1 : 0;
 }
 
 static void add_stats(zp_sim *s, zp_result *r) {
@@ -622,6 +670,8 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
 
     double t = 0;
     out_cursor oc = {0};
+    s->stuck = 0;
+    s->slide = (c.v[0] > 0) - (c.v[0] < 0);
     s->inconsistent_t = NAN;
     s->inconsistent_steps = 0;
     emit_outputs(s, in, t, 0, &oc);
@@ -649,6 +699,7 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     }
     for (;;) {
         char err[256] = "";
+        double t_before = t;
         zp_adv adv = s->meth->advance(s->mwork, &t, s->y, s->roots, err, sizeof err);
         int bad = first_non_finite(s->y, s->n);
         long steps_now = 0, evals_now = 0;
@@ -664,8 +715,10 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             }
             return fail(s, r, t, err);
         }
+        /* closing in on Painleve's boundary: steps that each meet it, or no longer advance */
         s->inconsistent_steps = isfinite(s->inconsistent_t) ? s->inconsistent_steps + 1 : 0;
-        if (s->inconsistent_steps >= ZP_PAINLEVE_STEPS) {
+        if (s->inconsistent_steps >= ZP_PAINLEVE_STEPS ||
+            (s->inconsistent_steps > 0 && !(t > t_before))) {
             add_stats(s, r);
             return fail(s, r, t, "");
         }
@@ -681,20 +734,34 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
         }
         if (adv != ZP_ADV_ROOT) {
             emit_outputs(s, in, t, 1, &oc);
+            if (s->stuck && hold_settled(s)) {
+                add_stats(s, r);
+                finish_held(s, r, t);
+                return ZP_OK;
+            }
             /* a boundary passed without a root (one masked at a restart) is crossed here */
             if (s->y[0] < m->xb[s->sec] || s->y[0] > m->xb[s->sec + 1]) {
                 memset(s->roots, 0, sizeof *s->roots * s->nroot);
                 s->roots[s->y[0] < m->xb[s->sec] ? ZP_ROOT_LEFT : ZP_ROOT_RIGHT] = 1;
             } else if (adv == ZP_ADV_STOP && s->nbreak > 0 && t < s->o.t_max) {
-                /* a break of the schedule: the force jumps, the integrator starts afresh */
+                /* a break of the schedule: the force jumps (a held trolley is judged again),
+                   the integrator starts afresh */
                 add_stats(s, r);
+                int end = s->stuck ? stick_rule(s, t, r, &dir) : 0;
+                if (end) {
+                    return end < 0 ? fail(s, r, t, "the forces at rest cannot be computed") : ZP_OK;
+                }
                 if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
                     return fail(s, r, t, "the integrator could not restart at a break");
                 }
                 continue;
             } else if (adv == ZP_ADV_STOP) {
                 add_stats(s, r);
-                finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_T_MAX);
+                if (s->stuck) {
+                    finish_held(s, r, t);
+                } else {
+                    finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_T_MAX);
+                }
                 return ZP_OK;
             } else {
                 continue;
@@ -709,11 +776,22 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
         }
         add_stats(s, r);
         if (ev == ZP_EVENT_REST) {
-            /* a stop: held, or off the other way (friction turns round, the integrator
-               restarts) */
-            int end = stick_rule(s, t, r, &dir);
-            if (end) {
-                return end < 0 ? fail(s, r, t, "the forces at rest cannot be computed") : ZP_OK;
+            /* a release (the hold's margin reached 0): off toward -F_t from rest; a stop: the
+               stick rule. Either way the equations change and the integrator restarts */
+            zp_friction_hold h;
+            if (s->stuck) {
+                s->stuck = 0;
+                snap_rest(s);
+                if (hold_now(s, t, &h)) {
+                    return fail(s, r, t, "the forces at rest cannot be computed");
+                }
+                s->slide = h.tangential > 0 ? -1 : 1;
+            } else {
+                int end = stick_rule(s, t, r, &dir);
+                if (end) {
+                    return end < 0 ? fail(s, r, t, "the forces at rest cannot be computed")
+                                   : ZP_OK;
+                }
             }
             if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
                 return fail(s, r, t, "the integrator could not restart at rest");
@@ -742,6 +820,8 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_TRAPPED_AT_KINK);
             return ZP_OK;
         }
+        /* friction now opposes the way it leaves the kink */
+        s->slide = departure(s, t, s->y);
         if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
             return fail(s, r, t, "the integrator could not restart after the kink");
         }
