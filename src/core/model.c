@@ -41,10 +41,47 @@ static int probe_count(double width) {
     return (int)fmin(fmax(4096, ceil(width / 0.01)), 1 << 20);
 }
 
+/* a slope this many times the probes' own (plus 1) where f' or f'' turns between them is a
+   pole, not a bend: a smooth f's slope between two probes 1 cm apart lies near theirs, while
+   r / (x - p) reaches r / (round-off)^2 at p however small the residue r */
+#define ZP_POLE_SLOPE_GROWTH 1e6
+
+/* between neighbouring probes a and b whose f' or f'' differ in sign, where that sign turns
+   (bisection to round-off): 1 and there in *at when f is not finite there or its slope has
+   grown ZP_POLE_SLOPE_GROWTH-fold (a pole whose residue is too small for the jump test) */
+static int pole_between(const zp_model *m, int k, double a, zp_track ta, double b, zp_track tb,
+                        double *at) {
+    int which = (ta.fp > 0) != (tb.fp > 0) ? 1 : (ta.fpp > 0) != (tb.fpp > 0) ? 2 : 0;
+    if (!which) {
+        return 0;
+    }
+    double bound = ZP_POLE_SLOPE_GROWTH * (1 + fmax(fabs(ta.fp), fabs(tb.fp)));
+    for (int it = 0; it < 80; it++) {
+        double mid = 0.5 * (a + b);
+        if (!(mid > a && mid < b)) {
+            break;
+        }
+        zp_track tm = zp_course_eval(m->course, k, mid);
+        *at = mid;
+        if (!isfinite(tm.f) || !isfinite(tm.fp) || fabs(tm.fp) > bound) {
+            return 1;
+        }
+        double va = which == 1 ? ta.fp : ta.fpp, vm = which == 1 ? tm.fp : tm.fpp;
+        if ((va > 0) == (vm > 0)) {
+            a = mid;
+            ta = tm;
+        } else {
+            b = mid;
+        }
+    }
+    return 0;
+}
+
 /* section k over its range: f and f' finite (an f'' that overflows where f' is finite is the
-   derivative expression's overflow, which zp_course_eval replaces by a difference), and no
-   jump between neighbouring probes that the slopes at both ends do not explain (a pole, where
-   tan stays finite in floating point). 0 and the x that fails in *bad. */
+   derivative expression's overflow, which zp_course_eval replaces by a difference), no jump
+   between neighbouring probes that the slopes at both ends do not explain (a pole, where tan
+   stays finite in floating point), and no pole where the slope or its rate turns between
+   them. 0 and the x that fails in *bad. */
 static int section_smooth(const zp_model *m, int k, double *bad) {
     int n = probe_count(m->xb[k + 1] - m->xb[k]);
     double h = (m->xb[k + 1] - m->xb[k]) / n;
@@ -58,6 +95,9 @@ static int section_smooth(const zp_model *m, int k, double *bad) {
         }
         double df = tr.f - prev.f, trap = 0.5 * h * (tr.fp + prev.fp);
         if (p > 0 && fabs(df - trap) > 0.5 * (fabs(df) + fabs(trap)) + 1e-9 * (1 + fabs(tr.f))) {
+            return 0;
+        }
+        if (p > 0 && pole_between(m, k, x - h, prev, x, tr, bad)) {
             return 0;
         }
         prev = tr;
