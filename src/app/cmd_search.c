@@ -284,11 +284,13 @@ static int answer_holds(const zp_objective *ob, const zp_verify *v, char *why, s
         angle = fmax(angle, v->run->max_rel_angle[i]);
     }
     if (v->run->outcome != ZP_OUTCOME_FINISHED) {
-        snprintf(why, n, "rerun with [solver] it %s at %.4f s", zp_sim_outcome_name(v->run->outcome),
-                 v->run->time);
+        snprintf(why, n, "rerun with [solver] it %s at %.4f s",
+                 zp_sim_outcome_name(v->run->outcome), v->run->time);
     } else if (angle > ob->limit) {
-        snprintf(why, n, "rerun with [solver] its largest joint angle is %.2f deg, past the %.2f "
-                 "deg the margin allows", angle * 180 / M_PI, ob->limit * 180 / M_PI);
+        snprintf(why, n,
+                 "rerun with [solver] its largest joint angle is %.2f deg, past the %.2f deg the "
+                 "margin allows",
+                 angle * 180 / M_PI, ob->limit * 180 / M_PI);
     } else if (!v->agree) {
         snprintf(why, n, "it is not verified at the tighter tolerance (rtol %.0e)", v->rtol);
     } else {
