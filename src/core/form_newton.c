@@ -210,11 +210,11 @@ static int newton_solve(newton_work *nw, int *sgn) {
 }
 
 /* A z = b with the course row of rolling resistance: against the way it slides (dn->slide,
-   else x', from rest against the motion the frictionless system starts), or held. The friction changes A by one row, so
-   det A / det A_frictionless is lagrange's 1 - cf nu for the normal part's sign tried (+ first)
-   and the choice is friction_terms' (form_lagrange.c): the solution that continues the
-   frictionless regime, ZP_RHS_FRICTION_INCONSISTENT where it does not exist. 0, or 1 when a
-   solve fails. */
+   else x', from rest against the motion the frictionless system starts), or held. The
+   friction changes A by one row, so det A / det A_frictionless is lagrange's 1 - cf nu for the
+   normal part's sign tried (+ first), and the choice is friction_terms' (form_lagrange.c): the
+   solution that continues the frictionless regime, ZP_RHS_FRICTION_INCONSISTENT where it does
+   not exist or has grown past ZP_FRICTION_NORMAL_MAX. 0, or 1 when a solve fails. */
 static int newton_friction(const zp_model *m, newton_work *nw, const zp_drive_now *dn,
                            double xd) {
     const int rn = npos(m) + 2 * m->nlink;

@@ -144,13 +144,11 @@ static int sim_root_rolling(double t, const double *y, double *g, void *user) {
     zp_sim *s = user;
     sim_root(t, y, g, user);
     double *rest = &g[zp_events_rest(s->m)];
-    zp_friction_hold h;
-    if (!s->stuck) {
-        *rest = y[s->w0 / 2];
-    } else if (zp_friction_hold_at(s->m, s->form, s->fwork, drive_now(s, t, y[0]), y, s->ydot,
-                                   &h) == 0) {
-        *rest = h.margin;
+    zp_friction_hold h = {.margin = 1}; /* where it cannot be computed the rates fail too */
+    if (s->stuck) {
+        zp_friction_hold_at(s->m, s->form, s->fwork, drive_now(s, t, y[0]), y, s->ydot, &h);
     }
+    *rest = s->stuck ? h.margin : y[s->w0 / 2];
     return 0;
 }
 
@@ -598,24 +596,23 @@ static int hold_settled(zp_sim *s) {
     return zp_friction_settled(s->m, &c);
 }
 
-/* the hold at the current state, at rest at t; 0, or -1 when it cannot be computed */
+/* the hold at the current state, at rest at t; 0, or the rhs's nonzero status */
 static int hold_now(zp_sim *s, double t, zp_friction_hold *h) {
     return zp_friction_hold_at(s->m, s->form, s->fwork, drive_now(s, t, s->y[0]), s->y, s->ydot,
-                               h)
-               ? -1
-               : 0;
+                               h);
 }
 
 /* MODEL.md's stick rule for the trolley at rest at t (the start, a stop, a jump of the drive
    while held): held (|F_t| <= mu |N|), it stays while the chain swings on (s->stuck) and the
    run ends at once when the chain has settled; otherwise it slides off toward -F_t, *dir.
-   Returns 1 when the run ended, -1 when the hold cannot be computed or sliding friction has
-   no consistent motion there (Painleve), 0 to go on. */
+   Returns 1 when the run ended (r filled), -1 when it failed (r's message: the forces cannot
+   be computed, or sliding friction has no consistent motion there, Painleve), 0 to go on. */
 static int stick_rule(zp_sim *s, double t, zp_result *r, int *dir) {
     s->stuck = 0;
     snap_rest(s);
     zp_friction_hold h;
     if (hold_now(s, t, &h)) {
+        fail(s, r, t, "the forces at rest cannot be computed");
         return -1;
     }
     s->stuck = h.margin >= 0;
@@ -632,11 +629,21 @@ static int stick_rule(zp_sim *s, double t, zp_result *r, int *dir) {
        going that way (Painleve's regime can turn it round) */
     s->slide = *dir;
     int rc = sim_rhs_rolling(t, s->y, s->ydot, s);
-    if (rc == 0 && s->ydot[s->w0 / 2] * *dir < 0) {
+    int turned = rc == 0 && s->ydot[s->w0 / 2] * *dir < 0;
+    if (turned) {
         s->inconsistent_t = t;
         s->inconsistent_x = s->y[0];
     }
-    return rc || s->ydot[s->w0 / 2] * *dir < 0 ? -1 : 0;
+    if (rc || turned) {
+        fail(s, r, t, "the forces at rest cannot be computed"); /* or Painleve's, said */
+        return -1;
+    }
+    return 0;
+}
+
+/* the run's status after the stick rule ended it (end != 0) */
+static zp_status stick_end(int end) {
+    return end < 0 ? ZP_ERR_NUMERIC : ZP_OK;
 }
 
 static void add_stats(zp_sim *s, zp_result *r) {
@@ -680,7 +687,7 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     if (m->physics & ZP_PHYS_ROLLING && c.v[0] == 0) {
         int end = stick_rule(s, t, r, &dir);
         if (end) {
-            return end < 0 ? fail(s, r, t, "the forces at rest cannot be computed") : ZP_OK;
+            return stick_end(end);
         }
     } else {
         dir = departure(s, t, s->y);
@@ -749,7 +756,7 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
                 add_stats(s, r);
                 int end = s->stuck ? stick_rule(s, t, r, &dir) : 0;
                 if (end) {
-                    return end < 0 ? fail(s, r, t, "the forces at rest cannot be computed") : ZP_OK;
+                    return stick_end(end);
                 }
                 if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
                     return fail(s, r, t, "the integrator could not restart at a break");
@@ -789,8 +796,7 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             } else {
                 int end = stick_rule(s, t, r, &dir);
                 if (end) {
-                    return end < 0 ? fail(s, r, t, "the forces at rest cannot be computed")
-                                   : ZP_OK;
+                    return stick_end(end);
                 }
             }
             if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
