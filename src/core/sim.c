@@ -567,7 +567,7 @@ static zp_status fail(zp_sim *s, zp_result *r, double t, const char *why) {
     }
     char where[64] = "";
     if (isfinite(s->y[0])) {
-        snprintf(where, sizeof where, ", x = %.9g m", s->y[0]);
+        snprintf(where, sizeof where, ", x = %.9g m (section %d)", s->y[0], s->sec + 1);
     }
     snprintf(r->message, sizeof r->message, "numerical failure at t = %.9g s%s: %.180s", t, where,
              why);
