@@ -179,8 +179,7 @@ static void print_text(const zp_model *m, const zp_result *r) {
     if (m->physics) {
         printf("drag work: %.6g J, friction work: %.6g J\n", r->w_drag, r->w_fric);
     }
-    printf("energy audit residual: %.3g J\n", r->e_final - r->e_initial - r->w_drive + r->w_damp +
-                                                   r->e_impulse + r->w_drag + r->w_fric);
+    printf("energy audit residual: %.3g J\n", zp_estimate_energy_residual(r));
     printf("steps: %ld (and %ld rejected), rhs evaluations: %ld, wall: %.4f s\n", r->steps,
            r->rejected, r->rhs_evals, r->wall_s);
 }

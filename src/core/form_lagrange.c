@@ -187,11 +187,13 @@ static inline double drag_terms(const zp_model *m, double fp, double xd, const d
 /* rolling resistance: its generalized force (x row only) along u = M^-1 e_x added to qdd,
    with N affine in it; with dn->hold the force that keeps x'' = 0 instead, its tangential
    value in *hold. fx, fy: the force on the system other than gravity, course and friction.
-   Returns the power the friction takes out. */
-static inline double friction_terms(const zp_model *m, const zp_drive_now *dn, double xd,
-                                    double fx, double fy, const double *s, const double *c,
-                                    const double *wd2, int n, const double *u, double *qdd,
-                                    double *hold) {
+   The power the friction takes out in *pout. Sliding, N = n0 + cf |N| nu has one solution
+   while mu |(1, f')| |nu| < 1; past that (Painleve) either none, which returns
+   ZP_RHS_FRICTION_INCONSISTENT, or two, of which the one continuing the regular regime is
+   taken (the other appears from infinity). 0 otherwise. */
+static inline int friction_terms(const zp_model *m, const zp_drive_now *dn, double xd, double fx,
+                                 double fy, const double *s, const double *c, const double *wd2,
+                                 int n, const double *u, double *qdd, double *hold, double *pout) {
     double fp = dn->tr.fp, sq = sqrt(1 + fp * fp);
     double sx = m->mtot * qdd[0], sy = m->mtot * (fp * qdd[0] + dn->tr.fpp * xd * xd), nu = 0;
     for (int j = 0; j < n; j++) {
@@ -205,18 +207,22 @@ static inline double friction_terms(const zp_model *m, const zp_drive_now *dn, d
         q = -qdd[0] / u[0];
         *hold = q / sq;
     } else {
-        double dir = xd != 0 ? xd : qdd[0]; /* from rest: against the motion it starts */
+        /* the simulator's way, else x''s, from rest against the motion it starts */
+        double dir = dn->slide ? dn->slide : xd != 0 ? xd : qdd[0];
         double cf = -m->mu * ((dir > 0) - (dir < 0)) * sq;
-        double N = n0 / (1 - cf * nu);
-        if (N < 0) {
-            N = n0 / (1 + cf * nu);
+        /* N >= 0 needs 1 - cf nu > 0, N < 0 needs 1 + cf nu > 0: the one solution of the
+           regular regime, which continues into Painleve's where the other sign appears too */
+        double den = n0 >= 0 ? 1 - cf * nu : 1 + cf * nu, N = n0 / den;
+        if (!(den > 0) || fabs(N) > ZP_FRICTION_NORMAL_MAX * m->mtot) {
+            return ZP_RHS_FRICTION_INCONSISTENT;
         }
         q = cf * fabs(N);
     }
     for (int i = 0; i <= n; i++) {
         qdd[i] += q * u[i];
     }
-    return -q * xd;
+    *pout = -q * xd;
+    return 0;
 }
 
 /* the rates both paths end with: q' and q'' (1 on a non-finite acceleration), the work
@@ -302,8 +308,11 @@ static int lagrange_rhs_general(const zp_model *m, void *work, const zp_drive_no
         if (gsl_linalg_cholesky_solve(M, lw->R, lw->u)) {
             return 1;
         }
-        pfric = friction_terms(m, dn, xd, f[0], f[1], s, c, wd2, n,
-                               gsl_vector_const_ptr(lw->u, 0), qdd, &hold);
+        int rc = friction_terms(m, dn, xd, f[0], f[1], s, c, wd2, n,
+                                gsl_vector_const_ptr(lw->u, 0), qdd, &hold, &pfric);
+        if (rc) {
+            return rc;
+        }
     }
     unsigned phys = m->physics & (ZP_PHYS_DRAG | ZP_PHYS_ROLLING); /* the work integrals' */
     return store_rates(m, dn, phys, y, qdd, xd, fp, (const double[]){pdamp, pdrag, pfric}, f, fd,
@@ -412,7 +421,10 @@ __attribute__((always_inline)) static inline int fast_rhs(const zp_model *m,
     if (phys & ZP_PHYS_ROLLING) {
         double ex[ZP_MAX_LINKS + 1] = {1}, u[ZP_MAX_LINKS + 1];
         cholesky_subst(M, ex, u, nq);
-        pfric = friction_terms(m, dn, xd, f[0], f[1], s, c, wd2, n, u, qdd, &hold);
+        int rc = friction_terms(m, dn, xd, f[0], f[1], s, c, wd2, n, u, qdd, &hold, &pfric);
+        if (rc) {
+            return rc;
+        }
     }
     return store_rates(m, dn, phys, y, qdd, xd, fp, (const double[]){pdamp, pdrag, pfric}, f, fd,
                        hold, ydot, loads);

@@ -11,6 +11,7 @@
 
 #include "accuracy.h"
 #include "events.h"
+#include "friction.h"
 #include "impulse.h"
 
 /* ZP_ZENO_RUN crossings of one kink in a row, each closer than ZP_ZENO_DT (s) to the one
@@ -20,6 +21,10 @@
 #define ZP_ZENO_RUN 4
 /* an output time this close (s) to an event shows the state after the event */
 #define ZP_EVENT_TIME_EPS 1e-9
+/* this many steps in a row, each refused a trial stage for want of a consistent friction (or
+   one such step that no longer advances the time), mean the run is closing in on Painleve's
+   boundary, where it would crawl for ever */
+#define ZP_PAINLEVE_STEPS 10
 /* a load peak inside a step is located to this share of its time (Brent's method) */
 #define ZP_PEAK_RTOL 1e-10
 #define ZP_PEAK_ITER 60
@@ -59,6 +64,12 @@ struct zp_sim {
 
     /* [physics] */
     track_fn track; /* the course with its arcs, or the plain course (chosen at create) */
+    int stuck;      /* rolling resistance: 1 while static friction holds the trolley */
+    int slide;      /* +1, -1: the way it slides since the last stop, kink or start */
+    double hold_t;  /* s, when that hold began */
+    double inconsistent_t, inconsistent_x; /* s, m: the last evaluation since the last step
+                                              where friction had no solution (NaN: none) */
+    int inconsistent_steps; /* steps in a row that met such an evaluation */
     int w0;         /* index of the first work integral in the state */
     zp_arc_peaks arc_peaks[ZP_MAX_SECTIONS]; /* load peaks on each arc */
 };
@@ -71,7 +82,7 @@ static zp_track plain_track(const zp_model *m, const zp_course *c, int sec, doub
 /* course and drive at time t and the trolley's x on the current section; track a constant
    where inlined */
 static inline zp_drive_now drive_at(const zp_sim *s, track_fn track, double t, double x) {
-    zp_drive_now dn = {track(s->m, s->course, s->sec, x), 0, 0, 0};
+    zp_drive_now dn = {track(s->m, s->course, s->sec, x), 0, 0, 0, 0};
     double F = zp_schedule_force(s->sched, t, x, s->sec);
     if (s->m->drive == ZP_DRIVE_TANGENT) {
         double norm = sqrt(1 + dn.tr.fp * dn.tr.fp);
@@ -83,8 +94,12 @@ static inline zp_drive_now drive_at(const zp_sim *s, track_fn track, double t, d
     return dn;
 }
 
+/* the drive now, for outputs and decisions: held, the trolley's rates and loads at rest */
 static zp_drive_now drive_now(const zp_sim *s, double t, double x) {
-    return drive_at(s, s->track, t, x);
+    zp_drive_now dn = drive_at(s, s->track, t, x);
+    dn.hold = s->stuck;
+    dn.slide = s->slide;
+    return dn;
 }
 
 /* the equations of motion as the integrator sees them: on the plain course, or with arcs */
@@ -110,11 +125,30 @@ static int sim_root(double t, const double *y, double *g, void *user) {
     return 0;
 }
 
-/* with rolling resistance also the trolley's x' (the state contract puts it at w0 / 2) */
+/* with rolling resistance: held or sliding as the stick rule says, and where the friction
+   has no consistent solution noted for the failure's message */
+static int sim_rhs_rolling(double t, const double *y, double *ydot, void *user) {
+    zp_sim *s = user;
+    zp_drive_now dn = drive_now(s, t, y[0]);
+    int rc = s->form->rhs(s->m, s->fwork, &dn, y, ydot, NULL);
+    if (rc == ZP_RHS_FRICTION_INCONSISTENT) {
+        s->inconsistent_t = t;
+        s->inconsistent_x = y[0];
+    }
+    return rc;
+}
+
+/* with rolling resistance also the trolley's x' (the state contract puts it at w0 / 2): a
+   stop; held, instead the hold's margin mu |N| - |F_t|: a release */
 static int sim_root_rolling(double t, const double *y, double *g, void *user) {
     zp_sim *s = user;
     sim_root(t, y, g, user);
-    g[zp_events_rest(s->m)] = y[s->w0 / 2];
+    double *rest = &g[zp_events_rest(s->m)];
+    zp_friction_hold h = {.margin = 1}; /* where it cannot be computed the rates fail too */
+    if (s->stuck) {
+        zp_friction_hold_at(s->m, s->form, s->fwork, drive_now(s, t, y[0]), y, s->ydot, &h);
+    }
+    *rest = s->stuck ? h.margin : y[s->w0 / 2];
     return 0;
 }
 
@@ -173,8 +207,10 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
     int state_only[3 + 2 * ZP_MAX_LINKS];
     zp_events_state_only(m, state_only);
     zp_method_opts mo = {o->rtol, o->atol, o->max_steps, state_only, s->w0 / 2};
-    s->mwork = s->meth->create(s->n, s->nroot, dir,
-                               m->physics & ZP_PHYS_ROUNDED ? sim_rhs_rounded : zp_sim_rhs,
+    zp_rhs_fn rhs = m->physics & ZP_PHYS_ROLLING   ? sim_rhs_rolling
+                    : m->physics & ZP_PHYS_ROUNDED ? sim_rhs_rounded
+                                                   : zp_sim_rhs;
+    s->mwork = s->meth->create(s->n, s->nroot, dir, rhs,
                                m->physics & ZP_PHYS_ROLLING ? sim_root_rolling : sim_root, s,
                                &mo);
     if (o->peaks) {
@@ -323,19 +359,6 @@ static int departure(zp_sim *s, double t, const double *y) {
     zp_row r = row_of(s, t, y);
     double v = r.c.v[0] != 0 ? r.c.v[0] : r.loads.acc[0][0];
     return (v > 0) - (v < 0);
-}
-
-/* with rolling resistance, at rest: whether static friction holds the trolley (MODEL.md:
-   the tangential force that keeps x'' = 0 within mu |N| then) */
-static int held(zp_sim *s, double t, const double *y) {
-    if (!(s->m->physics & ZP_PHYS_ROLLING)) {
-        return 0;
-    }
-    zp_drive_now dn = drive_now(s, t, y[0]);
-    dn.hold = 1;
-    zp_loads ld;
-    return s->form->rhs(s->m, s->fwork, &dn, y, s->ydot, &ld) == 0 &&
-           fabs(ld.hold) <= s->m->mu * fabs(ld.normal);
 }
 
 /* where the outputs of a run stand: the next row's time, the next sample and frame */
@@ -534,13 +557,93 @@ static void finish_result(zp_sim *s, zp_result *r, double t, zp_outcome o, zp_st
 }
 
 static zp_status fail(zp_sim *s, zp_result *r, double t, const char *why) {
+    if (isfinite(s->inconsistent_t)) {
+        snprintf(r->message, sizeof r->message,
+                 "rolling resistance has no consistent normal force at t = %.9g s, x = %.9g m "
+                 "(Painleve's paradox: mu = %g is too large for this trolley and chain; the rigid "
+                 "model of MODEL.md has no motion there)",
+                 s->inconsistent_t, s->inconsistent_x, s->m->mu);
+        return ZP_ERR_NUMERIC;
+    }
     char where[64] = "";
     if (isfinite(s->y[0])) {
-        snprintf(where, sizeof where, ", x = %.9g m", s->y[0]);
+        snprintf(where, sizeof where, ", x = %.9g m (section %d)", s->y[0], s->sec + 1);
     }
     snprintf(r->message, sizeof r->message, "numerical failure at t = %.9g s%s: %.180s", t, where,
              why);
     return ZP_ERR_NUMERIC;
+}
+
+/* the trolley put at rest exactly, the chain keeping its rates: a residual x' of a root's
+   tolerance would set the friction against the wrong way and bring the root straight back */
+static void snap_rest(zp_sim *s) {
+    zp_chain rest = chain_of(s, s->y);
+    rest.v[0] = rest.v[1] = 0;
+    double wk[ZP_W_MAX];
+    memcpy(wk, s->y + s->w0, sizeof *wk * s->m->nwork);
+    s->form->from_chain(s->m, &rest, wk, s->y);
+}
+
+/* a hold that lasted: stalled, held_by_friction, at the time the hold began (MODEL.md) */
+static void finish_held(zp_sim *s, zp_result *r, double t) {
+    finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_HELD_BY_FRICTION);
+    r->time = s->hold_t;
+}
+
+/* whether the chain under the held trolley has settled, which ends the hold */
+static int hold_settled(zp_sim *s) {
+    zp_chain c = chain_of(s, s->y);
+    return zp_friction_settled(s->m, &c);
+}
+
+/* the hold at the current state, at rest at t; 0, or the rhs's nonzero status */
+static int hold_now(zp_sim *s, double t, zp_friction_hold *h) {
+    return zp_friction_hold_at(s->m, s->form, s->fwork, drive_now(s, t, s->y[0]), s->y, s->ydot,
+                               h);
+}
+
+/* MODEL.md's stick rule for the trolley at rest at t (the start, a stop, a jump of the drive
+   while held): held (|F_t| <= mu |N|), it stays while the chain swings on (s->stuck) and the
+   run ends at once when the chain has settled; otherwise it slides off toward -F_t, *dir.
+   Returns 1 when the run ended (r filled), -1 when it failed (r's message: the forces cannot
+   be computed, or sliding friction has no consistent motion there, Painleve), 0 to go on. */
+static int stick_rule(zp_sim *s, double t, zp_result *r, int *dir) {
+    s->stuck = 0;
+    snap_rest(s);
+    zp_friction_hold h;
+    if (hold_now(s, t, &h)) {
+        fail(s, r, t, "the forces at rest cannot be computed");
+        return -1;
+    }
+    s->stuck = h.margin >= 0;
+    *dir = s->stuck ? 0 : h.tangential > 0 ? -1 : 1;
+    if (s->stuck) {
+        s->hold_t = t;
+        if (hold_settled(s)) {
+            finish_held(s, r, t);
+            return 1;
+        }
+        return 0;
+    }
+    /* sliding off: friction needs a consistent normal force here, and must leave the trolley
+       going that way (Painleve's regime can turn it round) */
+    s->slide = *dir;
+    int rc = sim_rhs_rolling(t, s->y, s->ydot, s);
+    int turned = rc == 0 && s->ydot[s->w0 / 2] * *dir < 0;
+    if (turned) {
+        s->inconsistent_t = t;
+        s->inconsistent_x = s->y[0];
+    }
+    if (rc || turned) {
+        fail(s, r, t, "the forces at rest cannot be computed"); /* or Painleve's, said */
+        return -1;
+    }
+    return 0;
+}
+
+/* the run's status after the stick rule ended it (end != 0) */
+static zp_status stick_end(int end) {
+    return end < 0 ? ZP_ERR_NUMERIC : ZP_OK;
 }
 
 static void add_stats(zp_sim *s, zp_result *r) {
@@ -578,14 +681,23 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
 
     double t = 0;
     out_cursor oc = {0};
+    s->stuck = 0;
+    s->slide = (c.v[0] > 0) - (c.v[0] < 0);
+    s->inconsistent_t = NAN;
+    s->inconsistent_steps = 0;
     emit_outputs(s, in, t, 0, &oc);
     frames_at_x_here(s, in, t, s->y[0], &oc);
-    if (held(s, t, s->y)) {
-        finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_HELD_BY_FRICTION);
-        return ZP_OK;
+    int dir;
+    if (m->physics & ZP_PHYS_ROLLING && c.v[0] == 0) {
+        int end = stick_rule(s, t, r, &dir);
+        if (end) {
+            return stick_end(end);
+        }
+    } else {
+        dir = departure(s, t, s->y);
     }
     /* a root finder ignores a root at t0: a start that rolls back at once is caught here */
-    if (departure(s, t, s->y) < 0) {
+    if (dir < 0) {
         finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_ROLLED_BACK);
         return ZP_OK;
     }
@@ -598,6 +710,7 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     }
     for (;;) {
         char err[256] = "";
+        double t_before = t;
         zp_adv adv = s->meth->advance(s->mwork, &t, s->y, s->roots, err, sizeof err);
         int bad = first_non_finite(s->y, s->n);
         long steps_now = 0, evals_now = 0;
@@ -613,6 +726,14 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             }
             return fail(s, r, t, err);
         }
+        /* closing in on Painleve's boundary: steps that each meet it, or no longer advance */
+        s->inconsistent_steps = isfinite(s->inconsistent_t) ? s->inconsistent_steps + 1 : 0;
+        if (s->inconsistent_steps >= ZP_PAINLEVE_STEPS ||
+            (s->inconsistent_steps > 0 && !(t > t_before))) {
+            add_stats(s, r);
+            return fail(s, r, t, "");
+        }
+        s->inconsistent_t = NAN; /* a step was taken: what a trial stage met is past */
         track_extremes(s, t, s->y, r);
         frames_at_x_in_step(s, in, t, &oc);
         if (s->o.peaks) {
@@ -624,20 +745,34 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
         }
         if (adv != ZP_ADV_ROOT) {
             emit_outputs(s, in, t, 1, &oc);
+            if (s->stuck && hold_settled(s)) {
+                add_stats(s, r);
+                finish_held(s, r, t);
+                return ZP_OK;
+            }
             /* a boundary passed without a root (one masked at a restart) is crossed here */
             if (s->y[0] < m->xb[s->sec] || s->y[0] > m->xb[s->sec + 1]) {
                 memset(s->roots, 0, sizeof *s->roots * s->nroot);
                 s->roots[s->y[0] < m->xb[s->sec] ? ZP_ROOT_LEFT : ZP_ROOT_RIGHT] = 1;
             } else if (adv == ZP_ADV_STOP && s->nbreak > 0 && t < s->o.t_max) {
-                /* a break of the schedule: the force jumps, the integrator starts afresh */
+                /* a break of the schedule: the force jumps (a held trolley is judged again),
+                   the integrator starts afresh */
                 add_stats(s, r);
+                int end = s->stuck ? stick_rule(s, t, r, &dir) : 0;
+                if (end) {
+                    return stick_end(end);
+                }
                 if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
                     return fail(s, r, t, "the integrator could not restart at a break");
                 }
                 continue;
             } else if (adv == ZP_ADV_STOP) {
                 add_stats(s, r);
-                finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_T_MAX);
+                if (s->stuck) {
+                    finish_held(s, r, t);
+                } else {
+                    finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_T_MAX);
+                }
                 return ZP_OK;
             } else {
                 continue;
@@ -652,18 +787,22 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
         }
         add_stats(s, r);
         if (ev == ZP_EVENT_REST) {
-            /* held, or off the other way: friction turns round, the integrator restarts */
-            if (held(s, t, s->y)) {
-                finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_HELD_BY_FRICTION);
-                return ZP_OK;
+            /* a release (the hold's margin reached 0): off toward -F_t from rest; a stop: the
+               stick rule. Either way the equations change and the integrator restarts */
+            zp_friction_hold h;
+            if (s->stuck) {
+                s->stuck = 0;
+                snap_rest(s);
+                if (hold_now(s, t, &h)) {
+                    return fail(s, r, t, "the forces at rest cannot be computed");
+                }
+                s->slide = h.tangential > 0 ? -1 : 1;
+            } else {
+                int end = stick_rule(s, t, r, &dir);
+                if (end) {
+                    return stick_end(end);
+                }
             }
-            /* at rest exactly: a residual x' of the root's tolerance would set the friction
-               against the wrong way and bring the root straight back, at the same t */
-            zp_chain rest = chain_of(s, s->y);
-            rest.v[0] = rest.v[1] = 0;
-            double wk[ZP_W_MAX];
-            memcpy(wk, s->y + s->w0, sizeof *wk * m->nwork);
-            s->form->from_chain(m, &rest, wk, s->y);
             if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
                 return fail(s, r, t, "the integrator could not restart at rest");
             }
@@ -691,6 +830,8 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_TRAPPED_AT_KINK);
             return ZP_OK;
         }
+        /* friction now opposes the way it leaves the kink */
+        s->slide = departure(s, t, s->y);
         if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
             return fail(s, r, t, "the integrator could not restart after the kink");
         }

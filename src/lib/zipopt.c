@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "estimate.h"
 #include "prep.h"
 #include "robust.h"
 #include "scene_read.h"
@@ -27,7 +28,7 @@ _Static_assert(_Generic((sig_atomic_t)0, int : 1, default : 0), "sig_atomic_t is
 static const char *const run_keys[] = {
     "time",    "x",         "speed",  "died_link", "kinks",           "e_initial",
     "e_final", "w_drive",   "w_damp", "e_impulse", "energy_residual", "constraint_residual",
-    "steps",   "rhs_evals", "wall_s"};
+    "steps",   "rhs_evals", "wall_s", "w_drag",    "w_fric"};
 #define NRUN_KEYS ((int)(sizeof run_keys / sizeof *run_keys))
 static const char *const search_keys[] = {"found",       "time",       "angle",      "evals",
                                           "feasible",    "failed",     "threads",    "wall_s",
@@ -301,11 +302,13 @@ static void run_numbers(const zp_result *r, double *v) {
                         r->w_drive,
                         r->w_damp,
                         r->e_impulse,
-                        r->e_final - r->e_initial - r->w_drive + r->w_damp + r->e_impulse,
+                        zp_estimate_energy_residual(r),
                         r->constraint_residual,
                         (double)r->steps,
                         (double)r->rhs_evals,
-                        r->wall_s};
+                        r->wall_s,
+                        r->w_drag,
+                        r->w_fric};
     _Static_assert(sizeof n / sizeof *n == NRUN_KEYS, "one number per key");
     memcpy(v, n, sizeof n);
 }
