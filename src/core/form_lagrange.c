@@ -207,7 +207,7 @@ static inline int friction_terms(const zp_model *m, const zp_drive_now *dn, doub
         q = -qdd[0] / u[0];
         *hold = q / sq;
     } else {
-        /* the simulator's way, else x''s, from rest against the motion it starts */
+        /* the way the simulator keeps, else x's sign; from rest against the motion it starts */
         double dir = dn->slide ? dn->slide : xd != 0 ? xd : qdd[0];
         double cf = -m->mu * ((dir > 0) - (dir < 0)) * sq;
         /* N >= 0 needs 1 - cf nu > 0, N < 0 needs 1 + cf nu > 0: the one solution of the
