@@ -169,7 +169,7 @@ static int column(const char *header, const char *name) {
 }
 
 /* plot_run.dat against the rows: time and every centre of mass from state.c */
-static void check_run_data(const char *dir, const zp_model *m, const zp_rows *rows) {
+static void check_run_data(const char *dir, const zp_model *m, const zp_row_store *rows) {
     char path[2048];
     snprintf(path, sizeof path, "%s/plot_run.dat", dir);
     FILE *f = fopen(path, "r");
@@ -196,7 +196,7 @@ static void check_run_data(const char *dir, const zp_model *m, const zp_rows *ro
         }
         double com[ZP_MAX_LINKS + 1][2];
         zp_row row;
-        zp_rows_get(rows, k, &row);
+        zp_row_store_get(rows, k, &row);
         zp_state_com(m, &row.c, com);
         bad += fabs(v[ct] - row.t) > DATA_TOL * fmax(1, row.t);
         for (int b = 0; b <= m->nlink; b++) {
@@ -263,7 +263,7 @@ static void test_figures(void) {
     zp_plot_frames_input(&po, &in);
     CHECK(s && zp_sim_run(m, s, &in, &r) == ZP_OK);
     CHECK(r.outcome == ZP_OUTCOME_FINISHED);
-    const zp_rows *rows = zp_sim_rows(s);
+    const zp_row_store *rows = zp_sim_rows(s);
 
     CHECK(zp_plot_parse_size("480x200", &po, why, sizeof why) == 0);
     po.animate = 1;

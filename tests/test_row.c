@@ -57,22 +57,22 @@ static void test_round_trip(void) {
             memset(&m, 0, sizeof m);
             m.nlink = nlink;
             m.nwork = nwork;
-            zp_rows t;
-            CHECK(zp_rows_init(&t, &m, NROWS) == 0);
+            zp_row_store t;
+            CHECK(zp_row_store_init(&t, &m, NROWS) == 0);
             static zp_row put[NROWS];
             for (int k = 0; k < NROWS; k++) {
                 random_row(&m, &put[k]);
-                zp_rows_put(&t, &put[k]);
+                zp_row_store_put(&t, &put[k]);
             }
             CHECK(t.n == NROWS);
             for (int k = 0; k < NROWS; k++) {
                 zp_row got;
                 memset(&got, 0xff, sizeof got); /* whatever was there before is overwritten */
-                zp_rows_get(&t, k, &got);
+                zp_row_store_get(&t, k, &got);
                 CHECK(same_row(&got, &put[k]));
-                CHECK(zp_rows_t(&t, k) == put[k].t);
+                CHECK(zp_row_store_t(&t, k) == put[k].t);
             }
-            zp_rows_free(&t);
+            zp_row_store_free(&t);
             CHECK(t.v == NULL && t.n == 0);
         }
     }
@@ -170,17 +170,17 @@ static void test_run_rows(void) {
     CHECK(r.outcome == ZP_OUTCOME_FINISHED && r.ncross == 2);
     int ns;
     const zp_row *smp = zp_sim_samples(s, &ns);
-    const zp_rows *rows = zp_sim_rows(s);
+    const zp_row_store *rows = zp_sim_rows(s);
     CHECK(ns > 1000 && rows->n == ns + 1); /* and the end */
     int same = 1;
     for (int k = 0; k < ns && k < rows->n; k++) {
         zp_row got;
-        zp_rows_get(rows, k, &got);
+        zp_row_store_get(rows, k, &got);
         same &= same_row(&got, &smp[k]);
     }
     CHECK(same);
     zp_row end;
-    zp_rows_get(rows, rows->n - 1, &end);
+    zp_row_store_get(rows, rows->n - 1, &end);
     CHECK(end.t == r.time && end.c.q[0] == r.x);
     zp_sim_free(s);
     zp_model_free(m);

@@ -46,21 +46,21 @@ void zp_row_derive(const zp_model *m, const zp_row *r, zp_row_view *v) {
    coordinates and rates, the joint forces and the body accelerations */
 enum { ROW_T, ROW_SEC, ROW_E_IMPULSE, ROW_NORMAL, ROW_HOLD, ROW_WORK };
 
-int zp_rows_init(zp_rows *t, const zp_model *m, int cap) {
+int zp_row_store_init(zp_row_store *t, const zp_model *m, int cap) {
     int nq = 2 + m->nlink;
-    *t = (zp_rows){.cap = cap, .nlink = m->nlink, .nwork = m->nwork};
+    *t = (zp_row_store){.cap = cap, .nlink = m->nlink, .nwork = m->nwork};
     t->stride = ROW_WORK + m->nwork + 2 * nq + 2 * m->nlink + 2 * (m->nlink + 1);
     t->v = malloc(sizeof *t->v * (size_t)t->stride * (size_t)cap);
     return t->v ? 0 : -1;
 }
 
-void zp_rows_free(zp_rows *t) {
+void zp_row_store_free(zp_row_store *t) {
     free(t->v);
     t->v = NULL;
     t->n = t->cap = 0;
 }
 
-void zp_rows_put(zp_rows *t, const zp_row *r) {
+void zp_row_store_put(zp_row_store *t, const zp_row *r) {
     double *p = t->v + (size_t)t->n++ * (size_t)t->stride;
     int nq = 2 + t->nlink;
     p[ROW_T] = r->t;
@@ -77,7 +77,7 @@ void zp_rows_put(zp_rows *t, const zp_row *r) {
     memcpy(p + 2 * nq + 2 * t->nlink, r->loads.acc, sizeof *p * 2 * (t->nlink + 1));
 }
 
-void zp_rows_get(const zp_rows *t, int k, zp_row *r) {
+void zp_row_store_get(const zp_row_store *t, int k, zp_row *r) {
     const double *p = t->v + (size_t)k * (size_t)t->stride;
     int nq = 2 + t->nlink;
     memset(r, 0, sizeof *r);
@@ -99,6 +99,6 @@ void zp_rows_get(const zp_rows *t, int k, zp_row *r) {
     memcpy(r->loads.acc, p + 2 * nq + 2 * t->nlink, sizeof *p * 2 * (t->nlink + 1));
 }
 
-double zp_rows_t(const zp_rows *t, int k) {
+double zp_row_store_t(const zp_row_store *t, int k) {
     return t->v[(size_t)k * (size_t)t->stride + ROW_T];
 }

@@ -45,7 +45,7 @@ struct zp_sim {
     int nbreak;
     int sec;
     double e_impulse; /* J, cumulative */
-    zp_rows rows;     /* owned; cap 0 without a trajectory */
+    zp_row_store rows; /* owned; cap 0 without a trajectory */
     zp_row *samples; /* owned, cap_samples */
     int nsamples, cap_samples;
     zp_row *frames; /* owned, cap_frames */
@@ -132,7 +132,7 @@ void zp_sim_free(zp_sim *s) {
     free(s->ydot);
     free(s->yout);
     free(s->roots);
-    zp_rows_free(&s->rows);
+    zp_row_store_free(&s->rows);
     free(s->samples);
     free(s->frames);
     free(s->cross);
@@ -179,8 +179,9 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
     if (o->peaks) {
         s->brent = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
     }
-    int rows_failed = o->output_dt > 0 &&
-                      zp_rows_init(&s->rows, m, (int)fmin(o->t_max / o->output_dt + 2, ZP_MAX_ROWS + 2));
+    int rows_failed =
+        o->output_dt > 0 &&
+        zp_row_store_init(&s->rows, m, (int)fmin(o->t_max / o->output_dt + 2, ZP_MAX_ROWS + 2));
     if (!s->course || !s->fwork || !s->y || !s->ydot || !s->yout || !s->roots || !s->cross ||
         !s->mwork || rows_failed || (o->peaks && !s->brent)) {
         zp_sim_free(s);
@@ -391,7 +392,7 @@ static void emit_outputs(zp_sim *s, const zp_input *in, double t_upto, int dense
         }
         zp_row r = row_of(s, to, y);
         if (row) {
-            zp_rows_put(&s->rows, &r);
+            zp_row_store_put(&s->rows, &r);
             oc->next_row = s->rows.n * s->o.output_dt;
         }
         if (sample) {
@@ -521,9 +522,10 @@ static void finish_result(zp_sim *s, zp_result *r, double t, zp_outcome o, zp_st
     }
     r->e_impulse = s->e_impulse;
     /* the last row shows the end state */
-    if (s->rows.n < s->rows.cap && (s->rows.n == 0 || zp_rows_t(&s->rows, s->rows.n - 1) < t)) {
+    if (s->rows.n < s->rows.cap &&
+        (s->rows.n == 0 || zp_row_store_t(&s->rows, s->rows.n - 1) < t)) {
         zp_row last = row_of(s, t, s->y);
-        zp_rows_put(&s->rows, &last);
+        zp_row_store_put(&s->rows, &last);
     }
     r->peaks = s->peaks; /* after the last row, whose loads count too */
 }
@@ -719,7 +721,7 @@ zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     return st;
 }
 
-const zp_rows *zp_sim_rows(const zp_sim *s) {
+const zp_row_store *zp_sim_rows(const zp_sim *s) {
     return &s->rows;
 }
 

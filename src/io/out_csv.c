@@ -33,11 +33,11 @@ static void header(FILE *f, const zp_model *m) {
     fputc('\n', f);
 }
 
-void zp_out_csv_trajectory(FILE *f, const zp_model *m, const zp_rows *rows) {
+void zp_out_csv_trajectory(FILE *f, const zp_model *m, const zp_row_store *rows) {
     header(f, m);
     for (int k = 0; k < rows->n; k++) {
         zp_row row;
-        zp_rows_get(rows, k, &row);
+        zp_row_store_get(rows, k, &row);
         const zp_row *r = &row;
         zp_row_view v;
         zp_row_derive(m, r, &v);

@@ -341,7 +341,7 @@ zp_status zp_plot_start(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_r
                         size_t errlen) {
     memset(j, 0, sizeof *j);
     memset(info, 0, sizeof *info);
-    const zp_rows *rows = zp_sim_rows(s);
+    const zp_row_store *rows = zp_sim_rows(s);
     kinks kk;
     kk.c = zp_sim_crossings(s, &kk.n);
     if (rows->n < 1) {
@@ -362,7 +362,7 @@ zp_status zp_plot_start(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_r
     zp_plot_grow(&both, pb.x0, pb.y0);
     zp_plot_grow(&both, pb.x1, pb.y1);
     zp_row end, *last = &end;
-    zp_rows_get(rows, rows->n - 1, last);
+    zp_row_store_get(rows, rows->n - 1, last);
     const char *names[] = {"course.gp", "energy.gp", "angles.gp", "loads.gp"};
     FILE *gp[4];
     for (int k = 0; k < 4; k++) {

@@ -31,14 +31,14 @@ zp_plot_pose zp_plot_pose_of_row(const zp_model *m, const zp_row *r) {
     return pose_of(m, r->t, r->sec, &r->c);
 }
 
-zp_plot_pose zp_plot_pose_at_t(const zp_model *m, const zp_rows *rows, double t) {
+zp_plot_pose zp_plot_pose_at_t(const zp_model *m, const zp_row_store *rows, double t) {
     int k = 0;
-    while (k + 1 < rows->n && zp_rows_t(rows, k) < t) {
+    while (k + 1 < rows->n && zp_row_store_t(rows, k) < t) {
         k++;
     }
     zp_row ra, rb, *a = &ra, *b = &rb;
-    zp_rows_get(rows, k ? k - 1 : 0, a);
-    zp_rows_get(rows, k, b);
+    zp_row_store_get(rows, k ? k - 1 : 0, a);
+    zp_row_store_get(rows, k, b);
     double u = b->t > a->t ? (t - a->t) / (b->t - a->t) : 1;
     /* positions interpolated linearly: enough for an animation's moving picture */
     zp_chain c;
@@ -76,7 +76,7 @@ zp_plot_box zp_plot_write_course(FILE *f, const zp_model *m) {
 
 /* plot_run.dat: one line per trajectory row, named columns; returns the extent of the
    centres-of-mass paths */
-zp_plot_box zp_plot_write_run(FILE *f, const zp_model *m, const zp_rows *rows) {
+zp_plot_box zp_plot_write_run(FILE *f, const zp_model *m, const zp_row_store *rows) {
     zp_plot_box b = {HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL};
     fputs("t section x y speed", f);
     for (int i = 0; i <= m->nlink; i++) {
@@ -96,7 +96,7 @@ zp_plot_box zp_plot_write_run(FILE *f, const zp_model *m, const zp_rows *rows) {
     double e0 = 0;
     for (int k = 0; k < rows->n; k++) {
         zp_row row;
-        zp_rows_get(rows, k, &row);
+        zp_row_store_get(rows, k, &row);
         const zp_row *r = &row;
         zp_row_view v;
         zp_row_derive(m, r, &v);

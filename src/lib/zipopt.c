@@ -264,7 +264,7 @@ static void row_values(const zp_model *m, const zp_row *r, double *out) {
 /* the run's rows and kink crossings copied out of the workspace, which the next run reuses */
 static int copy_out(zipopt_run *u, const zp_model *m, const zp_sim *sim) {
     int nk;
-    const zp_rows *rows = zp_sim_rows(sim);
+    const zp_row_store *rows = zp_sim_rows(sim);
     int nrow = rows->n;
     const zp_crossing *cr = zp_sim_crossings(sim, &nk);
     u->nlink = m->nlink;
@@ -277,7 +277,7 @@ static int copy_out(zipopt_run *u, const zp_model *m, const zp_sim *sim) {
     u->nrow = nrow;
     for (int i = 0; i < nrow; i++) {
         zp_row row;
-        zp_rows_get(rows, i, &row);
+        zp_row_store_get(rows, i, &row);
         row_values(m, &row, u->traj + (size_t)i * (size_t)u->ncol);
     }
     u->nkink = nk;
