@@ -248,9 +248,7 @@ static int write_outputs(zp_tx *t, const zp_report *r, zp_sim *best_sim) {
     zp_schedule best = zp_schedule_with(r->shape, r->res->force);
     zp_report_write_schedule(ini, r->sc, &best, note);
     zp_report_write_json(js, r);
-    int nrows;
-    const zp_row *rows = zp_sim_rows(best_sim, &nrows);
-    zp_out_csv_trajectory(csv, r->m, rows, nrows);
+    zp_out_csv_trajectory(csv, r->m, zp_sim_rows(best_sim));
     /* report.html: report.md as one page a person can share, its figures inside it */
     char title[300];
     snprintf(title, sizeof title, "zipopt: best forcing, %s", r->sc->name);

@@ -214,9 +214,7 @@ static int write_files(zp_tx *t, const zp_model *m, zp_sim *s, const zp_result *
         fprintf(stderr, "zipopt simulate: %s; nothing was written\n", err);
         return -1;
     }
-    int nrows;
-    const zp_row *rows = zp_sim_rows(s, &nrows);
-    zp_out_csv_trajectory(csv, m, rows, nrows);
+    zp_out_csv_trajectory(csv, m, zp_sim_rows(s));
     zp_out_json_result(js, m, r, s, meta);
     return 0;
 }

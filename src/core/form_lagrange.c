@@ -114,10 +114,11 @@ static void lagrange_relative(const zp_model *m, const double *y, double *phi, d
 }
 
 /* centre-of-mass accelerations, joint reactions and normal force from q''; fx, fy the force on
-   the system other than gravity and the course, fd NULL or the drag on each body */
+   the system other than gravity and the course, fd NULL or the drag on each body; sn, cs the
+   sines and cosines of the angles, which the equations computed already */
 static void lagrange_loads(const zp_model *m, const zp_drive_now *dn, double fx, double fy,
-                           double (*fd)[2], const double *y, const double *qdd,
-                           zp_loads *ld) {
+                           double (*fd)[2], const double *y, const double *qdd, const double *sn,
+                           const double *cs, zp_loads *ld) {
     int n = m->nlink, nq = n + 1;
     double xd = y[nq], fp = dn->tr.fp;
     double ax = qdd[0], ay = fp * qdd[0] + dn->tr.fpp * xd * xd; /* joint above the link */
@@ -125,7 +126,7 @@ static void lagrange_loads(const zp_model *m, const zp_drive_now *dn, double fx,
     ld->acc[0][1] = ay;
     double sx = m->m0 * ax, sy = m->m0 * (ay + m->g); /* sum of m (a - g) */
     for (int i = 0; i < n; i++) {
-        double th = y[1 + i], w = y[nq + 1 + i], s = sin(th), c = cos(th);
+        double w = y[nq + 1 + i], s = sn[i], c = cs[i];
         double tx = c * qdd[1 + i] - s * w * w, ty = s * qdd[1 + i] + c * w * w;
         ld->acc[i + 1][0] = ax + m->half[i] * tx;
         ld->acc[i + 1][1] = ay + m->half[i] * ty;
@@ -227,11 +228,13 @@ static inline int friction_terms(const zp_model *m, const zp_drive_now *dn, doub
 
 /* the rates both paths end with: q' and q'' (1 on a non-finite acceleration), the work
    integrals (power of the drive, dampers, and with physics of drag and friction: p[0..2]),
-   and the loads when asked for; phys is the model's effects (a constant where inlined) */
+   and the loads when asked for (s, c: the angles' sines and cosines); phys is the model's
+   effects (a constant where inlined) */
 __attribute__((always_inline)) static inline int
 store_rates(const zp_model *m, const zp_drive_now *dn, unsigned phys, const double *y,
             const double *qdd, double xd, double fp, const double p[3], const double f[2],
-            double (*fd)[2], double hold, double *ydot, zp_loads *loads) {
+            double (*fd)[2], double hold, const double *s, const double *c, double *ydot,
+            zp_loads *loads) {
     int nq = m->nlink + 1;
     for (int i = 0; i < nq; i++) {
         ydot[i] = y[nq + i];
@@ -247,7 +250,7 @@ store_rates(const zp_model *m, const zp_drive_now *dn, unsigned phys, const doub
         ydot[2 * nq + 3] = p[2];
     }
     if (loads) {
-        lagrange_loads(m, dn, f[0], f[1], phys & ZP_PHYS_DRAG ? fd : NULL, y, qdd, loads);
+        lagrange_loads(m, dn, f[0], f[1], phys & ZP_PHYS_DRAG ? fd : NULL, y, qdd, s, c, loads);
         loads->hold = hold;
     }
     return 0;
@@ -316,7 +319,7 @@ static int lagrange_rhs_general(const zp_model *m, void *work, const zp_drive_no
     }
     unsigned phys = m->physics & (ZP_PHYS_DRAG | ZP_PHYS_ROLLING); /* the work integrals' */
     return store_rates(m, dn, phys, y, qdd, xd, fp, (const double[]){pdamp, pdrag, pfric}, f, fd,
-                       hold, ydot, loads);
+                       hold, s, c, ydot, loads);
 }
 
 /* M's Cholesky factor in its lower triangle (M SPD of size nq, lower triangle read); 0, or 1
@@ -427,7 +430,7 @@ __attribute__((always_inline)) static inline int fast_rhs(const zp_model *m,
         }
     }
     return store_rates(m, dn, phys, y, qdd, xd, fp, (const double[]){pdamp, pdrag, pfric}, f, fd,
-                       hold, ydot, loads);
+                       hold, s, c, ydot, loads);
 }
 
 #define FAST_RHS_P(N, P, NAME)                                                                     \

@@ -50,8 +50,7 @@ struct zp_sim {
     int nbreak;
     int sec;
     double e_impulse; /* J, cumulative */
-    zp_row *rows;     /* owned, cap_rows */
-    int nrows, cap_rows;
+    zp_row_store rows; /* owned; cap 0 without a trajectory */
     zp_row *samples; /* owned, cap_samples */
     int nsamples, cap_samples;
     zp_row *frames; /* owned, cap_frames */
@@ -167,7 +166,7 @@ void zp_sim_free(zp_sim *s) {
     free(s->ydot);
     free(s->yout);
     free(s->roots);
-    free(s->rows);
+    zp_row_store_free(&s->rows);
     free(s->samples);
     free(s->frames);
     free(s->cross);
@@ -216,12 +215,11 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
     if (o->peaks) {
         s->brent = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
     }
-    if (o->output_dt > 0) {
-        s->cap_rows = (int)fmin(o->t_max / o->output_dt + 2, ZP_MAX_ROWS + 2);
-        s->rows = malloc(sizeof *s->rows * s->cap_rows);
-    }
+    int rows_failed =
+        o->output_dt > 0 &&
+        zp_row_store_init(&s->rows, m, (int)fmin(o->t_max / o->output_dt + 2, ZP_MAX_ROWS + 2));
     if (!s->course || !s->fwork || !s->y || !s->ydot || !s->yout || !s->roots || !s->cross ||
-        !s->mwork || (o->output_dt > 0 && !s->rows) || (o->peaks && !s->brent)) {
+        !s->mwork || rows_failed || (o->peaks && !s->brent)) {
         zp_sim_free(s);
         return NULL;
     }
@@ -257,15 +255,12 @@ static zp_row row_of(zp_sim *s, double t, const double *y) {
     zp_load_peaks *p = &s->peaks;
     p->normal_min = fmin(p->normal_min, r.loads.normal);
     p->normal_max = fmax(p->normal_max, r.loads.normal);
-    double joint[ZP_MAX_LINKS], acc_g[ZP_MAX_LINKS];
-    zp_row_loads(s->m, &r.loads, joint, acc_g);
-    for (int i = 0; i < s->m->nlink; i++) {
-        p->joint[i] = fmax(p->joint[i], joint[i]);
-        p->acc_g[i] = fmax(p->acc_g[i], acc_g[i]);
-    }
+    zp_row_loads_max(s->m, &r.loads, p->joint, p->acc_g);
     for (int a = 0; a < s->m->narc; a++) {
         zp_arc_peaks *ap = &s->arc_peaks[a];
         if (r.c.q[0] >= s->m->arc[a].x1 && r.c.q[0] <= s->m->arc[a].x2) {
+            double joint[ZP_MAX_LINKS], acc_g[ZP_MAX_LINKS];
+            zp_row_loads(s->m, &r.loads, joint, acc_g);
             ap->normal_min = ap->visited ? fmin(ap->normal_min, r.loads.normal) : r.loads.normal;
             ap->normal_max = ap->visited ? fmax(ap->normal_max, r.loads.normal) : r.loads.normal;
             for (int i = 0; i < s->m->nlink; i++) {
@@ -376,7 +371,7 @@ static double next_frame_t(const zp_input *in, const out_cursor *oc) {
 
 /* the next output time (row, sample or frame), or INFINITY */
 static double next_output(const zp_sim *s, const zp_input *in, const out_cursor *oc) {
-    double t = s->rows && s->nrows < s->cap_rows ? oc->next_row : INFINITY;
+    double t = s->rows.n < s->rows.cap ? oc->next_row : INFINITY;
     t = fmin(t, next_frame_t(in, oc));
     return oc->next_sample < in->nsample ? fmin(t, in->sample_t[oc->next_sample]) : t;
 }
@@ -413,15 +408,15 @@ static void emit_outputs(zp_sim *s, const zp_input *in, double t_upto, int dense
             }
             oc->next_frame++;
         }
-        int row = s->rows && s->nrows < s->cap_rows && oc->next_row == to;
+        int row = s->rows.n < s->rows.cap && oc->next_row == to;
         int sample = oc->next_sample < in->nsample && in->sample_t[oc->next_sample] == to;
         if (!row && !sample) {
             continue;
         }
         zp_row r = row_of(s, to, y);
         if (row) {
-            s->rows[s->nrows++] = r;
-            oc->next_row = s->nrows * s->o.output_dt;
+            zp_row_store_put(&s->rows, &r);
+            oc->next_row = s->rows.n * s->o.output_dt;
         }
         if (sample) {
             if (push_row(&s->samples, &s->nsamples, &s->cap_samples, r)) {
@@ -550,8 +545,10 @@ static void finish_result(zp_sim *s, zp_result *r, double t, zp_outcome o, zp_st
     }
     r->e_impulse = s->e_impulse;
     /* the last row shows the end state */
-    if (s->rows && s->nrows < s->cap_rows && (s->nrows == 0 || s->rows[s->nrows - 1].t < t)) {
-        s->rows[s->nrows++] = row_of(s, t, s->y);
+    if (s->rows.n < s->rows.cap &&
+        (s->rows.n == 0 || zp_row_store_t(&s->rows, s->rows.n - 1) < t)) {
+        zp_row last = row_of(s, t, s->y);
+        zp_row_store_put(&s->rows, &last);
     }
     r->peaks = s->peaks; /* after the last row, whose loads count too */
 }
@@ -856,7 +853,7 @@ zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     s->nbreak = zp_schedule_breaks(in->sched, s->breaks, ZP_SCHED_MAX_BREAKS);
     s->sec = 0;
     s->e_impulse = 0;
-    s->nrows = s->nsamples = s->nframes = s->ncross = 0;
+    s->rows.n = s->nsamples = s->nframes = s->ncross = 0;
     s->peaks = (zp_load_peaks){.normal_min = INFINITY, .normal_max = -INFINITY};
     memset(s->arc_peaks, 0, sizeof s->arc_peaks);
     zp_status st = run(m, s, in, r);
@@ -865,9 +862,8 @@ zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     return st;
 }
 
-const zp_row *zp_sim_rows(const zp_sim *s, int *n) {
-    *n = s->nrows;
-    return s->rows;
+const zp_row_store *zp_sim_rows(const zp_sim *s) {
+    return &s->rows;
 }
 
 const zp_row *zp_sim_samples(const zp_sim *s, int *n) {

@@ -264,8 +264,9 @@ static void row_values(const zp_model *m, const zp_row *r, double *out) {
 
 /* the run's rows and kink crossings copied out of the workspace, which the next run reuses */
 static int copy_out(zipopt_run *u, const zp_model *m, const zp_sim *sim) {
-    int nrow, nk;
-    const zp_row *rows = zp_sim_rows(sim, &nrow);
+    int nk;
+    const zp_row_store *rows = zp_sim_rows(sim);
+    int nrow = rows->n;
     const zp_crossing *cr = zp_sim_crossings(sim, &nk);
     u->nlink = m->nlink;
     u->ncol = columns(u);
@@ -276,7 +277,9 @@ static int copy_out(zipopt_run *u, const zp_model *m, const zp_sim *sim) {
     }
     u->nrow = nrow;
     for (int i = 0; i < nrow; i++) {
-        row_values(m, &rows[i], u->traj + (size_t)i * (size_t)u->ncol);
+        zp_row row;
+        zp_row_store_get(rows, i, &row);
+        row_values(m, &row, u->traj + (size_t)i * (size_t)u->ncol);
     }
     u->nkink = nk;
     for (int i = 0; i < nk; i++) {
