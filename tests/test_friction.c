@@ -112,10 +112,13 @@ static void check_stick_release(int method, int formulation, double *t_held) {
     CHECK_NEAR(r->time, *t_held, AGREE_DT);
     CHECK(r->steps < FEW_STEPS);
     /* an earlier hold of at least 0.1 s that let go: x still over 10 rows, then moving */
-    int n, held_rows = 0, released = 0;
-    const zp_row *row = zp_sim_rows(*tu_last_sim(), &n);
-    for (int i = 1; i < n && row[i].t < r->time - 1; i++) {
-        int still = fabs(row[i].c.q[0] - row[i - 1].c.q[0]) < 1e-12;
+    int held_rows = 0, released = 0;
+    const zp_row_store *rows = zp_sim_rows(*tu_last_sim());
+    zp_row prev, row;
+    zp_row_store_get(rows, 0, &prev);
+    for (int i = 1; i < rows->n && zp_row_store_t(rows, i) < r->time - 1; i++, prev = row) {
+        zp_row_store_get(rows, i, &row);
+        int still = fabs(row.c.q[0] - prev.c.q[0]) < 1e-12;
         released |= !still && held_rows >= 10;
         held_rows = still ? held_rows + 1 : 0;
     }
