@@ -62,6 +62,29 @@ class Simulate(unittest.TestCase):
                 self.assertEqual(list(s.forces), [12.5, 30, 7])
         self.assertEqual(r.time, json.loads(js)["time"])
 
+    def test_loads_and_limits_equal_the_program(self):
+        # every quantity [limits] judge, as `zipopt simulate --json` reports it, bit for bit
+        scene = os.path.join(SRC, "config", "seed_robust.ini")
+        for forces in ([14.81, 88.55, 241.68], [100, 100, 100]):
+            r = zipopt.simulate(scene, forces=forces)
+            with tempfile.TemporaryDirectory() as out:
+                js = subprocess.run([os.environ["ZIPOPT_EXE"], "simulate", scene, "--force",
+                                     ",".join(map(str, forces)), "--json", "--out", out],
+                                    check=True, capture_output=True, text=True).stdout
+            prog = json.loads(js)
+            self.assertEqual(r.peak_g, max(prog["loads"]["acc_peak_g"]))
+            self.assertEqual(r.peak_joint_force, max(prog["loads"]["joint_peak"]))
+            self.assertEqual(r.normal_min, prog["loads"]["normal_min"])
+            self.assertEqual(r.normal_max, prog["loads"]["normal_max"])
+            self.assertEqual(r.peak_g, prog["limits"]["max_g"]["reached"])
+            self.assertEqual(r.rejected_steps, prog["stats"]["rejected_steps"])
+            arrival = prog["limits"]["max_arrival_speed"]["reached"]
+            if prog["outcome"] == "finished":
+                self.assertEqual(r.arrival_kmh, arrival)
+                self.assertAlmostEqual(r.arrival_kmh, 3.6 * prog["speed"], places=9)
+            else:  # did not arrive: no arrival speed
+                self.assertTrue(np.isnan(r.arrival_kmh) and arrival is None)
+
     def test_energy_and_trajectory(self):
         r = zipopt.simulate(SEED, forces=[10, 10, 10])
         tr = r.trajectory
