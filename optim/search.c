@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "basins.h"
 #include "search_int.h"
 
 #define NSTARTS 4         /* local polishes per round, from distinct good points */
@@ -166,28 +167,75 @@ static int fresh(const zp_search *S, const double *f) {
     return 1;
 }
 
-/* up to nmax archive points, best first, each distinct from the others chosen and fresh */
-static int pick_starts(zp_search *S, int *idx, int nmax) {
+/* f may start a polish: fresh and distinct from the n starts chosen in idx */
+static int ok_start(const zp_search *S, const double *f, const int *idx, int n) {
+    int ok = fresh(S, f);
+    for (int j = 0; j < n && ok; j++) {
+        ok = distinct(S, f, zp_archive_f(S, idx[j]));
+    }
+    return ok;
+}
+
+/* after the n chosen in idx, archive points up to nmax, best first, each an ok_start */
+static int pick_starts(zp_search *S, int *idx, int n, int nmax) {
     ranked *r = malloc(sizeof *r * (S->a.n ? S->a.n : 1));
     if (!r) {
-        return 0;
+        return n;
     }
     for (int i = 0; i < S->a.n; i++) {
         r[i] = (ranked){&S->a.e[i], zp_archive_f(S, i), S->n, i};
     }
     qsort(r, S->a.n, sizeof *r, by_rank);
-    int n = 0;
     for (int i = 0; i < S->a.n && n < nmax; i++) {
-        int ok = fresh(S, r[i].f);
-        for (int j = 0; j < n && ok; j++) {
-            ok = distinct(S, r[i].f, zp_archive_f(S, idx[j]));
-        }
-        if (ok) {
+        if (ok_start(S, r[i].f, idx, n)) {
             idx[n++] = r[i].i;
         }
     }
     free(r);
     return n;
+}
+
+/* 1 when a polish started or ended in island is of the map m */
+static int polished(const zp_search *S, const zp_islands *m, int is) {
+    for (int j = 0; j < m->nnear; j++) {
+        if (m->of[j] == is && !fresh(S, zp_archive_f(S, m->pt[j]))) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* design note: the starts come from the map's islands, not from the best points alone: the best
+   points of a thin survivable set crowd into one island, and polishes from them all reach the
+   same optimum while faster islands nearby are never visited. Half the slots go to the best
+   islands no polish has visited, the rest to the best islands again (a thin island's optimum is
+   often out of one polish's reach), each island at most once a round; then the best fresh
+   points anywhere (the whole map when nothing nearly survives). */
+static int island_starts(zp_search *S, int *idx, int nmax) {
+    zp_islands m;
+    int n = 0;
+    if (zp_islands_map(S, &m)) {
+        return pick_starts(S, idx, 0, nmax);
+    }
+    char *used = calloc(m.n ? m.n : 1, 1);
+    for (int pass = 0; used && pass < 2; pass++) {
+        int quota = pass == 0 ? nmax / 2 : nmax;
+        for (int is = 0; is < m.n && n < quota; is++) {
+            if (used[is] || (pass == 0 && polished(S, &m, is))) {
+                continue;
+            }
+            for (int j = 0; j < m.nnear; j++) {
+                if (m.of[j] == is && ok_start(S, zp_archive_f(S, m.pt[j]), idx, n)) {
+                    idx[n++] = m.pt[j];
+                    used[is] = 1;
+                    break;
+                }
+            }
+        }
+    }
+    free(used);
+    zp_islands_free(&m);
+    return pick_starts(S, idx, n, nmax);
 }
 
 /* the baseline: the best survivable constant push among archive points [n0, a.n), and the
@@ -254,7 +302,7 @@ static zp_status polish_round(zp_search *S, char *err, size_t errlen) {
         S->pol = p;
         S->polcap = cap;
     }
-    int idx[NSTARTS], nstart = pick_starts(S, idx, NSTARTS);
+    int idx[NSTARTS], nstart = island_starts(S, idx, NSTARTS);
     zp_polish_job jobs[NSTARTS + 1];
     zp_polish_rec base_rec;
     double diag_step = DIAG_STEP;
@@ -268,6 +316,13 @@ static zp_status polish_round(zp_search *S, char *err, size_t errlen) {
                                      &S->pol[S->npol + i]};
     }
     zp_status st = zp_polish_batch(S, algos[S->o->algo].local, jobs, nj, err, errlen);
+    /* the ends join the map: the islands they reached count as visited */
+    for (int i = bdiag >= 0 ? -1 : 0; i < nstart; i++) {
+        const zp_polish_rec *p = i < 0 ? &base_rec : &S->pol[S->npol + i];
+        if (p->n > 0) {
+            zp_archive_add(S, p->end, &p->e);
+        }
+    }
     S->npol += nstart;
     zp_search_result *res = S->res;
     if (bdiag >= 0 && base_rec.n > 0 && zp_objective_feasible(&base_rec.e) &&
@@ -280,23 +335,60 @@ static zp_status polish_round(zp_search *S, char *err, size_t errlen) {
     return st;
 }
 
-/* the evidence: distinct survivable polish ends, and those that reached the best */
+/* the evidence: distinct survivable polish ends, those that reached the best, the distinct
+   minima of every polish and what they leave unseen */
 static void evidence(zp_search *S) {
     zp_search_result *res = S->res;
     res->nstarts = S->npol;
+    res->nbasins = res->nreached = res->nminima = 0;
+    int nran = 0;
     for (int j = 0; j < S->npol; j++) {
         const zp_polish_rec *p = &S->pol[j];
-        if (p->n == 0 || !zp_objective_feasible(&p->e)) {
+        if (p->n == 0) {
             continue;
         }
-        int isnew = 1;
+        nran++;
+        int feas = zp_objective_feasible(&p->e), isnew = 1;
         for (int i = 0; i < j && isnew; i++) {
-            isnew = S->pol[i].n == 0 || !zp_objective_feasible(&S->pol[i].e) ||
+            isnew = S->pol[i].n == 0 || zp_objective_feasible(&S->pol[i].e) != feas ||
                     distinct(S, p->end, S->pol[i].end);
+        }
+        res->nminima += isnew;
+        if (!feas) {
+            continue;
         }
         res->nbasins += isnew;
         res->nreached += res->found && p->e.time <= res->best.time * (1 + ZP_SEARCH_REACH);
     }
+    res->unseen = zp_basins_unseen(nran, res->nminima);
+    res->help_evals = 0;
+    if (!(res->unseen < ZP_SEARCH_UNSEEN)) {
+        /* the polishes still needed, at the rate of the costliest round so far */
+        int more = zp_basins_searches_needed(res->nminima, ZP_SEARCH_UNSEEN) - nran;
+        long per = S->round_cost > 0 ? S->round_cost : S->spent;
+        res->help_evals = S->spent + (long)((more + NSTARTS - 1) / NSTARTS) * per;
+    }
+}
+
+/* the islands of the final map, the polish ends in it: how many, how many polished, the best */
+static void islands_seen(zp_search *S) {
+    zp_search_result *res = S->res;
+    zp_islands m;
+    if (zp_islands_map(S, &m)) {
+        return;
+    }
+    res->nislands = m.n;
+    for (int is = 0; is < m.n; is++) {
+        res->npolished += polished(S, &m, is);
+        const zp_island *il = &m.isl[is];
+        if (res->nshown < ZP_SEARCH_ISLANDS && zp_objective_feasible(&S->a.e[il->head])) {
+            int k = res->nshown++;
+            res->island_time[k] = S->a.e[il->head].time;
+            memcpy(res->island_force[k], zp_archive_f(S, il->head), sizeof(double) * S->n);
+            res->island_pts[k] = il->nfeas;
+        }
+    }
+    zp_islands_free(&m);
 }
 
 /* the distinct survivable polish ends, best first, for a warm restart */
@@ -339,6 +431,7 @@ static zp_status rounds(zp_search *S, char *err, size_t errlen) {
     }
     for (int r = 0; r < MAX_ROUNDS; r++) {
         S->round = r;
+        long spent0 = S->spent;
         double before = best_time(res);
         zp_status st = scan_round(S, r, err, errlen);
         if (st == ZP_OK && !zp_search_halted(S)) {
@@ -348,9 +441,14 @@ static zp_status rounds(zp_search *S, char *err, size_t errlen) {
             return st;
         }
         res->nrounds = r + 1;
+        S->round_cost = S->spent - spent0 > S->round_cost ? S->spent - spent0 : S->round_cost;
         double after = best_time(res);
         res->last_gain = isfinite(after) ? (isfinite(before) ? (before - after) / after : 1) : 0;
-        if (r >= 1 && res->found && res->last_gain < ZP_SEARCH_CONV) {
+        /* converged: the round found nothing better and the polishes leave too few basins
+           unseen for another to be likely */
+        evidence(S);
+        if (r >= 1 && res->found && res->last_gain < ZP_SEARCH_CONV &&
+            res->unseen < ZP_SEARCH_UNSEEN) {
             res->converged = 1;
             return ZP_OK;
         }
@@ -426,6 +524,7 @@ zp_status zp_search_run(const zp_objective *ob, const zp_sim_opts *so, const dou
     if (st == ZP_OK) {
         st = rounds(&S, err, errlen);
         evidence(&S);
+        islands_seen(&S);
         keep_ends(&S);
     }
     end(&S);
@@ -527,6 +626,15 @@ zp_status zp_search_warm(const zp_objective *ob, const zp_sim_opts *so, const do
     res->nreached = prev->nreached;
     res->converged = prev->converged;
     res->last_gain = prev->last_gain;
+    res->nminima = prev->nminima;
+    res->unseen = prev->unseen;
+    res->help_evals = prev->help_evals;
+    res->nislands = prev->nislands;
+    res->npolished = prev->npolished;
+    res->nshown = prev->nshown;
+    memcpy(res->island_time, prev->island_time, sizeof res->island_time);
+    memcpy(res->island_force, prev->island_force, sizeof res->island_force);
+    memcpy(res->island_pts, prev->island_pts, sizeof res->island_pts);
     res->nhist = prev->nhist;
     memcpy(res->hist, prev->hist, sizeof *res->hist * prev->nhist);
     end(&S);

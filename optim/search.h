@@ -11,6 +11,9 @@
 #define ZP_SEARCH_REACH 1e-4 /* a polish ending this close (relative time) reached the best */
 #define ZP_SEARCH_CONV 1e-6  /* a round improving the best less than this (relative) converged */
 #define ZP_SEARCH_ENDS 4     /* survivable polish ends kept for a warm restart */
+#define ZP_SEARCH_ISLANDS 4  /* islands reported, best first */
+#define ZP_SEARCH_UNSEEN 0.5 /* expected unvisited basins below which more budget is unlikely
+                                to help */
 
 /* The strategies the search offers: a global phase, then a local polish. */
 typedef struct zp_search_algo {
@@ -77,6 +80,16 @@ typedef struct zp_search_result {
     int budget_out;   /* max_evals ran out before convergence */
     int timed_out;    /* max_time ran out before convergence */
     double last_gain; /* relative improvement of the best in the last completed round */
+    int nminima;      /* distinct minima the polishes ended at, survivable or not */
+    double unseen;    /* Boender-Rinnooy Kan: expected basins not yet found (INFINITY: too few
+                         polishes to say) */
+    long help_evals;  /* about the budget that would bring unseen below ZP_SEARCH_UNSEEN; 0 */
+    int nislands;     /* islands of the map (the best near-survivable points, islands.c) */
+    int npolished;    /* of them, islands a polish ended in */
+    int nshown;       /* survivable islands below, best first */
+    double island_time[ZP_SEARCH_ISLANDS]; /* s, each one's fastest survivable point */
+    double island_force[ZP_SEARCH_ISLANDS][ZP_SCHED_MAX_PARAMS];
+    int island_pts[ZP_SEARCH_ISLANDS];     /* survivable points mapped in it: its size */
     int nhist;
     zp_search_hist hist[ZP_SEARCH_HIST];
 } zp_search_result;
