@@ -22,10 +22,10 @@ void zp_report_convergence(char *buf, size_t n, const zp_search_result *s) {
     } else {
         k = snprintf(buf, n,
                      "%d of %d polishes reached this schedule (within %g %% of its "
-                     "time); they ended at %d distinct survivable schedule%s (%d distinct "
-                     "minima in all)",
+                     "time); they ended at %d distinct survivable schedule%s, in %d "
+                     "basin%s (the map's islands, or apart from them)",
                      s->nreached, s->nstarts, 100 * ZP_SEARCH_REACH, s->nbasins,
-                     s->nbasins == 1 ? "" : "s", s->nminima);
+                     s->nbasins == 1 ? "" : "s", s->nminima, s->nminima == 1 ? "" : "s");
     }
     char unseen[160] = "";
     if (s->nstarts > 0 && isfinite(s->unseen)) {

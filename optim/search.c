@@ -318,9 +318,9 @@ static zp_status polish_round(zp_search *S, char *err, size_t errlen) {
     zp_status st = zp_polish_batch(S, algos[S->o->algo].local, jobs, nj, err, errlen);
     /* the ends join the map: the islands they reached count as visited */
     for (int i = bdiag >= 0 ? -1 : 0; i < nstart; i++) {
-        const zp_polish_rec *p = i < 0 ? &base_rec : &S->pol[S->npol + i];
+        zp_polish_rec *p = i < 0 ? &base_rec : &S->pol[S->npol + i];
         if (p->n > 0) {
-            zp_archive_add(S, p->end, &p->e);
+            p->at = zp_archive_add(S, p->end, &p->e);
         }
     }
     S->npol += nstart;
@@ -335,38 +335,84 @@ static zp_status polish_round(zp_search *S, char *err, size_t errlen) {
     return st;
 }
 
-/* the evidence: distinct survivable polish ends, those that reached the best, the distinct
-   minima of every polish and what they leave unseen */
+/* the basin of polish j's end: its island in the map (island_of: per archive index, -1 outside
+   it), else the first earlier polish whose end is not distinct from it and equally survivable,
+   numbered past the islands */
+static int basin_of(const zp_search *S, const int *island_of, int nisl, int j) {
+    const zp_polish_rec *p = &S->pol[j];
+    if (island_of && p->at >= 0 && island_of[p->at] >= 0) {
+        return island_of[p->at];
+    }
+    int feas = zp_objective_feasible(&p->e);
+    for (int i = 0; i < j; i++) {
+        const zp_polish_rec *q = &S->pol[i];
+        if (q->n > 0 && zp_objective_feasible(&q->e) == feas && !distinct(S, p->end, q->end) &&
+            !(island_of && q->at >= 0 && island_of[q->at] >= 0)) {
+            return nisl + i;
+        }
+    }
+    return nisl + j;
+}
+
+/* design note: the minima counted for Boender and Rinnooy Kan's estimate are the islands the
+   polishes ended in, not their distinct end points: COBYLA stops anywhere along the margin's
+   boundary of a wide island (on multi6 56 polishes ended at 48 points of one island), and each
+   such point counted as a minimum would make any budget look too small */
+/* the evidence: distinct survivable polish ends, those that reached the best, the basins of
+   every polish and what they leave unseen */
 static void evidence(zp_search *S) {
     zp_search_result *res = S->res;
     res->nstarts = S->npol;
     res->nbasins = res->nreached = res->nminima = 0;
-    int nran = 0;
+    zp_islands m;
+    int *island_of = NULL, nisl = 0, nran = 0;
+    if (!zp_islands_map(S, &m)) {
+        island_of = malloc(sizeof *island_of * (S->a.n ? S->a.n : 1));
+        for (int i = 0; island_of && i < S->a.n; i++) {
+            island_of[i] = -1;
+        }
+        for (int j = 0; island_of && j < m.nnear; j++) {
+            island_of[m.pt[j]] = m.of[j];
+        }
+        nisl = m.n;
+        zp_islands_free(&m);
+    }
+    int *basin = malloc(sizeof *basin * (S->npol ? S->npol : 1));
     for (int j = 0; j < S->npol; j++) {
         const zp_polish_rec *p = &S->pol[j];
         if (p->n == 0) {
             continue;
         }
         nran++;
-        int feas = zp_objective_feasible(&p->e), isnew = 1;
-        for (int i = 0; i < j && isnew; i++) {
-            isnew = S->pol[i].n == 0 || zp_objective_feasible(&S->pol[i].e) != feas ||
-                    distinct(S, p->end, S->pol[i].end);
+        int b = basin_of(S, island_of, nisl, j), isnew = 1;
+        for (int i = 0; basin && i < j && isnew; i++) {
+            isnew = S->pol[i].n == 0 || basin[i] != b;
+        }
+        if (basin) {
+            basin[j] = b;
         }
         res->nminima += isnew;
-        if (!feas) {
+        if (!zp_objective_feasible(&p->e)) {
             continue;
         }
-        res->nbasins += isnew;
+        int fresh_end = 1;
+        for (int i = 0; i < j && fresh_end; i++) {
+            fresh_end = S->pol[i].n == 0 || !zp_objective_feasible(&S->pol[i].e) ||
+                        distinct(S, p->end, S->pol[i].end);
+        }
+        res->nbasins += fresh_end;
         res->nreached += res->found && p->e.time <= res->best.time * (1 + ZP_SEARCH_REACH);
     }
+    free(basin);
+    free(island_of);
     res->unseen = zp_basins_unseen(nran, res->nminima);
     res->help_evals = 0;
-    if (!(res->unseen < ZP_SEARCH_UNSEEN)) {
+    if (!(res->unseen < ZP_SEARCH_UNSEEN) || res->nreached < 2) {
         /* the polishes still needed, at the rate of the costliest round so far */
-        int more = zp_basins_searches_needed(res->nminima, ZP_SEARCH_UNSEEN) - nran;
+        int need = zp_basins_searches_needed(res->nminima, ZP_SEARCH_UNSEEN) - nran;
+        need = need > NSTARTS ? need : NSTARTS;
         long per = S->round_cost > 0 ? S->round_cost : S->spent;
-        res->help_evals = S->spent + (long)((more + NSTARTS - 1) / NSTARTS) * per;
+        res->help_evals = S->spent + (long)((need + NSTARTS - 1) / NSTARTS) * per;
     }
 }
 
@@ -444,11 +490,11 @@ static zp_status rounds(zp_search *S, char *err, size_t errlen) {
         S->round_cost = S->spent - spent0 > S->round_cost ? S->spent - spent0 : S->round_cost;
         double after = best_time(res);
         res->last_gain = isfinite(after) ? (isfinite(before) ? (before - after) / after : 1) : 0;
-        /* converged: the round found nothing better and the polishes leave too few basins
-           unseen for another to be likely */
+        /* converged: the round found nothing better, two polishes or more reached the best
+           and they leave too few basins unseen for another round to be likely to find one */
         evidence(S);
         if (r >= 1 && res->found && res->last_gain < ZP_SEARCH_CONV &&
-            res->unseen < ZP_SEARCH_UNSEEN) {
+            res->unseen < ZP_SEARCH_UNSEEN && res->nreached >= 2) {
             res->converged = 1;
             return ZP_OK;
         }

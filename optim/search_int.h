@@ -24,6 +24,7 @@ typedef struct zp_polish_rec {
     double end[ZP_SCHED_MAX_PARAMS];
     zp_eval e;
     long n; /* simulations it spent */
+    int at; /* archive index of its end, -1: not in the archive */
 } zp_polish_rec;
 
 typedef struct zp_search {
