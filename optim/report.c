@@ -43,16 +43,11 @@ void zp_report_convergence(char *buf, size_t n, const zp_search_result *s) {
                                     "unlikely to help");
     } else if (s->interrupted) {
         snprintf(tail, sizeof tail, "; interrupted before the search converged");
-    } else if (s->help_evals > 0) {
+    } else {
         snprintf(tail, sizeof tail,
                  "; the %s ran out first: a larger budget may help (about --max-evals %ld)",
                  s->timed_out ? "time (--max-time)" : s->budget_out ? "budget" : "rounds",
                  s->help_evals);
-    } else {
-        snprintf(tail, sizeof tail,
-                 "; the %s ran out while the rounds still improved the best: a larger budget "
-                 "may help",
-                 s->timed_out ? "time (--max-time)" : s->budget_out ? "budget" : "rounds");
     }
     if (k >= 0 && (size_t)k < n) {
         snprintf(buf + k, n - k, "%s%s", unseen, tail);

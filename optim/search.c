@@ -21,6 +21,7 @@
 #define DIAG_STEP 0.002   /* first step of the constant push's polish, share of the box */
 #define MAX_ROUNDS 24
 #define GLOBAL_PER_PARAM 500 /* simulations of an NLopt global phase per parameter */
+#define DE_PER_PARAM 600     /* simulations of differential evolution per parameter a round */
 
 /* design note: the scan is ours, not an NLopt global algorithm, because its points are known
    in advance and so run in parallel; the NLopt global algorithms are sequential (see
@@ -29,9 +30,15 @@ static const zp_search_algo algos[] = {
     {"scan-cobyla",
      "parallel scan (constant pushes, low-discrepancy points, per-section lines), then COBYLA "
      "with the survival constraint from the best starts, in rounds (default)",
-     -1, NLOPT_LN_COBYLA},
-    {"scan-bobyqa", "the same scan, then BOBYQA on the penalised time", -1, NLOPT_LN_BOBYQA},
-    {"scan-sbplx", "the same scan, then Sbplx on the penalised time", -1, NLOPT_LN_SBPLX},
+     ZP_SEARCH_SCAN, NLOPT_LN_COBYLA},
+    {"de-cobyla",
+     "the same scan and differential evolution (SciPy's best1bin, parallel generations), then "
+     "COBYLA from the islands, in rounds",
+     ZP_SEARCH_DE, NLOPT_LN_COBYLA},
+    {"scan-bobyqa", "the same scan, then BOBYQA on the penalised time", ZP_SEARCH_SCAN,
+     NLOPT_LN_BOBYQA},
+    {"scan-sbplx", "the same scan, then Sbplx on the penalised time", ZP_SEARCH_SCAN,
+     NLOPT_LN_SBPLX},
     {"direct-cobyla", "DIRECT-L on the penalised time, then COBYLA", NLOPT_GN_DIRECT_L,
      NLOPT_LN_COBYLA},
     {"crs2-cobyla", "CRS2 with local mutation on the penalised time, then COBYLA", NLOPT_GN_CRS2_LM,
@@ -271,6 +278,11 @@ static zp_status scan_round(zp_search *S, int r, char *err, size_t errlen) {
         if (st) {
             return st;
         }
+    } else if (alg->global == ZP_SEARCH_DE) {
+        if (r == 0) {
+            zp_scan_lds(S, LDS_FIRST);
+        }
+        zp_de_generations(S, DE_PER_PARAM * (long)S->n);
     } else {
         zp_scan_lds(S, r == 0 ? LDS_FIRST
                               : (LDS_FIRST << (r - 1) < LDS_MAX ? LDS_FIRST << (r - 1) : LDS_MAX));
@@ -406,14 +418,15 @@ static void evidence(zp_search *S) {
     free(basin);
     free(island_of);
     res->unseen = zp_basins_unseen(nran, res->nminima);
-    res->help_evals = 0;
-    if (!(res->unseen < ZP_SEARCH_UNSEEN) || res->nreached < 2) {
-        /* the polishes still needed, at the rate of the costliest round so far */
-        int need = zp_basins_searches_needed(res->nminima, ZP_SEARCH_UNSEEN) - nran;
+    /* the budget that would help when the search stops short: the polishes the estimate
+       still needs (at least one round), at the rate of the costliest round so far */
+    int need = NSTARTS;
+    if (!(res->unseen < ZP_SEARCH_UNSEEN)) {
+        need = zp_basins_searches_needed(res->nminima, ZP_SEARCH_UNSEEN) - nran;
         need = need > NSTARTS ? need : NSTARTS;
-        long per = S->round_cost > 0 ? S->round_cost : S->spent;
-        res->help_evals = S->spent + (long)((need + NSTARTS - 1) / NSTARTS) * per;
     }
+    long per = S->round_cost > 0 ? S->round_cost : S->spent;
+    res->help_evals = S->spent + (long)((need + NSTARTS - 1) / NSTARTS) * per;
 }
 
 /* the islands of the final map, the polish ends in it: how many, how many polished, the best */
@@ -493,9 +506,9 @@ static zp_status rounds(zp_search *S, char *err, size_t errlen) {
         /* converged: the round found nothing better, two polishes or more reached the best
            and they leave too few basins unseen for another round to be likely to find one */
         evidence(S);
-        if (r >= 1 && res->found && res->last_gain < ZP_SEARCH_CONV &&
-            res->unseen < ZP_SEARCH_UNSEEN && res->nreached >= 2) {
-            res->converged = 1;
+        res->converged = r >= 1 && res->found && res->last_gain < ZP_SEARCH_CONV &&
+                         res->unseen < ZP_SEARCH_UNSEEN && res->nreached >= 2;
+        if (res->converged && !S->o->full_budget) {
             return ZP_OK;
         }
     }
@@ -552,6 +565,7 @@ static void end(zp_search *S) {
         !res->converged && !res->interrupted && !res->timed_out && zp_search_halted(S);
     res->wall_s = zp_search_since(S);
     zp_pool_free(S->pool);
+    zp_de_free(S->de);
     if (S->q) {
         gsl_qrng_free(S->q);
     }

@@ -15,11 +15,15 @@
 #define ZP_SEARCH_UNSEEN 0.5 /* expected unvisited basins below which more budget is unlikely
                                 to help */
 
+#define ZP_SEARCH_SCAN -1
+#define ZP_SEARCH_DE -2
+
 /* The strategies the search offers: a global phase, then a local polish. */
 typedef struct zp_search_algo {
     const char *name; /* as typed after --algorithm */
     const char *doc;  /* one line for --help */
-    int global;       /* nlopt_algorithm of the global phase, or -1: the parallel scan */
+    int global;       /* nlopt_algorithm of the global phase, or ZP_SEARCH_SCAN: the parallel
+                         scan, ZP_SEARCH_DE: the scan and differential evolution */
     int local;        /* nlopt_algorithm of the polish */
 } zp_search_algo;
 
@@ -45,6 +49,8 @@ typedef struct zp_search_opts {
     double max_time;    /* s of wall time the search may spend, 0: no limit (not reproducible) */
     unsigned long seed; /* same seed, same answer, bit for bit */
     int nthreads;       /* workspaces = OpenMP threads; 0: OpenMP's default */
+    int full_budget;    /* 1: rounds go on after convergence, until the budget or the rounds
+                           run out (a check of the convergence claim) */
     volatile sig_atomic_t *stop; /* borrowed, may be NULL: nonzero stops the search */
     /* called, serialised, when the best improves (improved = 1) and now and then (0) */
     void (*progress)(void *user, const zp_search_progress *p, int improved);
@@ -83,7 +89,7 @@ typedef struct zp_search_result {
     int nminima;      /* distinct minima the polishes ended at, survivable or not */
     double unseen;    /* Boender-Rinnooy Kan: expected basins not yet found (INFINITY: too few
                          polishes to say) */
-    long help_evals;  /* about the budget that would bring unseen below ZP_SEARCH_UNSEEN; 0 */
+    long help_evals;  /* simulations, about the budget that would let the search converge */
     int nislands;     /* islands of the map (the best near-survivable points, islands.c) */
     int npolished;    /* of them, islands a polish ended in */
     int nshown;       /* survivable islands below, best first */
