@@ -27,14 +27,15 @@
    in advance and so run in parallel; the NLopt global algorithms are sequential (see
    docs/search.md for how they compare) */
 static const zp_search_algo algos[] = {
+    {"de-cobyla",
+     "parallel scan (constant pushes, low-discrepancy points, per-section lines) and "
+     "differential evolution (SciPy's best1bin, parallel generations), then COBYLA with the "
+     "survival constraint from the islands of the map, in rounds (default)",
+     ZP_SEARCH_DE, NLOPT_LN_COBYLA},
     {"scan-cobyla",
      "parallel scan (constant pushes, low-discrepancy points, per-section lines), then COBYLA "
-     "with the survival constraint from the best starts, in rounds (default)",
+     "with the survival constraint from the islands of the map, in rounds",
      ZP_SEARCH_SCAN, NLOPT_LN_COBYLA},
-    {"de-cobyla",
-     "the same scan and differential evolution (SciPy's best1bin, parallel generations), then "
-     "COBYLA from the islands, in rounds",
-     ZP_SEARCH_DE, NLOPT_LN_COBYLA},
     {"scan-bobyqa", "the same scan, then BOBYQA on the penalised time", ZP_SEARCH_SCAN,
      NLOPT_LN_BOBYQA},
     {"scan-sbplx", "the same scan, then Sbplx on the penalised time", ZP_SEARCH_SCAN,
@@ -278,14 +279,12 @@ static zp_status scan_round(zp_search *S, int r, char *err, size_t errlen) {
         if (st) {
             return st;
         }
-    } else if (alg->global == ZP_SEARCH_DE) {
-        if (r == 0) {
-            zp_scan_lds(S, LDS_FIRST);
-        }
-        zp_de_generations(S, DE_PER_PARAM * (long)S->n);
     } else {
         zp_scan_lds(S, r == 0 ? LDS_FIRST
                               : (LDS_FIRST << (r - 1) < LDS_MAX ? LDS_FIRST << (r - 1) : LDS_MAX));
+        if (alg->global == ZP_SEARCH_DE) {
+            zp_de_generations(S, DE_PER_PARAM * (long)S->n);
+        }
     }
     /* lines through the best and, first, through the hardest push: times fall as the pushes
        grow, so the fastest schedules lie towards that corner */
@@ -597,14 +596,33 @@ zp_status zp_search_run(const zp_objective *ob, const zp_sim_opts *so, const dou
 #define WARM_BUDGET 60  /* simulations per warm polish */
 #define WARM_STEP 0.002 /* its first step, share of the box */
 
-/* the warm polishes' starts: the answer, then the good ends distinct from it */
+#define WARM_STARTS (NSTARTS + ZP_SEARCH_ISLANDS)
+
+/* x may start a warm polish: distinct from the n starts before it */
+static int warm_new(const zp_search *S, const double *x, const double **xs, int n) {
+    for (int i = 0; i < n; i++) {
+        if (!distinct(S, x, xs[i])) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* the warm polishes' starts: the answer, the good ends distinct from it, then the fastest
+   point of each of the best islands of the map (the grown set may break the answer's island
+   where a slower one still holds) */
 static int warm_starts(const zp_search *S, const zp_search_result *prev, const double **x) {
     int n = 0;
     x[n++] = prev->force;
     for (int i = 0; i < prev->nends && n < NSTARTS; i++) {
-        if (distinct(S, prev->ends[i], prev->force) &&
+        if (warm_new(S, prev->ends[i], x, n) &&
             prev->ends_time[i] <= prev->best.time * (1 + ZP_SEARCH_WARM_REACH)) {
             x[n++] = prev->ends[i];
+        }
+    }
+    for (int i = 0; i < prev->nshown && n < WARM_STARTS; i++) {
+        if (warm_new(S, prev->island_force[i], x, n)) {
+            x[n++] = prev->island_force[i];
         }
     }
     return n;
@@ -632,15 +650,15 @@ static int warm_base(zp_search *S, const zp_search_result *prev, zp_polish_job *
 }
 
 static zp_status warm(zp_search *S, const zp_search_result *prev, char *err, size_t errlen) {
-    zp_polish_rec rec[NSTARTS + 1];
-    zp_polish_job jobs[NSTARTS + 1];
+    zp_polish_rec rec[WARM_STARTS + 1];
+    zp_polish_job jobs[WARM_STARTS + 1];
     double step[ZP_SCHED_MAX_PARAMS], diag_step;
     for (int k = 0; k < S->n; k++) {
         step[k] = WARM_STEP * (S->hi[k] - S->lo[k]);
     }
     S->phase = "polish";
     int nj = warm_base(S, prev, &jobs[0], &diag_step);
-    const double *x[NSTARTS];
+    const double *x[WARM_STARTS];
     int nstart = warm_starts(S, prev, x);
     for (int i = 0; i < nstart; i++) {
         jobs[nj++] = (zp_polish_job){x[i], step, 0, WARM_BUDGET, NULL};

@@ -75,7 +75,9 @@ int main(void) {
         zp_sim_opts o = tu_opts(&sc, 1e-5);
         zp_objective ob = tu_objective(m, &sc, &o);
         double grid = grid_best(m, &sc, &o, &ob);
-        for (long budget = 200; budget <= 1600; budget *= 2) {
+        long claimed = -1; /* simulations of the last claim checked: a larger budget that
+                              converges the same way runs the same search */
+        for (long budget = 1600; budget <= 6400; budget *= 2) {
             search(&ob, &o, &sc, budget, 1, 0, &res);
             CHECK(res.found);
             if (!res.converged) {
@@ -86,11 +88,15 @@ int main(void) {
             }
             claims++;
             CHECK(res.unseen < ZP_SEARCH_UNSEEN && res.nreached >= 2);
-            /* ten times the budget, spent whole, from another seed's scan */
-            search(&ob, &o, &sc, 10 * budget, 2, 1, &big);
-            CHECK(big.evals > 5 * budget || big.evals > 5 * res.evals);
-            CHECK(big.best.time >= res.best.time * (1 - CLAIM_TOL));
             CHECK(grid >= res.best.time * (1 - CLAIM_TOL));
+            if (res.evals == claimed) {
+                continue;
+            }
+            claimed = res.evals;
+            /* ten times what the claim spent, spent whole, from another seed's scan */
+            search(&ob, &o, &sc, 10 * res.evals, 2, 1, &big);
+            CHECK(big.evals > 5 * res.evals);
+            CHECK(big.best.time >= res.best.time * (1 - CLAIM_TOL));
         }
         zp_model_free(m);
     }
