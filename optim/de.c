@@ -13,15 +13,15 @@
 #define POP_PER_PARAM 10 /* members per parameter */
 #define POP_MIN 20
 #define POP_MAX 80
-#define CROSS 0.7       /* binomial crossover rate */
-#define DITHER_LO 0.5   /* the mutation factor, drawn per generation in [LO, 1) */
-#define STREAM 0xde5UL  /* the generator's seed: a stream apart from the scan's shift */
+#define CROSS 0.7      /* binomial crossover rate */
+#define DITHER_LO 0.5  /* the mutation factor, drawn per generation in [LO, 1) */
+#define STREAM 0xde5UL /* the generator's seed: a stream apart from the scan's shift */
 
 struct zp_de {
-    int np;        /* members */
-    double *x;     /* owned, np x n parameters */
-    zp_eval *e;    /* owned, np */
-    gsl_rng *rng;  /* owned */
+    int np;       /* members */
+    double *x;    /* owned, np x n parameters */
+    zp_eval *e;   /* owned, np */
+    gsl_rng *rng; /* owned */
 };
 
 void zp_de_free(zp_de *d) {

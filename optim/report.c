@@ -55,8 +55,8 @@ void zp_report_convergence(char *buf, size_t n, const zp_search_result *s) {
 }
 
 static void md_islands(FILE *f, const zp_search_result *s, int nparam) {
-    fprintf(f, "- the map: %d island%s of near-survivable schedules, %d of them polished", s->nislands,
-            s->nislands == 1 ? "" : "s", s->npolished);
+    fprintf(f, "- the map: %d island%s of near-survivable schedules, %d of them polished",
+            s->nislands, s->nislands == 1 ? "" : "s", s->npolished);
     if (s->nshown > 0) {
         fputs("; the fastest survivable point of each of the best:", f);
     }

@@ -114,12 +114,13 @@ zp_status zp_search_run(const zp_objective *ob, const zp_sim_opts *so, const dou
 
 /* A warm restart after ob's scenario set grew: res holds a search's result for the smaller set
    (zp_search_run's or this one's) and receives this one's. COBYLA (the algorithm's polish) runs
-   from the answer, from the distinct survivable polish ends within ZP_SEARCH_WARM_REACH of
-   its time and from the fastest point of each island res reports, each with a budget fixed in advance, all in parallel; the best constant push is
-   kept while it survives the grown set, else polished again from where it was. found = 0: no
-   start was made survivable (the caller searches afresh). The answer, its counts (added to the
-   earlier ones) and the ends are the warm ones; the evidence of convergence (rounds, polishes,
-   basins, history) stays the full search's. Same seed and set, same bits on any thread count. */
+   from the answer, from the distinct survivable polish ends within ZP_SEARCH_WARM_REACH of its
+   time and from the fastest point of each island res reports, each with a budget fixed in
+   advance, all in parallel; the best constant push is kept while it survives the grown set,
+   else polished again from where it was. found = 0: no start was made survivable (the caller
+   searches afresh). The answer, its counts (added to the earlier ones) and the ends are the
+   warm ones; the evidence of convergence (rounds, polishes, basins, islands, history) stays the
+   full search's. Same seed and set, same bits on any thread count. */
 #define ZP_SEARCH_WARM_REACH 1e-3
 zp_status zp_search_warm(const zp_objective *ob, const zp_sim_opts *so, const double *lo,
                          const double *hi, const zp_search_opts *o, zp_search_result *res,

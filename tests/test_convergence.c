@@ -1,9 +1,9 @@
 /* The search's claim that a larger budget is unlikely to help (optim/search.c, basins.c) is
    true: wherever it is made, ten times the budget and a brute-force grid over the whole box find
-   nothing more than 0.1 % faster (spent whole, from another seed). Independent expectations: the grid (every schedule of a fine
-   lattice run by the simulator alone, the fastest that finishes with the margin) and the larger
-   search. The claim must be made somewhere (a calibration that never claims holds vacuously) and
-   withheld somewhere (a claim made everywhere would say nothing). */
+   nothing more than 0.1 % faster (spent whole, from another seed). Independent expectations: the
+   grid (every schedule of a fine lattice run by the simulator alone, the fastest that finishes with
+   the margin) and the larger search. The claim must be made somewhere (a calibration that never
+   claims holds vacuously) and withheld somewhere (a claim made everywhere would say nothing). */
 #include <math.h>
 #include <string.h>
 
@@ -34,8 +34,8 @@ static zp_search_result res, big;
    same rounds at any larger budget) */
 static void search(const zp_objective *ob, const zp_sim_opts *o, const zp_scene *sc, long budget,
                    unsigned long seed, int full, zp_search_result *r) {
-    zp_search_opts so = {.algo = 0, .max_evals = budget, .seed = seed, .nthreads = 2,
-                         .full_budget = full};
+    zp_search_opts so = {
+        .algo = 0, .max_evals = budget, .seed = seed, .nthreads = 2, .full_budget = full};
     char err[256];
     double lo[ZP_MAX_SECTIONS], hi[ZP_MAX_SECTIONS];
     for (int k = 0; k < sc->nsec; k++) {

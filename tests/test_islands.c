@@ -37,7 +37,9 @@ static void put(double f1, double f2, int feasible, double time) {
     zp_eval e = {.outcome = feasible >= 0 ? ZP_OUTCOME_FINISHED : ZP_OUTCOME_DIED,
                  .time = time,
                  .obj = time,
-                 .cons = feasible > 0 ? -1 : feasible == 0 ? 3 : 50,
+                 .cons = feasible > 0    ? -1
+                         : feasible == 0 ? 3
+                                         : 50,
                  .scenario = -1};
     e.score = e.obj + fmax(e.cons, 0);
     CHECK(zp_archive_add(&map, (double[2]){f1, f2}, &e) >= 0);
