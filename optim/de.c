@@ -1,18 +1,17 @@
-/* Differential evolution over the map (search_int.h): SciPy's best1bin with dither, its
-   population seeded from the best distinct points scanned, each generation's trials drawn by a
-   seeded generator before the batch runs them in parallel, so a seed gives the same generations
+/* Differential evolution over the box (search_int.h): SciPy's best1bin with dither from a
+   Latin hypercube, each generation's trials drawn by a seeded generator before the batch runs
+   them in parallel, so a seed gives the same generations
    on any thread count. Constraints by the search's total order (survivable first, then the
    penalised score: Deb's rules). */
 #include <gsl/gsl_rng.h>
-#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "search_int.h"
 
-#define POP_PER_PARAM 10 /* members per parameter */
+#define POP_PER_PARAM 15 /* members per parameter (SciPy's popsize) */
 #define POP_MIN 20
-#define POP_MAX 80
+#define POP_MAX 150
 #define CROSS 0.7      /* binomial crossover rate */
 #define DITHER_LO 0.5  /* the mutation factor, drawn per generation in [LO, 1) */
 #define STREAM 0xde5UL /* the generator's seed: a stream apart from the scan's shift */
@@ -33,66 +32,42 @@ void zp_de_free(zp_de *d) {
     }
 }
 
-typedef struct ranked {
-    const zp_search *S;
-    int i;
-} ranked;
-
-static int by_rank(const void *pa, const void *pb) {
-    const ranked *a = pa, *b = pb;
-    const zp_search *S = a->S;
-    const double *fa = zp_archive_f(S, a->i), *fb = zp_archive_f(S, b->i);
-    if (zp_search_ahead(&S->a.e[a->i], fa, &S->a.e[b->i], fb, S->n)) {
-        return -1;
-    }
-    if (zp_search_ahead(&S->a.e[b->i], fb, &S->a.e[a->i], fa, S->n)) {
-        return 1;
-    }
-    return (a->i > b->i) - (a->i < b->i);
-}
-
-/* the first population: the best archive points, each apart from those taken by ZP_DISTINCT of
-   the box, then (too few) the best of the rest */
-static zp_de *create(const zp_search *S) {
+/* the first population: a seeded Latin hypercube over the whole box (as SciPy starts), run as
+   one batch; NULL when out of memory or the budget cut the batch */
+static zp_de *create(zp_search *S) {
     int n = S->n, np = POP_PER_PARAM * n;
     np = np < POP_MIN ? POP_MIN : np > POP_MAX ? POP_MAX : np;
-    if (S->a.n < np) {
-        return NULL;
-    }
     zp_de *d = calloc(1, sizeof *d);
-    ranked *r = malloc(sizeof *r * S->a.n);
-    char *taken = calloc(S->a.n, 1);
-    if (!d || !r || !taken || !(d->x = malloc(sizeof *d->x * np * n)) ||
+    int *perm = malloc(sizeof *perm * np);
+    if (!d || !perm || !(d->x = malloc(sizeof *d->x * np * n)) ||
         !(d->e = malloc(sizeof *d->e * np)) || !(d->rng = gsl_rng_alloc(gsl_rng_mt19937))) {
-        free(r);
-        free(taken);
+        free(perm);
         zp_de_free(d);
         return NULL;
     }
     gsl_rng_set(d->rng, S->o->seed ^ STREAM);
-    for (int i = 0; i < S->a.n; i++) {
-        r[i] = (ranked){S, i};
-    }
-    qsort(r, S->a.n, sizeof *r, by_rank);
-    for (int pass = 0; pass < 2 && d->np < np; pass++) {
-        for (int i = 0; i < S->a.n && d->np < np; i++) {
-            const double *f = zp_archive_f(S, r[i].i);
-            int ok = !taken[i];
-            for (int j = 0; pass == 0 && ok && j < d->np; j++) {
-                ok = 0;
-                for (int k = 0; k < n && !ok; k++) {
-                    ok = fabs(f[k] - d->x[(size_t)j * n + k]) > ZP_DISTINCT * (S->hi[k] - S->lo[k]);
-                }
-            }
-            if (ok) {
-                taken[i] = 1;
-                memcpy(d->x + (size_t)d->np * n, f, sizeof *f * n);
-                d->e[d->np++] = S->a.e[r[i].i];
-            }
+    for (int k = 0; k < n; k++) {
+        for (int i = 0; i < np; i++) {
+            perm[i] = i;
+        }
+        for (int i = np - 1; i > 0; i--) {
+            int j = (int)gsl_rng_uniform_int(d->rng, (unsigned long)i + 1), t = perm[i];
+            perm[i] = perm[j];
+            perm[j] = t;
+        }
+        for (int i = 0; i < np; i++) {
+            double u = (perm[i] + gsl_rng_uniform(d->rng)) / np;
+            d->x[(size_t)i * n + k] = S->lo[k] + u * (S->hi[k] - S->lo[k]);
         }
     }
-    free(r);
-    free(taken);
+    free(perm);
+    int n0 = S->a.n;
+    if (zp_scan_batch(S, d->x, np) < np || S->a.n < n0 + np) {
+        zp_de_free(d);
+        return NULL;
+    }
+    memcpy(d->e, S->a.e + n0, sizeof *d->e * np);
+    d->np = np;
     return d;
 }
 
@@ -123,7 +98,7 @@ static void pick3(gsl_rng *g, int np, int i, int b, int *r) {
 }
 
 int zp_de_generations(zp_search *S, long budget) {
-    if (!S->de && !(S->de = create(S))) {
+    if (!S->de && (zp_search_halted(S) || !(S->de = create(S)))) {
         return 0;
     }
     zp_de *d = S->de;

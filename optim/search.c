@@ -27,15 +27,14 @@
    in advance and so run in parallel; the NLopt global algorithms are sequential (see
    docs/search.md for how they compare) */
 static const zp_search_algo algos[] = {
-    {"de-cobyla",
-     "parallel scan (constant pushes, low-discrepancy points, per-section lines) and "
-     "differential evolution (SciPy's best1bin, parallel generations), then COBYLA with the "
-     "survival constraint from the islands of the map, in rounds (default)",
-     ZP_SEARCH_DE, NLOPT_LN_COBYLA},
     {"scan-cobyla",
      "parallel scan (constant pushes, low-discrepancy points, per-section lines), then COBYLA "
-     "with the survival constraint from the islands of the map, in rounds",
+     "with the survival constraint from the islands of the map, in rounds (default)",
      ZP_SEARCH_SCAN, NLOPT_LN_COBYLA},
+    {"de-cobyla",
+     "the same scan and differential evolution (SciPy's best1bin from a Latin hypercube, "
+     "parallel generations), then COBYLA from the islands of the map, in rounds",
+     ZP_SEARCH_DE, NLOPT_LN_COBYLA},
     {"scan-bobyqa", "the same scan, then BOBYQA on the penalised time", ZP_SEARCH_SCAN,
      NLOPT_LN_BOBYQA},
     {"scan-sbplx", "the same scan, then Sbplx on the penalised time", ZP_SEARCH_SCAN,

@@ -106,9 +106,9 @@ typedef struct zp_islands {
 int zp_islands_map(const zp_search *S, zp_islands *m);
 void zp_islands_free(zp_islands *m);
 
-/* de.c: generations of differential evolution (its population made from the archive's best
-   distinct points the first time) while a whole generation fits in budget simulations; each
-   trial joins the archive. Returns the generations run (0: too few points, or out of memory). */
+/* de.c: generations of differential evolution (its first population a seeded Latin hypercube
+   over the box, run the first time) while a whole generation fits in budget simulations; every
+   point run joins the archive. Returns the generations run (0: too few points, or out of memory). */
 int zp_de_generations(zp_search *S, long budget);
 void zp_de_free(zp_de *d);
 

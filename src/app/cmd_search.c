@@ -40,7 +40,7 @@ static void usage(FILE *f) {
           "While it runs, the best so far is kept in DIR/checkpoint.ini; Ctrl-C stops the\n"
           "search and writes the best so far, marked interrupted.\n"
           "  --out DIR         output folder\n"
-          "  --algorithm NAME  the search strategy (below; default de-cobyla)\n"
+          "  --algorithm NAME  the search strategy (below; default scan-cobyla)\n"
           "  --seed N          overrides [optimize] seed\n"
           "  --max-evals N     overrides [optimize] max_evals (simulations; default 5000 per\n"
           "                    section)\n"
