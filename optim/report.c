@@ -43,11 +43,14 @@ void zp_report_convergence(char *buf, size_t n, const zp_search_result *s) {
                                     "unlikely to help");
     } else if (s->interrupted) {
         snprintf(tail, sizeof tail, "; interrupted before the search converged");
-    } else {
+    } else if (s->timed_out || s->budget_out) {
         snprintf(tail, sizeof tail,
                  "; the %s ran out first: a larger budget may help (about --max-evals %ld)",
-                 s->timed_out ? "time (--max-time)" : s->budget_out ? "budget" : "rounds",
-                 s->help_evals);
+                 s->timed_out ? "time (--max-time)" : "budget", s->help_evals);
+    } else {
+        snprintf(tail, sizeof tail,
+                 "; the search's %d rounds ran out first: a larger budget would run nothing more",
+                 s->nrounds);
     }
     if (k >= 0 && (size_t)k < n) {
         snprintf(buf + k, n - k, "%s%s", unseen, tail);

@@ -19,7 +19,8 @@
 #define LDS_FIRST 64      /* points of the low-discrepancy sequence in the first round */
 #define LDS_MAX 2048      /* ... doubling each round up to this */
 #define DIAG_STEP 0.002   /* first step of the constant push's polish, share of the box */
-#define MAX_ROUNDS 24
+#define MAX_ROUNDS 200 /* a bound for a budget too large to end the search; 10x the default
+                          budget is spent long before it on every scene measured */
 #define GLOBAL_PER_PARAM 500 /* simulations of an NLopt global phase per parameter */
 #define DE_PER_PARAM 600     /* simulations of differential evolution per parameter a round */
 

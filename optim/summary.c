@@ -41,7 +41,7 @@ static void json_convergence(FILE *f, const zp_search_result *s) {
     fprintf(f, ", \"minima\": %d, \"unseen_basins\": ", s->nminima);
     json_number_or_null(f, s->nstarts > 0 ? s->unseen : NAN);
     fputs(", \"budget_to_help\": ", f);
-    if (!s->converged && s->found) {
+    if (!s->converged && s->found && (s->budget_out || s->timed_out)) {
         fprintf(f, "%ld", s->help_evals);
     } else {
         fputs("null", f);
