@@ -230,6 +230,7 @@ zp_status zp_polish_batch(zp_search *S, int alg, const zp_polish_job *jobs, int 
         memcpy(o->end, c->n > 0 ? c->bestf : jobs[i].x0, sizeof *o->end * S->n);
         o->e = c->best;
         o->n = c->n;
+        o->at = -1;
     }
     free(b.c);
     return st;

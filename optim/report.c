@@ -22,25 +22,55 @@ void zp_report_convergence(char *buf, size_t n, const zp_search_result *s) {
     } else {
         k = snprintf(buf, n,
                      "%d of %d polishes reached this schedule (within %g %% of its "
-                     "time); they ended at %d distinct survivable schedule%s",
+                     "time); they ended at %d distinct survivable schedule%s, in %d "
+                     "basin%s (the map's islands, or apart from them)",
                      s->nreached, s->nstarts, 100 * ZP_SEARCH_REACH, s->nbasins,
-                     s->nbasins == 1 ? "" : "s");
+                     s->nbasins == 1 ? "" : "s", s->nminima, s->nminima == 1 ? "" : "s");
     }
-    const char *tail;
+    char unseen[160] = "";
+    if (s->nstarts > 0 && isfinite(s->unseen)) {
+        snprintf(unseen, sizeof unseen,
+                 "; Boender and Rinnooy Kan's estimate from them: %.2f basins not yet visited",
+                 s->unseen);
+    } else if (s->nstarts > 0) {
+        snprintf(unseen, sizeof unseen,
+                 "; too few polishes for that many minima to estimate the basins not yet "
+                 "visited (Boender and Rinnooy Kan)");
+    }
+    char tail[200];
     if (s->converged) {
-        tail = "; the last round found nothing better: a larger budget is unlikely to help";
-    } else if (s->budget_out) {
-        tail = "; the budget ran out before the search converged: a larger budget "
-               "(--max-evals) may help";
-    } else if (s->timed_out) {
-        tail = "; --max-time ran out before the search converged: more time may help";
+        snprintf(tail, sizeof tail, "; the last round found nothing better: a larger budget is "
+                                    "unlikely to help");
     } else if (s->interrupted) {
-        tail = "; interrupted before the search converged";
+        snprintf(tail, sizeof tail, "; interrupted before the search converged");
+    } else if (s->timed_out || s->budget_out) {
+        snprintf(tail, sizeof tail,
+                 "; the %s ran out first: a larger budget may help (about --max-evals %ld)",
+                 s->timed_out ? "time (--max-time)" : "budget", s->help_evals);
     } else {
-        tail = "; the rounds ran out before the search converged";
+        snprintf(tail, sizeof tail,
+                 "; the search's %d rounds ran out first: a larger budget would run nothing more",
+                 s->nrounds);
     }
     if (k >= 0 && (size_t)k < n) {
-        snprintf(buf + k, n - k, "%s", tail);
+        snprintf(buf + k, n - k, "%s%s", unseen, tail);
+    }
+}
+
+static void md_islands(FILE *f, const zp_search_result *s, int nparam) {
+    fprintf(f, "- the map: %d island%s of near-survivable schedules, %d of them polished",
+            s->nislands, s->nislands == 1 ? "" : "s", s->npolished);
+    if (s->nshown > 0) {
+        fputs("; the fastest survivable point of each of the best:", f);
+    }
+    fputs("\n", f);
+    for (int i = 0; i < s->nshown; i++) {
+        fprintf(f, "  %d. %.4f s at", i + 1, s->island_time[i]);
+        for (int k = 0; k < nparam; k++) {
+            fprintf(f, "%s %.2f", k ? "," : "", s->island_force[i][k]);
+        }
+        fprintf(f, " N (%d survivable point%s mapped)\n", s->island_pts[i],
+                s->island_pts[i] == 1 ? "" : "s");
     }
 }
 
@@ -359,7 +389,8 @@ static void md_search(FILE *f, const zp_report *r) {
         }
         fprintf(f, " %ld: %.4f s\n", s->hist[s->nhist - 1].evals, s->hist[s->nhist - 1].time);
     }
-    char sentence[512];
+    md_islands(f, s, r->shape->np);
+    char sentence[768];
     zp_report_convergence(sentence, sizeof sentence, s);
     fprintf(f, "\n### Convergence\n\n%c%s.\n",
             sentence[0] >= 'a' && sentence[0] <= 'z' ? sentence[0] - 'a' + 'A' : sentence[0],

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "basins.h"
 #include "search_int.h"
 
 #define NSTARTS 4         /* local polishes per round, from distinct good points */
@@ -18,8 +19,10 @@
 #define LDS_FIRST 64      /* points of the low-discrepancy sequence in the first round */
 #define LDS_MAX 2048      /* ... doubling each round up to this */
 #define DIAG_STEP 0.002   /* first step of the constant push's polish, share of the box */
-#define MAX_ROUNDS 24
+#define MAX_ROUNDS 200 /* a bound for a budget too large to end the search; 10x the default
+                          budget is spent long before it on every scene measured */
 #define GLOBAL_PER_PARAM 500 /* simulations of an NLopt global phase per parameter */
+#define DE_PER_PARAM 600     /* simulations of differential evolution per parameter a round */
 
 /* design note: the scan is ours, not an NLopt global algorithm, because its points are known
    in advance and so run in parallel; the NLopt global algorithms are sequential (see
@@ -27,10 +30,16 @@
 static const zp_search_algo algos[] = {
     {"scan-cobyla",
      "parallel scan (constant pushes, low-discrepancy points, per-section lines), then COBYLA "
-     "with the survival constraint from the best starts, in rounds (default)",
-     -1, NLOPT_LN_COBYLA},
-    {"scan-bobyqa", "the same scan, then BOBYQA on the penalised time", -1, NLOPT_LN_BOBYQA},
-    {"scan-sbplx", "the same scan, then Sbplx on the penalised time", -1, NLOPT_LN_SBPLX},
+     "with the survival constraint from the islands of the map, in rounds (default)",
+     ZP_SEARCH_SCAN, NLOPT_LN_COBYLA},
+    {"de-cobyla",
+     "the same scan and differential evolution (SciPy's best1bin from a Latin hypercube, "
+     "parallel generations), then COBYLA from the islands of the map, in rounds",
+     ZP_SEARCH_DE, NLOPT_LN_COBYLA},
+    {"scan-bobyqa", "the same scan, then BOBYQA on the penalised time", ZP_SEARCH_SCAN,
+     NLOPT_LN_BOBYQA},
+    {"scan-sbplx", "the same scan, then Sbplx on the penalised time", ZP_SEARCH_SCAN,
+     NLOPT_LN_SBPLX},
     {"direct-cobyla", "DIRECT-L on the penalised time, then COBYLA", NLOPT_GN_DIRECT_L,
      NLOPT_LN_COBYLA},
     {"crs2-cobyla", "CRS2 with local mutation on the penalised time, then COBYLA", NLOPT_GN_CRS2_LM,
@@ -166,28 +175,75 @@ static int fresh(const zp_search *S, const double *f) {
     return 1;
 }
 
-/* up to nmax archive points, best first, each distinct from the others chosen and fresh */
-static int pick_starts(zp_search *S, int *idx, int nmax) {
+/* f may start a polish: fresh and distinct from the n starts chosen in idx */
+static int ok_start(const zp_search *S, const double *f, const int *idx, int n) {
+    int ok = fresh(S, f);
+    for (int j = 0; j < n && ok; j++) {
+        ok = distinct(S, f, zp_archive_f(S, idx[j]));
+    }
+    return ok;
+}
+
+/* after the n chosen in idx, archive points up to nmax, best first, each an ok_start */
+static int pick_starts(zp_search *S, int *idx, int n, int nmax) {
     ranked *r = malloc(sizeof *r * (S->a.n ? S->a.n : 1));
     if (!r) {
-        return 0;
+        return n;
     }
     for (int i = 0; i < S->a.n; i++) {
         r[i] = (ranked){&S->a.e[i], zp_archive_f(S, i), S->n, i};
     }
     qsort(r, S->a.n, sizeof *r, by_rank);
-    int n = 0;
     for (int i = 0; i < S->a.n && n < nmax; i++) {
-        int ok = fresh(S, r[i].f);
-        for (int j = 0; j < n && ok; j++) {
-            ok = distinct(S, r[i].f, zp_archive_f(S, idx[j]));
-        }
-        if (ok) {
+        if (ok_start(S, r[i].f, idx, n)) {
             idx[n++] = r[i].i;
         }
     }
     free(r);
     return n;
+}
+
+/* 1 when a polish started or ended in island is of the map m */
+static int polished(const zp_search *S, const zp_islands *m, int is) {
+    for (int j = 0; j < m->nnear; j++) {
+        if (m->of[j] == is && !fresh(S, zp_archive_f(S, m->pt[j]))) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* design note: the starts come from the map's islands, not from the best points alone: the best
+   points of a thin survivable set crowd into one island, and polishes from them all reach the
+   same optimum while faster islands nearby are never visited. Half the slots go to the best
+   islands no polish has visited, the rest to the best islands again (a thin island's optimum is
+   often out of one polish's reach), each island at most once a round; then the best fresh
+   points anywhere (the whole map when nothing nearly survives). */
+static int island_starts(zp_search *S, int *idx, int nmax) {
+    zp_islands m;
+    int n = 0;
+    if (zp_islands_map(S, &m)) {
+        return pick_starts(S, idx, 0, nmax);
+    }
+    char *used = calloc(m.n ? m.n : 1, 1);
+    for (int pass = 0; used && pass < 2; pass++) {
+        int quota = pass == 0 ? nmax / 2 : nmax;
+        for (int is = 0; is < m.n && n < quota; is++) {
+            if (used[is] || (pass == 0 && polished(S, &m, is))) {
+                continue;
+            }
+            for (int j = 0; j < m.nnear; j++) {
+                if (m.of[j] == is && ok_start(S, zp_archive_f(S, m.pt[j]), idx, n)) {
+                    idx[n++] = m.pt[j];
+                    used[is] = 1;
+                    break;
+                }
+            }
+        }
+    }
+    free(used);
+    zp_islands_free(&m);
+    return pick_starts(S, idx, n, nmax);
 }
 
 /* the baseline: the best survivable constant push among archive points [n0, a.n), and the
@@ -226,6 +282,9 @@ static zp_status scan_round(zp_search *S, int r, char *err, size_t errlen) {
     } else {
         zp_scan_lds(S, r == 0 ? LDS_FIRST
                               : (LDS_FIRST << (r - 1) < LDS_MAX ? LDS_FIRST << (r - 1) : LDS_MAX));
+        if (alg->global == ZP_SEARCH_DE) {
+            zp_de_generations(S, DE_PER_PARAM * (long)S->n);
+        }
     }
     /* lines through the best and, first, through the hardest push: times fall as the pushes
        grow, so the fastest schedules lie towards that corner */
@@ -254,7 +313,7 @@ static zp_status polish_round(zp_search *S, char *err, size_t errlen) {
         S->pol = p;
         S->polcap = cap;
     }
-    int idx[NSTARTS], nstart = pick_starts(S, idx, NSTARTS);
+    int idx[NSTARTS], nstart = island_starts(S, idx, NSTARTS);
     zp_polish_job jobs[NSTARTS + 1];
     zp_polish_rec base_rec;
     double diag_step = DIAG_STEP;
@@ -268,6 +327,13 @@ static zp_status polish_round(zp_search *S, char *err, size_t errlen) {
                                      &S->pol[S->npol + i]};
     }
     zp_status st = zp_polish_batch(S, algos[S->o->algo].local, jobs, nj, err, errlen);
+    /* the ends join the map: the islands they reached count as visited */
+    for (int i = bdiag >= 0 ? -1 : 0; i < nstart; i++) {
+        zp_polish_rec *p = i < 0 ? &base_rec : &S->pol[S->npol + i];
+        if (p->n > 0) {
+            p->at = zp_archive_add(S, p->end, &p->e);
+        }
+    }
     S->npol += nstart;
     zp_search_result *res = S->res;
     if (bdiag >= 0 && base_rec.n > 0 && zp_objective_feasible(&base_rec.e) &&
@@ -280,23 +346,107 @@ static zp_status polish_round(zp_search *S, char *err, size_t errlen) {
     return st;
 }
 
-/* the evidence: distinct survivable polish ends, and those that reached the best */
+/* the basin of polish j's end: its island in the map (island_of: per archive index, -1 outside
+   it), else the first earlier polish whose end is not distinct from it and equally survivable,
+   numbered past the islands */
+static int basin_of(const zp_search *S, const int *island_of, int nisl, int j) {
+    const zp_polish_rec *p = &S->pol[j];
+    if (island_of && p->at >= 0 && island_of[p->at] >= 0) {
+        return island_of[p->at];
+    }
+    int feas = zp_objective_feasible(&p->e);
+    for (int i = 0; i < j; i++) {
+        const zp_polish_rec *q = &S->pol[i];
+        if (q->n > 0 && zp_objective_feasible(&q->e) == feas && !distinct(S, p->end, q->end) &&
+            !(island_of && q->at >= 0 && island_of[q->at] >= 0)) {
+            return nisl + i;
+        }
+    }
+    return nisl + j;
+}
+
+/* design note: the minima counted for Boender and Rinnooy Kan's estimate are the islands the
+   polishes ended in, not their distinct end points: COBYLA stops anywhere along the margin's
+   boundary of a wide island (on multi6 56 polishes ended at 48 points of one island), and each
+   such point counted as a minimum would make any budget look too small */
+/* the evidence: distinct survivable polish ends, those that reached the best, the basins of
+   every polish and what they leave unseen */
 static void evidence(zp_search *S) {
     zp_search_result *res = S->res;
     res->nstarts = S->npol;
+    res->nbasins = res->nreached = res->nminima = 0;
+    zp_islands m;
+    int *island_of = NULL, nisl = 0, nran = 0;
+    if (!zp_islands_map(S, &m)) {
+        island_of = malloc(sizeof *island_of * (S->a.n ? S->a.n : 1));
+        for (int i = 0; island_of && i < S->a.n; i++) {
+            island_of[i] = -1;
+        }
+        for (int j = 0; island_of && j < m.nnear; j++) {
+            island_of[m.pt[j]] = m.of[j];
+        }
+        nisl = m.n;
+        zp_islands_free(&m);
+    }
+    int *basin = malloc(sizeof *basin * (S->npol ? S->npol : 1));
     for (int j = 0; j < S->npol; j++) {
         const zp_polish_rec *p = &S->pol[j];
-        if (p->n == 0 || !zp_objective_feasible(&p->e)) {
+        if (p->n == 0) {
             continue;
         }
-        int isnew = 1;
-        for (int i = 0; i < j && isnew; i++) {
-            isnew = S->pol[i].n == 0 || !zp_objective_feasible(&S->pol[i].e) ||
-                    distinct(S, p->end, S->pol[i].end);
+        nran++;
+        int b = basin_of(S, island_of, nisl, j), isnew = 1;
+        for (int i = 0; basin && i < j && isnew; i++) {
+            isnew = S->pol[i].n == 0 || basin[i] != b;
         }
-        res->nbasins += isnew;
+        if (basin) {
+            basin[j] = b;
+        }
+        res->nminima += isnew;
+        if (!zp_objective_feasible(&p->e)) {
+            continue;
+        }
+        int fresh_end = 1;
+        for (int i = 0; i < j && fresh_end; i++) {
+            fresh_end = S->pol[i].n == 0 || !zp_objective_feasible(&S->pol[i].e) ||
+                        distinct(S, p->end, S->pol[i].end);
+        }
+        res->nbasins += fresh_end;
         res->nreached += res->found && p->e.time <= res->best.time * (1 + ZP_SEARCH_REACH);
     }
+    free(basin);
+    free(island_of);
+    res->unseen = zp_basins_unseen(nran, res->nminima);
+    /* the budget that would help when the search stops short: the polishes the estimate
+       still needs (at least one round), at the rate of the costliest round so far */
+    int need = NSTARTS;
+    if (!(res->unseen < ZP_SEARCH_UNSEEN)) {
+        need = zp_basins_searches_needed(res->nminima, ZP_SEARCH_UNSEEN) - nran;
+        need = need > NSTARTS ? need : NSTARTS;
+    }
+    long per = S->round_cost > 0 ? S->round_cost : S->spent;
+    res->help_evals = S->spent + (long)((need + NSTARTS - 1) / NSTARTS) * per;
+}
+
+/* the islands of the final map, the polish ends in it: how many, how many polished, the best */
+static void islands_seen(zp_search *S) {
+    zp_search_result *res = S->res;
+    zp_islands m;
+    if (zp_islands_map(S, &m)) {
+        return;
+    }
+    res->nislands = m.n;
+    for (int is = 0; is < m.n; is++) {
+        res->npolished += polished(S, &m, is);
+        const zp_island *il = &m.isl[is];
+        if (res->nshown < ZP_SEARCH_ISLANDS && zp_objective_feasible(&S->a.e[il->head])) {
+            int k = res->nshown++;
+            res->island_time[k] = S->a.e[il->head].time;
+            memcpy(res->island_force[k], zp_archive_f(S, il->head), sizeof(double) * S->n);
+            res->island_pts[k] = il->nfeas;
+        }
+    }
+    zp_islands_free(&m);
 }
 
 /* the distinct survivable polish ends, best first, for a warm restart */
@@ -339,6 +489,7 @@ static zp_status rounds(zp_search *S, char *err, size_t errlen) {
     }
     for (int r = 0; r < MAX_ROUNDS; r++) {
         S->round = r;
+        long spent0 = S->spent;
         double before = best_time(res);
         zp_status st = scan_round(S, r, err, errlen);
         if (st == ZP_OK && !zp_search_halted(S)) {
@@ -348,10 +499,15 @@ static zp_status rounds(zp_search *S, char *err, size_t errlen) {
             return st;
         }
         res->nrounds = r + 1;
+        S->round_cost = S->spent - spent0 > S->round_cost ? S->spent - spent0 : S->round_cost;
         double after = best_time(res);
         res->last_gain = isfinite(after) ? (isfinite(before) ? (before - after) / after : 1) : 0;
-        if (r >= 1 && res->found && res->last_gain < ZP_SEARCH_CONV) {
-            res->converged = 1;
+        /* converged: the round found nothing better, two polishes or more reached the best
+           and they leave too few basins unseen for another round to be likely to find one */
+        evidence(S);
+        res->converged = r >= 1 && res->found && res->last_gain < ZP_SEARCH_CONV &&
+                         res->unseen < ZP_SEARCH_UNSEEN && res->nreached >= 2;
+        if (res->converged && !S->o->full_budget) {
             return ZP_OK;
         }
     }
@@ -408,6 +564,7 @@ static void end(zp_search *S) {
         !res->converged && !res->interrupted && !res->timed_out && zp_search_halted(S);
     res->wall_s = zp_search_since(S);
     zp_pool_free(S->pool);
+    zp_de_free(S->de);
     if (S->q) {
         gsl_qrng_free(S->q);
     }
@@ -426,6 +583,7 @@ zp_status zp_search_run(const zp_objective *ob, const zp_sim_opts *so, const dou
     if (st == ZP_OK) {
         st = rounds(&S, err, errlen);
         evidence(&S);
+        islands_seen(&S);
         keep_ends(&S);
     }
     end(&S);
@@ -438,14 +596,33 @@ zp_status zp_search_run(const zp_objective *ob, const zp_sim_opts *so, const dou
 #define WARM_BUDGET 60  /* simulations per warm polish */
 #define WARM_STEP 0.002 /* its first step, share of the box */
 
-/* the warm polishes' starts: the answer, then the good ends distinct from it */
+#define WARM_STARTS (NSTARTS + ZP_SEARCH_ISLANDS)
+
+/* x may start a warm polish: distinct from the n starts before it */
+static int warm_new(const zp_search *S, const double *x, const double **xs, int n) {
+    for (int i = 0; i < n; i++) {
+        if (!distinct(S, x, xs[i])) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* the warm polishes' starts: the answer, the good ends distinct from it, then the fastest
+   point of each of the best islands of the map (the grown set may break the answer's island
+   where a slower one still holds) */
 static int warm_starts(const zp_search *S, const zp_search_result *prev, const double **x) {
     int n = 0;
     x[n++] = prev->force;
     for (int i = 0; i < prev->nends && n < NSTARTS; i++) {
-        if (distinct(S, prev->ends[i], prev->force) &&
+        if (warm_new(S, prev->ends[i], x, n) &&
             prev->ends_time[i] <= prev->best.time * (1 + ZP_SEARCH_WARM_REACH)) {
             x[n++] = prev->ends[i];
+        }
+    }
+    for (int i = 0; i < prev->nshown && n < WARM_STARTS; i++) {
+        if (warm_new(S, prev->island_force[i], x, n)) {
+            x[n++] = prev->island_force[i];
         }
     }
     return n;
@@ -473,15 +650,15 @@ static int warm_base(zp_search *S, const zp_search_result *prev, zp_polish_job *
 }
 
 static zp_status warm(zp_search *S, const zp_search_result *prev, char *err, size_t errlen) {
-    zp_polish_rec rec[NSTARTS + 1];
-    zp_polish_job jobs[NSTARTS + 1];
+    zp_polish_rec rec[WARM_STARTS + 1];
+    zp_polish_job jobs[WARM_STARTS + 1];
     double step[ZP_SCHED_MAX_PARAMS], diag_step;
     for (int k = 0; k < S->n; k++) {
         step[k] = WARM_STEP * (S->hi[k] - S->lo[k]);
     }
     S->phase = "polish";
     int nj = warm_base(S, prev, &jobs[0], &diag_step);
-    const double *x[NSTARTS];
+    const double *x[WARM_STARTS];
     int nstart = warm_starts(S, prev, x);
     for (int i = 0; i < nstart; i++) {
         jobs[nj++] = (zp_polish_job){x[i], step, 0, WARM_BUDGET, NULL};
@@ -527,6 +704,15 @@ zp_status zp_search_warm(const zp_objective *ob, const zp_sim_opts *so, const do
     res->nreached = prev->nreached;
     res->converged = prev->converged;
     res->last_gain = prev->last_gain;
+    res->nminima = prev->nminima;
+    res->unseen = prev->unseen;
+    res->help_evals = prev->help_evals;
+    res->nislands = prev->nislands;
+    res->npolished = prev->npolished;
+    res->nshown = prev->nshown;
+    memcpy(res->island_time, prev->island_time, sizeof res->island_time);
+    memcpy(res->island_force, prev->island_force, sizeof res->island_force);
+    memcpy(res->island_pts, prev->island_pts, sizeof res->island_pts);
     res->nhist = prev->nhist;
     memcpy(res->hist, prev->hist, sizeof *res->hist * prev->nhist);
     end(&S);

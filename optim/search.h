@@ -11,12 +11,19 @@
 #define ZP_SEARCH_REACH 1e-4 /* a polish ending this close (relative time) reached the best */
 #define ZP_SEARCH_CONV 1e-6  /* a round improving the best less than this (relative) converged */
 #define ZP_SEARCH_ENDS 4     /* survivable polish ends kept for a warm restart */
+#define ZP_SEARCH_ISLANDS 4  /* islands reported, best first */
+#define ZP_SEARCH_UNSEEN 0.5 /* expected unvisited basins below which more budget is unlikely
+                                to help */
+
+#define ZP_SEARCH_SCAN -1
+#define ZP_SEARCH_DE -2
 
 /* The strategies the search offers: a global phase, then a local polish. */
 typedef struct zp_search_algo {
     const char *name; /* as typed after --algorithm */
     const char *doc;  /* one line for --help */
-    int global;       /* nlopt_algorithm of the global phase, or -1: the parallel scan */
+    int global;       /* nlopt_algorithm of the global phase, or ZP_SEARCH_SCAN: the parallel
+                         scan, ZP_SEARCH_DE: the scan and differential evolution */
     int local;        /* nlopt_algorithm of the polish */
 } zp_search_algo;
 
@@ -42,6 +49,8 @@ typedef struct zp_search_opts {
     double max_time;    /* s of wall time the search may spend, 0: no limit (not reproducible) */
     unsigned long seed; /* same seed, same answer, bit for bit */
     int nthreads;       /* workspaces = OpenMP threads; 0: OpenMP's default */
+    int full_budget;    /* 1: rounds go on after convergence, until the budget or the rounds
+                           run out (a check of the convergence claim) */
     volatile sig_atomic_t *stop; /* borrowed, may be NULL: nonzero stops the search */
     /* called, serialised, when the best improves (improved = 1) and now and then (0) */
     void (*progress)(void *user, const zp_search_progress *p, int improved);
@@ -77,6 +86,16 @@ typedef struct zp_search_result {
     int budget_out;   /* max_evals ran out before convergence */
     int timed_out;    /* max_time ran out before convergence */
     double last_gain; /* relative improvement of the best in the last completed round */
+    int nminima;      /* distinct minima the polishes ended at, survivable or not */
+    double unseen;    /* Boender-Rinnooy Kan: expected basins not yet found (INFINITY: too few
+                         polishes to say) */
+    long help_evals;  /* simulations, about the budget that would let the search converge */
+    int nislands;     /* islands of the map (the best near-survivable points, islands.c) */
+    int npolished;    /* of them, islands a polish ended in */
+    int nshown;       /* survivable islands below, best first */
+    double island_time[ZP_SEARCH_ISLANDS]; /* s, each one's fastest survivable point */
+    double island_force[ZP_SEARCH_ISLANDS][ZP_SCHED_MAX_PARAMS];
+    int island_pts[ZP_SEARCH_ISLANDS];     /* survivable points mapped in it: its size */
     int nhist;
     zp_search_hist hist[ZP_SEARCH_HIST];
 } zp_search_result;
@@ -95,12 +114,13 @@ zp_status zp_search_run(const zp_objective *ob, const zp_sim_opts *so, const dou
 
 /* A warm restart after ob's scenario set grew: res holds a search's result for the smaller set
    (zp_search_run's or this one's) and receives this one's. COBYLA (the algorithm's polish) runs
-   from the answer and from the distinct survivable polish ends within ZP_SEARCH_WARM_REACH of
-   its time, each with a budget fixed in advance, all in parallel; the best constant push is
-   kept while it survives the grown set, else polished again from where it was. found = 0: no
-   start was made survivable (the caller searches afresh). The answer, its counts (added to the
-   earlier ones) and the ends are the warm ones; the evidence of convergence (rounds, polishes,
-   basins, history) stays the full search's. Same seed and set, same bits on any thread count. */
+   from the answer, from the distinct survivable polish ends within ZP_SEARCH_WARM_REACH of its
+   time and from the fastest point of each island res reports, each with a budget fixed in
+   advance, all in parallel; the best constant push is kept while it survives the grown set,
+   else polished again from where it was. found = 0: no start was made survivable (the caller
+   searches afresh). The answer, its counts (added to the earlier ones) and the ends are the
+   warm ones; the evidence of convergence (rounds, polishes, basins, islands, history) stays the
+   full search's. Same seed and set, same bits on any thread count. */
 #define ZP_SEARCH_WARM_REACH 1e-3
 zp_status zp_search_warm(const zp_objective *ob, const zp_sim_opts *so, const double *lo,
                          const double *hi, const zp_search_opts *o, zp_search_result *res,

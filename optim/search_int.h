@@ -24,7 +24,10 @@ typedef struct zp_polish_rec {
     double end[ZP_SCHED_MAX_PARAMS];
     zp_eval e;
     long n; /* simulations it spent */
+    int at; /* archive index of its end, -1: not in the archive */
 } zp_polish_rec;
+
+typedef struct zp_de zp_de; /* de.c: a differential evolution's population */
 
 typedef struct zp_search {
     const zp_objective *ob;
@@ -47,7 +50,9 @@ typedef struct zp_search {
     int nlined, linecap;
     int bdiag;     /* archive index of the best constant push, -1: none yet */
     int diag_from; /* ... the last one polished, -1: none */
+    zp_de *de; /* owned, NULL: none yet */
     int round;
+    long round_cost; /* simulations of the costliest completed round */
     const char *phase;
     struct timespec t0;
     double last_report; /* s */
@@ -80,6 +85,32 @@ void zp_scan_lines(zp_search *S, const double *origin, const zp_eval *origin_e);
 const double *zp_archive_f(const zp_search *S, int i);
 /* index of the point added, -1 when out of memory */
 int zp_archive_add(zp_search *S, const double *f, const zp_eval *e);
+
+/* islands.c: the near-survivable points of the archive (the NEAR_MAX best of those that finish
+   within a few degrees of the margin), grouped into islands: a point joins the island of the
+   nearest better point within MLSL's critical distance that no other mapped point separates
+   from it. Islands come best first, each headed by its best point. */
+typedef struct zp_island {
+    int head; /* archive index of its best point */
+    int npts; /* near points in it */
+    int nfeas; /* of them, survivable */
+} zp_island;
+typedef struct zp_islands {
+    int n;          /* islands */
+    int nnear;      /* near points mapped */
+    int *pt;        /* owned, nnear: their archive indices, best first */
+    int *of;        /* owned, nnear: the island of each */
+    zp_island *isl; /* owned, n */
+} zp_islands;
+/* 0, or -1 when out of memory (m empty) */
+int zp_islands_map(const zp_search *S, zp_islands *m);
+void zp_islands_free(zp_islands *m);
+
+/* de.c: generations of differential evolution (its first population a seeded Latin hypercube
+   over the box, run the first time) while a whole generation fits in budget simulations; every
+   point run joins the archive. Returns the generations run (0: too few points, or out of memory). */
+int zp_de_generations(zp_search *S, long budget);
+void zp_de_free(zp_de *d);
 
 /* polish.c: local polishes from the starts, in parallel, with budgets fixed in order;
    diag: a one-variable polish of the constant push. ZP_OK or ZP_ERR_INPUT (NLopt refused). */

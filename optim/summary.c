@@ -16,8 +16,16 @@ static double largest_angle(const zp_model *m, const zp_result *r) {
     return a;
 }
 
+static void json_number_or_null(FILE *f, double v) {
+    if (isfinite(v)) {
+        zp_out_json_number(f, v);
+    } else {
+        fputs("null", f);
+    }
+}
+
 static void json_convergence(FILE *f, const zp_search_result *s) {
-    char sentence[512];
+    char sentence[768];
     zp_report_convergence(sentence, sizeof sentence, s);
     fprintf(f,
             "{\"rounds\": %d, \"polishes\": %d, \"basins\": %d, \"reached_best\": %d, "
@@ -30,9 +38,33 @@ static void json_convergence(FILE *f, const zp_search_result *s) {
     } else {
         fputs("null", f);
     }
+    fprintf(f, ", \"minima\": %d, \"unseen_basins\": ", s->nminima);
+    json_number_or_null(f, s->nstarts > 0 ? s->unseen : NAN);
+    fputs(", \"budget_to_help\": ", f);
+    if (!s->converged && s->found && (s->budget_out || s->timed_out)) {
+        fprintf(f, "%ld", s->help_evals);
+    } else {
+        fputs("null", f);
+    }
     fputs(", \"sentence\": ", f);
     zp_out_json_string(f, sentence);
     fputc('}', f);
+}
+
+/* the map's islands: how many, how many polished, the fastest survivable point of the best */
+static void json_islands(FILE *f, const zp_search_result *s, int nparam) {
+    fprintf(f, "{\"found\": %d, \"polished\": %d, \"best\": [", s->nislands, s->npolished);
+    for (int i = 0; i < s->nshown; i++) {
+        fprintf(f, "%s{\"time\": ", i ? ", " : "");
+        zp_out_json_number(f, s->island_time[i]);
+        fputs(", \"forces\": [", f);
+        for (int k = 0; k < nparam; k++) {
+            fputs(k ? ", " : "", f);
+            zp_out_json_number(f, s->island_force[i][k]);
+        }
+        fprintf(f, "], \"survivable_points\": %d}", s->island_pts[i]);
+    }
+    fputs("]}", f);
 }
 
 static void json_robust(FILE *f, const zp_verify *v) {
@@ -157,6 +189,8 @@ void zp_report_write_json(FILE *f, const zp_report *r) {
     }
     fputs(",\n  \"convergence\": ", f);
     json_convergence(f, s);
+    fputs(",\n  \"islands\": ", f);
+    json_islands(f, s, r->shape->np);
     fputs(",\n  \"history\": [", f);
     for (int i = 0; i < s->nhist; i++) {
         fprintf(f, "[%ld, ", s->hist[i].evals);
