@@ -22,7 +22,6 @@
 #define MAX_ROUNDS 200 /* a bound for a budget too large to end the search; 10x the default
                           budget is spent long before it on every scene measured */
 #define GLOBAL_PER_PARAM 500 /* simulations of an NLopt global phase per parameter */
-#define DE_PER_PARAM 600     /* simulations of differential evolution per parameter a round */
 
 /* design note: the scan is ours, not an NLopt global algorithm, because its points are known
    in advance and so run in parallel; the NLopt global algorithms are sequential (see
@@ -32,10 +31,6 @@ static const zp_search_algo algos[] = {
      "parallel scan (constant pushes, low-discrepancy points, per-section lines), then COBYLA "
      "with the survival constraint from the islands of the map, in rounds (default)",
      ZP_SEARCH_SCAN, NLOPT_LN_COBYLA},
-    {"de-cobyla",
-     "the same scan and differential evolution (SciPy's best1bin from a Latin hypercube, "
-     "parallel generations), then COBYLA from the islands of the map, in rounds",
-     ZP_SEARCH_DE, NLOPT_LN_COBYLA},
     {"scan-bobyqa", "the same scan, then BOBYQA on the penalised time", ZP_SEARCH_SCAN,
      NLOPT_LN_BOBYQA},
     {"scan-sbplx", "the same scan, then Sbplx on the penalised time", ZP_SEARCH_SCAN,
@@ -282,9 +277,6 @@ static zp_status scan_round(zp_search *S, int r, char *err, size_t errlen) {
     } else {
         zp_scan_lds(S, r == 0 ? LDS_FIRST
                               : (LDS_FIRST << (r - 1) < LDS_MAX ? LDS_FIRST << (r - 1) : LDS_MAX));
-        if (alg->global == ZP_SEARCH_DE) {
-            zp_de_generations(S, DE_PER_PARAM * (long)S->n);
-        }
     }
     /* lines through the best and, first, through the hardest push: times fall as the pushes
        grow, so the fastest schedules lie towards that corner */
@@ -564,7 +556,6 @@ static void end(zp_search *S) {
         !res->converged && !res->interrupted && !res->timed_out && zp_search_halted(S);
     res->wall_s = zp_search_since(S);
     zp_pool_free(S->pool);
-    zp_de_free(S->de);
     if (S->q) {
         gsl_qrng_free(S->q);
     }

@@ -16,14 +16,13 @@
                                 to help */
 
 #define ZP_SEARCH_SCAN -1
-#define ZP_SEARCH_DE -2
 
 /* The strategies the search offers: a global phase, then a local polish. */
 typedef struct zp_search_algo {
     const char *name; /* as typed after --algorithm */
     const char *doc;  /* one line for --help */
     int global;       /* nlopt_algorithm of the global phase, or ZP_SEARCH_SCAN: the parallel
-                         scan, ZP_SEARCH_DE: the scan and differential evolution */
+                         scan */
     int local;        /* nlopt_algorithm of the polish */
 } zp_search_algo;
 

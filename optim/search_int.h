@@ -27,7 +27,6 @@ typedef struct zp_polish_rec {
     int at; /* archive index of its end, -1: not in the archive */
 } zp_polish_rec;
 
-typedef struct zp_de zp_de; /* de.c: a differential evolution's population */
 
 typedef struct zp_search {
     const zp_objective *ob;
@@ -50,7 +49,6 @@ typedef struct zp_search {
     int nlined, linecap;
     int bdiag;     /* archive index of the best constant push, -1: none yet */
     int diag_from; /* ... the last one polished, -1: none */
-    zp_de *de; /* owned, NULL: none yet */
     int round;
     long round_cost; /* simulations of the costliest completed round */
     const char *phase;
@@ -105,12 +103,6 @@ typedef struct zp_islands {
 /* 0, or -1 when out of memory (m empty) */
 int zp_islands_map(const zp_search *S, zp_islands *m);
 void zp_islands_free(zp_islands *m);
-
-/* de.c: generations of differential evolution (its first population a seeded Latin hypercube
-   over the box, run the first time) while a whole generation fits in budget simulations; every
-   point run joins the archive. Returns the generations run (0: too few points, or out of memory). */
-int zp_de_generations(zp_search *S, long budget);
-void zp_de_free(zp_de *d);
 
 /* polish.c: local polishes from the starts, in parallel, with budgets fixed in order;
    diag: a one-variable polish of the constant push. ZP_OK or ZP_ERR_INPUT (NLopt refused). */
