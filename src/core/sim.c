@@ -11,6 +11,7 @@
 
 #include "accuracy.h"
 #include "events.h"
+#include "graze.h"
 #include "impulse.h"
 
 /* ZP_ZENO_RUN crossings of one kink in a row, each closer than ZP_ZENO_DT (s) to the one
@@ -560,6 +561,17 @@ static double stop_after(const zp_sim *s, double t) {
     return s->o.t_max;
 }
 
+/* whether the advance ended on a located death root; if not, a joint found past the death
+   angle there (at an extremum) grazed it inside the step, and zp_graze_locate ends the run */
+static int died_at_root(const zp_model *m, const int *roots, zp_adv adv) {
+    for (int i = 0; adv == ZP_ADV_ROOT && i < m->nlink; i++) {
+        if (roots[ZP_ROOT_DEATH + i]) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
 static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result *r) {
     zp_chain c;
     if (in->start) {
@@ -594,6 +606,7 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     }
     for (;;) {
         char err[256] = "";
+        double t_before = t;
         zp_adv adv = s->meth->advance(s->mwork, &t, s->y, s->roots, err, sizeof err);
         int bad = first_non_finite(s->y, s->n);
         long steps_now = 0, evals_now = 0;
@@ -608,6 +621,16 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
                          s->o.max_steps);
             }
             return fail(s, r, t, err);
+        }
+        if (!died_at_root(m, s->roots, adv)) {
+            int link;
+            if (zp_graze_locate(m, s->form, s->meth, s->mwork, t_before, t, s->y, s->n, &t,
+                                s->yout, &link)) {
+                memcpy(s->y, s->yout, sizeof *s->y * s->n);
+                memset(s->roots, 0, sizeof *s->roots * s->nroot);
+                s->roots[ZP_ROOT_DEATH + link] = 1;
+                adv = ZP_ADV_ROOT;
+            }
         }
         track_extremes(s, t, s->y, r);
         frames_at_x_in_step(s, in, t, &oc);

@@ -1,0 +1,113 @@
+/* A grazing death (src/core/graze.c): a joint that passes the death angle and comes back inside
+   one integrator step is a death by every method, at the time it first reached the angle.
+   Independent expectations: the same run with the death angle out of reach takes the same steps
+   up to there, so its dense output at the reported time must show the joint exactly at the
+   death angle, and every earlier trajectory row inside it; and the seed at a constant 12.0869 N,
+   whose toe joint grazes 180 deg, dies by every method. */
+#include <math.h>
+#include <string.h>
+
+#include "check.h"
+#include "testutil.h"
+
+#define DEG (180.0 / M_PI)
+/* deg the death angle is set below a finishing run's largest angle: a peak this shallow stays
+   past the angle for far less than one step at rtol 1e-6 */
+#define GRAZE_DEPTH_DEG 1e-4
+/* rad: the reported time is bisected on the dense output to the last bit of t; the angle there
+   moves by its rate (~1 rad/s) times that */
+#define AT_ANGLE_TOL 1e-9
+
+static const char *const methods[] = {"cvode-adams", "cvode-bdf", "gsl-rk8pd", "gsl-rk4imp"};
+
+static const char *seed_ini(double death_deg) {
+    static char buf[1024];
+    snprintf(buf, sizeof buf,
+             "[course]\nx_start = 0\nsection = 60  : (x/10 - 3)^2 + 1\n"
+             "section = 100 : -x/10 + 16\nsection = 140 : -(x/10 - 12)^2 + 10\n"
+             "[trolley]\nmass = 30\n[body]\nlengths = 5, 5, 5\nmasses = 15, 5, 2\ndamping = 1\n"
+             "death_angle = %.17g\n",
+             death_deg);
+    return buf;
+}
+
+static void check_graze(const char *method, double rtol) {
+    zp_scene sc;
+    zp_model *m = tu_model(seed_ini(180), &sc);
+    zp_sim_opts o = tu_opts(&sc, rtol);
+    o.method = zp_method_find(method);
+    double f[3] = {10, 10, 10};
+    zp_schedule sched = tu_sched(m, f);
+    zp_input in = {.sched = &sched};
+    zp_result alive = *tu_run(m, &o, &in);
+    CHECK(alive.outcome == ZP_OUTCOME_FINISHED);
+    int k = 0;
+    for (int i = 1; i < m->nlink; i++) {
+        k = alive.max_rel_angle[i] > alive.max_rel_angle[k] ? i : k;
+    }
+
+    /* the death angle just under the largest angle of the run */
+    zp_scene sc2;
+    double death = alive.max_rel_angle[k] * DEG - GRAZE_DEPTH_DEG;
+    zp_model *m2 = tu_model(seed_ini(death), &sc2);
+    zp_result died = *tu_run(m2, &o, &in);
+    CHECK(died.outcome == ZP_OUTCOME_DIED);
+    CHECK(died.died_link == k + 1);
+    CHECK(died.time < alive.time);
+
+    /* the first crossing of the death angle, seen on the run that survives it */
+    o.output_dt = 1e-3;
+    in.sample_t = &died.time;
+    in.nsample = 1;
+    zp_sim *s = zp_sim_create(m, &o);
+    static zp_result r;
+    CHECK(s && zp_sim_run(m, s, &in, &r) == ZP_OK);
+    int n;
+    const zp_row *smp = zp_sim_samples(s, &n);
+    CHECK(n == 1);
+    double phi[ZP_MAX_LINKS], w[ZP_MAX_LINKS];
+    if (n == 1) {
+        zp_state_relative(m, &smp[0].c, phi, w);
+        CHECK_NEAR(fabs(phi[k]), m2->phi_max, AT_ANGLE_TOL);
+    }
+    const zp_row *rows = zp_sim_rows(s, &n);
+    int before = 0;
+    for (int j = 0; j < n && rows[j].t < died.time; j++) {
+        zp_state_relative(m, &rows[j].c, phi, w);
+        before += fabs(phi[k]) >= m2->phi_max;
+    }
+    CHECK(before == 0);
+    printf("%-12s rtol %.0e: link %d dies at %.9f s (largest angle %.6f deg)\n", method, rtol,
+           died.died_link, died.time, alive.max_rel_angle[k] * DEG);
+    zp_sim_free(s);
+    zp_model_free(m2);
+    zp_model_free(m);
+}
+
+/* the seed at a constant 12.0869 N: the toe joint reaches 180 deg at about 14.73 s */
+static void check_seed_graze(const char *method) {
+    zp_scene sc;
+    zp_model *m = tu_model(seed_ini(180), &sc);
+    zp_sim_opts o = tu_opts(&sc, 1e-8);
+    o.method = zp_method_find(method);
+    double f[3] = {12.0869, 12.0869, 12.0869};
+    zp_schedule sched = tu_sched(m, f);
+    zp_input in = {.sched = &sched};
+    const zp_result *r = tu_run(m, &o, &in);
+    CHECK(r->outcome == ZP_OUTCOME_DIED);
+    CHECK(r->died_link == 3);
+    CHECK(r->max_rel_angle[2] <= m->phi_max * (1 + 1e-12));
+    printf("%-12s seed at 12.0869 N: %s at %.9f s\n", method, zp_sim_outcome_name(r->outcome),
+           r->time);
+    zp_model_free(m);
+}
+
+int main(void) {
+    for (size_t i = 0; i < sizeof methods / sizeof *methods; i++) {
+        check_graze(methods[i], 1e-6);
+        check_graze(methods[i], 1e-9);
+        check_seed_graze(methods[i]);
+    }
+    zp_sim_free(*tu_last_sim());
+    return CHECK_DONE();
+}
