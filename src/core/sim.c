@@ -3,7 +3,6 @@
 #include "sim.h"
 
 #include <gsl/gsl_errno.h>
-#include <gsl/gsl_min.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -13,6 +12,7 @@
 #include "events.h"
 #include "graze.h"
 #include "impulse.h"
+#include "peaks.h"
 
 /* ZP_ZENO_RUN crossings of one kink in a row, each closer than ZP_ZENO_DT (s) to the one
    before, mean the trolley has come to rest in it (an accumulation of ever smaller bounces).
@@ -21,9 +21,6 @@
 #define ZP_ZENO_RUN 4
 /* an output time this close (s) to an event shows the state after the event */
 #define ZP_EVENT_TIME_EPS 1e-9
-/* a load peak inside a step is located to this share of its time (Brent's method) */
-#define ZP_PEAK_RTOL 1e-10
-#define ZP_PEAK_ITER 60
 
 typedef zp_track (*track_fn)(const zp_model *m, const zp_course *c, int sec, double x);
 
@@ -56,7 +53,7 @@ struct zp_sim {
 
     zp_crossing *cross;  /* owned, ZP_MAX_CROSSINGS */
     int ncross;          /* kept in cross (the result counts all) */
-    gsl_min_fminimizer *brent; /* owned when o.peaks */
+    zp_peaks *pk;        /* owned when o.peaks */
 
     /* [physics] */
     track_fn track; /* the course with its arcs, or the plain course (chosen at create) */
@@ -138,9 +135,7 @@ void zp_sim_free(zp_sim *s) {
     free(s->samples);
     free(s->frames);
     free(s->cross);
-    if (s->brent) {
-        gsl_min_fminimizer_free(s->brent);
-    }
+    zp_peaks_free(s->pk);
     free(s);
 }
 
@@ -179,14 +174,14 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
                                m->physics & ZP_PHYS_ROLLING ? sim_root_rolling : sim_root, s,
                                &mo);
     if (o->peaks) {
-        s->brent = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
+        s->pk = zp_peaks_create(2 * m->nlink);
     }
     if (o->output_dt > 0) {
         s->cap_rows = (int)fmin(o->t_max / o->output_dt + 2, ZP_MAX_ROWS + 2);
         s->rows = malloc(sizeof *s->rows * s->cap_rows);
     }
     if (!s->course || !s->fwork || !s->y || !s->ydot || !s->yout || !s->roots || !s->cross ||
-        !s->mwork || (o->output_dt > 0 && !s->rows) || (o->peaks && !s->brent)) {
+        !s->mwork || (o->output_dt > 0 && !s->rows) || (o->peaks && !s->pk)) {
         zp_sim_free(s);
         return NULL;
     }
@@ -242,81 +237,32 @@ static zp_row row_of(zp_sim *s, double t, const double *y) {
     return r;
 }
 
-/* the largest felt acceleration (g) and joint force (N) over the links at state y; the peaks
-   take them in as a side effect */
-static void load_levels(zp_sim *s, double t, const double *y, double lv[2]) {
+/* every load history at state y: felt acceleration per link (g), then force per joint (N);
+   the peaks take them in as a side effect */
+static void load_values(zp_sim *s, double t, const double *y, double *v) {
     zp_row r = row_of(s, t, y);
-    double load[2][ZP_MAX_LINKS]; /* acceleration, joint force */
-    zp_row_loads(s->m, &r.loads, load[1], load[0]);
-    for (int q = 0; q < 2; q++) {
-        lv[q] = 0;
-        for (int i = 0; i < s->m->nlink; i++) {
-            lv[q] = fmax(lv[q], load[q][i]);
-        }
-        lv[q] = isfinite(lv[q]) ? lv[q] : 0;
+    int n = s->m->nlink;
+    zp_row_loads(s->m, &r.loads, v + n, v);
+    for (int q = 0; q < 2 * n; q++) {
+        v[q] = isfinite(v[q]) ? v[q] : 0;
     }
 }
 
-typedef struct level_fn {
-    zp_sim *s;
-    int which; /* 0: felt acceleration, 1: joint force */
-} level_fn;
-
-/* minus one load level at time t inside the last step, from the dense output */
-static double minus_level(double t, void *p) {
-    level_fn *L = p;
-    double lv[2] = {0, 0};
-    if (L->s->meth->interpolate(L->s->mwork, t, L->s->yout) == 0) {
-        load_levels(L->s, t, L->s->yout, lv);
+/* the load histories at time t inside the last step, from the dense output */
+static int dense_load_values(double t, double *v, void *user) {
+    zp_sim *s = user;
+    if (s->meth->interpolate(s->mwork, t, s->yout)) {
+        return 1;
     }
-    return -lv[L->which];
+    load_values(s, t, s->yout, v);
+    return 0;
 }
 
-/* a maximum of level q inside the step [a, b] (f: minus the level at a, at guess and at b,
-   the guess below both ends), refined by Brent's method; every evaluation feeds the peaks */
-static void brent_peak(zp_sim *s, int q, double a, double fa, double guess, double fg, double b,
-                       double fb) {
-    level_fn L = {s, q};
-    gsl_function F = {minus_level, &L};
-    if (gsl_min_fminimizer_set_with_values(s->brent, &F, guess, fg, a, fa, b, fb)) {
-        return;
-    }
-    for (int it = 0; it < ZP_PEAK_ITER; it++) {
-        if (gsl_min_fminimizer_iterate(s->brent)) {
-            return;
-        }
-        double lo = gsl_min_fminimizer_x_lower(s->brent), hi = gsl_min_fminimizer_x_upper(s->brent);
-        if (gsl_min_test_interval(lo, hi, 0, ZP_PEAK_RTOL) == GSL_SUCCESS) {
-            return;
-        }
-    }
-}
-
-/* the load peaks of the step [a, b] just taken (levels la, lb at its ends): the midpoint, and
-   the top of the parabola through the three, bracket a maximum inside for Brent's method */
-static void step_peaks(zp_sim *s, double a, double b, const double la[2], const double lb[2]) {
-    double m = 0.5 * (a + b), lm[2];
-    if (!(b > a) || s->meth->interpolate(s->mwork, m, s->yout)) {
-        return;
-    }
-    load_levels(s, m, s->yout, lm);
-    for (int q = 0; q < 2; q++) {
-        double guess = m, top = lm[q];
-        if (!(top > la[q] && top > lb[q])) {
-            double d1 = (m - a) * (lm[q] - lb[q]), d2 = (m - b) * (lm[q] - la[q]);
-            double v = d1 - d2 != 0 ? m - 0.5 * ((m - a) * d1 - (m - b) * d2) / (d1 - d2) : a;
-            if (!(v > a && v < b)) {
-                continue;
-            }
-            level_fn L = {s, q};
-            guess = v;
-            top = -minus_level(v, &L);
-            if (!(top > la[q] && top > lb[q])) {
-                continue;
-            }
-        }
-        brent_peak(s, q, a, -la[q], guess, -top, b, -lb[q]);
-    }
+/* the integrator (re)starts at (t, s->y): the peak locator starts a new interval there */
+static void peaks_restart(zp_sim *s, double t) {
+    double v[ZP_PEAKS_MAX];
+    load_values(s, t, s->y, v);
+    zp_peaks_restart(s->pk, t, v);
 }
 
 /* which way the trolley leaves x: its velocity, or from rest its acceleration */
@@ -600,9 +546,9 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
         return fail(s, r, t, "the integrator could not start");
     }
-    double ta = t, la[2] = {0, 0}; /* the last step's start and load levels there (o.peaks) */
     if (s->o.peaks) {
-        load_levels(s, t, s->y, la);
+        zp_peaks_reset(s->pk);
+        peaks_restart(s, t);
     }
     for (;;) {
         char err[256] = "";
@@ -635,11 +581,9 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
         track_extremes(s, t, s->y, r);
         frames_at_x_in_step(s, in, t, &oc);
         if (s->o.peaks) {
-            double lb[2];
-            load_levels(s, t, s->y, lb);
-            step_peaks(s, ta, t, la, lb);
-            ta = t;
-            memcpy(la, lb, sizeof la);
+            double vb[ZP_PEAKS_MAX];
+            load_values(s, t, s->y, vb);
+            zp_peaks_interval(s->pk, t, vb, dense_load_values, s);
         }
         if (adv != ZP_ADV_ROOT) {
             emit_outputs(s, in, t, 1, &oc);
@@ -652,6 +596,9 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
                 add_stats(s, r);
                 if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
                     return fail(s, r, t, "the integrator could not restart at a break");
+                }
+                if (s->o.peaks) {
+                    peaks_restart(s, t);
                 }
                 continue;
             } else if (adv == ZP_ADV_STOP) {
@@ -686,6 +633,9 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
                 return fail(s, r, t, "the integrator could not restart at rest");
             }
+            if (s->o.peaks) {
+                peaks_restart(s, t);
+            }
             continue;
         }
         if (ev == ZP_EVENT_FINISH) {
@@ -714,7 +664,7 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             return fail(s, r, t, "the integrator could not restart after the kink");
         }
         if (s->o.peaks) {
-            load_levels(s, t, s->y, la);
+            peaks_restart(s, t);
         }
     }
 }
