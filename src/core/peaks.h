@@ -10,9 +10,10 @@
 
 #define ZP_PEAKS_MAX (2 * ZP_MAX_LINKS) /* histories: felt g per link, then force per joint */
 
-/* Every history's value at time t inside the current interval (from the dense output) into v;
+/* Every history's value at time t inside the current interval into v: from the dense output,
+   or with exact set at a located maximum from a state as accurate as the integrator's steps.
    0 on success. The caller's peaks take in what it evaluates. */
-typedef int (*zp_peaks_fn)(double t, double *v, void *user);
+typedef int (*zp_peaks_fn)(double t, int exact, double *v, void *user);
 
 typedef struct zp_peaks {
     int nq;                     /* histories */
@@ -20,6 +21,7 @@ typedef struct zp_peaks {
     double v[ZP_PEAKS_MAX];     /* their values there */
     double slope[ZP_PEAKS_MAX]; /* their rates there (per s); NAN: unknown (a restart) */
     double best[ZP_PEAKS_MAX];  /* the largest value seen in this run */
+    double gap[ZP_PEAKS_MAX];   /* the largest |exact - dense output| met at a maximum */
     double vtmp[ZP_PEAKS_MAX];  /* scratch */
     int q;                      /* the history Brent's method works on */
     zp_peaks_fn f;              /* borrowed, with user, during an interval */

@@ -248,10 +248,14 @@ static void load_values(zp_sim *s, double t, const double *y, double *v) {
     }
 }
 
-/* the load histories at time t inside the last step, from the dense output */
-static int dense_load_values(double t, double *v, void *user) {
+/* the load histories at time t inside the last step, from the dense output or (exact, where
+   the method offers it) a step landed there */
+static int dense_load_values(double t, int exact, double *v, void *user) {
     zp_sim *s = user;
-    if (s->meth->interpolate(s->mwork, t, s->yout)) {
+    if (exact && !s->meth->land) {
+        exact = 0;
+    }
+    if ((exact ? s->meth->land : s->meth->interpolate)(s->mwork, t, s->yout)) {
         return 1;
     }
     load_values(s, t, s->yout, v);
@@ -583,6 +587,11 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
         if (s->o.peaks) {
             double vb[ZP_PEAKS_MAX];
             load_values(s, t, s->y, vb);
+            /* a root inside a step is landed, off the step's dense output by its error: the
+               interval is read on the one polynomial, or that gap shows as a false maximum */
+            if (adv == ZP_ADV_ROOT) {
+                dense_load_values(t, 0, vb, s);
+            }
             zp_peaks_interval(s->pk, t, vb, dense_load_values, s);
         }
         if (adv != ZP_ADV_ROOT) {
