@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "held.h"
 #include "pool.h"
 #include "state.h"
 #include "estimate.h"
@@ -563,6 +564,15 @@ zp_status zp_robust_solve(zp_robust_problem *p, const zp_scene *sc, const zp_sim
     to.track_loads = 0;
     st = zp_robust_verify(&p->ob, &p->box, &to, res->force, sc->verify_samples, sc->seed,
                           o->nthreads, sp, &p->check);
+    /* the worst margin is over everything held as well as everything verified (rank 0 alone
+       holds the set the search grew) */
+    zp_held h;
+    if (!st && (!sp || sp->rank == 0) &&
+        !(st = zp_held_check(&p->ob, &p->box, &p->info.worst, &to, res->force, o->nthreads, &h))) {
+        p->check.held_margin_deg = h.worst_margin_deg;
+        p->check.held_worst = h.worst;
+        p->check.worst_margin_deg = fmin(p->check.worst_margin_deg, h.worst_margin_deg);
+    }
     if (st) {
         snprintf(err, errlen, "%s",
                  st == ZP_ERR_IO ? "the MPI ranks could not exchange the verification"

@@ -68,7 +68,11 @@ typedef struct zp_robust_check {
     int limits_kept; /* finished with every [limits] value kept */
     int all_kept;    /* both: survivable (MODEL.md) */
     double lower_95; /* 95 % lower confidence bound of P(survivable), Clopper-Pearson */
-    double worst_margin_deg; /* smallest margin over the finishing scenarios */
+    double worst_margin_deg; /* smallest margin over the finishing scenarios; after
+                                zp_robust_solve also over those of held_margin_deg */
+    double held_margin_deg;  /* zp_robust_solve: smallest margin over the nominal scene, every
+                                scenario held and the adversary's worst, rerun alike (held.h) */
+    int held_worst;          /* where (zp_held.worst) */
 } zp_robust_check;
 
 /* The worst scenario found for a schedule, and what limited it. */
