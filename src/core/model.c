@@ -196,16 +196,23 @@ static int round_kinks(zp_model *m, const zp_scene *sc, zp_diag *d) {
     return ok;
 }
 
-zp_track zp_model_track(const zp_model *m, const zp_course *course, int sec, double x) {
+int zp_model_track_arc(const zp_model *m, int sec, double x) {
     int lo = m->arc_at[sec], hi = m->arc_at[sec + 1];
-    const zp_arc *a = lo >= 0 && x < m->arc[lo].x2   ? &m->arc[lo]
-                      : hi >= 0 && x > m->arc[hi].x1 ? &m->arc[hi]
-                                                     : NULL;
-    if (!a) {
+    return lo >= 0 && x < m->arc[lo].x2 ? lo : hi >= 0 && x > m->arc[hi].x1 ? hi : -1;
+}
+
+zp_track zp_model_track_piece(const zp_model *m, const zp_course *course, int sec, int arc,
+                              double x) {
+    if (arc < 0) {
         return zp_course_eval(course, sec, x);
     }
+    const zp_arc *a = &m->arc[arc];
     double u = x - a->cx, h = sqrt(a->r * a->r - u * u);
     return (zp_track){a->cy - a->side * h, a->side * u / h, a->side * a->r * a->r / (h * h * h)};
+}
+
+zp_track zp_model_track(const zp_model *m, const zp_course *course, int sec, double x) {
+    return zp_model_track_piece(m, course, sec, zp_model_track_arc(m, sec, x), x);
 }
 
 /* the optional effects the scene names, as the equations of motion read them */

@@ -72,6 +72,13 @@ void zp_model_free(zp_model *m);
 /* The course under the trolley on section sec at x, arcs included (the plain course when the
    model has none); course: the caller's evaluators. */
 zp_track zp_model_track(const zp_model *m, const zp_course *course, int sec, double x);
+/* Which arc zp_model_track reads at x on section sec: its index, or -1 for the plain course. */
+int zp_model_track_arc(const zp_model *m, int sec, double x);
+/* The course as read on one piece: arc `arc` (its circle, continued past its tangent points)
+   or with arc -1 the plain course of section sec, so a step that overshoots a tangent point
+   sees no jump of f'' before its root is found. */
+zp_track zp_model_track_piece(const zp_model *m, const zp_course *course, int sec, int arc,
+                              double x);
 /* Recomputes mtot, B and C from m0, len, half, mass and inertia (after changing them). */
 void zp_model_derive(zp_model *m);
 /* A course for one simulating thread (zp_course_for_thread: compiled code shared by all),

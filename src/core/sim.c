@@ -59,6 +59,8 @@ struct zp_sim {
     track_fn track; /* the course with its arcs, or the plain course (chosen at create) */
     int w0;         /* index of the first work integral in the state */
     zp_arc_peaks arc_peaks[ZP_MAX_SECTIONS]; /* load peaks on each arc */
+    int arc; /* the piece the integrator reads since its last restart: an arc, or -1 the plain
+                course (zp_model_track_piece) */
 };
 
 static zp_track plain_track(const zp_model *m, const zp_course *c, int sec, double x) {
@@ -66,10 +68,9 @@ static zp_track plain_track(const zp_model *m, const zp_course *c, int sec, doub
     return zp_course_eval(c, sec, x);
 }
 
-/* course and drive at time t and the trolley's x on the current section; track a constant
-   where inlined */
-static inline zp_drive_now drive_at(const zp_sim *s, track_fn track, double t, double x) {
-    zp_drive_now dn = {track(s->m, s->course, s->sec, x), 0, 0, 0};
+/* the drive at time t and the trolley's x on the current section, the course there being tr */
+static inline zp_drive_now drive_with(const zp_sim *s, zp_track tr, double t, double x) {
+    zp_drive_now dn = {tr, 0, 0, 0};
     double F = zp_schedule_force(s->sched, t, x, s->sec);
     if (s->m->drive == ZP_DRIVE_TANGENT) {
         double norm = sqrt(1 + dn.tr.fp * dn.tr.fp);
@@ -79,6 +80,12 @@ static inline zp_drive_now drive_at(const zp_sim *s, track_fn track, double t, d
         dn.fx = F;
     }
     return dn;
+}
+
+/* course and drive at time t and the trolley's x on the current section; track a constant
+   where inlined */
+static inline zp_drive_now drive_at(const zp_sim *s, track_fn track, double t, double x) {
+    return drive_with(s, track(s->m, s->course, s->sec, x), t, x);
 }
 
 static zp_drive_now drive_now(const zp_sim *s, double t, double x) {
@@ -95,7 +102,8 @@ int zp_sim_rhs(double t, const double *y, double *ydot, void *user) {
 
 static int sim_rhs_rounded(double t, const double *y, double *ydot, void *user) {
     zp_sim *s = user;
-    zp_drive_now dn = drive_at(s, zp_model_track, t, y[0]);
+    zp_track tr = zp_model_track_piece(s->m, s->course, s->sec, s->arc, y[0]);
+    zp_drive_now dn = drive_with(s, tr, t, y[0]);
     return s->form->rhs(s->m, s->fwork, &dn, y, ydot, NULL);
 }
 
@@ -164,9 +172,9 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
     s->yout = calloc(s->n, sizeof *s->yout);
     s->roots = calloc(s->nroot, sizeof *s->roots);
     s->cross = malloc(sizeof *s->cross * ZP_MAX_CROSSINGS);
-    int dir[3 + 2 * ZP_MAX_LINKS];
+    int dir[ZP_EVENTS_MAX];
     zp_events_directions(m, dir);
-    int state_only[3 + 2 * ZP_MAX_LINKS];
+    int state_only[ZP_EVENTS_MAX];
     zp_events_state_only(m, state_only);
     zp_method_opts mo = {o->rtol, o->atol, o->max_steps, state_only};
     s->mwork = s->meth->create(s->n, s->nroot, dir,
@@ -511,6 +519,14 @@ static double stop_after(const zp_sim *s, double t) {
     return s->o.t_max;
 }
 
+/* the integrator (re)started at (t, s->y), reading the course piece the trolley is on */
+static int restart(zp_sim *s, double t) {
+    if (s->m->physics & ZP_PHYS_ROUNDED) {
+        s->arc = zp_model_track_arc(s->m, s->sec, s->y[0]);
+    }
+    return s->meth->reset(s->mwork, t, s->y, stop_after(s, t));
+}
+
 /* whether the advance ended on a located death root; if not, a joint found past the death
    angle there (at an extremum) grazed it inside the step, and zp_graze_locate ends the run */
 static int died_at_root(const zp_model *m, const int *roots, zp_adv adv) {
@@ -547,7 +563,7 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
         finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_ROLLED_BACK);
         return ZP_OK;
     }
-    if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
+    if (restart(s, t)) {
         return fail(s, r, t, "the integrator could not start");
     }
     if (s->o.peaks) {
@@ -603,7 +619,7 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             } else if (adv == ZP_ADV_STOP && s->nbreak > 0 && t < s->o.t_max) {
                 /* a break of the schedule: the force jumps, the integrator starts afresh */
                 add_stats(s, r);
-                if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
+                if (restart(s, t)) {
                     return fail(s, r, t, "the integrator could not restart at a break");
                 }
                 if (s->o.peaks) {
@@ -626,6 +642,27 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             continue;
         }
         add_stats(s, r);
+        if (ev == ZP_EVENT_TANGENT) {
+            /* f'' jumps at an arc's tangent point: a step across it would lose the method's
+               order, so the integrator restarts there as at a section's end, the trolley put
+               one bit past the point the way it moves: a root left a hair short would fire
+               again at once, and the restart's rates must be those of the side it enters */
+            zp_chain c = chain_of(s, s->y);
+            int it = zp_events_tangent(m), lo = m->arc_at[s->sec], hi = m->arc_at[s->sec + 1];
+            c.q[0] = nextafter(s->roots[it] ? m->arc[lo].x2 : m->arc[hi].x1,
+                               c.v[0] < 0 ? -INFINITY : INFINITY);
+            c.q[1] = s->track(m, s->course, s->sec, c.q[0]).f;
+            double wk[ZP_W_MAX];
+            memcpy(wk, s->y + s->w0, sizeof *wk * m->nwork);
+            s->form->from_chain(m, &c, wk, s->y);
+            if (restart(s, t)) {
+                return fail(s, r, t, "the integrator could not restart at an arc's end");
+            }
+            if (s->o.peaks) {
+                peaks_restart(s, t);
+            }
+            continue;
+        }
         if (ev == ZP_EVENT_REST) {
             /* held, or off the other way: friction turns round, the integrator restarts */
             if (held(s, t, s->y)) {
@@ -639,7 +676,7 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             double wk[ZP_W_MAX];
             memcpy(wk, s->y + s->w0, sizeof *wk * m->nwork);
             s->form->from_chain(m, &rest, wk, s->y);
-            if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
+            if (restart(s, t)) {
                 return fail(s, r, t, "the integrator could not restart at rest");
             }
             if (s->o.peaks) {
@@ -669,7 +706,7 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_TRAPPED_AT_KINK);
             return ZP_OK;
         }
-        if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
+        if (restart(s, t)) {
             return fail(s, r, t, "the integrator could not restart after the kink");
         }
         if (s->o.peaks) {
