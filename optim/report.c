@@ -4,6 +4,8 @@
 
 #include <math.h>
 
+#include "headroom.h"
+
 #define DEG (180.0 / M_PI)
 #define KMH 3.6
 #define BRAKE_KMH 10  /* zip-line practice: arriving faster than this needs a brake */
@@ -237,6 +239,42 @@ static void md_range(FILE *f, const char *what, const double range[2]) {
     }
 }
 
+/* how far past the stated box the answer holds (headroom.c) */
+static void md_headroom(FILE *f, const zp_report *r) {
+    const zp_headroom *h = &r->check->headroom;
+    if (r->check->samples == 0) {
+        return;
+    }
+    if (h->safety_factor != 1) {
+        fprintf(f, "\nHeld to the ranges widened %gx about the nominal ([robust] safety_factor); "
+                   "the verification above is on the stated ranges.\n",
+                h->safety_factor);
+    }
+    fputs("\nHeadroom past the stated ranges (along the worst direction found, by bisection; "
+          "1x is the stated range):\n\n| range | holds to | breaks at | what breaks |\n"
+          "|---|---|---|---|\n",
+          f);
+    for (int l = 0; l < ZP_HEADROOM_LINES; l++) {
+        const zp_headroom_line *L = &h->line[l];
+        if (L->range < 0) {
+            continue;
+        }
+        fprintf(f, "| %s | %.3fx", zp_headroom_range_name(L->range), L->holds);
+        if (L->range == 0) {
+            fprintf(f, " (+/-%.3g %%)", L->holds * r->sc->force_error);
+        }
+        if (isfinite(L->breaks)) {
+            fprintf(f, " | %.3fx", L->breaks);
+            if (L->range == 0) {
+                fprintf(f, " (+/-%.3g %%)", L->breaks * r->sc->force_error);
+            }
+            fprintf(f, " | %s |\n", L->limited_by);
+        } else {
+            fputs(" or more | not found | - |\n", f);
+        }
+    }
+}
+
 /* where zp_held.worst lies, in words */
 static const char *held_where(const zp_report *r, int worst) {
     static _Thread_local char buf[64];
@@ -284,9 +322,12 @@ static void md_survivable(FILE *f, const zp_report *r) {
                 c->limits_kept, c->all_kept, 100 * c->lower_95, c->worst_margin_deg,
                 c->held_margin_deg, held_where(r, c->held_worst));
     }
+    md_headroom(f, r);
     if (r->rinfo->rounds > 0 && isfinite(w->cons)) {
         zp_scenario s;
-        zp_box_scenario(r->box, w->u, &s);
+        zp_box hold; /* the adversary searched the box held */
+        zp_box_widen(r->box, r->sc->safety_factor, &hold);
+        zp_box_scenario(&hold, w->u, &s);
         fprintf(f, "\nWorst scenario found (the adversary's search of the ranges): forces x");
         for (int k = 0; k < r->m->nsec; k++) {
             fprintf(f, " %.4f", s.force[k]);

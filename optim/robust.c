@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "headroom.h"
 #include "held.h"
 #include "pool.h"
 #include "state.h"
@@ -505,8 +506,9 @@ zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_mod
     *fast = *search;
     fast->peaks = zp_limits_need_peaks(&p->ob.lim);
     zp_box_from_scene(sc, m, &p->box);
+    zp_box_widen(&p->box, sc->safety_factor, &p->hold);
     p->robust = sc->robust && p->box.d > 0;
-    if (p->robust && zp_scen_set_build(&p->set, &p->box, m, sc->robust_samples, sc->seed)) {
+    if (p->robust && zp_scen_set_build(&p->set, &p->hold, m, sc->robust_samples, sc->seed)) {
         return ZP_ERR_NOMEM;
     }
     p->ob.set = p->robust ? &p->set : NULL;
@@ -545,7 +547,7 @@ zp_status zp_robust_solve(zp_robust_problem *p, const zp_scene *sc, const zp_sim
     const zp_spread *sp = zp_spread_active(p->spread) ? p->spread : NULL;
     zp_status st = ZP_OK;
     if (!sp || sp->rank == 0) {
-        st = zp_robust_search(&p->ob, &p->box, fast, lo, hi, o, p->robust ? ZP_ROBUST_ROUNDS : 1,
+        st = zp_robust_search(&p->ob, &p->hold, fast, lo, hi, o, p->robust ? ZP_ROBUST_ROUNDS : 1,
                               res, &p->info, err, errlen);
     }
     int verify = !st && p->robust && !res->interrupted;
@@ -568,10 +570,15 @@ zp_status zp_robust_solve(zp_robust_problem *p, const zp_scene *sc, const zp_sim
        holds the set the search grew) */
     zp_held h;
     if (!st && (!sp || sp->rank == 0) &&
-        !(st = zp_held_check(&p->ob, &p->box, &p->info.worst, &to, res->force, o->nthreads, &h))) {
+        !(st = zp_held_check(&p->ob, &p->hold, &p->info.worst, &to, res->force, o->nthreads, &h))) {
         p->check.held_margin_deg = h.worst_margin_deg;
         p->check.held_worst = h.worst;
         p->check.worst_margin_deg = fmin(p->check.worst_margin_deg, h.worst_margin_deg);
+        /* past the stated box, along the adversary's worst direction */
+        p->check.headroom.safety_factor = sc->safety_factor;
+        zp_headroom_find(&p->ob, &p->box, &p->hold,
+                         isfinite(p->info.worst.cons) ? p->info.worst.u : NULL, &to, res->force,
+                         &p->check.headroom);
     }
     if (st) {
         snprintf(err, errlen, "%s",

@@ -60,6 +60,21 @@ zp_status zp_scen_set_add_model(zp_scen_set *set, const zp_model *m, const zp_sc
 void zp_scen_set_reorder(zp_scen_set *set);
 void zp_scen_set_free(zp_scen_set *set);
 
+/* How far past the stated box the answer still holds (headroom.c): per range and for the box
+   as a whole, along the worst direction found, as a factor on the stated range about the
+   nominal. */
+enum { ZP_HEADROOM_LINES = 7 }; /* force, mass, length, trolley, damping, start angle; the box */
+typedef struct zp_headroom_line {
+    int range;      /* 0..5 the range in that order, 6 the whole box; -1: not varied */
+    double holds;   /* the largest factor found holding (bisected; 0: even the nominal breaks) */
+    double breaks;  /* the first factor found breaking; INFINITY: none up to the search's cap */
+    char limited_by[32]; /* what breaks there: died, stalled, margin, a [limits] key */
+} zp_headroom_line;
+typedef struct zp_headroom {
+    double safety_factor;                 /* the box held: the stated one widened this much */
+    zp_headroom_line line[ZP_HEADROOM_LINES];
+} zp_headroom;
+
 /* The answer on fresh random scenarios (a stream apart from the set's). */
 typedef struct zp_robust_check {
     int samples;
@@ -73,6 +88,7 @@ typedef struct zp_robust_check {
     double held_margin_deg;  /* zp_robust_solve: smallest margin over the nominal scene, every
                                 scenario held and the adversary's worst, rerun alike (held.h) */
     int held_worst;          /* where (zp_held.worst) */
+    zp_headroom headroom;    /* zp_robust_solve: past the stated box */
 } zp_robust_check;
 
 /* The worst scenario found for a schedule, and what limited it. */
@@ -115,7 +131,8 @@ zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim
 typedef struct zp_robust_problem {
     zp_objective ob;
     int robust;          /* the scene has [robust] ranges: ob.set = &set */
-    zp_box box;
+    zp_box box;          /* the stated box: fresh scenarios and reports */
+    zp_box hold;         /* the box held: box widened by [robust] safety_factor */
     zp_scen_set set;
     zp_robust_info info;
     zp_robust_check check; /* samples 0: not verified */

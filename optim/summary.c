@@ -2,6 +2,7 @@
    verification, the baseline, robustness and the evidence of convergence. */
 #include <math.h>
 
+#include "headroom.h"
 #include "method.h"
 #include "out_json.h"
 #include "report.h"
@@ -72,6 +73,37 @@ static void json_accuracy(FILE *f, const zp_accuracy *a) {
     fprintf(f, ", \"reruns\": %d}", a->reruns);
 }
 
+void zp_summary_headroom_json(FILE *f, const zp_headroom *h) {
+    const zp_headroom_line *box = &h->line[ZP_HEADROOM_LINES - 1];
+    fputs("{\"factor\": ", f);
+    zp_out_json_number(f, box->range < 0 ? NAN : box->holds);
+    fputs(", \"limited_by\": ", f);
+    zp_out_json_string(f, box->range < 0 ? "" : box->limited_by);
+    fputs(", \"breaks_at\": ", f);
+    zp_out_json_number(f, box->range < 0 || !isfinite(box->breaks) ? NAN : box->breaks);
+    fputs(", \"safety_factor\": ", f);
+    zp_out_json_number(f, h->safety_factor);
+    fputs(", \"ranges\": [", f);
+    int first = 1;
+    for (int l = 0; l + 1 < ZP_HEADROOM_LINES; l++) {
+        const zp_headroom_line *L = &h->line[l];
+        if (L->range < 0) {
+            continue;
+        }
+        fprintf(f, "%s{\"range\": ", first ? "" : ", ");
+        zp_out_json_string(f, zp_headroom_range_name(L->range));
+        fputs(", \"factor\": ", f);
+        zp_out_json_number(f, L->holds);
+        fputs(", \"breaks_at\": ", f);
+        zp_out_json_number(f, isfinite(L->breaks) ? L->breaks : NAN);
+        fputs(", \"limited_by\": ", f);
+        zp_out_json_string(f, L->limited_by);
+        fputs("}", f);
+        first = 0;
+    }
+    fputs("]}", f);
+}
+
 /* the robust search's key (CLI.md): its scenarios, and the answer on fresh ones */
 static void json_scenarios(FILE *f, const zp_report *r) {
     const zp_robust_check *c = r->check;
@@ -84,7 +116,9 @@ static void json_scenarios(FILE *f, const zp_report *r) {
                "\"margin_kept\": %d, \"limits_kept\": %d, \"all_kept\": %d, \"lower_95\": ",
             r->set->runs, c->samples, c->survived, c->margin_kept, c->limits_kept, c->all_kept);
     zp_out_json_number(f, c->lower_95);
-    fputs("}}", f);
+    fputs("}, \"headroom\": ", f);
+    zp_summary_headroom_json(f, &c->headroom);
+    fputs("}", f);
 }
 
 void zp_report_write_json(FILE *f, const zp_report *r) {

@@ -309,6 +309,16 @@ static void print_summary(const zp_report *r) {
                "finished, %d kept the margin, %d every limit: P(survivable) >= %.4f (95 %%)\n",
                r->set->n, r->rinfo->added, c->samples, c->survived, c->margin_kept,
                c->limits_kept, c->lower_95);
+        const zp_headroom_line *L = &c->headroom.line[ZP_HEADROOM_LINES - 1];
+        if (L->range >= 0 && isfinite(L->breaks)) {
+            printf("headroom: holds to %.3fx the stated ranges along the worst direction found, "
+                   "breaks at %.3fx (%s)\n",
+                   L->holds, L->breaks, L->limited_by);
+        } else if (L->range >= 0) {
+            printf("headroom: holds to %.3fx the stated ranges or more along the worst "
+                   "direction found\n",
+                   L->holds);
+        }
     }
     char conv[512];
     zp_report_convergence(conv, sizeof conv, s);

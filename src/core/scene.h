@@ -93,6 +93,8 @@ typedef struct zp_scene {
     double start_angle;           /* deg, each link may start swung by up to this either way */
     int robust_samples;           /* scenarios every candidate is held to (default 64) */
     int verify_samples;           /* fresh scenarios the answer is checked on (default 2000) */
+    double safety_factor;         /* the box held is the stated one widened this much about the
+                                     nominal (default 1); reports stay against the stated box */
 
     /* [physics] (CONFIG.md, MODEL.md "Optional effects"): all off when absent */
     int ndrag;                             /* 0: no drag; else nlink + 1 */

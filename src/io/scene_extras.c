@@ -52,6 +52,22 @@ void zp_scene_read_robust(parse_ctx *c, zp_scene *sc) {
     if (zp_scene_get_whole(c, K_VERIFY_SAMPLES, 1, 1000000000, &u) > 0) {
         sc->verify_samples = (int)u;
     }
+    /* the box held is the stated one widened about the nominal (100 %): no range may then
+       reach 0 % or below */
+    double f;
+    if (zp_scene_get_number(c, K_SAFETY_FACTOR, R_POS, &f) > 0) {
+        const double *ranges[4] = {sc->mass_range, sc->length_range, sc->trolley_mass_range,
+                                   sc->damping_range};
+        int fits = f >= 1;
+        for (int q = 0; q < 4; q++) {
+            fits &= 100 + f * (ranges[q][0] - 100) > 0;
+        }
+        if (!fits) {
+            zp_scene_bad_key(c, K_SAFETY_FACTOR, "%g is out of range", f);
+        } else {
+            sc->safety_factor = f;
+        }
+    }
 }
 
 /* drag_area's count (nlink + 1) and air_density > 0 with drag are judged in scene_rules.c */

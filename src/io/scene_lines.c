@@ -54,6 +54,8 @@ const zp_scene_key zp_scene_keys[K_COUNT] = {
     [K_START_ANGLE] = {S_ROBUST, "start_angle", "a number in [0, 90) (deg)"},
     [K_SAMPLES] = {S_ROBUST, "samples", "a whole number >= 1"},
     [K_VERIFY_SAMPLES] = {S_ROBUST, "verify_samples", "a whole number >= 1"},
+    [K_SAFETY_FACTOR] = {S_ROBUST, "safety_factor",
+                         "a number >= 1 that keeps every widened range above 0 %"},
     [K_DRAG_AREA] = {S_PHYSICS, "drag_area",
                      "numbers >= 0 (m^2), the trolley's then one per link (nlink + 1)"},
     [K_AIR_DENSITY] = {S_PHYSICS, "air_density", "a number >= 0 (kg/m^3), > 0 with drag_area"},

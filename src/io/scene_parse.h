@@ -60,6 +60,7 @@ enum {
     K_START_ANGLE,
     K_SAMPLES,
     K_VERIFY_SAMPLES,
+    K_SAFETY_FACTOR,
     K_DRAG_AREA,
     K_AIR_DENSITY,
     K_WIND,

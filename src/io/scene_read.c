@@ -47,6 +47,7 @@ static void set_defaults(zp_scene *sc, const char *path) {
     }
     sc->robust_samples = 64;
     sc->verify_samples = 2000;
+    sc->safety_factor = 1;
     sc->air_density = 1.225;
 }
 

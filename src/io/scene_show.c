@@ -36,6 +36,7 @@ static const struct {
         {K_SEARCH_RTOL, offsetof(zp_scene, search_rtol)},
         {K_FORCE_ERROR, offsetof(zp_scene, force_error)},
         {K_START_ANGLE, offsetof(zp_scene, start_angle)},
+        {K_SAFETY_FACTOR, offsetof(zp_scene, safety_factor)},
         {K_AIR_DENSITY, offsetof(zp_scene, air_density)},
         {K_WIND, offsetof(zp_scene, wind)},
         {K_ROLLING, offsetof(zp_scene, rolling)},
