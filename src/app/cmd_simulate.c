@@ -155,6 +155,11 @@ static void print_limits(const zp_model *m, const zp_result *r, const zp_limits 
                    zp_limit_unit(i), lim->max[i], v[i] <= lim->max[i] ? "kept" : "BROKEN");
         }
     }
+    for (int l = 0; l < m->nenv; l++) {
+        printf("  felt g above %g g: longest %.4g s at once, allowed %g s%s\n", m->env_g[l],
+               r->env_longest[l], m->env_s[l],
+               l == zp_limits_envelope_worst(m, r) ? " (the worst level)" : "");
+    }
 }
 
 static void print_text(const zp_model *m, const zp_result *r) {

@@ -277,6 +277,10 @@ zp_model *zp_model_build(const zp_scene *sc, zp_diag *d) {
         m->damp[i] = sc->ndamping == 1 ? sc->damping[0] : sc->damping[i];
     }
     m->phi_max = sc->death_angle * M_PI / 180.0;
+    m->g_links = sc->g_links ? sc->g_links : (1u << sc->nlink) - 1;
+    m->nenv = sc->nenv;
+    memcpy(m->env_g, sc->env_g, sizeof m->env_g);
+    memcpy(m->env_s, sc->env_s, sizeof m->env_s);
     int dir = zp_drive_dir_find(sc->direction);
     m->drive = dir < 0 ? ZP_DRIVE_HORIZONTAL : (zp_drive_dir)dir;
     zp_model_derive(m);

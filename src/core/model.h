@@ -47,6 +47,10 @@ typedef struct zp_model {
     double damp[ZP_MAX_LINKS];    /* N m s/rad, joint i joins link i to its parent */
     double phi_max;               /* rad, death angle */
     zp_drive_dir drive;
+    unsigned g_links;             /* bit i: link i's felt g is judged ([limits] g_links); all set
+                                     when the scene names none */
+    int nenv;                     /* [limits] g_envelope levels, 0: none */
+    double env_g[8], env_s[8];    /* g, s: felt g above env_g[l] for at most env_s[l] at a time */
 
     /* [physics]: physics is the ZP_PHYS_* flags of the effects present, chosen once here */
     int physics;

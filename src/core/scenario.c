@@ -35,9 +35,10 @@ void zp_scenario_start(const zp_chain *nominal, int nlink, const zp_scenario *s,
     }
 }
 
-static const char *const limit_names[ZP_LIMIT_COUNT] = {"max_g", "max_joint_force",
-                                                         "max_arrival_speed", "max_kink_dv"};
-static const char *const limit_units[ZP_LIMIT_COUNT] = {"g", "N", "km/h", "m/s"};
+static const char *const limit_names[ZP_LIMIT_COUNT] = {
+    "max_g", "max_joint_force", "max_arrival_speed", "max_kink_dv", "g_envelope"};
+static const char *const limit_units[ZP_LIMIT_COUNT] = {"g", "N", "km/h", "m/s",
+                                                        "x its allowance"};
 
 const char *zp_limit_name(int i) { return limit_names[i]; }
 const char *zp_limit_unit(int i) { return limit_units[i]; }
@@ -47,6 +48,7 @@ void zp_limits_from_scene(const zp_scene *sc, zp_limits *l) {
     l->max[ZP_LIMIT_JOINT] = sc->max_joint_force;
     l->max[ZP_LIMIT_ARRIVAL] = sc->max_arrival_speed;
     l->max[ZP_LIMIT_KINK_DV] = sc->max_kink_dv;
+    l->max[ZP_LIMIT_G_ENVELOPE] = sc->nenv > 0 ? 1 : 0;
 }
 
 int zp_limits_any(const zp_limits *l) {
@@ -59,17 +61,32 @@ int zp_limits_any(const zp_limits *l) {
 }
 
 int zp_limits_need_peaks(const zp_limits *l) {
-    return l->max[ZP_LIMIT_G] > 0 || l->max[ZP_LIMIT_JOINT] > 0;
+    return l->max[ZP_LIMIT_G] > 0 || l->max[ZP_LIMIT_JOINT] > 0 ||
+           l->max[ZP_LIMIT_G_ENVELOPE] > 0;
 }
 
 void zp_limits_reached(const zp_model *m, const zp_result *r, double v[ZP_LIMIT_COUNT]) {
     v[ZP_LIMIT_G] = v[ZP_LIMIT_JOINT] = 0;
     for (int i = 0; i < m->nlink; i++) {
-        v[ZP_LIMIT_G] = fmax(v[ZP_LIMIT_G], r->peaks.acc_g[i]);
+        if (m->g_links >> i & 1) {
+            v[ZP_LIMIT_G] = fmax(v[ZP_LIMIT_G], r->peaks.acc_g[i]);
+        }
         v[ZP_LIMIT_JOINT] = fmax(v[ZP_LIMIT_JOINT], r->peaks.joint[i]);
     }
     v[ZP_LIMIT_ARRIVAL] = r->outcome == ZP_OUTCOME_FINISHED ? r->v * KMH : 0;
     v[ZP_LIMIT_KINK_DV] = r->peaks.kink_dv;
+    int w = zp_limits_envelope_worst(m, r);
+    v[ZP_LIMIT_G_ENVELOPE] = w < 0 ? 0 : r->env_longest[w] / m->env_s[w];
+}
+
+int zp_limits_envelope_worst(const zp_model *m, const zp_result *r) {
+    int w = -1;
+    for (int l = 0; l < m->nenv; l++) {
+        if (w < 0 || r->env_longest[l] / m->env_s[l] > r->env_longest[w] / m->env_s[w]) {
+            w = l;
+        }
+    }
+    return w;
 }
 
 double zp_limits_excess(const zp_limits *l, const zp_model *m, const zp_result *r, int *which) {

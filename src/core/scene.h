@@ -82,6 +82,9 @@ typedef struct zp_scene {
     double max_joint_force;   /* N, peak joint reaction at any joint */
     double max_arrival_speed; /* km/h, trolley speed at x_end */
     double max_kink_dv;       /* m/s, |v+ - v-| of the trolley at any kink */
+    int nenv;                 /* g_envelope levels, 0: none */
+    double env_g[8], env_s[8]; /* g, s: felt g above env_g[l] for at most env_s[l] at a time */
+    unsigned g_links;         /* bit i: link i + 1's felt g is judged (max_g, g_envelope); 0: all */
 
     /* [robust] (CONFIG.md): ranges in % of nominal; {100, 100} and 0 when absent */
     int robust;                   /* 1 when the scene has a [robust] section */

@@ -12,6 +12,7 @@
 #include "events.h"
 #include "graze.h"
 #include "impulse.h"
+#include "envelope.h"
 #include "peaks.h"
 
 /* ZP_ZENO_RUN crossings of one kink in a row, each closer than ZP_ZENO_DT (s) to the one
@@ -54,6 +55,7 @@ struct zp_sim {
     zp_crossing *cross;  /* owned, ZP_MAX_CROSSINGS */
     int ncross;          /* kept in cross (the result counts all) */
     zp_peaks *pk;        /* owned when o.peaks */
+    zp_envelope env;     /* felt g against [limits] g_envelope (o.peaks; env.n 0: none) */
 
     /* [physics] */
     track_fn track; /* the course with its arcs, or the plain course (chosen at create) */
@@ -270,11 +272,35 @@ static int dense_load_values(double t, int exact, double *v, void *user) {
     return 0;
 }
 
-/* the integrator (re)starts at (t, s->y): the peak locator starts a new interval there */
+/* felt g of the judged links among the load histories v (load_values) */
+static double judged_g(const zp_model *m, const double *v) {
+    double g = 0;
+    for (int i = 0; i < m->nlink; i++) {
+        g = m->g_links >> i & 1 ? fmax(g, v[i]) : g;
+    }
+    return g;
+}
+
+/* judged felt g at time t inside the last step, from the dense output */
+static int dense_judged_g(double t, double *g, void *user) {
+    zp_sim *s = user;
+    double v[ZP_PEAKS_MAX];
+    if (dense_load_values(t, 0, v, s)) {
+        return 1;
+    }
+    *g = judged_g(s->m, v);
+    return 0;
+}
+
+/* the integrator (re)starts at (t, s->y): the peak locator starts a new interval there, and
+   felt g may have jumped (an impulse) */
 static void peaks_restart(zp_sim *s, double t) {
     double v[ZP_PEAKS_MAX];
     load_values(s, t, s->y, v);
     zp_peaks_restart(s->pk, t, v);
+    if (s->env.n) {
+        zp_envelope_jump(&s->env, t, judged_g(s->m, v));
+    }
 }
 
 /* which way the trolley leaves x: its velocity, or from rest its acceleration */
@@ -490,6 +516,10 @@ static void finish_result(zp_sim *s, zp_result *r, double t, zp_outcome o, zp_st
         s->rows[s->nrows++] = row_of(s, t, s->y);
     }
     r->peaks = s->peaks; /* after the last row, whose loads count too */
+    if (s->env.n) {
+        zp_envelope_end(&s->env, t);
+        memcpy(r->env_longest, s->env.longest, sizeof r->env_longest);
+    }
 }
 
 static zp_status fail(zp_sim *s, zp_result *r, double t, const char *why) {
@@ -568,6 +598,9 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     }
     if (s->o.peaks) {
         zp_peaks_reset(s->pk);
+        if (m->nenv > 0) {
+            zp_envelope_start(&s->env, m->nenv, m->env_g, t, 0);
+        }
         peaks_restart(s, t);
     }
     for (;;) {
@@ -609,6 +642,9 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
                 dense_load_values(t, 0, vb, s);
             }
             zp_peaks_interval(s->pk, t, vb, dense_load_values, s);
+            if (s->env.n) {
+                zp_envelope_interval(&s->env, t, judged_g(m, vb), dense_judged_g, s);
+            }
         }
         if (adv != ZP_ADV_ROOT) {
             emit_outputs(s, in, t, 1, &oc);
@@ -732,6 +768,7 @@ zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     s->e_impulse = 0;
     s->nrows = s->nsamples = s->nframes = s->ncross = 0;
     s->peaks = (zp_load_peaks){.normal_min = INFINITY, .normal_max = -INFINITY};
+    s->env.n = 0;
     memset(s->arc_peaks, 0, sizeof s->arc_peaks);
     zp_status st = run(m, s, in, r);
     clock_gettime(CLOCK_MONOTONIC, &t1);

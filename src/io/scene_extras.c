@@ -1,8 +1,53 @@
 /* The scene reader's second pass for the optional sections (CONFIG.md [limits], [robust],
    [physics]): each key off unless given, each refusal naming the key and what it expects. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "scene_parse.h"
+
+/* g_envelope: comma-separated pairs g:s, each number finite and > 0 */
+static void read_envelope(parse_ctx *c, zp_scene *sc) {
+    if (!c->key_line[K_G_ENVELOPE]) {
+        return;
+    }
+    char text[LINE_CAP];
+    snprintf(text, sizeof text, "%s", c->val[K_G_ENVELOPE]);
+    int n = 0;
+    for (char *save = NULL, *item = strtok_r(text, ",", &save); item;
+         item = strtok_r(NULL, ",", &save)) {
+        char *colon = strchr(item, ':'), *end1, *end2;
+        if (!colon) {
+            zp_scene_bad_key(c, K_G_ENVELOPE, "item %d ('%s') is not g:s", n + 1, item);
+            return;
+        }
+        *colon = '\0';
+        double g = strtod(item, &end1), s = strtod(colon + 1, &end2);
+        while (*end1 == ' ') {
+            end1++;
+        }
+        while (*end2 == ' ') {
+            end2++;
+        }
+        if (end1 == item || *end1 || end2 == colon + 1 || *end2 || !isfinite(g) ||
+            !isfinite(s) || !(g > 0) || !(s > 0)) {
+            zp_scene_bad_key(c, K_G_ENVELOPE, "item %d is not two numbers > 0", n + 1);
+            return;
+        }
+        if (n == 8) {
+            zp_scene_bad_key(c, K_G_ENVELOPE, "more than 8 levels");
+            return;
+        }
+        sc->env_g[n] = g;
+        sc->env_s[n++] = s;
+    }
+    if (n == 0) {
+        zp_scene_bad_key(c, K_G_ENVELOPE, "no levels");
+        return;
+    }
+    sc->nenv = n;
+}
 
 /* every limit is a positive ceiling: 0 would forbid any ride and means "off" inside */
 void zp_scene_read_limits(parse_ctx *c, zp_scene *sc) {
@@ -10,6 +55,19 @@ void zp_scene_read_limits(parse_ctx *c, zp_scene *sc) {
     zp_scene_get_number(c, K_MAX_JOINT_FORCE, R_POS, &sc->max_joint_force);
     zp_scene_get_number(c, K_MAX_ARRIVAL_SPEED, R_POS, &sc->max_arrival_speed);
     zp_scene_get_number(c, K_MAX_KINK_DV, R_POS, &sc->max_kink_dv);
+    read_envelope(c, sc);
+    double links[ZP_MAX_LINKS];
+    int n = zp_scene_get_list(c, K_G_LINKS, R_POS, links, ZP_MAX_LINKS);
+    for (int i = 0; i < n; i++) {
+        if (links[i] != floor(links[i]) || links[i] > sc->nlink) {
+            zp_scene_bad_key(c, K_G_LINKS, "item %d (%g) is not a link number from 1 to %d", i + 1,
+                             links[i], sc->nlink);
+            return;
+        }
+    }
+    for (int i = 0; i < n; i++) {
+        sc->g_links |= 1u << ((int)links[i] - 1);
+    }
 }
 
 /* key k as `lo, hi` percentages with 0 < lo <= hi */

@@ -102,6 +102,26 @@ static void other_text(const zp_scene *sc, int k, char *out, size_t cap) {
     case K_DRAG_AREA:
         snprintf(out, cap, "none (no drag)");
         break;
+    case K_G_ENVELOPE:
+        if (sc->nenv == 0) {
+            snprintf(out, cap, "off");
+        }
+        for (int l = 0, used = 0; l < sc->nenv && used < (int)cap; l++) {
+            used += snprintf(out + used, cap - used, "%s%g:%g", l ? ", " : "", sc->env_g[l],
+                             sc->env_s[l]);
+        }
+        break;
+    case K_G_LINKS:
+        if (sc->g_links == 0) {
+            snprintf(out, cap, "every link");
+        }
+        for (int i = 0, used = 0, first = 1; i < sc->nlink && used < (int)cap; i++) {
+            if (sc->g_links >> i & 1) {
+                used += snprintf(out + used, cap - used, "%s%d", first ? "" : ", ", i + 1);
+                first = 0;
+            }
+        }
+        break;
     case K_MAX_G:
     case K_MAX_JOINT_FORCE:
     case K_MAX_ARRIVAL_SPEED:
