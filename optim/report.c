@@ -227,7 +227,7 @@ static void md_limits(FILE *f, const zp_report *r) {
         if (r->lim->max[i] > 0) {
             fprintf(f, "| %s | %.4g %s | %g %s | %s |\n", zp_limit_name(i), v[i],
                     zp_limit_unit(i), r->lim->max[i], zp_limit_unit(i),
-                    v[i] <= r->lim->max[i] ? "kept" : "**broken**");
+                    zp_limits_kept(i, v[i], r->lim->max[i]) ? "kept" : "**broken**");
         }
     }
 }
@@ -259,14 +259,14 @@ static void md_headroom(FILE *f, const zp_report *r) {
         if (L->range < 0) {
             continue;
         }
-        fprintf(f, "| %s | %.3fx", zp_headroom_range_name(L->range), L->holds);
+        fprintf(f, "| %s | %.4fx", zp_headroom_range_name(L->range), L->holds);
         if (L->range == 0) {
-            fprintf(f, " (+/-%.3g %%)", L->holds * r->sc->force_error);
+            fprintf(f, " (+/-%.4g %%)", L->holds * r->sc->force_error);
         }
         if (isfinite(L->breaks)) {
-            fprintf(f, " | %.3fx", L->breaks);
+            fprintf(f, " | %.4fx", L->breaks);
             if (L->range == 0) {
-                fprintf(f, " (+/-%.3g %%)", L->breaks * r->sc->force_error);
+                fprintf(f, " (+/-%.4g %%)", L->breaks * r->sc->force_error);
             }
             fprintf(f, " | %s |\n", L->limited_by);
         } else {

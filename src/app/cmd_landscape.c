@@ -160,7 +160,7 @@ static const char *outcome_name(const zp_landscape_point *p) {
 static int keeps(const zp_landscape_point *p, double limit, const zp_limits *lim) {
     int kept = !p->failed && p->outcome == ZP_OUTCOME_FINISHED && p->max_rel_angle <= limit;
     for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
-        kept &= !(lim->max[i] > 0) || p->reached[i] <= lim->max[i];
+        kept &= !(lim->max[i] > 0) || zp_limits_kept(i, p->reached[i], lim->max[i]);
     }
     return kept;
 }

@@ -311,11 +311,11 @@ static void print_summary(const zp_report *r) {
                c->limits_kept, c->lower_95);
         const zp_headroom_line *L = &c->headroom.line[ZP_HEADROOM_LINES - 1];
         if (L->range >= 0 && isfinite(L->breaks)) {
-            printf("headroom: holds to %.3fx the stated ranges along the worst direction found, "
-                   "breaks at %.3fx (%s)\n",
+            printf("headroom: holds to %.4fx the stated ranges along the worst direction found, "
+                   "breaks at %.4fx (%s)\n",
                    L->holds, L->breaks, L->limited_by);
         } else if (L->range >= 0) {
-            printf("headroom: holds to %.3fx the stated ranges or more along the worst "
+            printf("headroom: holds to %.4fx the stated ranges or more along the worst "
                    "direction found\n",
                    L->holds);
         }

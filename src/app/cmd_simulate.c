@@ -152,7 +152,8 @@ static void print_limits(const zp_model *m, const zp_result *r, const zp_limits 
     for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
         if (lim->max[i] > 0) {
             printf("limit %s: reached %.4g %s of %g (%s)\n", zp_limit_name(i), v[i],
-                   zp_limit_unit(i), lim->max[i], v[i] <= lim->max[i] ? "kept" : "BROKEN");
+                   zp_limit_unit(i), lim->max[i],
+                   zp_limits_kept(i, v[i], lim->max[i]) ? "kept" : "BROKEN");
         }
     }
     for (int l = 0; l < m->nenv; l++) {

@@ -278,6 +278,7 @@ zp_model *zp_model_build(const zp_scene *sc, zp_diag *d) {
     }
     m->phi_max = sc->death_angle * M_PI / 180.0;
     m->g_links = sc->g_links ? sc->g_links : (1u << sc->nlink) - 1;
+    m->scale_links = sc->scale_links ? sc->scale_links : (1u << sc->nlink) - 1;
     m->nenv = sc->nenv;
     memcpy(m->env_g, sc->env_g, sizeof m->env_g);
     memcpy(m->env_s, sc->env_s, sizeof m->env_s);

@@ -49,6 +49,7 @@ typedef struct zp_model {
     zp_drive_dir drive;
     unsigned g_links;             /* bit i: link i's felt g is judged ([limits] g_links); all set
                                      when the scene names none */
+    unsigned scale_links;         /* bit i: [robust] mass_range and length_range scale link i */
     int nenv;                     /* [limits] g_envelope levels, 0: none */
     double env_g[8], env_s[8];    /* g, s: felt g above env_g[l] for at most env_s[l] at a time */
 

@@ -28,6 +28,7 @@ typedef enum {
     ZP_LIMIT_ARRIVAL,
     ZP_LIMIT_KINK_DV,
     ZP_LIMIT_G_ENVELOPE, /* the longest excursion over its allowance, at the worst level */
+    ZP_LIMIT_MIN_ARRIVAL, /* a floor: every rider arrives at least this fast */
     ZP_LIMIT_COUNT
 } zp_limit_id;
 
@@ -51,6 +52,9 @@ void zp_limits_reached(const zp_model *m, const zp_result *r, double v[ZP_LIMIT_
 /* The worst excess over the limits set, reached / limit - 1 (<= 0: all kept; -1 with no
    limit set), and in *which the limit that gave it (-1: none set). */
 double zp_limits_excess(const zp_limits *l, const zp_model *m, const zp_result *r, int *which);
+/* Whether value v (zp_limits_reached's) keeps limit i at max (> 0): below a ceiling, or at or
+   above min_arrival_speed, the one floor. */
+int zp_limits_kept(int i, double v, double max);
 /* The envelope level (index) whose longest excursion is largest against its allowance; -1: no
    envelope. */
 int zp_limits_envelope_worst(const zp_model *m, const zp_result *r);

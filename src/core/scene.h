@@ -82,6 +82,7 @@ typedef struct zp_scene {
     double max_joint_force;   /* N, peak joint reaction at any joint */
     double max_arrival_speed; /* km/h, trolley speed at x_end */
     double max_kink_dv;       /* m/s, |v+ - v-| of the trolley at any kink */
+    double min_arrival_speed; /* km/h, every rider arrives at least this fast; 0: off */
     int nenv;                 /* g_envelope levels, 0: none */
     double env_g[8], env_s[8]; /* g, s: felt g above env_g[l] for at most env_s[l] at a time */
     unsigned g_links;         /* bit i: link i + 1's felt g is judged (max_g, g_envelope); 0: all */
@@ -96,6 +97,7 @@ typedef struct zp_scene {
     double start_angle;           /* deg, each link may start swung by up to this either way */
     int robust_samples;           /* scenarios every candidate is held to (default 64) */
     int verify_samples;           /* fresh scenarios the answer is checked on (default 2000) */
+    unsigned scale_links;         /* bit i: mass_range and length_range scale link i + 1; 0: all */
     double safety_factor;         /* the box held is the stated one widened this much about the
                                      nominal (default 1); reports stay against the stated box */
 

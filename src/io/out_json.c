@@ -81,7 +81,7 @@ void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp
         key_num(f, "reached", v[i], ", ");
         if (max > 0) {
             key_num(f, "limit", max, "");
-            fprintf(f, ", \"kept\": %s}", v[i] <= max ? "true" : "false");
+            fprintf(f, ", \"kept\": %s}", zp_limits_kept(i, v[i], max) ? "true" : "false");
         } else {
             fputs("\"limit\": null}", f);
         }

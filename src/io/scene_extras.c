@@ -7,6 +7,22 @@
 
 #include "scene_parse.h"
 
+/* key k as link numbers 1..nlink: a mask (bit i: link i + 1), 0 when absent or bad */
+static unsigned read_links(parse_ctx *c, int k, int nlink) {
+    double links[ZP_MAX_LINKS];
+    int n = zp_scene_get_list(c, k, R_POS, links, ZP_MAX_LINKS);
+    unsigned mask = 0;
+    for (int i = 0; i < n; i++) {
+        if (links[i] != floor(links[i]) || links[i] > nlink) {
+            zp_scene_bad_key(c, k, "item %d (%g) is not a link number from 1 to %d", i + 1,
+                             links[i], nlink);
+            return 0;
+        }
+        mask |= 1u << ((int)links[i] - 1);
+    }
+    return mask;
+}
+
 /* g_envelope: comma-separated pairs g:s, each number finite and > 0 */
 static void read_envelope(parse_ctx *c, zp_scene *sc) {
     if (!c->key_line[K_G_ENVELOPE]) {
@@ -55,19 +71,9 @@ void zp_scene_read_limits(parse_ctx *c, zp_scene *sc) {
     zp_scene_get_number(c, K_MAX_JOINT_FORCE, R_POS, &sc->max_joint_force);
     zp_scene_get_number(c, K_MAX_ARRIVAL_SPEED, R_POS, &sc->max_arrival_speed);
     zp_scene_get_number(c, K_MAX_KINK_DV, R_POS, &sc->max_kink_dv);
+    zp_scene_get_number(c, K_MIN_ARRIVAL_SPEED, R_POS, &sc->min_arrival_speed);
     read_envelope(c, sc);
-    double links[ZP_MAX_LINKS];
-    int n = zp_scene_get_list(c, K_G_LINKS, R_POS, links, ZP_MAX_LINKS);
-    for (int i = 0; i < n; i++) {
-        if (links[i] != floor(links[i]) || links[i] > sc->nlink) {
-            zp_scene_bad_key(c, K_G_LINKS, "item %d (%g) is not a link number from 1 to %d", i + 1,
-                             links[i], sc->nlink);
-            return;
-        }
-    }
-    for (int i = 0; i < n; i++) {
-        sc->g_links |= 1u << ((int)links[i] - 1);
-    }
+    sc->g_links = read_links(c, K_G_LINKS, sc->nlink);
 }
 
 /* key k as `lo, hi` percentages with 0 < lo <= hi */
@@ -110,6 +116,7 @@ void zp_scene_read_robust(parse_ctx *c, zp_scene *sc) {
     if (zp_scene_get_whole(c, K_VERIFY_SAMPLES, 1, 1000000000, &u) > 0) {
         sc->verify_samples = (int)u;
     }
+    sc->scale_links = read_links(c, K_SCALE_LINKS, sc->nlink);
     /* the box held is the stated one widened about the nominal (100 %): no range may then
        reach 0 % or below */
     double f;

@@ -112,16 +112,20 @@ static void other_text(const zp_scene *sc, int k, char *out, size_t cap) {
         }
         break;
     case K_G_LINKS:
-        if (sc->g_links == 0) {
+    case K_SCALE_LINKS: {
+        unsigned mask = k == K_G_LINKS ? sc->g_links : sc->scale_links;
+        if (mask == 0) {
             snprintf(out, cap, "every link");
         }
         for (int i = 0, used = 0, first = 1; i < sc->nlink && used < (int)cap; i++) {
-            if (sc->g_links >> i & 1) {
+            if (mask >> i & 1) {
                 used += snprintf(out + used, cap - used, "%s%d", first ? "" : ", ", i + 1);
                 first = 0;
             }
         }
         break;
+    }
+    case K_MIN_ARRIVAL_SPEED:
     case K_MAX_G:
     case K_MAX_JOINT_FORCE:
     case K_MAX_ARRIVAL_SPEED:
