@@ -239,6 +239,42 @@ static void md_range(FILE *f, const char *what, const double range[2]) {
     }
 }
 
+/* the scenario at u of the stated box, in words */
+static void scenario_text(const zp_report *r, const double *u, char *buf, size_t n) {
+    zp_scenario s;
+    zp_box_scenario(r->box, u, &s);
+    int used = snprintf(buf, n, "forces x");
+    for (int k = 0; k < r->m->nsec && used < (int)n; k++) {
+        used += snprintf(buf + used, n - used, " %.4f", s.force[k]);
+    }
+    if (used < (int)n) {
+        snprintf(buf + used, n - used,
+                 ", masses x %.3f, lengths x %.3f, trolley x %.3f, damping x %.3f", s.mass,
+                 s.length, s.trolley, s.damping);
+    }
+}
+
+/* the population's spread over the fresh scenarios, with the scenario at each end */
+static void md_spread(FILE *f, const zp_report *r) {
+    const zp_robust_check *c = r->check;
+    if (c->samples == 0 || c->fastest.sample < 0) {
+        return;
+    }
+    const zp_spread_end *ends[4] = {&c->fastest, &c->slowest, &c->arrival_low,
+                                    &c->arrival_high};
+    const char *what[4] = {"fastest finish", "slowest finish", "lowest arrival speed",
+                           "highest arrival speed"};
+    const char *unit[4] = {"s", "s", "km/h", "km/h"};
+    fprintf(f, "\nSpread over the %d fresh scenarios that finished (of %d):\n\n", c->survived,
+            c->samples);
+    for (int k = 0; k < 4; k++) {
+        char sc[512];
+        scenario_text(r, ends[k]->u, sc, sizeof sc);
+        fprintf(f, "- %s: %.4g %s (fresh scenario %d: %s)\n", what[k], ends[k]->value, unit[k],
+                ends[k]->sample + 1, sc);
+    }
+}
+
 /* how far past the stated box the answer holds (headroom.c) */
 static void md_headroom(FILE *f, const zp_report *r) {
     const zp_headroom *h = &r->check->headroom;
@@ -322,6 +358,7 @@ static void md_survivable(FILE *f, const zp_report *r) {
                 c->limits_kept, c->all_kept, 100 * c->lower_95, c->worst_margin_deg,
                 c->held_margin_deg, held_where(r, c->held_worst));
     }
+    md_spread(f, r);
     md_headroom(f, r);
     if (r->rinfo->rounds > 0 && isfinite(w->cons)) {
         zp_scenario s;

@@ -273,6 +273,8 @@ static double scen_judge(const zp_objective *ob, const zp_box *b, const zp_chain
     w->cons = zp_objective_scenario_cons(ob, &e);
     w->margin_deg = (m.phi_max - e.angle) * DEG;
     w->outcome = e.outcome;
+    w->time = e.time;
+    w->arrival_kmh = !e.failed && e.outcome == ZP_OUTCOME_FINISHED ? r->v * 3.6 : 0;
     w->joint = 1;
     for (int i = 0; i < m.nlink; i++) {
         w->joint = r->max_rel_angle[i] > r->max_rel_angle[w->joint - 1] ? i + 1 : w->joint;
@@ -452,6 +454,15 @@ zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts 
     return st;
 }
 
+/* scenario i (its point u + i d) into the end e when v is larger than e's (the first wins) */
+static void spread_take(zp_spread_end *e, double v, int i, const double *u, int d) {
+    if (e->sample < 0 || v > e->value) {
+        e->value = v;
+        e->sample = i;
+        memcpy(e->u, u + (size_t)i * d, sizeof *u * (size_t)d);
+    }
+}
+
 zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
                            const double *p, int n, unsigned long seed, int nthreads,
                            const zp_spread *sp, zp_robust_check *c) {
@@ -459,6 +470,11 @@ zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim
     memset(c, 0, sizeof *c);
     c->samples = n;
     c->worst_margin_deg = INFINITY;
+    zp_spread_end *ends[4] = {&c->fastest, &c->slowest, &c->arrival_low, &c->arrival_high};
+    for (int k = 0; k < 4; k++) {
+        ends[k]->value = NAN;
+        ends[k]->sample = -1;
+    }
     zp_pool *w = NULL;
     double *u = malloc(sizeof *u * (size_t)n * (b->d + 1));
     zp_robust_worst *pw = malloc(sizeof *pw * (size_t)(n + 1));
@@ -487,8 +503,15 @@ zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim
         c->all_kept += margin && limits;
         if (fin) {
             c->worst_margin_deg = fmin(c->worst_margin_deg, pw[i].margin_deg);
+            spread_take(&c->fastest, -pw[i].time, i, u, b->d);
+            spread_take(&c->slowest, pw[i].time, i, u, b->d);
+            spread_take(&c->arrival_low, -pw[i].arrival_kmh, i, u, b->d);
+            spread_take(&c->arrival_high, pw[i].arrival_kmh, i, u, b->d);
         }
     }
+    /* two ends were kept as the largest of -value: back to the value */
+    c->fastest.value = -c->fastest.value;
+    c->arrival_low.value = -c->arrival_low.value;
     c->lower_95 = zp_clopper_pearson_lower(c->all_kept, n, 0.05);
     zp_pool_free(w);
     free(u);

@@ -75,6 +75,13 @@ typedef struct zp_headroom {
     zp_headroom_line line[ZP_HEADROOM_LINES];
 } zp_headroom;
 
+/* One end of the spread over the fresh scenarios: its value and the scenario that gives it. */
+typedef struct zp_spread_end {
+    double value;         /* s or km/h; NAN: no scenario finished */
+    int sample;           /* index of the fresh scenario, -1: none */
+    double u[ZP_BOX_MAX]; /* its point in the stated box */
+} zp_spread_end;
+
 /* The answer on fresh random scenarios (a stream apart from the set's). */
 typedef struct zp_robust_check {
     int samples;
@@ -89,6 +96,9 @@ typedef struct zp_robust_check {
                                 scenario held and the adversary's worst, rerun alike (held.h) */
     int held_worst;          /* where (zp_held.worst) */
     zp_headroom headroom;    /* zp_robust_solve: past the stated box */
+    /* the population's spread over the finishing fresh scenarios: fastest and slowest finish
+       (s), lowest and highest arrival speed (km/h) */
+    zp_spread_end fastest, slowest, arrival_low, arrival_high;
 } zp_robust_check;
 
 /* The worst scenario found for a schedule, and what limited it. */
@@ -100,6 +110,8 @@ typedef struct zp_robust_worst {
     int joint;        /* 1-based joint with the largest angle */
     int limit;        /* zp_limit_id with the largest excess, -1: none set */
     double excess;    /* that excess, reached / limit - 1 (> 0: broken; -1: none set) */
+    double time;      /* s: finish, death or stall */
+    double arrival_kmh; /* km/h at the finish, 0 when it does not finish */
 } zp_robust_worst;
 
 typedef struct zp_robust_info {

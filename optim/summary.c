@@ -118,7 +118,22 @@ static void json_scenarios(FILE *f, const zp_report *r) {
     zp_out_json_number(f, c->lower_95);
     fputs("}, \"headroom\": ", f);
     zp_summary_headroom_json(f, &c->headroom);
-    fputs("}", f);
+    /* the population's spread over the finishing fresh scenarios, each with its scenario */
+    const zp_spread_end *ends[4] = {&c->fastest, &c->slowest, &c->arrival_low,
+                                    &c->arrival_high};
+    const char *keys[4] = {"fastest_s", "slowest_s", "arrival_low_kmh", "arrival_high_kmh"};
+    fputs(", \"spread\": {", f);
+    for (int k = 0; k < 4; k++) {
+        fprintf(f, "%s\"%s\": {\"value\": ", k ? ", " : "", keys[k]);
+        zp_out_json_number(f, ends[k]->value);
+        fprintf(f, ", \"sample\": %d, \"u\": [", ends[k]->sample);
+        for (int d = 0; ends[k]->sample >= 0 && d < r->box->d; d++) {
+            fputs(d ? ", " : "", f);
+            zp_out_json_number(f, ends[k]->u[d]);
+        }
+        fputs("]}", f);
+    }
+    fputs("}}", f);
 }
 
 void zp_report_write_json(FILE *f, const zp_report *r) {

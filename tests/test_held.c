@@ -1,8 +1,10 @@
 /* The robust answer's worst margin (optim/held.c, robust.c) is the smallest over everything the
    search held it to and verified it on: the nominal scene, every scenario of the set, the
-   adversary's worst and the fresh scenarios. Independent expectation: a brute-force loop that
-   reruns each of them one at a time at the verification's tolerance (the fresh ones drawn from
-   the documented stream) and takes the minimum by hand. */
+   adversary's worst and the fresh scenarios; and the population's spread (fastest and slowest
+   finish, lowest and highest arrival speed, each with its scenario) is that of the fresh ones.
+   Independent expectation: a brute-force loop that reruns each of them one at a time at the
+   verification's tolerance (the fresh ones drawn from the documented stream) and takes the
+   extremes by hand. */
 #include <gsl/gsl_rng.h>
 #include <math.h>
 #include <string.h>
@@ -70,6 +72,8 @@ static void check_worst_margin(int nthreads) {
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
     gsl_rng_set(rng, sc.seed ^ ZP_ROBUST_STREAM_VERIFY);
     double fresh = INFINITY, u[ZP_BOX_MAX];
+    double t_lo = INFINITY, t_hi = -INFINITY, v_lo = INFINITY, v_hi = -INFINITY;
+    int i_tlo = -1, i_thi = -1, i_vlo = -1, i_vhi = -1;
     for (int i = 0; i < sc.verify_samples; i++) {
         for (int k = 0; k < pb.box.d; k++) {
             u[k] = 2 * gsl_rng_uniform(rng) - 1;
@@ -79,7 +83,26 @@ static void check_worst_margin(int nthreads) {
         zp_scenario_start(&c0, ms.nlink, &s, &start);
         zp_input ir = {.sched = &sched, .force_scale = s.force, .start = &start};
         fresh = fmin(fresh, margin_of(&ms, &to, &ir));
+        /* the spread over the finishers, the first of equals kept */
+        const zp_result *rr = tu_run(&ms, &to, &ir);
+        if (rr->outcome == ZP_OUTCOME_FINISHED) {
+            double v = rr->v * 3.6;
+            i_tlo = rr->time < t_lo ? i : i_tlo;
+            t_lo = fmin(t_lo, rr->time);
+            i_thi = rr->time > t_hi ? i : i_thi;
+            t_hi = fmax(t_hi, rr->time);
+            i_vlo = v < v_lo ? i : i_vlo;
+            v_lo = fmin(v_lo, v);
+            i_vhi = v > v_hi ? i : i_vhi;
+            v_hi = fmax(v_hi, v);
+        }
     }
+    const zp_robust_check *c = &pb.check;
+    CHECK(c->fastest.value == t_lo && c->fastest.sample == i_tlo);
+    CHECK(c->slowest.value == t_hi && c->slowest.sample == i_thi);
+    CHECK(c->arrival_low.value == v_lo && c->arrival_low.sample == i_vlo);
+    CHECK(c->arrival_high.value == v_hi && c->arrival_high.sample == i_vhi);
+    CHECK(t_lo < t_hi && v_lo < v_hi);
     gsl_rng_free(rng);
     CHECK(pb.check.held_margin_deg == held);
     CHECK(pb.check.worst_margin_deg == fmin(held, fresh));
