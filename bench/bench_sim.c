@@ -1,8 +1,10 @@
 /* The inner simulator alone (no trajectory, no load tracking, no output): the seed scene at a
    constant push, repeated in one process. One JSON line per tolerance with the median and
-   smallest wall time of zp_sim_run, steps, rhs evaluations and the finish time.
-   Usage: bench_sim [--repeat N] [--method NAME] [--formulation NAME] [--force F] RTOL [RTOL..]
-   (atol = rtol/100) */
+   smallest wall time of zp_sim_run, steps, rejected steps, rhs evaluations and the finish
+   time. --as-simulate: with what `zipopt simulate` asks of the run besides (the scene's
+   trajectory rows, loads tracked at every step), to see what those cost.
+   Usage: bench_sim [--repeat N] [--method NAME] [--formulation NAME] [--force F]
+                    [--as-simulate] RTOL [RTOL..]   (atol = rtol/100) */
 #include <gsl/gsl_errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -19,7 +21,7 @@ static int cmp_double(const void *a, const void *b) {
 int main(int argc, char **argv) {
     int repeat = 21, method = ZP_METHOD_CVODE_ADAMS, form = ZP_FORM_LAGRANGE;
     double force = 10;
-    int first_rtol = argc;
+    int first_rtol = argc, as_simulate = 0;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--repeat") && i + 1 < argc) {
             repeat = atoi(argv[++i]);
@@ -29,6 +31,8 @@ int main(int argc, char **argv) {
             form = zp_formulation_find(argv[++i]);
         } else if (!strcmp(argv[i], "--force") && i + 1 < argc) {
             force = atof(argv[++i]);
+        } else if (!strcmp(argv[i], "--as-simulate")) {
+            as_simulate = 1;
         } else {
             first_rtol = i;
             break;
@@ -36,7 +40,7 @@ int main(int argc, char **argv) {
     }
     if (repeat < 1 || method < 0 || form < 0 || first_rtol >= argc) {
         fputs("usage: bench_sim [--repeat N] [--method NAME] [--formulation NAME] [--force F] "
-              "RTOL [RTOL..]\n",
+              "[--as-simulate] RTOL [RTOL..]\n",
               stderr);
         return 2;
     }
@@ -64,7 +68,9 @@ int main(int argc, char **argv) {
                          .rtol = rtol,
                          .atol = rtol / 100,
                          .t_max = sc.t_max,
-                         .max_steps = 2000000};
+                         .max_steps = 2000000,
+                         .output_dt = as_simulate ? sc.output_dt : 0,
+                         .track_loads = as_simulate};
         zp_sim *s = zp_sim_create(m, &o);
         for (int k = 0; k < repeat; k++) {
             if (!s || zp_sim_run(m, s, &in, &r) != ZP_OK) {
@@ -75,11 +81,12 @@ int main(int argc, char **argv) {
         }
         qsort(wall, repeat, sizeof *wall, cmp_double);
         printf("{\"method\": \"%s\", \"formulation\": \"%s\", \"rtol\": %g, \"atol\": %g, "
-               "\"outcome\": \"%s\", \"time\": %.17g, \"steps\": %ld, \"rhs_evals\": %ld, "
+               "\"outcome\": \"%s\", \"time\": %.17g, \"steps\": %ld, \"rejected\": %ld, "
+               "\"rhs_evals\": %ld, "
                "\"wall_median_s\": %.6g, \"wall_min_s\": %.6g, \"constraint_residual\": %.3g}\n",
                zp_method_get(method)->name, zp_formulation_get(form)->name, rtol, rtol / 100,
-               zp_sim_outcome_name(r.outcome), r.time, r.steps, r.rhs_evals, wall[repeat / 2],
-               wall[0], r.constraint_residual);
+               zp_sim_outcome_name(r.outcome), r.time, r.steps, r.rejected, r.rhs_evals,
+               wall[repeat / 2], wall[0], r.constraint_residual);
         zp_sim_free(s);
     }
     free(wall);

@@ -12,7 +12,11 @@ It
   2. runs the C simulator for each method in --methods and rtol in --c-rtols (atol = rtol/100),
      --repeat times in one process, and takes the median wall time of zp_sim_run, steps,
      rhs evaluations, |T - T_ref|;
-  3. runs SciPy for each rtol in --py-rtols, --py-repeat times (median wall time);
+  3. runs SciPy for each rtol in --py-rtols, --py-repeat times (median wall time): the naive peer
+     (bench/scipy_zipline.py, numpy rhs) and the strong one (bench/scipy_sympy.py: sympy-derived,
+     cse, lambdify); then `zipopt simulate --json` (--cli-method at its cheapest rtol meeting
+     --target) interleaved one for one with the strong peer at its cheapest, medians of
+     stats.wall_s and of the peer's wall time;
   4. compares the cheapest C setting with |dT| <= --target against the cheapest SciPy one;
   5. measures with valgrind --tool=callgrind the share of one C run's instructions spent
      inside the equations of motion (inclusive cost of zp_sim_rhs / total, and / zp_sim_run);
@@ -32,6 +36,7 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
+import scipy_sympy as ss  # noqa: E402
 import scipy_zipline as sz  # noqa: E402
 
 FORCES = [10.0, 10.0, 10.0]
@@ -56,6 +61,34 @@ def run_c(bench_sim, method, rtols, repeat):
 def run_py(rtol, atol):
     model = sz.Model(sz.seed_course())
     return sz.simulate(model, FORCES, rtol=rtol, atol=atol)
+
+
+_STRONG = []
+
+
+def run_py_strong(rtol, atol):
+    """The strong peer (bench/scipy_sympy.py); its derivation is done once, as a user would."""
+    if not _STRONG:
+        _STRONG.append(ss.SympyModel(sz.seed_course()))
+    return sz.simulate(_STRONG[0], FORCES, rtol=rtol, atol=atol)
+
+
+def run_cli(zipopt, method, rtol, outdir):
+    """`zipopt simulate --json` on the seed at FORCES with [solver] method and rtol: the run as
+    users make it (trajectory rows at the scene's output_dt, load peaks, error estimate);
+    stats.wall_s is the simulator's own measured segment."""
+    text = open(os.path.join(ROOT, "config", "seed.ini")).read()
+    text = re.sub(r"(?m)^method = .*$", f"method = {method}", text)
+    text = re.sub(r"(?m)^rtol = .*$", f"rtol = {rtol:g}", text)
+    text = re.sub(r"(?m)^atol = .*$", f"atol = {rtol / 100:g}", text)
+    ini = os.path.join(outdir, "seed_bench.ini")
+    with open(ini, "w") as fh:
+        fh.write(text)
+    p = subprocess.run([zipopt, "simulate", ini, "--force", ",".join(f"{f:g}" for f in FORCES),
+                        "--json", "--out", os.path.join(outdir, "sim")], capture_output=True, text=True)
+    if p.returncode != 0:
+        raise RuntimeError(f"{zipopt} simulate exited {p.returncode}: {p.stderr.strip()}")
+    return json.loads(p.stdout)
 
 
 def summarize(runs, t_ref):
@@ -113,6 +146,10 @@ def main():
     ap.add_argument("--py-repeat", type=int, default=5, help="SciPy runs per tolerance")
     ap.add_argument("--c-rtols", default="1e-5,1e-6,1e-7,1e-8,1e-10")
     ap.add_argument("--py-rtols", default="1e-5,1e-6,1e-7,1e-8")
+    ap.add_argument("--zipopt", default=os.path.join(ROOT, "build", "zipopt"))
+    ap.add_argument("--cli-method", default="gsl-rk8pd", help="method of the `zipopt simulate` runs")
+    ap.add_argument("--cli-repeat", type=int, default=21,
+                    help="`zipopt simulate` runs, interleaved one for one with the strong peer's")
     ap.add_argument("--target", type=float, default=1e-6, help="s: matched accuracy |T - T_ref|")
     ap.add_argument("--csv", default=os.path.join(ROOT, "out", "bench", "bench_sim.csv"))
     ap.add_argument("--no-c", action="store_true", help="SciPy part only (no C binary yet)")
@@ -157,7 +194,41 @@ def main():
         py_rows.append(row)
         print(f"  SciPy rtol {rtol:g}: {row['outcome']} T {row['time']:.12f} "
               f"|dT| {row['dT']:.2e} wall {row['wall_s'] * 1e3:.1f} ms", flush=True)
-    rows = c_rows + py_rows
+    # 3b. the strong peer at each rtol (a few runs, to find its cheapest rtol meeting the target)
+    strong_rows = []
+    for rtol in py_rtols:
+        runs = [run_py_strong(rtol, rtol / 100) for _ in range(args.py_repeat)]
+        row = {"impl": "SciPy sympy", "rtol": rtol, "atol": rtol / 100, "runs": len(runs)}
+        row.update(summarize(runs, t_ref))
+        strong_rows.append(row)
+        print(f"  SciPy sympy rtol {rtol:g}: {row['outcome']} T {row['time']:.12f} "
+              f"|dT| {row['dT']:.2e} wall {row['wall_s'] * 1e3:.1f} ms", flush=True)
+    # 3c. `zipopt simulate` at the cheapest C rtol of --cli-method meeting the target against
+    # the strong peer at its cheapest: interleaved, one run each in turn, medians
+    cli_row = None
+    best_cli = cheapest([r for r in c_rows if r["impl"] == f"C {args.cli_method}"], args.target)
+    best_strong = cheapest(strong_rows, args.target)
+    if best_cli and best_strong and os.access(args.zipopt, os.X_OK):
+        outdir = tempfile.mkdtemp(prefix="zipbench")
+        cli_walls, strong_walls, d = [], [], None
+        for _ in range(args.cli_repeat):
+            d = run_cli(args.zipopt, args.cli_method, best_cli["rtol"], outdir)
+            cli_walls.append(d["stats"]["wall_s"])
+            strong_walls.append(run_py_strong(best_strong["rtol"], best_strong["rtol"] / 100)
+                                ["stats"]["wall_s"])
+        cli_row = {"impl": f"zipopt simulate {args.cli_method}", "rtol": best_cli["rtol"],
+                   "atol": best_cli["rtol"] / 100, "runs": args.cli_repeat,
+                   "outcome": d["outcome"], "time": d["time"], "dT": abs(d["time"] - t_ref),
+                   "deterministic": True, "steps": d["stats"]["steps"],
+                   "rhs_evals": d["stats"]["rhs_evals"], "wall_s": statistics.median(cli_walls),
+                   "wall_min": min(cli_walls)}
+        best_strong = dict(best_strong, wall_s=statistics.median(strong_walls),
+                           wall_min=min(strong_walls), runs=args.cli_repeat)
+        strong_rows[strong_rows.index(next(r for r in strong_rows if r["rtol"] == best_strong["rtol"]))] = best_strong
+        print(f"  zipopt simulate {args.cli_method} rtol {best_cli['rtol']:g}: median stats.wall_s "
+              f"{cli_row['wall_s'] * 1e3:.3f} ms; SciPy sympy rtol {best_strong['rtol']:g} in the "
+              f"same loop: {best_strong['wall_s'] * 1e3:.1f} ms", flush=True)
+    rows = c_rows + py_rows + strong_rows + ([cli_row] if cli_row else [])
     # 5. callgrind on each method's cheapest setting that meets the target
     cgs = []
     for impl in dict.fromkeys(r["impl"] for r in c_rows):
@@ -199,6 +270,17 @@ def main():
         ratio = best_c["wall_s"] / best_py["wall_s"]
         print(f"speed ratio C/SciPy wall time at matched accuracy: {ratio:.4g} "
               f"(C is {1 / ratio:.0f}x faster)")
+    strong_ratio = None
+    if cli_row and best_strong:
+        strong_ratio = best_strong["wall_s"] / cli_row["wall_s"]
+        print(f"`zipopt simulate --json` ({cli_row['impl'][16:]} rtol {cli_row['rtol']:g}, "
+              f"|dT| {cli_row['dT']:.1e} s, stats.wall_s {cli_row['wall_s'] * 1e3:.3f} ms) against the "
+              f"strong SciPy peer (sympy + cse + lambdify, DOP853 rtol {best_strong['rtol']:g}, "
+              f"|dT| {best_strong['dT']:.1e} s, {best_strong['wall_s'] * 1e3:.1f} ms): "
+              f"{strong_ratio:.0f}x faster")
+    if best_c and best_py:
+        print(f"against the naive SciPy peer (numpy rhs): {best_py['wall_s'] / best_c['wall_s']:.0f}x "
+              f"(bench_sim, in-process)")
     for cg in cgs:
         print(f"callgrind ({cg['impl']}, rtol {cg['rtol']:g}): zp_sim_rhs inclusive {cg['rhs_ir']:,} Ir of "
               f"{cg['total_ir']:,} total = {100 * cg['share_total']:.1f}%"
@@ -219,6 +301,9 @@ def main():
             rec["time"] = f"{r['time']:.12f}"
             rec["matched_best"] = int(r is best_c or r is best_py)
             rec["speed_ratio_c_over_scipy"] = f"{ratio:.6g}" if ratio and rec["matched_best"] else ""
+            if strong_ratio and (r is cli_row or r is best_strong):
+                rec["matched_best"] = 1
+                rec["speed_ratio_c_over_scipy"] = f"{1 / strong_ratio:.6g}"
             cg = next((c for c in cgs if r["impl"] == c["impl"] and r["rtol"] == c["rtol"]), None)
             is_cg = cg is not None
             rec["rhs_share_total"] = f"{cg['share_total']:.4f}" if is_cg else ""

@@ -51,9 +51,10 @@ _zipopt() {
                     --fps --size --speedup --help" ;;
     check) opts="--json --help" ;;
     landscape) opts="--force-range --slice --range --force --schedule --out --json --help" ;;
-    sweep) opts="--vary --run --out --resume --json --grid-schedule --no-grid-schedule --help" ;;
+    sweep) opts="--vary --run --out --resume --json --grid-schedule --no-grid-schedule --max-evals
+                 --max-time --schedule --force --help" ;;
     bench) opts="--repeats --json --out --help" ;;
-    tradeoff) opts="--levels --json --out --help" ;;
+    tradeoff) opts="--levels --max-evals --max-time --schedule --force --json --out --help" ;;
     *) opts="--out --algorithm --seed --max-evals --max-time --no-plot --json --help --help-all
              --version" ;;
     esac

@@ -2,8 +2,9 @@
 # # zipopt from Python
 # Notebook-style cells (`# %%`: Jupyter, VS Code and Spyder run them one by one). Simulate the
 # seed scene at a gentle push, look at the chain, then search for the fastest survivable drive.
-# Run from the repository root with the module and library on the paths (README "Python"):
-#     PYTHONPATH=python ZIPOPT_LIB=build/src/lib/libzipopt.so python3 examples/notebook.py
+# Installed (cmake --install), run it from anywhere: python3 PREFIX/share/zipopt/examples/notebook.py
+# (PYTHONPATH=PREFIX/lib/python3.X/dist-packages for a prefix python3 does not search). From the
+# source tree: PYTHONPATH=python ZIPOPT_LIB=build/src/lib/libzipopt.so python3 examples/notebook.py
 
 # %%
 import math
@@ -11,7 +12,7 @@ import os
 
 import zipopt
 
-SCENE = os.environ.get("ZIPOPT_SCENE", "config/seed.ini")
+SCENE = os.environ.get("ZIPOPT_SCENE") or zipopt.example_scene("seed.ini")
 print("zipopt", zipopt.library_version())
 
 # %% one run: outcome, time, energy audit

@@ -32,7 +32,11 @@ extern "C" {
    parser keeps globals and NLopt's random seed is process-wide (a search stays reproducible
    only when no other search runs beside it); simulations of different scenes run in parallel.
    Errors are returned as text, never printed; the library never exits. Loading a scene turns
-   GSL's abort-on-error handler off (gsl_set_error_handler_off), as every GSL call is checked. */
+   GSL's abort-on-error handler off (gsl_set_error_handler_off), as every GSL call is checked.
+
+   A NULL handle is refused, never followed: a function that makes something returns NULL with
+   why in err, a count or index returns -1, a number NaN, a text or array NULL. An output array
+   may be NULL: nothing is copied, and the count is returned as usual. */
 
 /* Outcomes of a simulation (the program's outcome names: zipopt_outcome_name). */
 enum { ZIPOPT_FINISHED = 0, ZIPOPT_DIED = 1, ZIPOPT_STALLED = 2 };
@@ -44,7 +48,7 @@ typedef struct zipopt_search zipopt_search; /* one search's answer */
 /* "0.1.0": the library's version. */
 ZIPOPT_API const char *zipopt_version(void);
 
-/* Loads a scene file (CONFIG.md). NULL on bad input with every problem in err, one per line,
+/* Loads a scene file (docs/scene-file.md). NULL on bad input with every problem in err, one per line,
    each "FILE:LINE: [section] key: what is wrong; what is expected" (truncated to errlen). */
 ZIPOPT_API zipopt_scene *zipopt_scene_load(const char *path, char *err, size_t errlen);
 /* The same from scene text in memory; name stands for the file in messages (NULL: "<string>"). */
@@ -52,7 +56,9 @@ ZIPOPT_API zipopt_scene *zipopt_scene_load_string(const char *text, const char *
                                                   size_t errlen);
 ZIPOPT_API void zipopt_scene_free(zipopt_scene *s); /* NULL is fine */
 
-ZIPOPT_API const char *zipopt_scene_name(const zipopt_scene *s); /* [scene] name */
+/* [scene] name, or the file's stem; "" when neither gives one (the library writes no folder
+   named by it, so a scene needs no name here, unlike the program's commands). */
+ZIPOPT_API const char *zipopt_scene_name(const zipopt_scene *s);
 ZIPOPT_API int zipopt_scene_sections(const zipopt_scene *s);     /* course sections */
 ZIPOPT_API int zipopt_scene_links(const zipopt_scene *s);        /* chain links */
 /* Copies the drive forces (N, one per section) into force (room for n); returns how many the
@@ -62,6 +68,11 @@ ZIPOPT_API int zipopt_scene_forces(const zipopt_scene *s, double *force, int n);
    why in err (a wrong count, a value that is not finite); the scene is unchanged then. */
 ZIPOPT_API int zipopt_scene_set_forces(zipopt_scene *s, const double *force, int n, char *err,
                                        size_t errlen);
+/* Lays a schedule file (a scene file with only [drive] forces, as the search writes
+   schedule.ini) over the scene's drive forces, as `zipopt simulate --schedule FILE` does. 0, or
+   -1 with every problem in err (FILE:LINE: [drive] forces: ...); the scene is unchanged then. */
+ZIPOPT_API int zipopt_scene_load_schedule(zipopt_scene *s, const char *path, char *err,
+                                          size_t errlen);
 
 /* Simulates the scene's forces with its [solver] settings, exactly as `zipopt simulate` does
    (same bits). NULL when the integrator broke down (err says where and why) or memory ran out.

@@ -13,6 +13,7 @@
 
 #define DEG (180.0 / M_PI)
 #define ACTIVE_DEG 0.01 /* deg: a margin this close to [optimize] margin is the binding limit */
+#define ACTIVE_REL_LIMIT 1e-3 /* a [limits] value reached this close (relative) binds */
 #define ACTIVE_REL 1e-9 /* a force this close (relative to the range) to a bound lies on it */
 
 static const char *const kind_names[ZP_STUDY_KIND_COUNT] = {"search", "simulate"};
@@ -35,7 +36,8 @@ static void fail(zp_study_row *row, const char *why) {
     snprintf(row->message, sizeof row->message, "%.*s", (int)sizeof row->message - 1, why);
 }
 
-/* outcome, time and margin of the answer's run r; the limit that decides the row */
+/* outcome, time, margin and the limited quantities of the answer's run r; the limit that
+   decides the row: the scene's margin and [limits] judge every row, searched or simulated */
 static void fill(const zp_scene *sc, const zp_model *m, const zp_schedule *sh, const zp_result *r,
                  zp_study_row *row) {
     double angle = 0;
@@ -45,11 +47,18 @@ static void fill(const zp_scene *sc, const zp_model *m, const zp_schedule *sh, c
     row->outcome = r->outcome;
     row->time = r->time;
     row->margin = sc->death_angle - angle * DEG;
+    zp_limits lim;
+    zp_limits_from_scene(sc, &lim);
+    zp_limits_reached(m, r, row->reached);
     if (!row->found) {
+        int which = -1;
+        double excess = zp_limits_excess(&lim, m, r, &which);
         snprintf(row->limit, sizeof row->limit, "%s",
-                 r->outcome == ZP_OUTCOME_DIED      ? "death"
-                 : r->outcome == ZP_OUTCOME_STALLED ? "t_max"
-                                                    : "margin");
+                 r->outcome == ZP_OUTCOME_DIED             ? "death"
+                 : r->outcome == ZP_OUTCOME_STALLED        ? "t_max"
+                 : row->margin < sc->margin                ? "margin"
+                 : which >= 0 && excess > 0                ? zp_limit_name(which)
+                                           : "scenarios"); /* a held scenario broke it */
         return;
     }
     int at_max = 0, at_min = 0;
@@ -63,13 +72,20 @@ static void fill(const zp_scene *sc, const zp_model *m, const zp_schedule *sh, c
              row->margin - sc->margin < ACTIVE_DEG && at_max ? "+" : "", at_max ? "drive.max" : "",
              (row->margin - sc->margin < ACTIVE_DEG || at_max) && at_min ? "+" : "",
              at_min ? "drive.min" : "");
+    for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
+        if (lim.max[i] > 0 && row->reached[i] >= (1 - ACTIVE_REL_LIMIT) * lim.max[i]) {
+            size_t n = strlen(row->limit);
+            snprintf(row->limit + n, sizeof row->limit - n, "%s%s", n ? "+" : "",
+                     zp_limit_name(i));
+        }
+    }
     if (!row->limit[0]) {
         snprintf(row->limit, sizeof row->limit, "none");
     }
 }
 
 static void run_search(const zp_scene *sc, const zp_model *m, const zp_schedule *sched,
-                       const zp_sim_opts *so, zp_study_row *row) {
+                       const zp_sim_opts *so, double max_time, zp_study_row *row) {
     /* the search's runs as `zipopt SCENE.ini` makes them: no trajectory, no load peaks, the
        [optimize] integrator and tolerance */
     zp_sim_opts search = *so, fast;
@@ -78,7 +94,7 @@ static void run_search(const zp_scene *sc, const zp_model *m, const zp_schedule 
     search.method = zp_method_find(sc->search_method);
     search.rtol = sc->search_rtol;
     search.atol = sc->search_rtol / 100;
-    zp_search_opts o = {.max_evals = sc->max_evals, .seed = sc->seed};
+    zp_search_opts o = {.max_evals = sc->max_evals, .seed = sc->seed, .max_time = max_time};
     zp_search_result *res = malloc(sizeof *res);
     zp_robust_problem *pb = malloc(sizeof *pb); /* large: off the stack */
     char err[512] = "";
@@ -97,7 +113,7 @@ static void run_search(const zp_scene *sc, const zp_model *m, const zp_schedule 
         zp_objective ob = pb->ob; /* the nominal scene: the scenarios were checked above */
         ob.set = NULL;
         zp_sim_opts solver = *so;
-        solver.peaks = fast.peaks;
+        solver.peaks = 1; /* the row's limited quantities, exact whether a limit is set or not */
         zp_verify v;
         zp_sim *best = NULL;
         if (zp_verify_run(&ob, &solver, res->force, sc->seed, 0, 0, &best, &v, NULL, NULL, err,
@@ -139,7 +155,7 @@ static void run_simulate(const zp_scene *sc, const zp_model *m, const zp_objecti
     free(r);
 }
 
-void zp_study_run(const zp_scene *sc, zp_study_kind kind, zp_study_row *row) {
+void zp_study_run(const zp_scene *sc, zp_study_kind kind, double max_time, zp_study_row *row) {
     memset(row, 0, sizeof *row);
     zp_schedule sched = zp_schedule_of_scene(sc);
     row->np = sched.np;
@@ -154,11 +170,13 @@ void zp_study_run(const zp_scene *sc, zp_study_kind kind, zp_study_row *row) {
     }
     so.output_dt = 0; /* outcomes only: output requests never change the integrator's steps */
     if (kind == ZP_STUDY_SEARCH) {
-        run_search(sc, m, &sched, &so, row);
+        run_search(sc, m, &sched, &so, max_time, row);
     } else {
         /* the limit exactly as the search command sets it */
         zp_objective ob = {.m = m, .limit = m->phi_max - sc->margin * M_PI / 180,
                            .t_max = so.t_max, .shape = &sched};
+        zp_limits_from_scene(sc, &ob.lim); /* judged as the search judges a candidate */
+        so.peaks = 1;                      /* the row's limited quantities, exact */
         run_simulate(sc, m, &ob, &so, row);
     }
     zp_model_free(m);

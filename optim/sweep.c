@@ -3,7 +3,6 @@
 #include "sweep.h"
 
 #include <ctype.h>
-#include <errno.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -276,6 +275,32 @@ static char *splice(const char *t, size_t from, size_t to, const char *ins) {
     return out;
 }
 
+/* t with the line `key = line_value` in [sec]: replacing the key's line, else added below the
+   section's header, else with the section added at the end (a new text, or NULL) */
+static char *put_line(const char *t, const char *sec, const char *key, const char *line) {
+    char val[4096];
+    size_t ls, le, hdr;
+    if (find_line(t, sec, key, &ls, &le, &hdr, val, sizeof val)) {
+        return splice(t, ls, le, line);
+    }
+    char ins[ZP_SWEEP_LINE_MAX + 128];
+    if (hdr != SIZE_MAX) {
+        snprintf(ins, sizeof ins, "%s%s\n", hdr && t[hdr - 1] != '\n' ? "\n" : "", line);
+        return splice(t, hdr, hdr, ins);
+    }
+    size_t n = strlen(t);
+    snprintf(ins, sizeof ins, "%s[%s]\n%s\n", n && t[n - 1] != '\n' ? "\n" : "", sec, line);
+    return splice(t, n, n, ins);
+}
+
+char *zp_sweep_set_text(const char *t, const char *sec, const char *key, const char *value) {
+    char line[ZP_SWEEP_LINE_MAX];
+    if (snprintf(line, sizeof line, "%s = %s", key, value) >= (int)sizeof line) {
+        return NULL;
+    }
+    return put_line(t, sec, key, line);
+}
+
 /* one varied key set in t (a new text, or NULL with why) */
 static char *set_key(const char *t, const zp_sweep_vary *v, double x, char *why, size_t whylen) {
     char val[4096], line[4200], num[32];
@@ -299,20 +324,7 @@ static char *set_key(const char *t, const zp_sweep_vary *v, double x, char *why,
         zp_sweep_format(x, num, sizeof num);
         snprintf(line + len, sizeof line - (size_t)len, "%s", num);
     }
-    char *out;
-    if (found) {
-        out = splice(t, ls, le, line);
-    } else if (hdr != SIZE_MAX) {
-        char ins[4300];
-        snprintf(ins, sizeof ins, "%s%s\n", hdr && t[hdr - 1] != '\n' ? "\n" : "", line);
-        out = splice(t, hdr, hdr, ins);
-    } else {
-        char ins[4300];
-        size_t n = strlen(t);
-        snprintf(ins, sizeof ins, "%s[%s]\n%s\n", n && t[n - 1] != '\n' ? "\n" : "", v->section,
-                 line);
-        out = splice(t, n, n, ins);
-    }
+    char *out = put_line(t, v->section, v->key, line);
     if (!out) {
         snprintf(why, whylen, "out of memory");
     }
@@ -341,40 +353,4 @@ void zp_sweep_describe(const zp_sweep *s, int p, char *out, size_t cap) {
                                 va->key, va->kind == ZP_VARY_SCALE ? "x" : "",
                                 zp_sweep_value(s, v, p));
     }
-}
-
-char *zp_sweep_read_file(const char *path, size_t *len) {
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        return NULL;
-    }
-    char *text = NULL;
-    size_t cap = 0;
-    *len = 0;
-    for (;;) {
-        if (*len + 65536 + 1 > cap) {
-            char *t = realloc(text, cap = 2 * cap + 65536 + 1);
-            if (!t) {
-                free(text);
-                fclose(f);
-                errno = ENOMEM;
-                return NULL;
-            }
-            text = t;
-        }
-        size_t got = fread(text + *len, 1, cap - *len - 1, f);
-        *len += got;
-        if (got == 0) {
-            break;
-        }
-    }
-    int bad = ferror(f);
-    fclose(f);
-    text[*len] = '\0';
-    if (bad) {
-        free(text);
-        errno = EIO;
-        return NULL;
-    }
-    return text;
 }

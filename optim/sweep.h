@@ -43,10 +43,13 @@ double zp_sweep_value(const zp_sweep *s, int v, int p);
 void zp_sweep_column(const zp_sweep_vary *v, char *out, size_t cap);
 /* "body.masses x0.9, trolley.mass 40": where point p lies, for messages and summaries. */
 void zp_sweep_describe(const zp_sweep *s, int p, char *out, size_t cap);
-/* The whole file at path as a malloc'd text (NUL added; *len bytes read), or NULL with errno. */
-char *zp_sweep_read_file(const char *path, size_t *len);
 /* x in the fewest digits that read back as x exactly (at most 17 significant). */
 void zp_sweep_format(double x, char *out, size_t cap);
+#define ZP_SWEEP_LINE_MAX 8192 /* bytes of one `key = value` line the study writes */
+/* t with `key = value` in [sec]: the key's line replaced, else added to the section, else the
+   section added at the end. A malloc'd text, or NULL (no memory, or a line over
+   ZP_SWEEP_LINE_MAX). */
+char *zp_sweep_set_text(const char *t, const char *sec, const char *key, const char *value);
 /* Point p's scene: base with each varied key's line replaced (or added to its section, or the
    section added) with the point's value. Returns a malloc'd text, or NULL with why (a list key
    absent from base has nothing to scale; no memory). */

@@ -4,17 +4,29 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <limits.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "out_file.h"
 
-#define NFIXED 8 /* result columns before the forces: status .. evals */
+/* result columns before the forces: status .. evals (8), the limited quantities */
+#define NFIXED (8 + ZP_LIMIT_COUNT)
 #define LINE_MAX_BYTES                                                                             \
     16384 /* a row or grid line is shorter (a grid line of 10000 points:                           \
              twice 2500 hex digits, with 256 forces) */
+
+const char *zp_sweep_csv_limit_column(int i) {
+    static const char *const columns[ZP_LIMIT_COUNT] = {
+        [ZP_LIMIT_G] = "peak_g", [ZP_LIMIT_JOINT] = "peak_joint_force_N",
+        [ZP_LIMIT_ARRIVAL] = "arrival_kmh", [ZP_LIMIT_KINK_DV] = "max_kink_dv_m_s",
+        [ZP_LIMIT_G_ENVELOPE] = "g_envelope_share", [ZP_LIMIT_MIN_ARRIVAL] = "slowest_arrival_kmh"};
+    return columns[i];
+}
 
 void zp_sweep_csv_header(FILE *f, const zp_sweep *s, int np) {
     fputs("point", f);
@@ -24,6 +36,9 @@ void zp_sweep_csv_header(FILE *f, const zp_sweep *s, int np) {
         fprintf(f, ",%s", col);
     }
     fputs(",status,found,outcome,time_s,margin_deg,limit,verified,evals", f);
+    for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
+        fprintf(f, ",%s", zp_sweep_csv_limit_column(i));
+    }
     for (int k = 1; k <= np; k++) {
         fprintf(f, ",F%d_N", k);
     }
@@ -52,15 +67,18 @@ void zp_sweep_csv_row(FILE *f, const zp_sweep *s, int p, const zp_study_row *r) 
         put_num(f, zp_sweep_value(s, v, p));
     }
     if (r->failed) {
-        fputs(",failed,,,,,,,", f);
-        for (int k = 0; k < r->np; k++) {
-            fputc(',', f);
+        fputs(",failed", f);
+        for (int k = 1; k < NFIXED + r->np; k++) {
+            fputc(',', f); /* the empty result columns and forces */
         }
     } else {
         fprintf(f, ",ok,%d,%s", r->found, zp_sim_outcome_name(r->outcome));
         put_num(f, r->time);
         put_num(f, r->margin);
         fprintf(f, ",%s,%d,%ld", r->limit, r->verified, r->evals);
+        for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
+            put_num(f, r->reached[i]);
+        }
         for (int k = 0; k < r->np; k++) {
             put_num(f, r->force[k]);
         }
@@ -74,10 +92,46 @@ static int num_field(const char *t, double *x) {
     return end == t || *end ? -1 : 0;
 }
 
+/* Every field read back is range-checked: a checkpoint is a text file a user may edit, and a
+   value zipopt would never write (inf, a negative count, a point off the grid) must not
+   reach the study's summary or index its arrays. */
+
+/* a finite number in [lo, hi]; 0, else -1 */
+static int finite_field(const char *t, double lo, double hi, double *x) {
+    return num_field(t, x) || !isfinite(*x) || *x < lo || *x > hi ? -1 : 0;
+}
+
+/* NaN, or a finite number not below lo */
+static int nan_or_field(const char *t, double lo, double *x) {
+    return !num_field(t, x) && isnan(*x) ? 0 : finite_field(t, lo, HUGE_VAL, x);
+}
+
+/* a whole number in [lo, hi] (decimal digits, an optional minus); 0, else -1 */
+static int whole_field(const char *t, long lo, long hi, long *v) {
+    char *end;
+    errno = 0;
+    *v = strtol(t, &end, 10);
+    int digits = t[t[0] == '-'] >= '0' && t[t[0] == '-'] <= '9';
+    return !digits || *end || errno || *v < lo || *v > hi ? -1 : 0;
+}
+
+/* "0" or "1" */
+static int flag_field(const char *t, int *v) {
+    *v = t[0] == '1';
+    return (t[0] == '0' || t[0] == '1') && !t[1] ? 0 : -1;
+}
+
+/* a limit as zp_study_row holds it: "none", or names of [a-z_.] joined by '+' */
+static int limit_field(const char *t) {
+    size_t n = strlen(t);
+    return n && n < sizeof((zp_study_row *)0)->limit &&
+                   strspn(t, "abcdefghijklmnopqrstuvwxyz_.+") == n
+               ? 0
+               : -1;
+}
+
 /* the result fields of a row that did not fail: status .. evals, then the forces */
 static int parse_result(char **fld, int np, zp_study_row *r) {
-    char *end;
-    r->found = fld[1][0] == '1' && !fld[1][1];
     r->outcome = ZP_OUTCOME_COUNT;
     for (int o = 0; o < ZP_OUTCOME_COUNT; o++) {
         if (!strcmp(fld[2], zp_sim_outcome_name((zp_outcome)o))) {
@@ -85,12 +139,15 @@ static int parse_result(char **fld, int np, zp_study_row *r) {
         }
     }
     snprintf(r->limit, sizeof r->limit, "%s", fld[5]);
-    r->verified = fld[6][0] == '1' && !fld[6][1];
-    r->evals = strtol(fld[7], &end, 10);
-    int bad = r->outcome == ZP_OUTCOME_COUNT || num_field(fld[3], &r->time) ||
-              num_field(fld[4], &r->margin) || *end || !fld[7][0];
+    int bad = flag_field(fld[1], &r->found) || r->outcome == ZP_OUTCOME_COUNT ||
+              finite_field(fld[3], 0, HUGE_VAL, &r->time) ||
+              finite_field(fld[4], -HUGE_VAL, HUGE_VAL, &r->margin) || limit_field(fld[5]) ||
+              flag_field(fld[6], &r->verified) || whole_field(fld[7], 0, LONG_MAX, &r->evals);
+    for (int i = 0; i < ZP_LIMIT_COUNT && !bad; i++) {
+        bad = finite_field(fld[8 + i], 0, HUGE_VAL, &r->reached[i]);
+    }
     for (int k = 0; k < np && !bad; k++) {
-        bad = num_field(fld[NFIXED + k], &r->force[k]);
+        bad = finite_field(fld[NFIXED + k], -HUGE_VAL, HUGE_VAL, &r->force[k]);
     }
     return bad ? -1 : 0;
 }
@@ -116,9 +173,8 @@ int zp_sweep_csv_parse(const char *line, const zp_sweep *s, int np, int *p, zp_s
     int n = split(buf, fld, MAXF);
     memset(r, 0, sizeof *r);
     r->np = np;
-    char *end;
-    long pl = strtol(fld[0], &end, 10);
-    if (n != 1 + s->nvary + NFIXED + np + 1 || end == fld[0] || *end || pl < 0 || pl >= s->npoint) {
+    long pl;
+    if (n != 1 + s->nvary + NFIXED + np + 1 || whole_field(fld[0], 0, s->npoint - 1, &pl)) {
         return -1;
     }
     *p = (int)pl;
@@ -138,7 +194,6 @@ int zp_sweep_csv_parse(const char *line, const zp_sweep *s, int np, int *p, zp_s
 }
 
 #define GRID_FIXED 17 /* the grid line's fields before the forces: "grid" .. survived */
-#define GRID_WHOLE 13 /* of them, whole numbers (the others: time, margin, worst margin) */
 
 static void put_bits(FILE *f, const unsigned char *bits, int npoint) {
     fputc(',', f);
@@ -147,19 +202,25 @@ static void put_bits(FILE *f, const unsigned char *bits, int npoint) {
     }
 }
 
+/* npoint bits from hex (none set past the last point); the number set, or -1 */
 static int parse_bits(const char *hex, unsigned char *bits, int npoint) {
-    int nbyte = (npoint + 7) / 8;
-    if (strlen(hex) != 2 * (size_t)nbyte) {
+    int nbyte = (npoint + 7) / 8, nset = 0;
+    if (strlen(hex) != 2 * (size_t)nbyte || strspn(hex, "0123456789abcdef") != strlen(hex)) {
         return -1;
     }
     for (int i = 0; i < nbyte; i++) {
-        char two[3] = {hex[2 * i], hex[2 * i + 1], 0}, *end;
-        bits[i] = (unsigned char)strtoul(two, &end, 16);
-        if (*end) {
-            return -1;
+        char two[3] = {hex[2 * i], hex[2 * i + 1], 0};
+        bits[i] = (unsigned char)strtoul(two, NULL, 16);
+        for (int b = 0; b < 8; b++) {
+            if (bits[i] >> b & 1) {
+                nset++;
+                if (8 * i + b >= npoint) {
+                    return -1;
+                }
+            }
         }
     }
-    return 0;
+    return nset;
 }
 
 void zp_sweep_csv_grid(FILE *f, const zp_grid_result *g, int npoint) {
@@ -180,36 +241,41 @@ void zp_sweep_csv_grid(FILE *f, const zp_grid_result *g, int npoint) {
 
 int zp_sweep_csv_grid_parse(const char *line, int np, int npoint, zp_grid_result *g) {
     enum { MAXF = GRID_FIXED + ZP_SCHED_MAX_PARAMS + 3 };
-    char buf[LINE_MAX_BYTES], *fld[MAXF], *end;
+    char buf[LINE_MAX_BYTES], *fld[MAXF];
     snprintf(buf, sizeof buf, "%s", line);
     int n = split(buf, fld, MAXF);
     memset(g, 0, sizeof *g);
     if (n != GRID_FIXED + np + 3 || strcmp(fld[0], "grid")) {
         return -1; /* another study's, or a line of an older zipopt (fewer fields) */
     }
-    long v[GRID_WHOLE];
-    const int at[GRID_WHOLE] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 14, 16}; /* whole numbers */
+    /* each whole number with its range: flags, grid points, counts */
+    const long npt = npoint;
+    const struct {
+        int at;
+        long lo, hi;
+        int *to;
+    } whole[] = {
+        {1, 0, 1, &g->failed},      {2, 0, 1, &g->found},         {3, 0, npt - 1, &g->nominal},
+        {4, 0, npt, &g->ncorner},   {5, 0, INT_MAX, &g->nscen},   {7, 0, INT_MAX, &g->rounds},
+        {8, 0, INT_MAX, &g->kept},  {9, 0, npt, &g->nheld},       {10, 0, npt, &g->nadded},
+        {11, 0, 1, &g->last_found}, {14, -1, npt - 1, &g->worst}, {16, 0, npt, &g->survived},
+    };
     int bad = 0;
-    for (int i = 0; i < GRID_WHOLE; i++) {
-        v[i] = strtol(fld[at[i]], &end, 10);
-        bad |= end == fld[at[i]] || *end;
+    for (size_t i = 0; i < sizeof whole / sizeof whole[0] && !bad; i++) {
+        long v;
+        bad = whole_field(fld[whole[i].at], whole[i].lo, whole[i].hi, &v);
+        *whole[i].to = (int)v;
     }
-    int *whole[] = {&g->failed,     &g->found,  &g->nominal, &g->ncorner, &g->nscen,
-                    NULL,           &g->rounds, &g->kept,    &g->nheld,   &g->nadded,
-                    &g->last_found, &g->worst,  &g->survived};
-    for (int i = 0; i < GRID_WHOLE; i++) {
-        if (whole[i]) {
-            *whole[i] = (int)v[i];
-        }
-    }
-    g->evals = v[5];
     g->np = np;
-    bad |= num_field(fld[12], &g->time) || num_field(fld[13], &g->margin) ||
-           num_field(fld[15], &g->worst_margin);
+    /* time and margins are NaN where no run gave them (the grid's own "none") */
+    bad = bad || whole_field(fld[6], 0, LONG_MAX, &g->evals) || g->kept > g->rounds ||
+          nan_or_field(fld[12], 0, &g->time) || nan_or_field(fld[13], -HUGE_VAL, &g->margin) ||
+          nan_or_field(fld[15], -HUGE_VAL, &g->worst_margin);
     for (int k = 0; k < np && !bad; k++) {
-        bad = num_field(fld[GRID_FIXED + k], &g->force[k]);
+        bad = finite_field(fld[GRID_FIXED + k], -HUGE_VAL, HUGE_VAL, &g->force[k]);
     }
-    bad = bad || parse_bits(fld[n - 3], g->ok, npoint) || parse_bits(fld[n - 2], g->added, npoint);
+    bad = bad || parse_bits(fld[n - 3], g->ok, npoint) != g->survived ||
+          parse_bits(fld[n - 2], g->added, npoint) < 0;
     snprintf(g->message, sizeof g->message, "%s", fld[n - 1]);
     return bad ? -1 : 0;
 }
@@ -226,8 +292,8 @@ static char *study_head(const zp_sweep *s, const char *base, int np) {
     if (!f) {
         return NULL;
     }
-    fprintf(f, "# zipopt sweep checkpoint: run=%s scene=%016llx np=%d vary=",
-            zp_study_kind_name(s->kind), (unsigned long long)h, np);
+    fprintf(f, "# zipopt sweep checkpoint: version=%s run=%s scene=%016llx np=%d vary=",
+            ZIPOPT_VERSION, zp_study_kind_name(s->kind), (unsigned long long)h, np);
     for (int v = 0; v < s->nvary; v++) {
         fprintf(f, "%s%s", v ? " " : "", s->vary[v].text);
     }
@@ -314,28 +380,42 @@ zp_status zp_sweep_checkpoint_open(zp_sweep_checkpoint *c, int dirfd, const char
     *grid_done = 0;
     snprintf(c->path, sizeof c->path, "%s/checkpoint.csv", dir);
     char *head = study_head(s, base, np), *old = NULL;
-    /* never through a link planted at the name: the file is opened in the folder itself */
-    int fd = head ? openat(dirfd, "checkpoint.csv", O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644)
+    /* never through a link planted at the name: the file is opened in the folder itself;
+       without blocking (a FIFO would wait for a writer forever), and a regular file only */
+    int fd = head ? openat(dirfd, "checkpoint.csv",
+                           O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK, 0644)
                   : -1;
+    struct stat st;
+    if (fd >= 0 && (fstat(fd, &st) || !S_ISREG(st.st_mode))) {
+        snprintf(err, errlen, "%s is not a regular file; expected the checkpoint of a study",
+                 c->path);
+        free(head);
+        close(fd);
+        return ZP_ERR_INPUT;
+    }
     size_t len = 0;
     long keep = -2;
     if (fd >= 0 && resume && (old = read_fd(fd, &len)) != NULL && len > 0) {
         keep = strlen(old) == len ? read_rows(old, head, s, np, rows, done, ndone, grid, grid_done)
                                   : -1;
     }
+    /* the head up to the version of zipopt that wrote it */
+    const char *after = strstr(head, " run=");
+    int other_version = keep == -1 && strncmp(old, head, (size_t)(after - head));
     free(old);
     if (keep == -1) {
         snprintf(err, errlen,
-                 "%s belongs to another study (its scene, --vary or --run differ); "
-                 "run without --resume to start afresh",
-                 c->path);
+                 "%s belongs to another study (%s); run without --resume to start afresh", c->path,
+                 other_version ? "another zipopt version wrote it, or it is not a checkpoint"
+                               : "its scene, --vary or --run differ");
         free(head);
         close(fd);
         return ZP_ERR_INPUT;
     }
     /* a buffer larger than any line: each line reaches the file in one write(), so a signal
        that ends the job lands before or after it, never inside */
-    if (fd < 0 || ftruncate(fd, keep > 0 ? keep : 0) || lseek(fd, 0, SEEK_END) < 0 ||
+    if (fd < 0 || fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK) ||
+        ftruncate(fd, keep > 0 ? keep : 0) || lseek(fd, 0, SEEK_END) < 0 ||
         (c->dirfd = fcntl(dirfd, F_DUPFD_CLOEXEC, 0)) < 0 || !(c->f = fdopen(fd, "a")) ||
         setvbuf(c->f, NULL, _IOFBF, LINE_MAX_BYTES)) {
         snprintf(err, errlen, "%s: %s", c->path, head ? strerror(errno) : "out of memory");

@@ -8,6 +8,8 @@
 #include "grid.h"
 #include "sweep.h"
 
+/* The sweep.csv column of each [limits] quantity a row reports (peak_g, arrival_kmh, ...). */
+const char *zp_sweep_csv_limit_column(int i);
 /* The header line: point, the varied columns, then the result columns (F1..Fnsec last but
    one, message last). */
 void zp_sweep_csv_header(FILE *f, const zp_sweep *s, int np);

@@ -1,7 +1,12 @@
 """The Python module over libzipopt.so: the seed scene at 10 N finishes at the very time
 `zipopt simulate --json` prints (bit for bit: the same library code), the energy audit closes,
-the trajectory's columns keep their definitions, a bad scene raises with its file and line,
-and a search keeps its budget and stops when its progress function asks.
+the trajectory's columns keep their definitions, a schedule file gives the program's bits,
+a bad scene raises with its file and line,
+and a search keeps its budget and stops when its progress function asks. Misuse raises
+ValueError instead of crashing, hanging or being misread (each case in a child interpreter,
+so a crash or a hang fails that case alone): a closed Scene, one closed inside a progress
+function, a scene loaded or searched from inside one, NUL bytes in text, names and paths,
+and whole numbers past a C long.
 
 Run by ctest with PYTHONPATH (the module), ZIPOPT_LIB (the built library), ZIPOPT_EXE (the
 program) and ZIPOPT_SOURCE_DIR (the scenes) set.
@@ -10,6 +15,7 @@ program) and ZIPOPT_SOURCE_DIR (the scenes) set.
 import json
 import os
 import subprocess
+import sys
 import tempfile
 import unittest
 
@@ -34,6 +40,27 @@ class Simulate(unittest.TestCase):
         self.assertEqual(r.time, prog["time"])  # bit for bit: JSON keeps 17 digits
         self.assertEqual(r.x, prog["x"])
         self.assertEqual(r.kinks, len(prog["kinks"]))
+
+    def test_schedule_file_equals_the_program(self):
+        # the schedule.ini `zipopt simulate --schedule` reads gives the program's bits here too
+        with tempfile.TemporaryDirectory() as out:
+            sched = os.path.join(out, "schedule.ini")
+            with open(sched, "w") as f:
+                f.write("[drive]\nforces = 12.5, 30, 7\n")
+            js = subprocess.run([os.environ["ZIPOPT_EXE"], "simulate", SEED, "--schedule",
+                                 sched, "--json", "--out", out],
+                                check=True, capture_output=True, text=True).stdout
+            r = zipopt.simulate(SEED, schedule=sched)
+            with zipopt.Scene(SEED) as s:
+                s.load_schedule(sched)
+                self.assertEqual(list(s.forces), [12.5, 30, 7])
+                with open(sched, "w") as f:
+                    f.write("[drive]\nforces = 1, 2\n")
+                with self.assertRaises(zipopt.ZipoptError) as e:
+                    s.load_schedule(sched)
+                self.assertIn("schedule.ini:2: [drive] forces", str(e.exception))
+                self.assertEqual(list(s.forces), [12.5, 30, 7])
+        self.assertEqual(r.time, json.loads(js)["time"])
 
     def test_energy_and_trajectory(self):
         r = zipopt.simulate(SEED, forces=[10, 10, 10])
@@ -107,6 +134,99 @@ class Search(unittest.TestCase):
 
         with self.assertRaises(KeyError):
             zipopt.search(SEED, max_evals=400, seed=3, progress=progress)
+
+
+# each snippet prints "ok" when every misuse raised ValueError
+MISUSE = {
+    "closed": """
+s = zipopt.Scene(SEED)
+s.close()
+for use in (lambda: s.simulate(), lambda: s.forces, lambda: s.name, lambda: s.sections,
+            lambda: s.search(max_evals=10), lambda: setattr(s, "forces", [1, 2, 3])):
+    try:
+        use()
+        raise SystemExit("a closed Scene was used")
+    except ValueError:
+        pass
+s.close()  # twice is fine
+print("ok")
+""",
+    "closed_in_progress": """
+s = zipopt.Scene(SEED)
+def progress(*args):
+    s.close()
+try:
+    s.search(max_evals=200, seed=1, progress=progress)
+    raise SystemExit("closed while searched")
+except ValueError:
+    pass
+print("ok" if s.simulate().outcome else "no run")
+""",
+    "load_in_progress": """
+def load(*args):
+    zipopt.Scene(SEED)
+def search(*args):
+    zipopt.search(SEED, max_evals=10)
+for progress in (load, search):
+    try:
+        zipopt.search(SEED, max_evals=200, seed=1, progress=progress)
+        raise SystemExit("re-entered the library")
+    except ValueError:
+        pass
+other = zipopt.Scene(SEED)
+ran = []
+zipopt.search(SEED, max_evals=100, seed=1, progress=lambda *a: ran.append(other.simulate().time))
+print("ok" if ran else "the other scene did not run")
+""",
+    "nul": r"""
+text = open(SEED).read()
+for make in (lambda: zipopt.Scene(text.replace("forces = ", "forces = 10\0"), text=True),
+             lambda: zipopt.Scene(text, text=True, name="a\0b"),
+             lambda: zipopt.Scene(SEED + "\0.ini"),
+             lambda: zipopt.Scene(os.fsencode(SEED) + b"\0x")):
+    try:
+        make()
+        raise SystemExit("a NUL byte passed")
+    except ValueError:
+        pass
+print("ok")
+""",
+    "wide_ints": """
+for kw in ({"max_evals": 2**64 + 30}, {"seed": 2**63}, {"max_evals": -2**70}, {"seed": 1.5}):
+    try:
+        zipopt.search(SEED, **kw)
+        raise SystemExit(f"{kw} accepted")
+    except ValueError:
+        pass
+print("ok")
+""",
+}
+
+
+class Misuse(unittest.TestCase):
+    def run_case(self, name):
+        code = f"import os, zipopt\nSEED = {SEED!r}\n" + MISUSE[name]
+        try:
+            p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                               timeout=60)
+        except subprocess.TimeoutExpired:
+            self.fail(f"{name}: hung for 60 s")
+        self.assertEqual((p.returncode, p.stdout.strip()), (0, "ok"), f"{name}: {p.stderr}")
+
+    def test_closed(self):
+        self.run_case("closed")
+
+    def test_closed_in_progress(self):
+        self.run_case("closed_in_progress")
+
+    def test_load_in_progress(self):
+        self.run_case("load_in_progress")
+
+    def test_nul(self):
+        self.run_case("nul")
+
+    def test_wide_ints(self):
+        self.run_case("wide_ints")
 
 
 if __name__ == "__main__":

@@ -27,6 +27,10 @@ comp=$(find "$prefix/share" -path '*bash-completion/completions/zipopt' -type f)
 [ -f "$prefix/share/zipopt/scenes/seed.ini" ] || fail "no example scenes in share/zipopt/scenes"
 [ -n "$comp" ] || fail "no completion in share/bash-completion/completions/zipopt"
 [ -f "$man" ] || fail "no man page at share/man/man1/zipopt.1"
+# the docs the man page and --help send users to are installed beside them
+for d in model.md scene-file.md commands.md; do
+    [ -f "$prefix/share/doc/zipopt/$d" ] || fail "no share/doc/zipopt/$d"
+done
 [ "$failures" = 0 ] || exit 1
 
 # the installed program runs an installed scene
@@ -35,6 +39,7 @@ comp=$(find "$prefix/share" -path '*bash-completion/completions/zipopt' -type f)
 # the man page is zipopt(1) and documents every command's options ('-' is '\-' in roff)
 grep -q '^\.TH ZIPOPT "*1' "$man" || fail "the man page is not zipopt(1)"
 manual=$(sed 's/\\-/-/g' "$man")
+case $manual in *"share/doc/zipopt"*) ;; *) fail "the man page does not name share/doc/zipopt" ;; esac
 
 # COMPREPLY of the installed completion for the words given (the last is being completed)
 offers() {
@@ -108,6 +113,16 @@ if [ -n "$src" ]; then
         py_t=$(cd "$prefix" && PYTHONPATH=${init%/zipopt/__init__.py} LD_LIBRARY_PATH=$libdir \
             "$py" -c "import zipopt; print(repr(zipopt.simulate('$seed', [10, 10, 10]).time))")
         same "$py_t" "$exe_t" || fail "the installed module's time '$py_t' is not zipopt's '$exe_t'"
+        # the module alone finds its library and scenes in its own prefix, from any folder,
+        # and the installed notebook example runs there
+        py_t=$(cd / && env -u LD_LIBRARY_PATH -u ZIPOPT_LIB PYTHONPATH=${init%/zipopt/__init__.py} \
+            "$py" -c "import zipopt; print(repr(zipopt.simulate(zipopt.example_scene('seed.ini'), [10, 10, 10]).time))")
+        same "$py_t" "$exe_t" || fail "the module without LD_LIBRARY_PATH: '$py_t', not '$exe_t'"
+        nb=$prefix/share/zipopt/examples/notebook.py
+        mkdir -p "$prefix/nb"
+        (cd "$prefix/nb" && env -u LD_LIBRARY_PATH -u ZIPOPT_LIB PYTHONPATH=${init%/zipopt/__init__.py} \
+            ZIPOPT_EVALS=60 MPLBACKEND=Agg "$py" "$nb" >"$prefix/nb/log" 2>&1) ||
+            fail "the installed notebook example: $(tail -3 "$prefix/nb/log")"
     elif [ -n "$init" ]; then
         echo "check_install: numpy is missing (apt-get install python3-numpy): module not run"
     fi

@@ -339,7 +339,8 @@ static void test_check_shows(void) {
        within the continuity tolerance */
     const char *rest = strstr(valid, "[trolley]");
     snprintf(text, sizeof text,
-             "[course]\nx_start = 1\nsection = 10 : sqrt(x)\nsection = 20 : sqrt(10) + 0*x\n%s", rest);
+             "[course]\nx_start = 1\nsection = 10 : sqrt(x)\nsection = 20 : sqrt(10) + 0*x\n%s",
+             rest);
     write_file(path, text);
     run(args);
     const char *y = strstr(out, "x = 10 m, y = ");
@@ -397,6 +398,52 @@ static void test_all_at_once(void) {
     CHECK(untouched(fresh));
 }
 
+/* sweep's and tradeoff's arguments and folders shown with control bytes escaped (\x1b, as
+   zp_diag_put_escaped does), never raw; an empty --out or scene path refused (not the
+   current folder); forces beyond what gnuplot can draw refused before any run (exit 2, not
+   a gnuplot failure after the work) */
+static void test_hostile_arguments(const char *scene) {
+    char args[4096];
+    snprintf(args, sizeof args, "sweep '%s' --vary 'trolley.mass=1:2:2\033[31m' --out '%s/h'",
+             scene, tmp);
+    expect(args, 2, "\\x1b[31m");
+    CHECK(!strchr(err, '\033'));
+    snprintf(args, sizeof args, "sweep '%s' --vary trolley.mass=1:2:2 --run 'x\033y' --out '%s/h'",
+             scene, tmp);
+    expect(args, 2, "'x\\x1by'");
+    CHECK(!strchr(err, '\033'));
+    snprintf(args, sizeof args, "tradeoff '%s' --levels '1,\0332' --out '%s/h'", scene, tmp);
+    expect(args, 2, "\\x1b2");
+    CHECK(!strchr(err, '\033'));
+    /* a folder named with a control byte: written, and named escaped */
+    snprintf(args, sizeof args,
+             "sweep '%s' --vary trolley.mass=20:30:2 --run simulate --out '%s/h\033'", scene, tmp);
+    expect(args, 0, NULL);
+    CHECK(strstr(out, "h\\x1b/sweep.csv") && !strchr(out, '\033'));
+
+    /* --out '' and an empty scene path */
+    char dir[1100];
+    snprintf(dir, sizeof dir, "%s/empty", tmp);
+    CHECK(mkdir(dir, 0777) == 0);
+    snprintf(args, sizeof args, "simulate '%s' --out ''", scene);
+    char cmd[8400];
+    snprintf(cmd, sizeof cmd, "cd '%s' && '%s' %s >/dev/null 2>&1", dir, ZP_EXE, args);
+    int st = system(cmd);
+    CHECK(WIFEXITED(st) && WEXITSTATUS(st) == 2);
+    snprintf(cmd, sizeof cmd, "%s/summary.json", dir);
+    CHECK(access(cmd, F_OK) != 0);
+    expect("simulate ''", 2, "empty path");
+
+    /* forces gnuplot cannot draw */
+    snprintf(args, sizeof args, "landscape '%s' --force-range 0:1e308:3 --out '%s/h2'", scene, tmp);
+    expect(args, 2, "--force-range");
+    snprintf(args, sizeof args, "landscape '%s' --force-range -1e308:1e308:3 --out '%s/h2'", scene,
+             tmp);
+    expect(args, 2, "--force-range");
+    snprintf(dir, sizeof dir, "%s/h2", tmp);
+    CHECK(access(dir, F_OK) != 0);
+}
+
 int main(void) {
     snprintf(tmp, sizeof tmp, "%s/zp_cli_XXXXXX", getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp");
     if (!mkdtemp(tmp)) {
@@ -410,6 +457,7 @@ int main(void) {
     write_file(scene, valid);
     test_options(scene);
     test_limits(scene);
+    test_hostile_arguments(scene);
     test_json();
     test_check_shows();
     test_all_at_once();

@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -82,6 +83,55 @@ static void bad_input(void) {
     }
     snprintf(path, sizeof path, "%s/bad", dir);
     CHECK(!tu_exists(path));
+}
+
+/* the scene is read as every command reads it: a NUL byte is refused with its line (not a
+   scene cut short there), a file over 1 MiB is refused (not read until memory runs out) */
+static void bad_files(void) {
+    char path[600], cmd[2048];
+    snprintf(path, sizeof path, "%s/nul.ini", dir);
+    FILE *f = fopen(path, "wb");
+    static const char nul_scene[] =
+        "[scene]\nname = nul\n[course]\nx_start = 0\nsection = 6 : 6 - x/2\n[trolley]\n"
+        "mass = 20\n[body]\nlengths = 0.5\nmasses = 2\n[drive]\nforces = 10\0, 20\n";
+    CHECK(f && fwrite(nul_scene, 1, sizeof nul_scene - 1, f) == sizeof nul_scene - 1);
+    fclose(f);
+    snprintf(cmd, sizeof cmd,
+             "%s sweep %s --vary trolley.mass=10:20:2 --run simulate --out %s/nul 2>&1", ZP_EXE,
+             path, dir);
+    CHECK(run(cmd) == 2 && strstr(out, "nul.ini:12:") && strstr(out, "NUL byte"));
+    snprintf(path, sizeof path, "%s/nul", dir);
+    CHECK(!tu_exists(path));
+    /* a valid scene after 2 MiB of comment lines */
+    snprintf(path, sizeof path, "%s/huge.ini", dir);
+    f = fopen(path, "w");
+    for (int i = 0; f && i < 2 * 1024 * 1024 / 16; i++) {
+        fputs("; padding line\n", f);
+    }
+    fclose(f);
+    snprintf(cmd, sizeof cmd, "cat %s >> %s", scene("huge-tail", "30", "5, 2", 100), path);
+    CHECK(run(cmd) == 0);
+    snprintf(cmd, sizeof cmd,
+             "%s sweep %s --vary trolley.mass=10:20:2 --run simulate --out %s/huge 2>&1", ZP_EXE,
+             path, dir);
+    CHECK(run(cmd) == 2 && strstr(out, "larger than 1 MiB"));
+    snprintf(path, sizeof path, "%s/huge", dir);
+    CHECK(!tu_exists(path));
+}
+
+/* --resume on a checkpoint.csv that is a FIFO: refused at once (a regular file only), not a
+   wait forever for a writer */
+static void fifo_checkpoint(void) {
+    char cmd[2048], path[600];
+    snprintf(path, sizeof path, "%s/fifo", dir);
+    CHECK(mkdir(path, 0777) == 0);
+    snprintf(path, sizeof path, "%s/fifo/checkpoint.csv", dir);
+    CHECK(mkfifo(path, 0666) == 0);
+    snprintf(cmd, sizeof cmd,
+             "timeout 20 %s sweep %s --vary trolley.mass=20:40:2 --run simulate --out %s/fifo "
+             "--resume 2>&1",
+             ZP_EXE, scene("fifo", "30", "5, 2", 100), dir);
+    CHECK(run(cmd) == 2 && strstr(out, "checkpoint.csv is not a regular file"));
 }
 
 /* every point of a simulate study is `zipopt simulate` of the scene written with its values */
@@ -315,6 +365,13 @@ static void kill_and_resume(void) {
     waitpid(pid, NULL, 0);
     int rows = tu_count_lines(path) - 2;
     CHECK(rows >= 2 && rows < 6);
+    /* its head names the program that wrote it, as zipopt --version does */
+    char head[16384], version[256];
+    CHECK(tu_slurp(path, head, sizeof head) > 0);
+    snprintf(cmd, sizeof cmd, "%s --version", ZP_EXE);
+    CHECK(run(cmd) == 0 && !strncmp(out, "zipopt ", 7));
+    snprintf(version, sizeof version, " version=%.*s ", (int)strcspn(out + 7, "\n"), out + 7);
+    CHECK(strstr(head, version) != NULL && strstr(head, version) < strchr(head, '\n'));
     /* a row torn by the kill: cut on resume */
     FILE *f = fopen(path, "a");
     fputs("5,40,1.5,ok,1,fini", f);
@@ -339,6 +396,8 @@ static void kill_and_resume(void) {
 int main(void) {
     CHECK(mkdtemp(dir) != NULL);
     bad_input();
+    bad_files();
+    fifo_checkpoint();
     same_as_simulate();
     same_as_search();
     grid_schedule();

@@ -3,12 +3,15 @@
    body, rebuilt from the trajectory's x, y and theta columns, moves along the slope with the
    closed-form acceleration (F cos a - M g sin a) / M whatever the chain does; the energy audit
    closes; handles in two threads give the sequential bits; bad input and a stopped search come
-   back as values, with nothing printed. */
+   back as values, with nothing printed (not even the interpreted-course notice); NULL handles
+   and output arrays are refused as zipopt.h says; scene text without a name loads; a schedule
+   file gives the bits of the same forces set by hand. */
 #include <math.h>
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "check.h"
@@ -188,6 +191,87 @@ static void check_quiet_errors(void) {
     fclose(cap);
 }
 
+/* a NULL handle or output array is refused with -1, NaN or NULL (zipopt.h), never followed */
+static void check_null(void) {
+    char err[256] = "";
+    double v[8];
+    CHECK(zipopt_simulate(NULL, err, sizeof err) == NULL && strstr(err, "no scene"));
+    CHECK(zipopt_search_run(NULL, 10, 1, NULL, NULL, NULL, err, sizeof err) == NULL);
+    CHECK(!zipopt_scene_name(NULL) && zipopt_scene_sections(NULL) == -1 &&
+          zipopt_scene_links(NULL) == -1 && zipopt_scene_forces(NULL, v, 8) == -1);
+    CHECK(zipopt_scene_set_forces(NULL, v, 3, err, sizeof err) == -1);
+    CHECK(zipopt_run_outcome(NULL) == -1 && !zipopt_run_stall(NULL) &&
+          isnan(zipopt_run_get(NULL, "time")) && zipopt_run_max_angles(NULL, v, 8) == -1 &&
+          zipopt_run_kinks(NULL, v, 1) == -1 && zipopt_run_rows(NULL) == -1 &&
+          zipopt_run_columns(NULL) == -1 && !zipopt_run_column(NULL, 0) &&
+          !zipopt_run_trajectory(NULL));
+    CHECK(isnan(zipopt_search_get(NULL, "found")) && zipopt_search_forces(NULL, v, 8) == -1);
+    zipopt_scene_free(NULL);
+    zipopt_run_free(NULL);
+    zipopt_search_free(NULL);
+    /* NULL arrays with room claimed: the counts, nothing copied */
+    zipopt_scene *s = zipopt_scene_load(SEED, err, sizeof err);
+    CHECK(s && zipopt_scene_forces(s, NULL, 3) == 3);
+    CHECK(zipopt_scene_set_forces(s, NULL, 3, err, sizeof err) == -1 && strstr(err, "no array"));
+    zipopt_run *r = zipopt_simulate(s, err, sizeof err);
+    CHECK(r && zipopt_run_max_angles(r, NULL, 3) == 3 && zipopt_run_kinks(r, NULL, 4) >= 0);
+    volatile int stop = 1;
+    zipopt_search *c = zipopt_search_run(s, 60, 7, NULL, NULL, &stop, err, sizeof err);
+    CHECK(c && zipopt_search_forces(c, NULL, 3) == 3);
+    zipopt_search_free(c);
+    zipopt_run_free(r);
+    zipopt_scene_free(s);
+}
+
+/* the folder rule is the commands': scene text without [scene] name loads, named "" */
+static void check_unnamed(void) {
+    char text[1 << 16], err[1024] = "";
+    snprintf(text, sizeof text, "%s", slurp(SEED));
+    char *name = strstr(text, "\nname = seed\n");
+    CHECK(name != NULL);
+    if (name) {
+        memmove(name, name + 12, strlen(name + 12) + 1);
+    }
+    const char *names[] = {NULL, "my scene.ini"};
+    for (int i = 0; i < 2; i++) {
+        zipopt_scene *s = zipopt_scene_load_string(text, names[i], err, sizeof err);
+        if (!s) {
+            fprintf(stderr, "refused: %s\n", err);
+        }
+        CHECK(s && !strcmp(zipopt_scene_name(s), ""));
+        zipopt_run *r = s ? zipopt_simulate(s, err, sizeof err) : NULL;
+        CHECK(r && zipopt_run_outcome(r) >= 0);
+        zipopt_run_free(r);
+        zipopt_scene_free(s);
+    }
+}
+
+/* the library prints nothing, not even the notice that the course is interpreted
+   (ZIPOPT_NO_JIT), which the program prints: a child's stderr is read back */
+static void check_no_notice(void) {
+    fflush(stderr);
+    FILE *cap = tmpfile();
+    pid_t pid = fork();
+    if (pid == 0) {
+        setenv("ZIPOPT_NO_JIT", "1", 1);
+        dup2(fileno(cap), 2);
+        char err[512];
+        zipopt_scene *s = zipopt_scene_load(SEED, err, sizeof err);
+        zipopt_run *r = s ? zipopt_simulate(s, err, sizeof err) : NULL;
+        _exit(r ? 0 : 1);
+    }
+    int st;
+    CHECK(waitpid(pid, &st, 0) == pid && WIFEXITED(st) && WEXITSTATUS(st) == 0);
+    fseek(cap, 0, SEEK_END);
+    if (ftell(cap) != 0) {
+        char said[512] = "";
+        rewind(cap);
+        fprintf(stderr, "printed: %s\n", fgets(said, sizeof said, cap) ? said : "?");
+    }
+    CHECK(ftell(cap) == 0);
+    fclose(cap);
+}
+
 typedef struct seen {
     int calls;
     int stop_at; /* the call that asks to stop */
@@ -226,12 +310,51 @@ static void check_search(void) {
     zipopt_scene_free(s);
 }
 
+/* a schedule file (what the search writes as schedule.ini) gives the bits of the same forces
+   set by hand; a bad one is refused naming its file and line, the scene left as it was */
+static void check_schedule(void) {
+    char err[1024], dir[] = "/tmp/zp_lib_XXXXXX", good[64], bad[64];
+    CHECK(mkdtemp(dir) != NULL);
+    snprintf(good, sizeof good, "%s/schedule.ini", dir);
+    snprintf(bad, sizeof bad, "%s/bad.ini", dir);
+    FILE *f = fopen(good, "w"), *g = fopen(bad, "w");
+    CHECK(f && g);
+    if (!f || !g) {
+        return;
+    }
+    fputs("; best schedule of the search\n[drive]\nforces = 10, 20.5, 30\n", f);
+    fputs("[drive]\nforces = 10, 20\n", g);
+    fclose(f);
+    fclose(g);
+    zipopt_scene *s = zipopt_scene_load(SEED, err, sizeof err);
+    double want[3] = {10, 20.5, 30}, got[3];
+    CHECK(s && zipopt_scene_load_schedule(s, good, err, sizeof err) == 0);
+    CHECK(zipopt_scene_forces(s, got, 3) == 3 && !memcmp(got, want, sizeof got));
+    zipopt_run *a = zipopt_simulate(s, err, sizeof err);
+    CHECK(zipopt_scene_load_schedule(s, bad, err, sizeof err) == -1);
+    CHECK(strstr(err, "bad.ini:2: [drive] forces") != NULL);
+    CHECK(zipopt_scene_forces(s, got, 3) == 3 && !memcmp(got, want, sizeof got));
+    zipopt_run *b = run_forces(s, want, 3);
+    CHECK(a && b && same_run(a, b));
+    CHECK(zipopt_scene_load_schedule(s, NULL, err, sizeof err) == -1);
+    zipopt_run_free(a);
+    zipopt_run_free(b);
+    zipopt_scene_free(s);
+    remove(good);
+    remove(bad);
+    rmdir(dir);
+}
+
 int main(void) {
     CHECK(!strcmp(zipopt_version(), "0.1.0") || strchr(zipopt_version(), '.'));
+    check_schedule();
     check_seed();
     check_slope();
     check_threads();
     check_quiet_errors();
+    check_null();
+    check_unnamed();
+    check_no_notice();
     check_search();
     return CHECK_DONE();
 }

@@ -3,7 +3,9 @@
    step ends and dense output inside a step (to rtol, plus for the GSL methods' cubic Hermite
    its bound h^4/384 max|y''''|, max|y''''| = 1 here), roots of g = y0 (zeros at pi/2 + k pi) with
    direction filtering (only falling crossings when asked: k even), t_stop, the earliest of
-   two roots in one step, reset, and a failure status (not a crash) for a broken rhs. */
+   two roots in one step, reset, and a failure status (not a crash) for a broken rhs; with y0
+   declared a position, the quintic bound on its dense output and on its value at its extrema
+   (roots where only the state is wanted). */
 #include <math.h>
 #include <string.h>
 
@@ -43,7 +45,7 @@ static void check_method(int id) {
     const zp_method *me = zp_method_get(id);
     CHECK(me && me->name && me->doc && me->doc[0]);
     osc o = {-1, 0};
-    zp_method_opts mo = {RTOL, RTOL * 1e-2, 100000, NULL};
+    zp_method_opts mo = {RTOL, RTOL * 1e-2, 100000, NULL, 0};
     int dir[2] = {-1, 0}; /* g0: falling only (y0 from + to -: t = pi/2 + 2 k pi) */
     void *w = me->create(2, 2, dir, rhs, root, &o, &mo);
     CHECK(w != NULL);
@@ -115,6 +117,9 @@ static void check_method(int id) {
     long steps = 0, evals = 0;
     me->stats(w, &steps, &evals);
     CHECK(steps > 0 && evals >= steps);
+    long rejected = -1;
+    me->rejections(w, &rejected);
+    CHECK(rejected >= 0);
 
     /* reset: the same run again gives the same first root, bit for bit */
     double t_a = 0, t_b = 0;
@@ -158,11 +163,67 @@ static void check_method(int id) {
     me->free(NULL);
 }
 
+/* g0 = y1: the extrema of y0 (+-1 at k pi), a root where only the state is wanted */
+static int root_extrema(double t, const double *y, double *g, void *user) {
+    (void)t;
+    (void)user;
+    g[0] = y[1];
+    return 0;
+}
+
+/* y0 as a position (npos = 1, its rate y1, its acceleration y1'): dense output inside a step
+   and the state at an extremum of y0 meet the quintic Hermite bound
+   max|s^3 (1-s)^3| / 6! h^6 max|y^(6)| = h^6 / 46080 (the cubic's h^4/384 is far above it at
+   these steps) */
+static void check_positions(int id) {
+    const zp_method *me = zp_method_get(id);
+    osc o = {-1, 0};
+    int state_only[1] = {1};
+    zp_method_opts mo = {RTOL, RTOL * 1e-2, 100000, state_only, 1};
+    void *w = me->create(2, 1, NULL, rhs, root_extrema, &o, &mo);
+    CHECK(w != NULL);
+    double y0[2] = {1, 0}, y[2], yi[2], t = 0, step_start = 0, t_end = 20;
+    CHECK(me->reset(w, 0, y0, t_end) == 0);
+    int roots[1], nroot = 0, bad = 0;
+    double root_dev = 0; /* the largest ||y0| - 1| at the roots inside the step under way */
+    for (int guard = 0; guard < 100000; guard++) {
+        char err[256] = "";
+        zp_adv a = me->advance(w, &t, y, roots, err, sizeof err);
+        CHECK(a != ZP_ADV_FAIL);
+        if (a == ZP_ADV_FAIL) {
+            break;
+        }
+        if (a == ZP_ADV_ROOT) {
+            /* y0 = cos t is stationary there: +-1 whatever the time (found on the
+               interpolant's rate, O(h^4) off, which moves y0 by O(h^8)); checked against
+               the bound of the whole step once its end is reported */
+            root_dev = fmax(root_dev, fabs(fabs(y[0]) - 1));
+            nroot++;
+            continue;
+        }
+        double h = t - step_start, tm = t - 0.3 * h;
+        double tol = K_RTOL * RTOL + pow(h, 6) / 46080;
+        CHECK(root_dev <= tol);
+        if (me->interpolate(w, tm, yi) != 0 || fabs(yi[0] - cos(tm)) > tol) {
+            bad++;
+        }
+        root_dev = 0;
+        step_start = t;
+        if (a == ZP_ADV_STOP) {
+            break;
+        }
+    }
+    CHECK(bad == 0);
+    CHECK(nroot == 6); /* k pi in (0, 20): k = 1..6 */
+    me->free(w);
+}
+
 int main(void) {
     CHECK(zp_method_find("no-such-method") == -1);
     for (int id = 0; id < ZP_METHOD_COUNT; id++) {
         CHECK(zp_method_find(zp_method_get(id)->name) == id);
         check_method(id);
+        check_positions(id);
     }
     return CHECK_DONE();
 }

@@ -209,6 +209,105 @@ static void test_full_disk(void) {
     }
 }
 
+/* 1 when path is a whole image, judged here from the formats' own ends: a PNG's IEND
+   chunk, a GIF's trailer byte, an SVG's closing tag */
+static int image_whole(const char *path) {
+    static const unsigned char iend[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82};
+    FILE *f = fopen(path, "rb");
+    unsigned char tail[12] = {0};
+    long size = f && fseek(f, 0, SEEK_END) == 0 ? ftell(f) : -1;
+    int ok = size >= 12 && fseek(f, -12, SEEK_END) == 0 && fread(tail, 1, 12, f) == 12;
+    if (f) {
+        fclose(f);
+    }
+    const char *ext = strrchr(path, '.');
+    if (!ok || !ext) {
+        return 0;
+    }
+    if (!strcmp(ext, ".png")) {
+        return !memcmp(tail, iend, 12);
+    }
+    if (!strcmp(ext, ".gif")) {
+        return tail[11] == 0x3b;
+    }
+    int n = 12;
+    while (n > 0 && strchr(" \t\r\n", tail[n - 1])) {
+        n--;
+    }
+    return n >= 6 && !memcmp(tail + n - 6, "</svg>", 6);
+}
+
+/* one run of cmd into dir (empty before) on a disk that may fill: either it fails, saying
+   nothing was written, and leaves dir empty, or it succeeds with every image whole; 1 when
+   it failed while drawing */
+static int whole_or_nothing(const char *dir, const char *cmd) {
+    int rc = sh("%s", cmd);
+    if (rc != 0) {
+        CHECK(rc == 1 && strstr(out, "nothing was written") != NULL);
+        check_untouched(dir, 0);
+        return strstr(out, "not written whole") != NULL;
+    }
+    DIR *d = opendir(dir);
+    int images = 0;
+    for (struct dirent *e; d && (e = readdir(d));) {
+        const char *ext = strrchr(e->d_name, '.');
+        if (ext && (!strcmp(ext, ".png") || !strcmp(ext, ".gif") || !strcmp(ext, ".svg"))) {
+            char path[2048];
+            snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+            images++;
+            if (!image_whole(path)) {
+                fprintf(stderr, "%s: exit 0 with %s cut short\n", cmd, path);
+                CHECK(0);
+            }
+        }
+    }
+    if (d) {
+        closedir(d);
+    }
+    CHECK(images > 0);
+    return 0;
+}
+
+/* the disk fills while gnuplot draws (it then ends with 0 and a cut image): a tmpfs of sizes
+   from what the data files need to what the whole set needs (root only), and file size
+   limits below an image's size (anyone; gnuplot's writes then fail as on a full disk,
+   SIGXFSZ ignored) */
+static void test_full_while_drawing(void) {
+    int drawn_fail = 0;
+    char cmd[2048];
+    if (geteuid() == 0 && mkdir(at("mnt2"), 0777) == 0) {
+        for (int kib = 56; kib <= 216; kib += 80) {
+            char opts[32];
+            snprintf(opts, sizeof opts, "size=%dk", kib);
+            if (mount("tmpfs", at("mnt2"), "tmpfs", 0, opts)) {
+                fprintf(stderr, "note: no tmpfs could be mounted; the size limits stand alone\n");
+                break;
+            }
+            snprintf(cmd, sizeof cmd, "'%s' simulate tiny.ini --plot --out mnt2/x", ZP_EXE);
+            CHECK(mkdir(at("mnt2/x"), 0777) == 0);
+            drawn_fail += whole_or_nothing(at("mnt2/x"), cmd);
+            umount(at("mnt2"));
+        }
+    }
+    /* 40 KiB: every data file fits, course.png (about 45 KiB) does not */
+    CHECK(mkdir(at("fsize1"), 0777) == 0 && mkdir(at("fsize2"), 0777) == 0 &&
+          mkdir(at("fsize3"), 0777) == 0);
+    snprintf(cmd, sizeof cmd,
+             "trap '' XFSZ; ulimit -f 40; '%s' simulate tiny.ini --plot --out fsize1", ZP_EXE);
+    drawn_fail += whole_or_nothing(at("fsize1"), cmd);
+    /* 200 KiB: the figures fit, run.gif (about 270 KiB) does not */
+    snprintf(cmd, sizeof cmd,
+             "trap '' XFSZ; ulimit -f 200; '%s' simulate tiny.ini --animate --out fsize2", ZP_EXE);
+    drawn_fail += whole_or_nothing(at("fsize2"), cmd);
+    /* a command drawing through zp_cli_out_draw_commit: landscape.png is about 35 KiB */
+    snprintf(
+        cmd, sizeof cmd,
+        "trap '' XFSZ; ulimit -f 16; '%s' landscape tiny.ini --force-range 0:40:5 --out fsize3",
+        ZP_EXE);
+    drawn_fail += whole_or_nothing(at("fsize3"), cmd);
+    CHECK(drawn_fail >= 3);
+}
+
 static void test_failed_rename(void) {
     CHECK(sh("mkdir -p r1/summary.json/x && '%s' simulate '%s' --out r1", ZP_EXE, SEED) == 1);
     CHECK(strstr(out, "nothing was written") != NULL);
@@ -341,8 +440,9 @@ int main(void) {
     put(at("tiny.ini"), "[scene]\nname = tiny\n[course]\nx_start = 0\nsection = 6 : 6 - x/2\n"
                         "[trolley]\nmass = 20\n[body]\nlengths = 0.5\nmasses = 2\n"
                         "[drive]\nforces = 10\n[solver]\noutput_dt = 0.05\n");
-    void (*tests[])(void) = {test_links,      test_full_disk, test_failed_rename,
-                             test_concurrent, test_signals,   test_folders};
+    void (*tests[])(void) = {test_links,         test_full_disk,  test_full_while_drawing,
+                             test_failed_rename, test_concurrent, test_signals,
+                             test_folders};
     for (size_t i = 0; i < sizeof tests / sizeof tests[0]; i++) {
         time_t t0 = time(NULL);
         tests[i]();

@@ -8,6 +8,8 @@
 
 #include "check.h"
 #include "model.h"
+#include "report.h"
+#include "scene_parse.h"
 #include "scene_read.h"
 
 /* a small valid scene; cases replace one of its lines (1-based) */
@@ -702,6 +704,68 @@ static void test_schedule(void) {
     CHECK(d.n == 1 && has_message(&d, "/nonexistent/scene.ini: cannot open"));
 }
 
+/* the forces of many sections, in 17 digits each, exceed inih's 200-byte line: a scene's
+   [drive] forces line and the search's schedule file (zp_report_write_schedule) read back
+   to the same bits; a longer line than any schedule needs, or another long line, is refused */
+static void test_long_forces(void) {
+    enum { NSEC = 16 };
+    char text[8192];
+    size_t len =
+        (size_t)snprintf(text, sizeof text, "[scene]\nname = many\n[course]\nx_start = 0\n");
+    for (int i = 0; i < NSEC; i++) {
+        len += (size_t)snprintf(text + len, sizeof text - len, "section = %d : 20 - x/10\n",
+                                5 * (i + 1));
+    }
+    len += (size_t)snprintf(text + len, sizeof text - len,
+                            "[trolley]\nmass = 30\n[body]\nlengths = 1\nmasses = 5\n[drive]\n"
+                            "forces = ");
+    double want[NSEC];
+    for (int i = 0; i < NSEC; i++) {
+        want[i] = (i + 1) / 3.0;
+        len += (size_t)snprintf(text + len, sizeof text - len, "%s%.17g", i ? ", " : "", want[i]);
+    }
+    snprintf(text + len, sizeof text - len, " ; long\n");
+    zp_scene sc;
+    zp_diag d;
+    zp_diag_init(&d);
+    CHECK(zp_scene_load_string(text, "many.ini", &sc, &d) == ZP_OK);
+    show(&d);
+    CHECK(sc.nforce == NSEC && !memcmp(sc.forces, want, sizeof want));
+
+    /* the search's schedule file of other forces, laid over it */
+    zp_schedule sched = zp_schedule_of_scene(&sc);
+    double other[NSEC];
+    for (int i = 0; i < NSEC; i++) {
+        other[i] = 100 + (i + 1) / 7.0;
+    }
+    sched = zp_schedule_with(&sched, other);
+    const char *path = write_temp("zp_test_sched_long.ini", "");
+    FILE *f = fopen(path, "w");
+    CHECK(f != NULL);
+    if (f) {
+        zp_report_write_schedule(f, &sc, &sched, "found by the search");
+        fclose(f);
+    }
+    zp_diag_init(&d);
+    CHECK(zp_scene_overlay_schedule(path, &sc, &d) == ZP_OK);
+    show(&d);
+    CHECK(!memcmp(sc.forces, other, sizeof other));
+    remove(path);
+
+    /* past what any schedule needs: refused, with the limit */
+    static char huge[ZP_FORCES_TEXT_MAX + 200];
+    len = (size_t)snprintf(huge, sizeof huge, "[drive]\nforces = 1");
+    while (len + 4 < sizeof huge - 2) {
+        len += (size_t)snprintf(huge + len, sizeof huge - len, ", 1");
+    }
+    snprintf(huge + len, sizeof huge - len, "\n");
+    zp_diag_init(&d);
+    path = write_temp("zp_test_sched_huge.ini", huge);
+    CHECK(zp_scene_overlay_schedule(path, &sc, &d) == ZP_ERR_INPUT);
+    CHECK(has_message(&d, "characters long"));
+    remove(path);
+}
+
 static void test_parse_list(void) {
     double v[4];
     char why[128];
@@ -734,6 +798,7 @@ int main(void) {
     test_defaults();
     test_seed();
     test_schedule();
+    test_long_forces();
     test_parse_list();
     test_limits();
     test_robust();

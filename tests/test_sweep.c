@@ -105,6 +105,119 @@ static void grid_line(void) {
     free(l2);
 }
 
+/* line with its field k (comma-separated, 0-based) replaced by value, into out */
+static void edit_field(const char *line, int k, const char *value, char *out, size_t cap) {
+    size_t len = 0;
+    for (int i = 0;; i++) {
+        size_t n = strcspn(line, ",");
+        len += (size_t)snprintf(out + len, cap - len, "%s%.*s", i ? "," : "",
+                                i == k ? (int)strlen(value) : (int)n, i == k ? value : line);
+        if (!line[n]) {
+            break;
+        }
+        line += n + 1;
+    }
+}
+
+/* a checkpoint is a text a user may edit: every field read back is range-checked, so a
+   value zipopt never writes (inf or nan, a negative count, a point off the grid, a count
+   past the grid's size) is refused, while the line as written reads back */
+static void hand_edited(void) {
+    zp_sweep s = grid("trolley.mass=10:20:3", NULL);
+    zp_study_row r = {.found = 1,
+                      .outcome = ZP_OUTCOME_FINISHED,
+                      .time = 2.5,
+                      .margin = 12,
+                      .verified = 1,
+                      .evals = 300,
+                      .np = 2,
+                      .force = {90, 120},
+                      .limit = "margin"},
+                 back;
+    char *row = NULL, edited[1024];
+    size_t n;
+    FILE *f = open_memstream(&row, &n);
+    zp_sweep_csv_row(f, &s, 1, &r);
+    fclose(f);
+    row[strcspn(row, "\n")] = '\0';
+    int p;
+    CHECK(zp_sweep_csv_parse(row, &s, 2, &p, &back) == 0);
+    /* point, trolley.mass, status, found, outcome, time, margin, limit, verified, evals, the
+       four limited quantities, F1, F2, message */
+    const struct {
+        int k;
+        const char *value;
+    } bad_row[] = {{0, "99999"},
+                   {0, "-1"},
+                   {3, "2"},
+                   {5, "inf"},
+                   {5, "nan"},
+                   {5, "-1"},
+                   {6, "nan"},
+                   {6, "-inf"},
+                   {7, "x y"},
+                   {8, "7"},
+                   {9, "-5"},
+                   {9, "1e3"},
+                   {9, "99999999999999999999999"},
+                   {10, "-1"},
+                   {13, "inf"},
+                   {14, "nan"},
+                   {15, "inf"}};
+    for (size_t i = 0; i < sizeof bad_row / sizeof bad_row[0]; i++) {
+        edit_field(row, bad_row[i].k, bad_row[i].value, edited, sizeof edited);
+        if (zp_sweep_csv_parse(edited, &s, 2, &p, &back) != -1) {
+            fprintf(stderr, "row accepted: %s\n", edited);
+            CHECK(0);
+        }
+    }
+    free(row);
+
+    zp_grid_result g = {.found = 1,
+                        .nominal = 10,
+                        .ncorner = 4,
+                        .nscen = 260,
+                        .evals = 4321,
+                        .np = 3,
+                        .force = {1, 500, 0},
+                        .time = 9,
+                        .margin = 10,
+                        .worst = 20,
+                        .worst_margin = 11,
+                        .survived = 20,
+                        .rounds = 3,
+                        .kept = 2,
+                        .nheld = 1,
+                        .nadded = 2},
+                   gback;
+    for (int q = 0; q < 21; q++) {
+        g.ok[q / 8] |= (unsigned char)((q != 7) << (q % 8));
+    }
+    char *line = NULL;
+    f = open_memstream(&line, &n);
+    zp_sweep_csv_grid(f, &g, 21);
+    fclose(f);
+    line[strcspn(line, "\n")] = '\0';
+    CHECK(zp_sweep_csv_grid_parse(line, 3, 21, &gback) == 0);
+    /* grid, failed, found, nominal, ncorner, nscen, evals, rounds, kept, nheld, nadded,
+       last_found, time, margin, worst, worst_margin, survived, F1..F3, ok, added, message */
+    const struct {
+        int k;
+        const char *value;
+    } bad_grid[] = {{1, "2"},       {3, "99999"},  {4, "2147483647"}, {5, "-3"},  {6, "-5"},
+                    {8, "9"},       {9, "22"},     {12, "inf"},       {12, "-1"}, {13, "inf"},
+                    {14, "99999"},  {14, "-2"},    {15, "-inf"},      {16, "21"}, {17, "inf"},
+                    {20, "7fff3f"}, {21, "zz0000"}};
+    for (size_t i = 0; i < sizeof bad_grid / sizeof bad_grid[0]; i++) {
+        edit_field(line, bad_grid[i].k, bad_grid[i].value, edited, sizeof edited);
+        if (zp_sweep_csv_grid_parse(edited, 3, 21, &gback) != -1) {
+            fprintf(stderr, "grid line accepted: %s\n", edited);
+            CHECK(0);
+        }
+    }
+    free(line);
+}
+
 /* the seed's answer survives the seed (README), and its spy swings more than 1 deg: a scenario
    of the same model passes under the search's criteria and breaks under a 1 deg limit */
 static void own_judge(void) {
@@ -232,6 +345,7 @@ int main(void) {
     int mid = zp_grid_nominal(&s);
     CHECK(zp_sweep_value(&s, 0, mid) == 0.4 && zp_sweep_value(&s, 1, mid) == 0.8 + 0.4 / 3);
     grid_line();
+    hand_edited();
     own_judge();
     return CHECK_DONE();
 }

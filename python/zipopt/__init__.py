@@ -8,16 +8,30 @@ A thin ctypes layer over libzipopt.so (include/zipopt.h); units are SI and radia
     best = zipopt.search("config/seed.ini", max_evals=2000, progress=print)
 
 The library is found through the environment variable ZIPOPT_LIB (a path), else next to this
-module, else by the system loader (libzipopt.so.0).
+module, else in the library folder of the prefix the module was installed into, else by the
+system loader (libzipopt.so.0). example_scene("seed.ini") finds the example scenes the same
+way (the repository's config/ or the installed share/zipopt/scenes/).
+
+Re-entrancy: a progress function runs inside the library's search, which holds the library's
+one lock (libmatheval and NLopt keep process-wide state). From inside it, loading a scene or
+starting a search would wait for that lock forever, so both raise ValueError there; so do
+closing, re-forcing, simulating or searching the Scene being searched. Simulating another
+Scene is fine. Other threads may load and search; they wait their turn.
+
+Bad arguments raise ValueError before anything reaches the library: a closed Scene, a NUL
+byte in scene text, a name or a path (C would cut the text there), and whole numbers (max_evals,
+seed) outside a C long (they would wrap).
 """
 
 import ctypes
 import math
 import os
+import threading
 
 import numpy as np
 
-__all__ = ["Scene", "Run", "Search", "ZipoptError", "simulate", "search", "library_version"]
+__all__ = ["Scene", "Run", "Search", "ZipoptError", "simulate", "search", "library_version",
+           "example_scene"]
 
 _SONAME = "libzipopt.so.0"
 _ERR = 8192  # bytes of error text: every problem of a scene, one per line
@@ -27,14 +41,37 @@ class ZipoptError(Exception):
     """A scene or a run zipopt refused; str() is its message, file:line: [section] key: ..."""
 
 
+_HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def _installed(name):
+    """A folder of the installation, relative to this module (the install writes _install.py:
+    the module, the library and the data move together under any prefix); None from a source
+    tree."""
+    try:
+        from . import _install
+    except ImportError:
+        return None
+    return os.path.normpath(os.path.join(_HERE, getattr(_install, name)))
+
+
 def _load_library():
     path = os.environ.get("ZIPOPT_LIB")
     if path:
         return ctypes.CDLL(path)
-    here = os.path.join(os.path.dirname(os.path.abspath(__file__)), _SONAME)
-    if os.path.exists(here):
-        return ctypes.CDLL(here)
+    for folder in (_HERE, _installed("LIBDIR")):
+        if folder and os.path.exists(os.path.join(folder, _SONAME)):
+            return ctypes.CDLL(os.path.join(folder, _SONAME))
     return ctypes.CDLL(_SONAME)
+
+
+def example_scene(name):
+    """The path of one of zipopt's example scenes ("seed.ini", "human.ini", ...): the
+    installed share/zipopt/scenes/, or config/ of the source tree this module lies in."""
+    for folder in (_installed("SCENEDIR"), os.path.join(_HERE, "..", "..", "config")):
+        if folder and os.path.isfile(os.path.join(folder, name)):
+            return os.path.normpath(os.path.join(folder, name))
+    raise ZipoptError("no example scene %r next to this zipopt module" % name)
 
 
 _lib = _load_library()
@@ -56,6 +93,7 @@ for _name, _res, _args in [
     ("zipopt_scene_links", _I, [_P]),
     ("zipopt_scene_forces", _I, [_P, _DP, _I]),
     ("zipopt_scene_set_forces", _I, [_P, _DP, _I, _S, _Z]),
+    ("zipopt_scene_load_schedule", _I, [_P, _S, _S, _Z]),
     ("zipopt_simulate", _P, [_P, _S, _Z]),
     ("zipopt_run_free", None, [_P]),
     ("zipopt_run_outcome", _I, [_P]),
@@ -79,6 +117,37 @@ for _name, _res, _args in [
     _f = getattr(_lib, _name)
     _f.restype = _res
     _f.argtypes = _args
+
+
+_LONG_BITS = 8 * ctypes.sizeof(ctypes.c_long)
+_in_progress = threading.local()  # .depth: progress functions running in this thread
+
+
+def _c_long(name, value):
+    """value as a C long, or ValueError: ctypes would wrap it silently."""
+    if isinstance(value, bool) or not isinstance(value, int):
+        try:
+            value = value.__index__()
+        except AttributeError:
+            raise ValueError(f"{name} must be a whole number, not {value!r}") from None
+    if not -(1 << (_LONG_BITS - 1)) <= value < (1 << (_LONG_BITS - 1)):
+        raise ValueError(f"{name} = {value} does not fit a C long ({_LONG_BITS} bits)")
+    return value
+
+
+def _c_text(what, text):
+    """text as bytes for C, or ValueError when a NUL byte would cut it short there."""
+    data = text if isinstance(text, bytes) else str(text).encode()
+    at = data.find(b"\0")
+    if at >= 0:
+        raise ValueError(f"{what} contains a NUL byte at {at}; C would stop there")
+    return data
+
+
+def _not_in_progress(what):
+    if getattr(_in_progress, "depth", 0):
+        raise ValueError(f"{what} from inside a progress function: the library's search holds "
+                         "its lock there (see the module's notes on re-entrancy)")
 
 
 def library_version():
@@ -106,12 +175,15 @@ class Scene:
     """A loaded scene (a file path, or scene text with text=True); forces override [drive]."""
 
     def __init__(self, source, forces=None, text=False, name=None):
+        self._h = None
+        self._searching = False
+        _not_in_progress("loading a scene")
         err = ctypes.create_string_buffer(_ERR)
         if text:
-            h = _lib.zipopt_scene_load_string(source.encode(), (name or "<string>").encode(),
-                                              err, _ERR)
+            h = _lib.zipopt_scene_load_string(_c_text("the scene text", source),
+                                              _c_text("the name", name or "<string>"), err, _ERR)
         else:
-            h = _lib.zipopt_scene_load(os.fspath(source).encode(), err, _ERR)
+            h = _lib.zipopt_scene_load(_c_text("the path", os.fsencode(source)), err, _ERR)
         if not h:
             raise ZipoptError(err.value.decode(errors="replace"))
         self._h = h
@@ -119,11 +191,26 @@ class Scene:
             self.forces = forces
 
     def close(self):
+        """Frees the scene; later use raises ValueError. Not while it is being searched."""
+        if getattr(self, "_searching", False):
+            raise ValueError("cannot close a Scene while it is being searched")
         if getattr(self, "_h", None):
             _lib.zipopt_scene_free(self._h)
             self._h = None
 
-    __del__ = close
+    def __del__(self):
+        if not getattr(self, "_searching", False):
+            self.close()
+
+    def _handle(self, changes=False):
+        """The library's handle, or ValueError for a closed Scene (or one being searched, when
+        the call changes or runs it)."""
+        if not getattr(self, "_h", None):
+            raise ValueError("the Scene is closed")
+        if changes and self._searching:
+            raise ValueError("the Scene is being searched: its forces cannot change and it "
+                             "cannot run until the search returns")
+        return self._h
 
     def __enter__(self):
         return self
@@ -133,32 +220,43 @@ class Scene:
 
     @property
     def name(self):
-        return _lib.zipopt_scene_name(self._h).decode()
+        """[scene] name, or the file's stem; "" when neither gives one."""
+        return _lib.zipopt_scene_name(self._handle()).decode()
 
     @property
     def sections(self):
-        return _lib.zipopt_scene_sections(self._h)
+        return _lib.zipopt_scene_sections(self._handle())
 
     @property
     def links(self):
-        return _lib.zipopt_scene_links(self._h)
+        return _lib.zipopt_scene_links(self._handle())
 
     @property
     def forces(self):
         """N, one per section."""
-        return _doubles(_lib.zipopt_scene_forces, self._h, self.sections)
+        return _doubles(_lib.zipopt_scene_forces, self._handle(), self.sections)
 
     @forces.setter
     def forces(self, values):
+        h = self._handle(changes=True)
         f = np.ascontiguousarray(values, dtype=float).ravel()
         err = ctypes.create_string_buffer(_ERR)
-        if _lib.zipopt_scene_set_forces(self._h, f.ctypes.data_as(_DP), len(f), err, _ERR):
+        if _lib.zipopt_scene_set_forces(h, f.ctypes.data_as(_DP), len(f), err, _ERR):
+            raise ZipoptError(err.value.decode(errors="replace"))
+
+    def load_schedule(self, path):
+        """Lays a schedule file (the search's schedule.ini: [drive] forces) over the forces,
+        as `zipopt simulate --schedule` does; a bad file raises ZipoptError, forces unchanged."""
+        h = self._handle(changes=True)
+        err = ctypes.create_string_buffer(_ERR)
+        if _lib.zipopt_scene_load_schedule(h, _c_text("the path", os.fsencode(path)), err, _ERR):
             raise ZipoptError(err.value.decode(errors="replace"))
 
     def simulate(self):
         """One run of the current forces with the scene's [solver] settings."""
+        sh = self._handle(changes=True)
         err = ctypes.create_string_buffer(_ERR)
-        h = _lib.zipopt_simulate(self._h, err, _ERR)
+        h = _lib.zipopt_simulate(sh, err, _ERR)
         if not h:
             raise ZipoptError(err.value.decode(errors="replace"))
         try:
@@ -176,14 +274,26 @@ class Scene:
         def on_progress(_user, evals, wall_s, found, time, force, n, improved):
             try:
                 f = np.array(force[:n], dtype=float)
-                return 1 if progress(evals, wall_s, bool(found), time, f, bool(improved)) else 0
+                _in_progress.depth = getattr(_in_progress, "depth", 0) + 1
+                try:
+                    stop = progress(evals, wall_s, bool(found), time, f, bool(improved))
+                finally:
+                    _in_progress.depth -= 1
+                return 1 if stop else 0
             except BaseException as e:  # raised again once the library returns
                 state["error"] = e
                 return 1
 
+        max_evals, seed = _c_long("max_evals", max_evals), _c_long("seed", seed)
+        _not_in_progress("a search")
+        sh = self._handle(changes=True)
         cb = _PROGRESS(on_progress) if progress else _PROGRESS()
         err = ctypes.create_string_buffer(_ERR)
-        h = _lib.zipopt_search_run(self._h, int(max_evals), int(seed), cb, None, None, err, _ERR)
+        self._searching = True
+        try:
+            h = _lib.zipopt_search_run(sh, max_evals, seed, cb, None, None, err, _ERR)
+        finally:
+            self._searching = False
         if state["error"] is not None:
             if h:
                 _lib.zipopt_search_free(h)
@@ -252,14 +362,17 @@ class Search:
         return f"<zipopt.Search {t}, forces {self.forces.tolist()}, {self.evals} simulations>"
 
 
-def simulate(scene, forces=None):
-    """Simulates a scene file (or a Scene) with its forces or the ones given (N per section)."""
+def simulate(scene, forces=None, schedule=None):
+    """Simulates a scene file (or a Scene) with its forces, or a schedule file's (schedule.ini),
+    or the forces given (N per section), the last given winning as on the command line."""
     if isinstance(scene, Scene):
+        if schedule is not None:
+            scene.load_schedule(schedule)
         if forces is not None:
             scene.forces = forces
         return scene.simulate()
-    with Scene(scene, forces=forces) as s:
-        return s.simulate()
+    with Scene(scene) as s:
+        return simulate(s, forces, schedule)
 
 
 def search(scene, max_evals=0, seed=-1, progress=None):

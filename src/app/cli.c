@@ -3,6 +3,7 @@
 #include "cli.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -33,6 +34,19 @@ void zp_cli_error(const char *cmd, const char *fmt, ...) {
     }
     fputc('\n', stderr);
     free(text);
+}
+
+const char *zp_cli_shown(const char *text, char *buf, size_t len) {
+    FILE *f = fmemopen(buf, len, "w");
+    if (!f) {
+        snprintf(buf, len, "?");
+        return buf;
+    }
+    setvbuf(f, NULL, _IONBF, 0); /* what fits stays when the text is longer than buf */
+    zp_diag_put_escaped(f, text);
+    fclose(f);
+    buf[len - 1] = '\0';
+    return buf;
 }
 
 void zp_cli_opts_begin(void) {
@@ -102,6 +116,10 @@ int zp_cli_opts_next(const char *cmd, int argc, char **argv, const struct option
 
 int zp_cli_path_ok(const char *cmd, const char *opt, const char *path) {
     size_t n = strlen(path);
+    if (n == 0) { /* '' would be the current folder, or no file at all */
+        zp_cli_error(cmd, "%s%san empty path; expected a name", opt, *opt ? ": " : "");
+        return -1;
+    }
     if (n > ZP_CLI_PATH_MAX) {
         zp_cli_error(cmd, "%s%sthe path is %zu characters long; at most %d are supported", opt,
                      *opt ? ": " : "", n, ZP_CLI_PATH_MAX);
@@ -134,6 +152,17 @@ int zp_cli_whole(const char *cmd, const char *opt, const char *text, unsigned lo
     if (!digits || errno || v < lo || v > hi) {
         zp_cli_error(cmd, "%s: '%s' is %s; expected a whole number from %lu to %lu", opt, text,
                      digits ? "out of range" : "not a whole number", lo, hi);
+        return -1;
+    }
+    *out = v;
+    return 0;
+}
+
+int zp_cli_seconds(const char *cmd, const char *opt, const char *text, double *out) {
+    char *end;
+    double v = strtod(text, &end);
+    if (end == text || *end || !(v > 0) || !isfinite(v)) {
+        zp_cli_error(cmd, "%s: '%s' is not a time; expected seconds > 0", opt, text);
         return -1;
     }
     *out = v;
@@ -189,7 +218,7 @@ void zp_cli_usage(FILE *f) {
           "  or:  zipopt simulate SCENE.ini [OPTION]...\n"
           "  or:  zipopt check SCENE.ini [--json]\n"
           "  or:  zipopt landscape SCENE.ini [OPTION]...\n"
-          "  or:  zipopt tradeoff SCENE.ini [--levels P1,P2,..] [--out DIR]\n"
+          "  or:  zipopt tradeoff SCENE.ini [--levels P1,P2,..] [OPTION]...\n"
           "  or:  zipopt sweep SCENE.ini --vary SECTION.KEY=A:B:N [OPTION]...\n"
           "  or:  zipopt bench trade [SCENE.ini] [OPTION]...\n"
           "  or:  zipopt --help | --help-all | --version\n"
@@ -225,8 +254,12 @@ void zp_cli_usage(FILE *f) {
           "\n"
           "Exit status: 0 done (a spy that dies is a result, not an error); 2 bad input\n"
           "(command line or scene file, with FILE:LINE: [section] key: messages on stderr);\n"
-          "1 anything else. Scene files: see CONFIG.md; config/ (installed: share/zipopt/\n"
-          "scenes/) holds examples.\n"
+          "3 the search found no schedule that keeps the margin, the [limits] and the\n"
+          "[robust] scenarios (the closest candidate is still written, marked); 1 anything\n"
+          "else.\n"
+          "Documentation: docs/model.md (the physics), docs/scene-file.md (every scene key),\n"
+          "docs/commands.md (commands, files, JSON keys), installed in share/doc/zipopt/;\n"
+          "example scenes in config/ (installed: share/zipopt/scenes/).\n"
           "\n",
           f);
     zp_cli_print_registries(f);

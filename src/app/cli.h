@@ -23,6 +23,9 @@ enum { ZP_OPT_FIRST = 256 };
 
 /* Prints "zipopt <cmd>: <message>" on stderr (cmd may be ""), control bytes escaped. */
 void zp_cli_error(const char *cmd, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* text as zp_cli_error shows it (control bytes escaped, zp_diag_put_escaped) in buf (len
+   bytes, cut to fit), for a user's text (a path, an argument) in a line printed otherwise. */
+const char *zp_cli_shown(const char *text, char *buf, size_t len);
 /* Starts a parse of argv (getopt_long keeps its place in globals: one parse at a time). */
 void zp_cli_opts_begin(void);
 /* The next option of `zipopt <cmd>` by getopt_long: options and operands in any order,
@@ -41,6 +44,8 @@ int zp_cli_path_ok(const char *cmd, const char *opt, const char *path);
    of range, or not a whole number). */
 int zp_cli_whole(const char *cmd, const char *opt, const char *text, unsigned long lo,
                  unsigned long hi, unsigned long *out);
+/* A time in seconds > 0 for opt (--max-time); 0, or -1 with the one message. */
+int zp_cli_seconds(const char *cmd, const char *opt, const char *text, double *out);
 /* Begins the command's one transaction (out_file.h) in --out DIR itself when out is given,
    else in out/<scene name>/<folder> (CLI.md "Files"); says why on stderr for `zipopt <cmd>`
    and returns -1 on failure. */

@@ -42,12 +42,12 @@ typedef struct reading {
     int ok; /* 0: numerical failure */
     zp_outcome outcome;
     int died_link;
-    double time, x, v;                 /* s, m, m/s */
-    int nimp;                          /* kink crossings */
-    double impulse[MAX_IMPULSES];      /* N s */
-    double angle[ZP_MAX_LINKS];        /* deg, largest |relative joint angle| */
-    double wall;                       /* s, median over repeats */
-    long evals, steps;
+    double time, x, v;            /* s, m, m/s */
+    int nimp;                     /* kink crossings */
+    double impulse[MAX_IMPULSES]; /* N s */
+    double angle[ZP_MAX_LINKS];   /* deg, largest |relative joint angle| */
+    double wall;                  /* s, median over repeats */
+    long evals, steps, rejected;
     int repeats;
 } reading;
 
@@ -63,7 +63,8 @@ static int cmp_double(const void *a, const void *b) {
 
 static reading read_result(const zp_model *m, const zp_result *r, const zp_sim *s) {
     reading d = {.ok = 1, .outcome = r->outcome, .died_link = r->died_link, .time = r->time,
-                 .x = r->x, .v = r->v, .evals = r->rhs_evals, .steps = r->steps};
+                 .x = r->x, .v = r->v, .evals = r->rhs_evals, .steps = r->steps,
+                 .rejected = r->rejected};
     int n;
     const zp_crossing *cross = zp_sim_crossings(s, &n);
     d.nimp = r->ncross;
@@ -144,6 +145,7 @@ typedef struct trade_study {
 
 static void usage(FILE *f) {
     fputs("usage: zipopt bench trade [SCENE.ini] [--repeats N] [--json] [--out DIR]\n"
+          "\n"
           "Work-precision study: every method at rtol 1e-3 .. 1e-12 (atol = rtol/100) on the\n"
           "scene (default: the built-in seed) at 10 N everywhere (survives), 100 N (dies) and\n"
           "100 N with joint damping 1e4 N m s/rad (stiff). Errors of the finish/death time,\n"
@@ -152,7 +154,7 @@ static void usage(FILE *f) {
           "(default 5) and rhs evaluations. Writes trade.csv, trade.gp and trade.png in DIR\n"
           "(default out/<scene name>/bench/) and prints the fastest method and tolerance\n"
           "reaching a finish or death time error of 1e-3, 1e-6 and 1e-9 s; with --json, one\n"
-          "JSON object instead (keys: README).\n",
+          "JSON object instead (keys: docs/commands.md).\n",
           f);
 }
 
@@ -308,10 +310,11 @@ static int run_case(const zp_scene *base, int c, int repeats, trade_study *st, F
             *r = measure(m, o, &sched, repeats);
             st->errs[c][k][t] = compare(m, r, &ref);
             const errors *e = &st->errs[c][k][t];
-            fprintf(csv, "%s,%s,%.0e,%s,%.12g,%.3e,%.3e,%.3e,%.3e,%.3e,%ld,%.6e,%ld,%d\n",
+            fprintf(csv, "%s,%s,%.0e,%s,%.12g,%.3e,%.3e,%.3e,%.3e,%.3e,%ld,%.6e,%ld,%d,%ld\n",
                     tc->name, zp_method_get(k)->name, st->tols[t],
                     r->ok ? zp_sim_outcome_name(r->outcome) : "failed", r->time, e->time,
-                    e->impulse, e->angle, e->x, e->v, r->evals, r->wall, r->steps, r->repeats);
+                    e->impulse, e->angle, e->x, e->v, r->evals, r->wall, r->steps, r->repeats,
+                    r->rejected);
         }
     }
     zp_model_free(m);
@@ -345,12 +348,13 @@ static double fastest(const trade_study *st, double target, int c, int *bk, int 
 static void print_text(const trade_study *st) {
     /* the table: time error and cost of every configuration */
     for (int c = 0; c < NCASE; c++) {
-        printf("\n%s (%g N%s): error of the %s time (s) / median wall (ms) / rhs evals\n",
+        printf("\n%s (%g N%s): error of the %s time (s) / median wall (ms) / rhs evals / "
+               "rejected steps\n",
                cases[c].name, cases[c].force, cases[c].damping >= 0 ? ", c = 1e4" : "",
                st->runs[c][0][0].outcome == ZP_OUTCOME_DIED ? "death" : "finish");
         printf("%-7s", "rtol");
         for (int k = 0; k < ZP_METHOD_COUNT; k++) {
-            printf(" | %-26s", zp_method_get(k)->name);
+            printf(" | %-31s", zp_method_get(k)->name);
         }
         printf("\n");
         for (int t = 0; t < NTOL; t++) {
@@ -359,7 +363,7 @@ static void print_text(const trade_study *st) {
                 const reading *r = &st->runs[c][k][t];
                 printf(" | ");
                 print_error("", st->errs[c][k][t].time);
-                printf(" %8.2f %7ld", 1e3 * r->wall, r->evals);
+                printf(" %8.2f %7ld %4ld", 1e3 * r->wall, r->evals, r->rejected);
             }
             printf("\n");
         }
@@ -422,7 +426,8 @@ static void json_case(const trade_study *st, int c) {
             json_num("time", r->ok ? r->time : NAN, ", ");
             fputs("\"error\": ", stdout);
             json_errors(&st->errs[c][k][t]);
-            printf(", \"rhs_evals\": %ld, \"steps\": %ld, ", r->evals, r->steps);
+            printf(", \"rhs_evals\": %ld, \"steps\": %ld, \"rejected_steps\": %ld, ", r->evals,
+                   r->steps, r->rejected);
             json_num("wall_s", r->wall, ", ");
             printf("\"repeats\": %d}", r->repeats);
         }
@@ -491,7 +496,7 @@ int zp_cmd_bench(int argc, char **argv) {
         return ZP_EXIT_FAIL;
     }
     fputs("case,method,rtol,outcome,time_s,err_time_s,err_impulse_Ns,err_angle_deg,err_x_m,"
-          "err_speed_mps,rhs_evals,wall_s,steps,repeats\n",
+          "err_speed_mps,rhs_evals,wall_s,steps,repeats,rejected\n",
           csv);
     for (int c = 0; c < NCASE; c++) {
         if (run_case(&base.sc, c, a.repeats, &st, csv)) {

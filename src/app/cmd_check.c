@@ -15,14 +15,16 @@
 
 static void usage(FILE *f) {
     fputs("usage: zipopt check SCENE.ini [--json]\n"
-          "Validates a scene file against every rule of CONFIG.md (all problems are listed on\n"
-          "stderr as FILE:LINE: [section] key: what; expected, with exit status 2) and prints\n"
-          "the scene: each course section with f(x) and f, f', f'' at its ends; each boundary\n"
-          "between sections with its height, slope jump and whether it is a kink; the trolley\n"
-          "and the body's links (length, mass, inertia, damping); the drive, solver and search\n"
-          "settings; every key zipopt added with its value. Warns on stderr when a force lies\n"
-          "outside [min, max]. Writes no files.\n"
-          "  --json   print the scene as one JSON object instead (keys: README)\n",
+          "\n"
+          "Validates a scene file against every rule of docs/scene-file.md (all problems\n"
+          "are listed on stderr as FILE:LINE: [section] key: what; expected, with exit\n"
+          "status 2) and prints the scene: each course section with f(x) and f, f', f'' at\n"
+          "its ends; each boundary between sections with its height, slope jump and whether\n"
+          "it is a kink; the trolley and the body's links (length, mass, inertia, damping);\n"
+          "the drive, solver and search settings; the [limits], [robust] and [physics]\n"
+          "settings; every key zipopt added with its value. Warns on stderr when a force\n"
+          "lies outside [min, max]. Writes no files.\n"
+          "  --json   print the scene as one JSON object instead (keys: docs/commands.md)\n",
           f);
 }
 
@@ -55,8 +57,8 @@ static void print_course(const zp_model *m) {
         /* libmatheval's derivative text is unsimplified: its values at the ends say more */
         for (int end = 0; end < 2; end++) {
             zp_track t = zp_course_eval(m->course, k, m->xb[k + end]);
-            printf("    at x = %g: f = %.10g m, f' = %.10g, f'' = %.10g 1/m\n", m->xb[k + end],
-                   t.f, t.fp, t.fpp);
+            printf("    at x = %g: f = %.10g m, f' = %.10g, f'' = %.10g 1/m\n", m->xb[k + end], t.f,
+                   t.fp, t.fpp);
         }
     }
     if (m->nsec == 1) {
@@ -137,6 +139,7 @@ static void print_scene(const zp_setup *st) {
     printf("optimize: margin %g deg, max_evals %ld%s, seed %lu\n", sc->margin,
            sc->line_max_evals ? sc->max_evals : zp_search_default_budget(sc->nsec),
            sc->line_max_evals ? "" : " (the search's default)", sc->seed);
+    zp_scene_print_optional(sc, stdout, 0);
     print_physics(sc, m);
     printf("added by zipopt (keys the file does not give, with the values taken):\n");
     zp_scene_print_added(sc, stdout, "  ");
@@ -227,7 +230,9 @@ static void print_json(const zp_setup *st) {
     json_num("t_max", sc->t_max, ", ");
     json_num("output_dt", sc->output_dt, ", ");
     json_num("margin", sc->margin, ", ");
-    printf("\"max_evals\": %ld, \"seed\": %lu}\n", sc->max_evals, sc->seed);
+    printf("\"max_evals\": %ld, \"seed\": %lu, ", sc->max_evals, sc->seed);
+    zp_scene_print_optional(sc, stdout, 1);
+    printf("}\n");
 }
 
 int zp_cmd_check(int argc, char **argv) {

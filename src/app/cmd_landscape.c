@@ -22,6 +22,7 @@ static void usage(FILE *f) {
         "usage: zipopt landscape SCENE.ini [--force-range A:B:N] [--slice I,J]\n"
         "                        [--range A:B:N[,C:D:M]] [--force F1,..|--schedule FILE]\n"
         "                        [--out DIR] [--json]\n"
+        "\n"
         "Runs many schedules in parallel (OpenMP; OMP_NUM_THREADS sets the threads) and\n"
         "draws the outcome over the forces:\n"
         "  landscape.csv, landscape.png   one constant push in every section, N points from\n"
@@ -35,9 +36,10 @@ static void usage(FILE *f) {
         "  --schedule FILE     the base schedule from a schedule file, e.g. the search's\n"
         "                      schedule.ini: the slice then passes through the best schedule\n"
         "  --out DIR           the output folder (default out/<scene name>/landscape/)\n"
-        "  --json              print the result as one JSON object (keys: README)\n"
+        "  --json              print the result as one JSON object (keys: docs/commands.md)\n"
         "Each image comes with its gnuplot script (.gp); the CSV files are its data. Prints\n"
         "the survival windows of the constant push on stdout.\n"
+        "\n"
         "Under `mpirun -np N zipopt landscape ..` the runs are dealt out over the N ranks\n"
         "(each on its OpenMP threads; e.g. -x OMP_NUM_THREADS=1 for one core per rank);\n"
         "rank 0 alone prints and writes, and the files are bit for bit those without mpirun.\n",
@@ -114,11 +116,19 @@ static int parse_args(int argc, char **argv, land_args *a) {
     return 0;
 }
 
+/* N: the largest |force| drawn. gnuplot pads and ticks its axes in doubles and fails (inf)
+   long before 1e308; no push on a zip line comes near this. */
+#define FORCE_DRAWN_MAX 1e12
+
+static int drawable(const range *r) {
+    return fabs(r->a) <= FORCE_DRAWN_MAX && fabs(r->b) <= FORCE_DRAWN_MAX;
+}
+
 /* "A:B:N" at text; returns the characters read, or -1 */
 static int parse_range(const char *text, range *r, int max) {
     int used = 0;
     if (sscanf(text, "%lf:%lf:%d%n", &r->a, &r->b, &r->n, &used) != 3 || !isfinite(r->a) ||
-        !isfinite(r->b) || !(r->a < r->b) || r->n < 2 || r->n > max) {
+        !isfinite(r->b) || !(r->a < r->b) || !drawable(r) || r->n < 2 || r->n > max) {
         return -1;
     }
     return used;
@@ -156,25 +166,58 @@ static const char *outcome_name(const zp_landscape_point *p) {
     return p->failed ? "failed" : zp_sim_outcome_name(p->outcome);
 }
 
-/* 1 when p finished with the margin (limit, rad) and every [limits] value kept */
-static int keeps(const zp_landscape_point *p, double limit, const zp_limits *lim) {
-    int kept = !p->failed && p->outcome == ZP_OUTCOME_FINISHED && p->max_rel_angle <= limit;
-    for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
-        kept &= !(lim->max[i] > 0) || zp_limits_kept(i, p->reached[i], lim->max[i]);
+/* what keeps p from being survivable: "" when it finished with the margin (limit, rad) and
+   every [limits] value kept; else its outcome, "margin", or the limit it exceeds most */
+static const char *binding(const zp_landscape_point *p, double limit, const zp_limits *lim) {
+    if (p->failed || p->outcome != ZP_OUTCOME_FINISHED) {
+        return outcome_name(p);
     }
-    return kept;
+    if (p->max_rel_angle > limit) {
+        return "margin";
+    }
+    int worst = -1;
+    double worst_ex = 0;
+    for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
+        if (lim->max[i] > 0 && !zp_limits_kept(i, p->reached[i], lim->max[i])) {
+            /* relative excess past the limit: over a ceiling, under the one floor */
+            double ex = i == ZP_LIMIT_MIN_ARRIVAL ? 1 - p->reached[i] / lim->max[i]
+                                                  : p->reached[i] / lim->max[i] - 1;
+            if (worst < 0 || ex > worst_ex) {
+                worst = i;
+                worst_ex = ex;
+            }
+        }
+    }
+    return worst < 0 ? "" : zp_limit_name(worst);
+}
+
+/* the result columns' header: the outcome, then what the run reached of each limit set */
+static void write_header(FILE *f, const zp_limits *lim) {
+    fputs("outcome,stall_reason,time,x,died_link,max_rel_angle_deg,kept,binding", f);
+    for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
+        if (lim->max[i] > 0) {
+            fprintf(f, ",%s_reached_", zp_limit_name(i));
+            for (const char *u = zp_limit_unit(i); *u; u++) { /* km/h -> km_h: a plain name */
+                fputc(*u == '/' || *u == ' ' ? '_' : *u, f);
+            }
+        }
+    }
+    fputc('\n', f);
 }
 
 /* one CSV row's result columns */
-static void write_point(FILE *f, const zp_landscape_point *p, int kept) {
-    fprintf(f, ",%s,%s,%.9g,%.9g,%d,%.6g,%d\n", outcome_name(p),
+static void write_point(FILE *f, const zp_landscape_point *p, double limit, const zp_limits *lim) {
+    const char *why = binding(p, limit, lim);
+    fprintf(f, ",%s,%s,%.9g,%.9g,%d,%.6g,%d,%s", outcome_name(p),
             p->failed || p->outcome != ZP_OUTCOME_STALLED ? "" : zp_sim_stall_name(p->stall),
-            p->time, p->x, p->died_link, p->max_rel_angle * 180 / M_PI, kept);
+            p->time, p->x, p->died_link, p->max_rel_angle * 180 / M_PI, !*why, why);
+    for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
+        if (lim->max[i] > 0) {
+            fprintf(f, ",%.9g", p->failed ? NAN : p->reached[i]);
+        }
+    }
+    fputc('\n', f);
 }
-
-static const char *result_header =
-    "outcome,stall_reason,time,x,died_link,max_rel_angle_deg,kept";
-
 /* one window, points i..j: listed as the points it is, since pushes between two sampled
    points were never run */
 static void print_window(const range *r, int i, int j, int first) {
@@ -203,11 +246,14 @@ static int window_ends(const range *r, const zp_landscape_point *p, int k) {
     return finishes(&p[k]) && (k == r->n - 1 || !finishes(&p[k + 1]));
 }
 
-/* the fastest finishing push, or -1 */
-static int fastest(const range *r, const zp_landscape_point *p) {
+/* the fastest push that finishes (survivable: that also keeps the margin, limit in rad, and
+   every [limits] value), or -1 */
+static int fastest(const range *r, const zp_landscape_point *p, int survivable, double limit,
+                   const zp_limits *lim) {
     int best = -1;
     for (int k = 0; k < r->n; k++) {
-        if (finishes(&p[k]) && (best < 0 || p[k].time < p[best].time)) {
+        if (finishes(&p[k]) && (!survivable || !*binding(&p[k], limit, lim)) &&
+            (best < 0 || p[k].time < p[best].time)) {
             best = k;
         }
     }
@@ -216,8 +262,9 @@ static int fastest(const range *r, const zp_landscape_point *p) {
 
 /* the survival windows of the constant push on stdout: runs of consecutive sampled pushes
    that finish, each listed as the points it is */
-static void print_windows(const range *r, const zp_landscape_point *p) {
-    int nwin = 0, start = 0, best = fastest(r, p);
+static void print_windows(const range *r, const zp_landscape_point *p, double limit,
+                          const zp_limits *lim) {
+    int nwin = 0, start = 0, best = fastest(r, p, 1, limit, lim), quick = fastest(r, p, 0, 0, lim);
     printf("constant push from %g to %g N (%d runs, every %g N): finishes at", r->a, r->b, r->n,
            (r->b - r->a) / (r->n - 1));
     for (int k = 0; k < r->n; k++) {
@@ -226,16 +273,24 @@ static void print_windows(const range *r, const zp_landscape_point *p) {
             print_window(r, start, k, !nwin++);
         }
     }
+    printf("%s\n", quick < 0 ? " no push in the range" : "");
     if (best < 0) {
-        printf(" no push in the range\n");
+        printf("fastest: no push in the range keeps the margin%s\n",
+               zp_limits_any(lim) ? " and every [limits] value" : "");
     } else {
-        printf("\nfastest: %g N, finished in %.3f s\n", at(r, best), p[best].time);
+        printf("fastest: %g N, finished in %.3f s, keeping the margin%s\n", at(r, best),
+               p[best].time, zp_limits_any(lim) ? " and every [limits] value" : "");
+    }
+    if (quick >= 0 && quick != best) {
+        printf("fastest finishing push: %g N, %.3f s, breaks %s\n", at(r, quick), p[quick].time,
+               binding(&p[quick], limit, lim));
     }
 }
 
 /* --json: the run as one object on stdout (README "landscape --json") */
 static void print_json(const zp_scene *sc, const range *r, const zp_landscape_point *p, int si,
-                       int sj, int n2, double wall, const char *dir, int figures) {
+                       int sj, int n2, double wall, const char *dir, int figures, double limit,
+                       const zp_limits *lim) {
     printf("{\"scene\": ");
     zp_out_json_string(stdout, sc->name);
     printf(", \"force_from\": %.17g, \"force_to\": %.17g, \"points\": %d, \"windows\": [", r->a,
@@ -248,12 +303,21 @@ static void print_json(const zp_scene *sc, const range *r, const zp_landscape_po
             printf("%.17g]", at(r, k));
         }
     }
-    int best = fastest(r, p);
+    int best = fastest(r, p, 1, limit, lim), quick = fastest(r, p, 0, 0, lim);
     if (best < 0) {
         printf("], \"fastest\": null");
     } else {
         printf("], \"fastest\": {\"force\": %.17g, \"time\": ", at(r, best));
         zp_out_json_number(stdout, p[best].time);
+        printf("}");
+    }
+    if (quick < 0) {
+        printf(", \"fastest_finish\": null");
+    } else {
+        printf(", \"fastest_finish\": {\"force\": %.17g, \"time\": ", at(r, quick));
+        zp_out_json_number(stdout, p[quick].time);
+        printf(", \"breaks\": ");
+        zp_out_json_string(stdout, binding(&p[quick], limit, lim));
         printf("}");
     }
     if (n2) {
@@ -288,9 +352,9 @@ static int landscape(int argc, char **argv, const zp_spread *sp) {
     range r1 = {st.sched.lo[0], st.sched.hi[0], 201};
     if (a.range1_text && parse_range(a.range1_text, &r1, MAX_1D) != (int)strlen(a.range1_text)) {
         zp_cli_error("landscape",
-                     "--force-range: '%s' is not A:B:N; expected forces A < B (N) and 2 to %d "
-                     "points",
-                     a.range1_text, MAX_1D);
+                     "--force-range: '%s' is not A:B:N; expected forces A < B (N, within "
+                     "+/-%g) and 2 to %d points",
+                     a.range1_text, FORCE_DRAWN_MAX, MAX_1D);
         goto done;
     }
     int si = -1, sj = -1;
@@ -317,11 +381,19 @@ static int landscape(int argc, char **argv, const zp_spread *sp) {
         }
         if (used != (int)strlen(t)) {
             zp_cli_error("landscape",
-                         "--range: '%s' is not A:B:N or A:B:N,C:D:M; expected forces A < B (N) "
-                         "and 2 to %d points per axis",
-                         t, MAX_2D);
+                         "--range: '%s' is not A:B:N or A:B:N,C:D:M; expected forces A < B (N, "
+                         "within +/-%g) and 2 to %d points per axis",
+                         t, FORCE_DRAWN_MAX, MAX_2D);
             goto done;
         }
+    }
+    /* the scene's [drive] min:max, where no option replaced them */
+    if (!drawable(&r1) || !drawable(&rx) || !drawable(&ry)) {
+        zp_cli_error("landscape",
+                     "%s: [drive] min, max: forces beyond +/-%g N cannot be drawn; give "
+                     "--force-range (and --range with --slice) within it",
+                     sc->path, FORCE_DRAWN_MAX);
+        goto done;
     }
     zp_sim_opts o = st.sim;
     o.output_dt = 0; /* outcomes only */
@@ -381,18 +453,20 @@ static int landscape(int argc, char **argv, const zp_spread *sp) {
         fprintf(stderr, "zipopt landscape: %s; nothing was written\n", err);
         goto done;
     }
-    fprintf(csv, "force,%s\n", result_header);
+    fputs("force,", csv);
+    write_header(csv, &lim);
     for (int k = 0; k < n1; k++) {
         fprintf(csv, "%.9g", at(&r1, k));
-        write_point(csv, &pt[k], keeps(&pt[k], st.limit, &lim));
+        write_point(csv, &pt[k], st.limit, &lim);
     }
     zp_fig_landscape_1d(gp, sc->name, &r1);
     if (n2) {
-        fprintf(csv2, "f%d,f%d,%s\n", si + 1, sj + 1, result_header);
+        fprintf(csv2, "f%d,f%d,", si + 1, sj + 1);
+        write_header(csv2, &lim);
         for (int k = 0; k < n2; k++) {
             const double *f = force + (size_t)(n1 + k) * ns;
             fprintf(csv2, "%.9g,%.9g", f[si], f[sj]);
-            write_point(csv2, &pt[n1 + k], keeps(&pt[n1 + k], st.limit, &lim));
+            write_point(csv2, &pt[n1 + k], st.limit, &lim);
         }
         zp_fig_landscape_2d(gp2, sc->name, sc->nsec, si, sj, &rx, &ry, base,
                             a.schedule     ? a.schedule
@@ -405,9 +479,9 @@ static int landscape(int argc, char **argv, const zp_spread *sp) {
         goto done;
     }
     if (a.json) {
-        print_json(sc, &r1, pt, si, sj, n2, wall, t.dir, !missing);
+        print_json(sc, &r1, pt, si, sj, n2, wall, t.dir, !missing, st.limit, &lim);
     } else {
-        print_windows(&r1, pt);
+        print_windows(&r1, pt, st.limit, &lim);
         printf("%d runs in %.2f s", n1 + n2, wall);
         if (sp->size > 1) {
             printf(" on %d ranks", sp->size);

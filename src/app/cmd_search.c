@@ -12,6 +12,7 @@
 #include "mpi_spread.h"
 #include "out_csv.h"
 #include "out_file.h"
+#include "out_html.h"
 #include "plot.h"
 #include "report.h"
 #include "robust.h"
@@ -29,6 +30,7 @@ static volatile sig_atomic_t interrupted;
 static void usage(FILE *f) {
     fputs("usage: zipopt [SCENE.ini] [--out DIR] [--algorithm NAME] [--seed N] [--max-evals N]\n"
           "              [--max-time S] [--no-plot] [--json]\n"
+          "\n"
           "Searches for the fastest schedule of drive forces, one per course section within\n"
           "[drive] min, max, that brings the spy to the end alive with every relative joint\n"
           "angle at least [optimize] margin below death_angle. With no file: the built-in seed\n"
@@ -48,10 +50,12 @@ static void usage(FILE *f) {
           "                    so far (then the answer depends on the machine's speed)\n"
           "  --no-plot         skip the figures\n"
           "  --json            print summary.json's object on stdout instead of the text\n"
-          "                    summary (keys: README, CLI.md)\n"
+          "                    summary (keys: docs/commands.md)\n"
+          "\n"
           "Under `mpirun -np N zipopt SCENE.ini ..` rank 0 searches on its threads while the\n"
           "other ranks wait without spinning, then the N ranks share the robust verification's\n"
           "fresh scenarios; rank 0 alone prints and writes, bit for bit as without mpirun.\n"
+          "\n"
           "strategies:\n",
           f);
     for (int i = 0; i < zp_search_algo_count(); i++) {
@@ -80,17 +84,6 @@ static const struct option options[] = {
     {"max-time", required_argument, NULL, O_MAX_TIME},
     {NULL, 0, NULL, 0},
 };
-
-/* seconds > 0 for opt; -1 (reported) otherwise */
-static int parse_seconds(const char *opt, const char *text, double *v) {
-    char *end;
-    *v = strtod(text, &end);
-    if (end == text || *end || !(*v > 0) || !isfinite(*v)) {
-        fprintf(stderr, "zipopt: %s '%s': expected seconds > 0\n", opt, text);
-        return -1;
-    }
-    return 0;
-}
 
 /* 1: --help was shown; -1: a mistake (reported) */
 static int parse_args(int argc, char **argv, search_args *a) {
@@ -125,7 +118,7 @@ static int parse_args(int argc, char **argv, search_args *a) {
             }
             break;
         case O_MAX_TIME:
-            if (parse_seconds("--max-time", optarg, &a->max_time)) {
+            if (zp_cli_seconds("", "--max-time", optarg, &a->max_time)) {
                 return -1;
             }
             break;
@@ -216,7 +209,7 @@ static void on_verify(void *user, int done, int total) {
     }
 }
 
-/* report.md, schedule.ini, summary.json and trajectory.csv into the transaction */
+/* report.md, report.html, schedule.ini, summary.json and trajectory.csv into the transaction */
 static int write_outputs(zp_tx *t, const zp_report *r, zp_sim *best_sim) {
     char err[1400] = "", note[200];
     FILE *md = zp_tx_open(t, "report.md", err, sizeof err);
@@ -239,6 +232,13 @@ static int write_outputs(zp_tx *t, const zp_report *r, zp_sim *best_sim) {
     int nrows;
     const zp_row *rows = zp_sim_rows(best_sim, &nrows);
     zp_out_csv_trajectory(csv, r->m, rows, nrows);
+    /* report.html: report.md as one page a person can share, its figures inside it */
+    char title[300];
+    snprintf(title, sizeof title, "zipopt: best forcing, %s", r->sc->name);
+    if (zp_out_html_report(t, "report.md", "report.html", title, err, sizeof err)) {
+        fprintf(stderr, "zipopt: %s; nothing was written\n", err);
+        return -1;
+    }
     return 0;
 }
 

@@ -21,12 +21,13 @@ static void usage(FILE *f) {
           "                       [--sample-times T1,T2,..] [--out DIR]\n"
           "                       [--plot] [--frames-at x=X1,.. | t=T1,..] [--animate]\n"
           "                       [--fps N] [--size WxH] [--speedup S]\n"
+          "\n"
           "Runs one schedule of drive forces (one per course section, N) through the\n"
           "simulator and reports the outcome: finished (finish time), died (time, x, link)\n"
           "or stalled (why).\n"
           "  --force F1,..       the schedule, overriding [drive] forces\n"
           "  --schedule FILE     a schedule file ([drive] forces) laid over the scene\n"
-          "  --json              print the result as one JSON object (keys: README, CLI.md)\n"
+          "  --json              print the result as one JSON object (keys: docs/commands.md)\n"
           "  --sample-times T,.. also report the state at these times (s)\n"
           "  --out DIR           write trajectory.csv and summary.json in DIR itself\n"
           "                      (default out/<scene name>/simulate/)\n"
@@ -34,13 +35,15 @@ static void usage(FILE *f) {
           "                      course.png (course, sections, kinks, every centre-of-mass\n"
           "                      path), energy.png, angles.png (death angle and search\n"
           "                      margin), loads.png; each with its .gp script and data\n"
-          "  --frames-at x=X,..  still frames of the body: frame_x<X>.png where the trolley\n"
-          "  --frames-at t=T,..  first reaches x = X (m), or frame_t<T>.png at time T (s)\n"
+          "  --frames-at x=X,..|t=T,..\n"
+          "                      still frames of the body: frame_x<X>.png where the trolley\n"
+          "                      first reaches x = X (m), or frame_t<T>.png at time T (s)\n"
           "  --animate           run.gif (and run.mp4 when ffmpeg is installed)\n"
           "  --fps N             animation frames per second, 1..100 (default 25)\n"
           "  --size WxH          animation size in px (default 960 wide, height to fit)\n"
           "  --speedup S         simulated seconds per second of animation (default 1)\n"
-          "                      --frames-at and --animate imply --plot\n",
+          "\n"
+          "--frames-at and --animate imply --plot.\n",
           f);
 }
 
@@ -170,7 +173,8 @@ static void print_text(const zp_model *m, const zp_result *r) {
     } else if (r->outcome == ZP_OUTCOME_STALLED) {
         printf(" (%s)", zp_sim_stall_name(r->stall));
     }
-    printf("\ntime: %.9f s\nx: %.6f m\nspeed: %.4f m/s\n", r->time, r->x, r->v);
+    printf("\ntime: %.9f s\nx: %.6f m\nspeed: %.4f m/s (%.2f km/h)\n", r->time, r->x, r->v,
+           3.6 * r->v);
     printf("largest |relative joint angle| (deg):");
     for (int i = 0; i < m->nlink; i++) {
         printf(" %.3f", r->max_rel_angle[i] * 180.0 / M_PI);
@@ -181,7 +185,8 @@ static void print_text(const zp_model *m, const zp_result *r) {
     }
     printf("energy audit residual: %.3g J\n", r->e_final - r->e_initial - r->w_drive + r->w_damp +
                                                    r->e_impulse + r->w_drag + r->w_fric);
-    printf("steps: %ld, rhs evaluations: %ld, wall: %.4f s\n", r->steps, r->rhs_evals, r->wall_s);
+    printf("steps: %ld (and %ld rejected), rhs evaluations: %ld, wall: %.4f s\n", r->steps,
+           r->rejected, r->rhs_evals, r->wall_s);
 }
 
 /* the error estimate beside the answer (docs/trade.md) */

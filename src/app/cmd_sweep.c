@@ -1,6 +1,7 @@
 /* `zipopt sweep`: a design study over a grid of scene values (CLI.md). Under mpirun the points
    are spread over the ranks; rank 0 checkpoints each row as it comes and writes the outputs. */
 #include <errno.h>
+#include <limits.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -21,7 +22,9 @@
 static void usage(FILE *f) {
     fputs("usage: zipopt sweep SCENE.ini --vary SECTION.KEY=A:B:N [--vary ..]\n"
           "                    [--run search|simulate] [--out DIR] [--resume] [--json]\n"
-          "                    [--grid-schedule | --no-grid-schedule]\n"
+          "                    [--grid-schedule | --no-grid-schedule] [--max-evals N]\n"
+          "                    [--max-time S] [--schedule FILE | --force F1,..]\n"
+          "\n"
           "A design study: the scene at every point of the grid of the varied keys (N values\n"
           "from A to B for each --vary, the first varying fastest; up to 4 keys). A list key\n"
           "(body.masses, body.lengths, body.damping, drive.forces, ..) is scaled as a whole:\n"
@@ -31,12 +34,18 @@ static void usage(FILE *f) {
           "                    its answer re-run at the scene's tolerance (default)\n"
           "  --run simulate    one run of the scene's [drive] forces\n"
           "Writes sweep.csv (one row per point: the varied values, found, outcome, finish\n"
-          "time, margin, the binding limit, forces; a failed point says why and the study goes\n"
+          "time, margin, the binding limit of the margin and [limits], peak g, peak joint\n"
+          "force, arrival speed, kink dv, forces; a failed point says why and the study goes\n"
           "on), sweep.png with its gnuplot script (a line for one key, a heat map for two,\n"
           "points without a schedule marked) and summary.json to out/<scene name>/sweep/ (or\n"
           "DIR), and prints the summary. Each finished row is appended to checkpoint.csv there\n"
           "at once; after Ctrl-C or a killed job, --resume skips every finished point.\n"
           "  --json            print summary.json on stdout instead of the text\n"
+          "  --max-evals N     overrides [optimize] max_evals at every point\n"
+          "  --max-time S      stops each point's search after S seconds (the rows then\n"
+          "                    depend on the machine's speed)\n"
+          "  --schedule FILE   a schedule ([drive] forces) laid over the scene: what\n"
+          "  --force F1,..     --run simulate runs at every point\n"
           "Besides, the schedule that survives across the whole grid: the search for the\n"
           "fastest schedule at the middle point that keeps the limits at every corner of the\n"
           "grid (each corner's scene as it is, with its [robust] scenarios when the scene has\n"
@@ -46,6 +55,7 @@ static void usage(FILE *f) {
           "most 16 points added a round, those broken most). In the summary and\n"
           "summary.json. On by default with --run search; --no-grid-schedule skips it,\n"
           "--grid-schedule adds it to a --run simulate study.\n"
+          "\n"
           "Under `mpirun -np N zipopt sweep ..` the points go to the N ranks by a work queue\n"
           "(each rank with its OpenMP threads); the results are the same bits as without.\n",
           f);
@@ -53,12 +63,26 @@ static void usage(FILE *f) {
 
 typedef struct sweep_args {
     const char *scene, *out, *run;
+    const char *force, *schedule, *max_evals; /* laid over the scene before the grid */
+    double max_time;                          /* s per point's search, 0: no limit */
     int resume, json, nvary;
     int grid; /* the grid schedule: 1 on, 0 off, -1 as --run decides */
     const char *vary[MAX_ARGS_VARY];
 } sweep_args;
 
-enum { O_VARY = ZP_OPT_FIRST, O_RUN, O_OUT, O_RESUME, O_JSON, O_GRID, O_NO_GRID };
+enum {
+    O_VARY = ZP_OPT_FIRST,
+    O_RUN,
+    O_OUT,
+    O_RESUME,
+    O_JSON,
+    O_GRID,
+    O_NO_GRID,
+    O_MAX_EVALS,
+    O_MAX_TIME,
+    O_SCHEDULE,
+    O_FORCE
+};
 static const struct option options[] = {
     {"help", no_argument, NULL, 'h'},
     {"vary", required_argument, NULL, O_VARY},
@@ -68,6 +92,10 @@ static const struct option options[] = {
     {"json", no_argument, NULL, O_JSON},
     {"grid-schedule", no_argument, NULL, O_GRID},
     {"no-grid-schedule", no_argument, NULL, O_NO_GRID},
+    {"max-evals", required_argument, NULL, O_MAX_EVALS},
+    {"max-time", required_argument, NULL, O_MAX_TIME},
+    {"schedule", required_argument, NULL, O_SCHEDULE},
+    {"force", required_argument, NULL, O_FORCE},
     {NULL, 0, NULL, 0},
 };
 
@@ -103,6 +131,25 @@ static int parse_args(int argc, char **argv, sweep_args *a) {
         case O_GRID:
         case O_NO_GRID:
             a->grid = c == O_GRID;
+            break;
+        case O_MAX_EVALS: {
+            unsigned long n;
+            if (zp_cli_whole("sweep", "--max-evals", optarg, 1, LONG_MAX, &n)) {
+                return -1;
+            }
+            a->max_evals = optarg;
+            break;
+        }
+        case O_MAX_TIME:
+            if (zp_cli_seconds("sweep", "--max-time", optarg, &a->max_time)) {
+                return -1;
+            }
+            break;
+        case O_SCHEDULE:
+            a->schedule = optarg;
+            break;
+        case O_FORCE:
+            a->force = optarg;
             break;
         default:
             return -1;
@@ -141,6 +188,8 @@ typedef struct study {
     int fault_after, fault_hang;
     int appended;
     int tty;
+    int lines; /* rank 0 under mpirun, its stderr no terminal: a progress line per point */
+    double max_time; /* s per point's search, 0: no limit */
     struct timespec start;
 } study;
 
@@ -186,7 +235,7 @@ static void work(void *user, int p, void *result) {
                  d.n ? d.text[0] : "bad scene");
         return;
     }
-    zp_study_run(st->sc, st->s->kind, row);
+    zp_study_run(st->sc, st->s->kind, st->max_time, row);
 }
 
 /* rank 0 dies (or hangs) at once: no handler runs, nothing more is written */
@@ -212,17 +261,17 @@ static void done(void *user, int p, const void *result) {
     if (!st->cp_failed && (grid ? zp_sweep_checkpoint_add_grid(&st->cp, st->s, st->grid_res)
                                 : zp_sweep_checkpoint_add(&st->cp, st->s, p, &st->rows[p]))) {
         st->cp_failed = 1;
-        fprintf(stderr,
-                "\nzipopt sweep: cannot append to %s; the study goes on, but a rerun "
-                "would start afresh\n",
-                st->cp.path);
+        fputc('\n', stderr);
+        zp_cli_error("sweep",
+                     "cannot append to %s; the study goes on, but a rerun would start afresh",
+                     st->cp.path);
     }
     if (!grid && !st->cp_failed && st->fault_after > 0 && ++st->appended >= st->fault_after) {
         inject_fault(st);
     }
-    if (st->tty) {
-        fprintf(stderr, "\rzipopt sweep: %d/%d points, %.1f s   ", st->ndone, st->s->npoint,
-                since(&st->start));
+    if (st->tty || st->lines) {
+        fprintf(stderr, "%szipopt sweep: %d/%d points, %.1f s%s", st->tty ? "\r" : "",
+                st->ndone, st->s->npoint, since(&st->start), st->tty ? "   " : "\n");
     }
 }
 
@@ -240,7 +289,7 @@ static int check_points(study *st) {
         if (d.n || d.dropped) {
             char at[512];
             zp_sweep_describe(st->s, p, at, sizeof at);
-            fprintf(stderr, "zipopt sweep: the scene at point %d (%s) is not valid:\n", p, at);
+            zp_cli_error("sweep", "the scene at point %d (%s) is not valid:", p, at);
             zp_diag_print(&d, stderr);
             fputs("zipopt sweep: nothing was written\n", stderr);
             return -1;
@@ -259,7 +308,7 @@ static int write_outputs(zp_tx *t, const zp_sweep_out *o, const char *summary,
     FILE *gp = js && fig ? zp_tx_open(t, "sweep.gp", err, sizeof err) : js;
     if (!gp) {
         zp_tx_abort(t);
-        fprintf(stderr, "zipopt sweep: %s; nothing was written\n", err);
+        zp_cli_error("sweep", "%s; nothing was written", err);
         return -1;
     }
     zp_sweep_csv_header(csv, o->s, o->np);
@@ -282,14 +331,14 @@ static int finish(study *st, const sweep_args *a, zp_tx *t, int ranks) {
     zp_sweep_out_summary(&o, summary, sizeof summary);
     int no_gnuplot = 0;
     if (write_outputs(t, &o, summary, &no_gnuplot)) {
-        fprintf(stderr, "zipopt sweep: the finished rows stay in %s; rerun with --resume\n",
-                st->cp.path);
+        zp_cli_error("sweep", "the finished rows stay in %s; rerun with --resume", st->cp.path);
         return ZP_EXIT_FAIL;
     }
     zp_sweep_checkpoint_close(&st->cp, 1); /* sweep.csv holds every row */
     if (a->json) {
         zp_sweep_out_json(stdout, &o, summary);
     } else {
+        char shown[4 * sizeof t->dir];
         printf("%s\n%d points (%d from the checkpoint)%s in %.2f s on %d rank%s; wrote "
                "%s/sweep.csv, summary.json%s\n",
                summary, st->s->npoint, st->nresumed,
@@ -297,7 +346,7 @@ static int finish(study *st, const sweep_args *a, zp_tx *t, int ranks) {
                : st->grid_resumed ? " and the grid schedule (from the checkpoint)"
                                    : " and the grid schedule",
                since(&st->start), ranks,
-               ranks == 1 ? "" : "s", t->dir,
+               ranks == 1 ? "" : "s", zp_cli_shown(t->dir, shown, sizeof shown),
                !zp_sweep_out_has_figure(&o) ? " (no figure for more than two keys)"
                : no_gnuplot                 ? ", sweep.gp (gnuplot is not installed: no image)"
                                             : ", sweep.png");
@@ -305,45 +354,97 @@ static int finish(study *st, const sweep_args *a, zp_tx *t, int ranks) {
     return ZP_EXIT_OK;
 }
 
+/* --schedule, --force and --max-evals laid over the scene's text, so that every point, the
+   grid schedule and the checkpoint's identity see them as scene lines; 0, or -1 (said) */
+static int overlay(const sweep_args *a, study *st, char **base) {
+    char value[ZP_SWEEP_LINE_MAX] = "", why[256];
+    zp_diag d;
+    zp_diag_init(&d);
+    if (a->schedule && zp_scene_overlay_schedule(a->schedule, st->sc, &d) == ZP_OK) {
+        zp_schedule sh = zp_schedule_of_scene(st->sc);
+        zp_schedule_format(&sh, value, sizeof value);
+    }
+    if (a->force) {
+        zp_schedule sh;
+        if (zp_schedule_parse(a->force, st->sc->nsec, &sh, why, sizeof why)) {
+            zp_diag_add(&d, NULL, 0, NULL, NULL, "zipopt sweep: --force: %s", why);
+        } else {
+            zp_schedule_format(&sh, value, sizeof value);
+        }
+    }
+    zp_diag_print(&d, stderr);
+    if (d.n) {
+        return -1;
+    }
+    const char *sec[] = {"drive", "optimize"}, *key[] = {"forces", "max_evals"};
+    const char *val[] = {value[0] ? value : NULL, a->max_evals};
+    for (int i = 0; i < 2; i++) {
+        char *next = val[i] ? zp_sweep_set_text(*base, sec[i], key[i], val[i]) : *base;
+        if (!next) {
+            fputs("zipopt sweep: out of memory; nothing was written\n", stderr);
+            return -1;
+        }
+        if (next != *base) {
+            free(*base);
+            *base = next;
+        }
+    }
+    st->base = *base;
+    return 0;
+}
+
 /* the scene, the grid and every point checked; 0, or the exit status */
 static int prepare(const sweep_args *a, zp_sweep *s, study *st, char **base) {
     size_t len;
-    *base = zp_sweep_read_file(a->scene, &len);
-    if (!*base) {
-        fprintf(stderr, "zipopt sweep: cannot read %s: %s; nothing was written\n", a->scene,
-                strerror(errno));
-        return ZP_EXIT_USAGE;
-    }
-    st->base = *base;
-    st->path = a->scene;
     zp_diag d;
     zp_diag_init(&d);
+    /* the reader every command uses: capped, and a NUL byte refused with its line (the
+       points' scenes are made from this text as a string) */
+    *base = zp_scene_read_file(a->scene, &len, &d);
+    st->base = *base;
+    st->path = a->scene;
     zp_model *m = NULL;
-    if (zp_scene_load_string(*base, a->scene, st->sc, &d) == ZP_OK) {
+    int read = *base && zp_scene_load_text(*base, len, a->scene, 1, st->sc, &d) == ZP_OK;
+    if (read && (a->force || a->schedule || a->max_evals)) {
+        zp_diag_print(&d, stderr);
+        zp_diag_init(&d);
+        if (overlay(a, st, base)) {
+            return ZP_EXIT_USAGE;
+        }
+        read = zp_scene_load_text(*base, strlen(*base), a->scene, 1, st->sc, &d) == ZP_OK;
+    }
+    if (read) {
         m = zp_model_build(st->sc, &d);
     }
     zp_diag_print(&d, stderr);
     zp_model_free(m);
     if (!m) {
-        fprintf(stderr, "zipopt sweep: %s is not a valid scene; nothing was written\n", a->scene);
+        zp_cli_error("sweep", "%s is not a valid scene; nothing was written", a->scene);
         return ZP_EXIT_USAGE;
     }
     snprintf(st->name, sizeof st->name, "%s", st->sc->name);
     st->np = zp_schedule_of_scene(st->sc).np;
     int kind = zp_study_kind_find(a->run);
     if (kind < 0) {
-        fprintf(stderr, "zipopt sweep: --run '%s': expected search or simulate\n", a->run);
+        zp_cli_error("sweep", "--run '%s': expected search or simulate", a->run);
         return ZP_EXIT_USAGE;
     }
     s->kind = (zp_study_kind)kind;
+    st->max_time = a->max_time;
     st->grid = a->grid >= 0 ? a->grid : s->kind == ZP_STUDY_SEARCH;
     for (int i = 0; i < a->nvary; i++) {
         char why[1200];
         zp_sweep_vary v;
+        if (i < MAX_ARGS_VARY && !zp_sweep_vary_parse(a->vary[i], &v, why, sizeof why) &&
+            (a->force || a->schedule) && !strcmp(v.section, "drive") && !strcmp(v.key, "forces")) {
+            snprintf(why, sizeof why, "varies the forces --force or --schedule fixes; give one");
+            fprintf(stderr, "zipopt sweep: --vary %s: %s; nothing was written\n", a->vary[i], why);
+            return ZP_EXIT_USAGE;
+        }
         if (i >= MAX_ARGS_VARY || zp_sweep_vary_parse(a->vary[i], &v, why, sizeof why) ||
             zp_sweep_add(s, &v, why, sizeof why)) {
-            fprintf(stderr, "zipopt sweep: --vary %s: %s; nothing was written\n",
-                    i < MAX_ARGS_VARY ? a->vary[i] : "", i < MAX_ARGS_VARY ? why : "too many");
+            zp_cli_error("sweep", "--vary %s: %s; nothing was written",
+                         i < MAX_ARGS_VARY ? a->vary[i] : "", i < MAX_ARGS_VARY ? why : "too many");
             return ZP_EXIT_USAGE;
         }
     }
@@ -370,7 +471,7 @@ static int open_study(study *st, const sweep_args *a, zp_tx *t, int **todo, int 
                                             a->resume, st->rows, st->done, &st->ndone,
                                             st->grid_res, &st->grid_done, err, sizeof err);
     if (rc) {
-        fprintf(stderr, "zipopt sweep: %s; nothing was written\n", err);
+        zp_cli_error("sweep", "%s; nothing was written", err);
         return rc == ZP_ERR_INPUT ? ZP_EXIT_USAGE : ZP_EXIT_FAIL;
     }
     st->nresumed = st->ndone;
@@ -398,6 +499,7 @@ static int sweep(int argc, char **argv, int rank) {
     }
     zp_sweep s = {0};
     study st = {.tty = rank == 0 && isatty(STDERR_FILENO), .cp = {.dirfd = -1}};
+    st.lines = rank == 0 && !st.tty && zp_mpi_queue_size() > 1;
     clock_gettime(CLOCK_MONOTONIC, &st.start);
     char *base = NULL;
     int *todo = NULL, ntodo = 0;
@@ -413,7 +515,7 @@ static int sweep(int argc, char **argv, int rank) {
     char err[256];
     if (zp_mpi_queue_run(todo, status ? 0 : ntodo, sizeof(item_result), work, done, &st, err,
                          sizeof err)) {
-        fprintf(stderr, "zipopt sweep: %s\n", err);
+        zp_cli_error("sweep", "%s", err);
         status = ZP_EXIT_FAIL;
     }
     if (st.tty && ntodo) {

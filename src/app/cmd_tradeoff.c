@@ -1,12 +1,17 @@
 /* `zipopt tradeoff SCENE.ini [--levels P1,P2,..]`: the robust search at each force_error level
-   (the scene's other [robust] ranges as given): what robustness costs (CLI.md). */
+   (the scene's other [robust] ranges as given): what robustness costs. The levels exchange
+   their answers, so the costs never fall as the level grows past what the searches missed. */
 #include <getopt.h>
+#include <limits.h>
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "cli.h"
+#include "estimate.h"
 #include "out_json.h"
 #include "report.h"
 #include "robust.h"
@@ -14,29 +19,60 @@
 
 #define MAX_LEVELS 16
 #define KMH 3.6
+#define FROM_GIVEN -1 /* an answer that is the schedule the scene or --schedule/--force gave */
 
 static void usage(FILE *f) {
-    fputs("usage: zipopt tradeoff SCENE.ini [--levels P1,P2,..] [--json] [--out DIR]\n"
+    fputs("usage: zipopt tradeoff SCENE.ini [--levels P1,P2,..] [--max-evals N] [--max-time S]\n"
+          "                       [--schedule FILE | --force F1,..] [--json] [--out DIR]\n"
+          "\n"
           "Runs the robust search (zipopt SCENE.ini) at each force error level P (%, each\n"
           "section's force off by up to +/-P %; the scene's other [robust] ranges and [limits]\n"
           "as given) and writes tradeoff.csv, tradeoff.png (finish time and arrival speed\n"
-          "against the level, the nominal optimum marked) and report.md (what each level\n"
-          "costs against the nominal optimum) to out/<scene name>/tradeoff/ (or DIR).\n"
-          "  --levels P1,..  force error levels in % (default 0,1,2,5,10), each in [0, 100)\n"
-          "  --json          print the levels as one JSON object (keys: README)\n"
-          "  --out DIR       output folder\n",
+          "against the level) and report.md (what each level costs against the 0 % level)\n"
+          "to out/<scene name>/tradeoff/ (or DIR). An answer held to +/-P % is a candidate\n"
+          "at every other level too: each level keeps the fastest candidate that survives its\n"
+          "own scenarios, so a level never reports a slower answer than a wider one found.\n"
+          "Ctrl-C stops the level under way and writes the levels finished, marked\n"
+          "incomplete.\n"
+          "  --levels P1,..      force error levels in % (default 0,1,2,5,10), each in [0, 100)\n"
+          "  --max-evals N       simulations each level's search may spend (default: the\n"
+          "                      scene's [optimize] max_evals)\n"
+          "  --max-time S        stops each level's search after S seconds of wall time,\n"
+          "                      keeping its best (the answer then depends on the machine)\n"
+          "  --schedule FILE     a schedule ([drive] forces) held as one more candidate at\n"
+          "  --force F1,..       every level\n"
+          "  --json              print the levels as one JSON object (keys: docs/commands.md)\n"
+          "  --out DIR           output folder\n",
           f);
 }
 
 typedef struct level_out {
-    double p;    /* % */
+    double p; /* % */
     int found;
-    double time; /* s, nominal finish time of the answer */
+    int done;       /* 1: its search finished; 0: stopped by Ctrl-C or never started */
+    int from;       /* the level whose search found this answer, or FROM_GIVEN */
+    double time;    /* s, nominal finish time of the answer */
     double arrival; /* km/h */
-    double force[ZP_MAX_SECTIONS];
+    double force[ZP_SCHED_MAX_PARAMS];
     int scenarios;
     zp_robust_check check;
 } level_out;
+
+/* what every level shares, and each level's problem kept for the exchange of answers */
+typedef struct tradeoff {
+    const zp_setup *su;
+    zp_robust_problem pb[MAX_LEVELS];
+    zp_sim_opts fast[MAX_LEVELS];
+    level_out L[MAX_LEVELS];
+    int n;     /* levels asked for */
+    int ndone; /* levels whose search ran to its end */
+    int given; /* the scene or --schedule/--force gave a schedule to hold as a candidate */
+    int tty;
+    double max_time;
+} tradeoff;
+
+/* set by the first Ctrl-C (the transaction's handler): the level under way stops cleanly */
+static volatile sig_atomic_t interrupted;
 
 /* "key": number, then sep */
 static void json_num(FILE *f, const char *key, double v, const char *sep) {
@@ -45,26 +81,35 @@ static void json_num(FILE *f, const char *key, double v, const char *sep) {
     fputs(sep, f);
 }
 
+/* the cost of level i against the 0 % level: never negative once the answers are exchanged */
+static double cost(const level_out *L, int i) {
+    return L[i].time - L[0].time;
+}
+
 /* the levels as one JSON object, the CSV's columns by name */
-static void write_json(FILE *f, const zp_scene *sc, const level_out *L, int n, int nsec) {
+static void write_json(FILE *f, const zp_scene *sc, const level_out *L, int n, int np,
+                       int complete) {
     fputs("{\n  \"scene\": ", f);
     zp_out_json_string(f, sc->name);
-    fputs(",\n  \"levels\": [", f);
+    fprintf(f, ",\n  \"complete\": %s,\n  \"levels\": [", complete ? "true" : "false");
     for (int i = 0; i < n; i++) {
         fprintf(f, "%s\n    {", i ? "," : "");
         json_num(f, "force_error_pct", L[i].p, ", ");
-        fprintf(f, "\"found\": %s, ", L[i].found ? "true" : "false");
+        fprintf(f, "\"found\": %s, \"from_level_pct\": ", L[i].found ? "true" : "false");
+        zp_out_json_number(f, L[i].from == FROM_GIVEN ? NAN : L[L[i].from].p);
+        fputs(", ", f);
         json_num(f, "time", L[i].time, ", ");
-        json_num(f, "cost", L[i].time - L[0].time, ", ");
-        json_num(f, "cost_pct", 100 * (L[i].time - L[0].time) / L[0].time, ", ");
+        json_num(f, "cost", cost(L, i), ", ");
+        json_num(f, "cost_pct", 100 * cost(L, i) / L[0].time, ", ");
         json_num(f, "arrival_kmh", L[i].arrival, ", ");
         fputs("\"forces\": [", f);
-        for (int k = 0; k < nsec; k++) {
+        for (int k = 0; k < np; k++) {
             zp_out_json_number(f, L[i].force[k]);
-            fputs(k + 1 < nsec ? ", " : "], ", f);
+            fputs(k + 1 < np ? ", " : "], ", f);
         }
-        fprintf(f, "\"scenarios\": %d, \"verify\": {\"samples\": %d, \"survived\": %d, "
-                   "\"margin_kept\": %d, \"all_kept\": %d, ",
+        fprintf(f,
+                "\"scenarios\": %d, \"verify\": {\"samples\": %d, \"survived\": %d, "
+                "\"margin_kept\": %d, \"all_kept\": %d, ",
                 L[i].scenarios, L[i].check.samples, L[i].check.survived, L[i].check.margin_kept,
                 L[i].check.all_kept);
         json_num(f, "lower_95", L[i].check.lower_95, "}, ");
@@ -75,57 +120,150 @@ static void write_json(FILE *f, const zp_scene *sc, const level_out *L, int n, i
     fputs("\n  ]\n}\n", f);
 }
 
-/* the robust answer at force error p; its arrival speed from one nominal run */
-static zp_status solve_level(const zp_setup *su, double p, level_out *out, char *err,
-                             size_t errlen) {
-    zp_scene sc = su->sc;
-    const zp_model *m = su->m;
-    sc.force_error = p;
-    sc.robust = sc.robust || p > 0;
-    static zp_robust_problem pb;
-    zp_sim_opts fast;
-    static zp_search_result res;
-    static zp_result run;
-    zp_status st = zp_robust_setup(&pb, &sc, m, su->limit, &su->sched, &su->sim, &su->search,
-                                   &fast);
-    zp_search_opts o = {.max_evals = su->max_evals, .seed = su->seed};
-    if (!st) {
-        st = zp_robust_solve(&pb, &sc, &fast, su->sched.lo, su->sched.hi, &o,
-                             &res, err, errlen);
+/* the progress line inside a level: what its search is doing and its best so far */
+typedef struct level_progress {
+    const tradeoff *T;
+    int i;
+} level_progress;
+
+static void on_progress(void *user, const zp_search_progress *p, int improved) {
+    (void)improved;
+    const level_progress *lp = user;
+    if (!lp->T->tty) {
+        return;
     }
-    zp_sim *s = st ? NULL : zp_sim_create(m, &fast);
-    zp_schedule sched = zp_schedule_with(&su->sched, res.force);
-    zp_input in = {.sched = &sched};
-    if (!st && (!s || zp_sim_run(m, s, &in, &run))) {
-        snprintf(err, errlen, "the answer's run failed: %s", s ? run.message : "out of memory");
-        st = ZP_ERR_NUMERIC;
+    fprintf(stderr,
+            "\r\033[Ktradeoff: level %d of %d (+/-%g %%): %s, round %d, %ld of %ld "
+            "simulations, %.1f s",
+            lp->i + 1, lp->T->n, lp->T->L[lp->i].p, p->phase, p->round + 1, p->evals, p->budget,
+            p->wall_s);
+    if (p->found) {
+        fprintf(stderr, ", best %.4f s", p->time);
     }
-    if (!st) {
-        *out = (level_out){.p = p, .found = res.found, .time = res.best.time,
-                           .arrival = run.v * KMH, .scenarios = pb.robust ? pb.set.n : 0,
-                           .check = pb.check};
-        memcpy(out->force, res.force, sizeof out->force);
-    }
-    zp_sim_free(s);
-    zp_robust_problem_free(&pb);
-    return st;
 }
 
-static void write_csv(FILE *f, const level_out *L, int n, int nsec) {
+/* the answer's arrival speed: one nominal run at the search's tolerance */
+static int arrival_of(const tradeoff *T, int i, double *kmh, char *err, size_t errlen) {
+    const zp_setup *su = T->su;
+    zp_sim *s = zp_sim_create(su->m, &T->fast[i]);
+    zp_schedule sched = zp_schedule_with(&su->sched, T->L[i].force);
+    zp_input in = {.sched = &sched};
+    static zp_result run;
+    int bad = !s || zp_sim_run(su->m, s, &in, &run);
+    if (bad) {
+        snprintf(err, errlen, "the answer's run failed: %s", s ? run.message : "out of memory");
+    } else {
+        *kmh = run.v * KMH;
+    }
+    zp_sim_free(s);
+    return bad ? -1 : 0;
+}
+
+/* the robust answer at force error L[i].p, its problem kept in T->pb[i] */
+static zp_status solve_level(tradeoff *T, int i, char *err, size_t errlen) {
+    const zp_setup *su = T->su;
+    level_out *out = &T->L[i];
+    zp_scene sc = su->sc;
+    sc.force_error = out->p;
+    sc.robust = sc.robust || out->p > 0;
+    zp_robust_problem *pb = &T->pb[i];
+    static zp_search_result res;
+    zp_status st =
+        zp_robust_setup(pb, &sc, su->m, su->limit, &su->sched, &su->sim, &su->search, &T->fast[i]);
+    level_progress lp = {T, i};
+    zp_search_opts o = {.max_evals = su->max_evals,
+                        .seed = su->seed,
+                        .max_time = T->max_time,
+                        .stop = &interrupted,
+                        .progress = on_progress,
+                        .user = &lp};
+    if (!st) {
+        st = zp_robust_solve(pb, &sc, &T->fast[i], su->sched.lo, su->sched.hi, &o, &res, err,
+                             errlen);
+    }
+    if (T->tty) {
+        fputs("\r\033[K", stderr);
+    }
+    if (st) {
+        return st;
+    }
+    out->found = res.found;
+    out->done = !res.interrupted;
+    out->from = i;
+    out->time = res.best.time;
+    out->scenarios = pb->robust ? pb->set.n : 0;
+    out->check = pb->check;
+    memcpy(out->force, res.force, sizeof out->force);
+    return arrival_of(T, i, &out->arrival, err, errlen) ? ZP_ERR_NUMERIC : ZP_OK;
+}
+
+/* Each level keeps the fastest of its own answer and the others' (and the schedule given)
+   that survives its own held scenarios: an answer robust to +/-5 % is as good a candidate at
+   +/-2 % as the +/-2 % search's, which may have stopped in a slower island. An adopted answer
+   is checked again on the level's fresh scenarios. */
+static int exchange_answers(tradeoff *T, char *err, size_t errlen) {
+    const zp_setup *su = T->su;
+    for (int i = 0; i < T->ndone; i++) {
+        level_out *L = &T->L[i];
+        zp_sim *s = zp_sim_create(su->m, &T->fast[i]);
+        if (!s) {
+            snprintf(err, errlen, "out of memory");
+            return -1;
+        }
+        int adopted = 0;
+        for (int j = -1; j < T->ndone; j++) { /* -1: the schedule the scene or user gave */
+            if (j < 0 ? !T->given
+                      : j == i || !T->L[j].found || (L->found && T->L[j].time >= L->time)) {
+                continue;
+            }
+            const double *p = j < 0 ? su->sched.p : T->L[j].force;
+            zp_eval e;
+            static zp_result r;
+            zp_objective_eval(&T->pb[i].ob, s, p, &e, &r);
+            if (zp_objective_feasible(&e) && (!L->found || e.time < L->time)) {
+                memcpy(L->force, p, sizeof *p * (size_t)su->sched.np);
+                L->time = e.time;
+                L->found = adopted = 1;
+                L->from = j < 0 ? FROM_GIVEN : T->L[j].from;
+            }
+        }
+        zp_sim_free(s);
+        if (!adopted) {
+            continue;
+        }
+        if (T->pb[i].robust) {
+            zp_sim_opts to = zp_estimate_tighter(&T->fast[i]);
+            if (zp_robust_verify(&T->pb[i].ob, &T->pb[i].box, &to, L->force, su->sc.verify_samples,
+                                 su->seed, 0, NULL, &L->check)) {
+                snprintf(err, errlen, "out of memory verifying the scenarios");
+                return -1;
+            }
+        }
+        if (arrival_of(T, i, &L->arrival, err, errlen)) {
+            return -1;
+        }
+    }
+    return 0;
+}
+
+static void write_csv(FILE *f, const level_out *L, int n, int np) {
     fputs("force_error_pct,found,time_s,cost_s,cost_pct,arrival_kmh,scenarios,verify_samples,"
-          "verify_kept,lower_95,headroom_factor",
+          "verify_kept,lower_95,from_level_pct,headroom_factor",
           f);
-    for (int k = 0; k < nsec; k++) {
+    for (int k = 0; k < np; k++) {
         fprintf(f, ",force_%d_N", k + 1);
     }
     fputc('\n', f);
     for (int i = 0; i < n; i++) {
         const zp_headroom_line *h = &L[i].check.headroom.line[ZP_HEADROOM_LINES - 1];
-        fprintf(f, "%g,%d,%.9g,%.6g,%.4g,%.6g,%d,%d,%d,%.6g,%.6g", L[i].p, L[i].found, L[i].time,
-                L[i].time - L[0].time, 100 * (L[i].time - L[0].time) / L[0].time, L[i].arrival,
-                L[i].scenarios, L[i].check.samples, L[i].check.all_kept, L[i].check.lower_95,
-                h->range >= 0 ? h->holds : NAN);
-        for (int k = 0; k < nsec; k++) {
+        fprintf(f, "%g,%d,%.9g,%.6g,%.4g,%.6g,%d,%d,%d,%.6g,", L[i].p, L[i].found, L[i].time,
+                cost(L, i), 100 * cost(L, i) / L[0].time, L[i].arrival, L[i].scenarios,
+                L[i].check.samples, L[i].check.all_kept, L[i].check.lower_95);
+        if (L[i].from != FROM_GIVEN) {
+            fprintf(f, "%g", L[L[i].from].p);
+        }
+        fprintf(f, ",%.6g", h->range >= 0 ? h->holds : NAN);
+        for (int k = 0; k < np; k++) {
             fprintf(f, ",%.9g", L[i].force[k]);
         }
         fputc('\n', f);
@@ -141,39 +279,50 @@ static void write_plot(FILE *f) {
           "plot 'tradeoff.csv' every ::1 using 1:3 with linespoints pt 7 title 'finish time', \\\n"
           "     '' every ::1 using 1:6 axes x1y2 with linespoints pt 5 dt 2 title 'arrival speed', "
           "\\\n     '' every ::1::1 using 1:3 with points pt 6 ps 3 lc rgb 'black' "
-          "title 'nominal optimum'\n",
+          "title 'the 0 % level'\n",
           f);
 }
 
-static void write_md(FILE *f, const zp_scene *sc, const level_out *L, int n) {
-    fprintf(f, "# What robustness costs: %s\n\nThe robust search at each force error level "
-               "(every section's force off by up to +/-p %%, independently%s), against the "
-               "nominal optimum (%.4f s).\n\n| +/-p | found | finish (s) | costs (s) | costs "
-               "(%%) | arrival (km/h) | verified survivable |\n|---|---|---|---|---|---|---|\n",
-            sc->name, sc->robust ? "; the scene's other [robust] ranges as given" : "",
-            L[0].time);
+static void write_md(FILE *f, const zp_scene *sc, const level_out *L, int n, int complete) {
+    fprintf(f, "# What robustness costs: %s\n\n", sc->name);
+    if (!complete) {
+        fputs("**Incomplete**: stopped (Ctrl-C) before every level was searched; the levels "
+              "below are those finished.\n\n",
+              f);
+    }
+    fprintf(f,
+            "The robust search at each force error level (every section's force off by up to "
+            "+/-p %%, independently%s), against the 0 %% level (%.4f s). Each level keeps the "
+            "fastest answer any level found that survives its own scenarios (\"from\").\n\n"
+            "| +/-p | found | finish (s) | costs (s) | costs (%%) | arrival (km/h) | verified "
+            "survivable | from |\n|---|---|---|---|---|---|---|---|\n",
+            sc->robust ? "; the scene's other [robust] ranges as given" : "", L[0].time);
     for (int i = 0; i < n; i++) {
         fprintf(f, "| %g %% | %s | %.4f | %.4f | %.1f | %.1f | ", L[i].p, L[i].found ? "yes" : "no",
-                L[i].time, L[i].time - L[0].time, 100 * (L[i].time - L[0].time) / L[0].time,
-                L[i].arrival);
+                L[i].time, cost(L, i), 100 * cost(L, i) / L[0].time, L[i].arrival);
         if (L[i].check.samples) {
-            fprintf(f, "%d / %d (>= %.2f %%) |\n", L[i].check.all_kept, L[i].check.samples,
+            fprintf(f, "%d / %d (>= %.2f %%) | ", L[i].check.all_kept, L[i].check.samples,
                     100 * L[i].check.lower_95);
         } else {
-            fputs("- |\n", f);
+            fputs("- | ", f);
+        }
+        if (L[i].from == FROM_GIVEN) {
+            fputs("the given schedule |\n", f);
+        } else {
+            fprintf(f, "%s%g %% |\n", L[i].from == i ? "" : "the search at ", L[L[i].from].p);
         }
     }
     fputc('\n', f);
     for (int i = 1; i < n; i++) {
         if (L[i].found) {
-            fprintf(f, "Robust to +/-%g %% costs %.3f s (%.1f %%).\n", L[i].p,
-                    L[i].time - L[0].time, 100 * (L[i].time - L[0].time) / L[0].time);
+            fprintf(f, "Robust to +/-%g %% costs %.3f s (%.1f %%).\n", L[i].p, cost(L, i),
+                    100 * cost(L, i) / L[0].time);
         }
     }
     fputs("\n![finish time and arrival speed against the level](tradeoff.png)\n", f);
 }
 
-/* the levels: 0 first (the nominal optimum), then the ones asked for in the order given */
+/* the levels: 0 first (the reference of the costs), then the ones asked for in the order given */
 static int parse_levels(const char *text, double *lv) {
     double got[MAX_LEVELS];
     char why[128] = "";
@@ -182,16 +331,20 @@ static int parse_levels(const char *text, double *lv) {
         memcpy(got, (double[]){1, 2, 5, 10}, sizeof(double) * 4);
     }
     if (n < 1) {
-        fprintf(stderr, "zipopt tradeoff: --levels '%s': %s; expected levels in %% such as "
-                        "0,1,2,5,10; nothing was written\n", text, *why ? why : "bad list");
+        zp_cli_error("tradeoff",
+                     "--levels '%s': %s; expected levels in %% such as 0,1,2,5,10; nothing was "
+                     "written",
+                     text, *why ? why : "bad list");
         return -1;
     }
     int m = 1;
     lv[0] = 0;
     for (int i = 0; i < n; i++) {
         if (!(got[i] >= 0 && got[i] < 100)) {
-            fprintf(stderr, "zipopt tradeoff: --levels: %g is not a level; expected each in "
-                            "[0, 100) %%; nothing was written\n", got[i]);
+            zp_cli_error("tradeoff",
+                         "--levels: %g is not a level; expected each in [0, 100) %%; nothing was "
+                         "written",
+                         got[i]);
             return -1;
         }
         if (got[i] > 0) {
@@ -201,92 +354,182 @@ static int parse_levels(const char *text, double *lv) {
     return m;
 }
 
-enum { O_LEVELS = ZP_OPT_FIRST, O_OUT, O_JSON };
+enum { O_LEVELS = ZP_OPT_FIRST, O_OUT, O_JSON, O_MAX_EVALS, O_MAX_TIME, O_SCHEDULE, O_FORCE };
 
 static const struct option options[] = {
     {"help", no_argument, NULL, 'h'},
     {"levels", required_argument, NULL, O_LEVELS},
     {"out", required_argument, NULL, O_OUT},
     {"json", no_argument, NULL, O_JSON},
+    {"max-evals", required_argument, NULL, O_MAX_EVALS},
+    {"max-time", required_argument, NULL, O_MAX_TIME},
+    {"schedule", required_argument, NULL, O_SCHEDULE},
+    {"force", required_argument, NULL, O_FORCE},
     {NULL, 0, NULL, 0},
 };
 
-int zp_cmd_tradeoff(int argc, char **argv) {
-    const char *scene = NULL, *out = NULL, *levels = NULL;
-    int json = 0;
+typedef struct tradeoff_args {
+    const char *scene, *out, *levels;
+    int json;
+    double max_time;
+    zp_overrides ov;
+} tradeoff_args;
+
+/* 1: --help was shown; -1: a mistake (reported); 0: go on */
+static int parse_args(int argc, char **argv, tradeoff_args *a) {
+    *a = (tradeoff_args){.ov = ZP_OVERRIDES_NONE};
     zp_cli_opts_begin();
     for (int c; (c = zp_cli_opts_next("tradeoff", argc, argv, options)) != -1;) {
-        if (c == 'h') {
+        unsigned long evals;
+        switch (c) {
+        case 'h':
             usage(stdout);
-            return ZP_EXIT_OK;
-        } else if (c == O_LEVELS) {
-            levels = optarg;
-        } else if (c == O_OUT) {
-            out = optarg;
-        } else if (c == O_JSON) {
-            json = 1;
-        } else {
-            return ZP_EXIT_USAGE;
+            return 1;
+        case O_LEVELS:
+            a->levels = optarg;
+            break;
+        case O_OUT:
+            a->out = optarg;
+            break;
+        case O_JSON:
+            a->json = 1;
+            break;
+        case O_MAX_EVALS:
+            if (zp_cli_whole("tradeoff", "--max-evals", optarg, 1, LONG_MAX, &evals)) {
+                return -1;
+            }
+            a->ov.max_evals = (long)evals;
+            break;
+        case O_MAX_TIME:
+            if (zp_cli_seconds("tradeoff", "--max-time", optarg, &a->max_time)) {
+                return -1;
+            }
+            break;
+        case O_SCHEDULE:
+            a->ov.schedule = optarg;
+            break;
+        case O_FORCE:
+            a->ov.force = optarg;
+            break;
+        default:
+            return -1;
         }
     }
-    if (zp_cli_scene_operand("tradeoff", argc, argv, &scene) ||
-        (out && zp_cli_path_ok("tradeoff", "--out", out))) {
-        return ZP_EXIT_USAGE;
+    if (zp_cli_scene_operand("tradeoff", argc, argv, &a->scene) ||
+        (a->out && zp_cli_path_ok("tradeoff", "--out", a->out))) {
+        return -1;
     }
-    if (!scene) {
+    if (!a->scene) {
         zp_cli_error("tradeoff", "a scene file is required; see zipopt tradeoff --help");
-        return ZP_EXIT_USAGE;
+        return -1;
+    }
+    return 0;
+}
+
+/* the finished levels' files, all or nothing; 0, or -1 (said) */
+static int write_files(zp_tx *t, const tradeoff *T, int complete) {
+    char err[1400] = "";
+    const zp_scene *sc = &T->su->sc;
+    FILE *csv = zp_tx_open(t, "tradeoff.csv", err, sizeof err);
+    FILE *gp = csv ? zp_tx_open(t, "tradeoff.gp", err, sizeof err) : NULL;
+    FILE *md = gp ? zp_tx_open(t, "report.md", err, sizeof err) : NULL;
+    if (!md) {
+        zp_tx_abort(t);
+        zp_cli_error("tradeoff", "%s; nothing was written", err);
+        return -1;
+    }
+    write_csv(csv, T->L, T->ndone, T->su->sched.np);
+    write_plot(gp);
+    write_md(md, sc, T->L, T->ndone, complete);
+    return 0;
+}
+
+int zp_cmd_tradeoff(int argc, char **argv) {
+    tradeoff_args a;
+    int pa = parse_args(argc, argv, &a);
+    if (pa) {
+        return pa > 0 ? ZP_EXIT_OK : ZP_EXIT_USAGE;
     }
     double lv[MAX_LEVELS];
-    int n = parse_levels(levels, lv);
+    int n = parse_levels(a.levels, lv);
     static zp_setup su; /* large: kept off the stack */
-    if (n < 1 || zp_setup_load("tradeoff", scene, &ZP_OVERRIDES_NONE, &su)) {
+    if (n < 1 || zp_setup_load("tradeoff", a.scene, &a.ov, &su)) {
         return ZP_EXIT_USAGE;
     }
     const zp_scene *sc = &su.sc;
-    static level_out L[MAX_LEVELS];
-    char err[1200] = "";
-    int status = ZP_EXIT_FAIL;
+    static tradeoff T; /* large: kept off the stack */
+    T = (tradeoff){.su = &su,
+                   .n = n,
+                   .tty = isatty(STDERR_FILENO),
+                   .max_time = a.max_time,
+                   .given = sc->nforce > 0 || a.ov.schedule || a.ov.force};
     for (int i = 0; i < n; i++) {
-        if (solve_level(&su, lv[i], &L[i], err, sizeof err)) {
-            fprintf(stderr, "zipopt tradeoff: level %g %%: %s; nothing was written\n", lv[i], err);
+        T.L[i].p = lv[i];
+    }
+    char err[1200] = "";
+    int status = ZP_EXIT_FAIL, begun = 0;
+    zp_tx t;
+    if (zp_cli_out_begin(&t, "tradeoff", "tradeoff", a.out, sc)) {
+        goto done;
+    }
+    begun = 1;
+    interrupted = 0;
+    zp_tx_soft_interrupt(&t, &interrupted);
+    for (int i = 0; i < n && !interrupted; i++) {
+        zp_status st = solve_level(&T, i, err, sizeof err);
+        if (st) {
+            zp_cli_error("tradeoff", "level %g %%: %s; nothing was written", lv[i], err);
             goto done;
         }
-        fprintf(stderr, "tradeoff: +/-%g %%: %s %.4f s\n", lv[i], L[i].found ? "" : "(none)",
-                L[i].time);
+        if (!T.L[i].done) {
+            break; /* stopped inside this level: it is not reported */
+        }
+        T.ndone = i + 1;
+        fprintf(stderr, "tradeoff: +/-%g %%: %s%.4f s\n", lv[i], T.L[i].found ? "" : "(none) ",
+                T.L[i].time);
     }
-    zp_tx t;
-    if (zp_cli_out_begin(&t, "tradeoff", "tradeoff", out, sc)) {
+    int complete = T.ndone == n;
+    if (T.ndone == 0) {
+        fputs("zipopt tradeoff: interrupted before a level was finished; nothing was written\n",
+              stderr);
         goto done;
     }
-    FILE *csv = zp_tx_open(&t, "tradeoff.csv", err, sizeof err);
-    FILE *gp = csv ? zp_tx_open(&t, "tradeoff.gp", err, sizeof err) : NULL;
-    FILE *md = gp ? zp_tx_open(&t, "report.md", err, sizeof err) : NULL;
+    if (exchange_answers(&T, err, sizeof err)) {
+        zp_cli_error("tradeoff", "%s; nothing was written", err);
+        goto done;
+    }
     int missing = 0;
-    if (!md) {
-        zp_tx_abort(&t);
-        fprintf(stderr, "zipopt tradeoff: %s; nothing was written\n", err);
-        goto done;
-    }
-    write_csv(csv, L, n, su.m->nsec);
-    write_plot(gp);
-    write_md(md, sc, L, n);
     const char *scripts[] = {"tradeoff.gp"};
-    if (zp_cli_out_draw_commit(&t, "tradeoff", scripts, 1, &missing)) {
+    begun = 0; /* the files commit or abort the transaction */
+    if (write_files(&t, &T, complete) ||
+        zp_cli_out_draw_commit(&t, "tradeoff", scripts, 1, &missing)) {
         goto done;
     }
-    for (int i = 1; i < n && !json; i++) {
-        printf("robust to +/-%g %%: %.4f s, costs %.3f s (%.1f %%)%s\n", L[i].p, L[i].time,
-               L[i].time - L[0].time, 100 * (L[i].time - L[0].time) / L[0].time,
-               L[i].found ? "" : ", NOT found");
+    for (int i = 1; i < T.ndone && !a.json; i++) {
+        printf("robust to +/-%g %%: %.4f s, costs %.3f s (%.1f %%)%s\n", T.L[i].p, T.L[i].time,
+               cost(T.L, i), 100 * cost(T.L, i) / T.L[0].time, T.L[i].found ? "" : ", NOT found");
     }
-    if (json) {
-        write_json(stdout, sc, L, n, su.m->nsec);
+    if (a.json) {
+        write_json(stdout, sc, T.L, T.ndone, su.sched.np, complete);
     }
-    fprintf(json ? stderr : stdout, "wrote in %s: %s%s\n", t.dir, t.written,
-           missing ? " (no gnuplot: tradeoff.gp without its image)" : "");
-    status = ZP_EXIT_OK;
+    char shown[4 * sizeof t.dir];
+    fprintf(a.json ? stderr : stdout, "wrote in %s: %s%s\n",
+            zp_cli_shown(t.dir, shown, sizeof shown), t.written,
+            missing ? " (no gnuplot: tradeoff.gp without its image)" : "");
+    status = complete ? ZP_EXIT_OK : ZP_EXIT_FAIL;
+    if (!complete) {
+        fprintf(stderr,
+                "zipopt tradeoff: interrupted; wrote the %d level%s finished, marked "
+                "incomplete\n",
+                T.ndone, T.ndone == 1 ? "" : "s");
+    }
 done:
+    if (begun) {
+        zp_tx_abort(&t);
+    }
+    for (int i = 0; i < n; i++) {
+        zp_robust_problem_free(&T.pb[i]);
+    }
     zp_setup_free(&su);
     return status;
 }

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "course.h"
 
 static const struct {
     const char *name;
@@ -52,6 +53,10 @@ static void usage_all(void) {
 }
 
 int main(int argc, char **argv) {
+    /* before any thread (OpenMP's, OpenMPI's) exists, so every one of them blocks the signals
+       the output transaction takes in its own thread */
+    zp_tx_signals_start();
+    zp_course_notices_to(stderr);
     /* GSL's default handler aborts; every GSL call's status is checked instead */
     gsl_set_error_handler_off();
     if (argc >= 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {

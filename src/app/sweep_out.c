@@ -127,8 +127,9 @@ void zp_sweep_out_summary(const zp_sweep_out *o, char *out, size_t cap) {
         ADD("%s%s.%s %s%g to %s%g", v ? " by " : "", va->section, va->key, x, va->a, x, va->b);
     }
     ADD(" (%d point%s): %s at %d of them", s->npoint, s->npoint == 1 ? "" : "s",
-        s->kind == ZP_STUDY_SEARCH ? "a schedule keeps the limits"
-                                   : "the scene's schedule finishes with the margin kept",
+        s->kind == ZP_STUDY_SEARCH ? "a schedule keeps the margin and the [limits]"
+                                   : "the scene's schedule finishes with the margin and the "
+                                     "[limits] kept",
         t.found);
     if (t.found) {
         zp_sweep_describe(s, t.fastest, at, sizeof at);

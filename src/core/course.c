@@ -299,6 +299,14 @@ static course_code *compile_code(const zp_course *c, char *err, size_t errlen) {
     return code;
 }
 
+/* where the notice of an interpreted course goes: nowhere until the program names a stream
+   (the library prints nothing) */
+static _Atomic(FILE *) notice_to;
+
+void zp_course_notices_to(FILE *f) {
+    atomic_store(&notice_to, f);
+}
+
 zp_course *zp_course_for_thread(const zp_course *c, zp_course_err *e) {
     assert(c->lazy);
     course_lazy *lz = c->lazy;
@@ -309,8 +317,9 @@ zp_course *zp_course_for_thread(const zp_course *c, zp_course_err *e) {
         char why[256] = "ZIPOPT_NO_JIT is set";
         lz->code = off && *off && strcmp(off, "0") ? NULL : compile_code(c, why, sizeof why);
         static atomic_flag said = ATOMIC_FLAG_INIT;
-        if (!lz->code && !atomic_flag_test_and_set(&said)) {
-            fprintf(stderr, "zipopt: notice: the course is interpreted, not compiled (%s)\n", why);
+        FILE *to = atomic_load(&notice_to);
+        if (!lz->code && to && !atomic_flag_test_and_set(&said)) {
+            fprintf(to, "zipopt: notice: the course is interpreted, not compiled (%s)\n", why);
         }
     }
     course_code *code = lz->code;

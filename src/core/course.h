@@ -4,6 +4,7 @@
 #define ZP_COURSE_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 typedef struct zp_course zp_course;
 
@@ -26,9 +27,13 @@ typedef struct zp_course_err {
 zp_course *zp_course_create(int nsec, const char *const *expr, zp_course_err *e);
 /* A course for one simulating thread, owned by the caller (zp_course_free): the sections
    compiled to native code (compiled once per c on the first call, shared read-only, any thread
-   may evaluate), or, when the compiler fails or ZIPOPT_NO_JIT is set (a one-line notice on
-   stderr), a new interpreted course, which must then be made serially. NULL with why in e. */
+   may evaluate), or, when the compiler fails or ZIPOPT_NO_JIT is set (a one-line notice, once
+   per process, on the stream of zp_course_notices_to), a new interpreted course, which must
+   then be made serially. NULL with why in e. */
 zp_course *zp_course_for_thread(const zp_course *c, zp_course_err *e);
+/* Where the notice of an interpreted course is printed (the program: stderr); none before
+   this is called or after it is called with NULL (a library prints nothing). */
+void zp_course_notices_to(FILE *f);
 /* 1 when c evaluates compiled code, 0 when it interprets. */
 int zp_course_compiled(const zp_course *c);
 void zp_course_free(zp_course *c);

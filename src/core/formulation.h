@@ -1,6 +1,7 @@
 /* The formulation interface: one way of writing the equations of motion of MODEL.md.
    State contract shared by all formulations (so events are written once):
      y[0]              trolley x (m); y[(n - nwork) / 2] its rate x' (m/s)
+     y[0 .. npos)      positions, npos = (n - nwork) / 2; y[npos + i] is the rate of y[i]
      y[n - nwork ..]   the model's nwork work integrals (J), in zp_work order: drive work and
                        damper loss, and with drag or rolling resistance also drag and friction
                        work taken out

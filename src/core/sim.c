@@ -178,7 +178,7 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
     zp_events_directions(m, dir);
     int state_only[ZP_EVENTS_MAX];
     zp_events_state_only(m, state_only);
-    zp_method_opts mo = {o->rtol, o->atol, o->max_steps, state_only};
+    zp_method_opts mo = {o->rtol, o->atol, o->max_steps, state_only, s->w0 / 2};
     s->mwork = s->meth->create(s->n, s->nroot, dir,
                                m->physics & ZP_PHYS_ROUNDED ? sim_rhs_rounded : zp_sim_rhs,
                                m->physics & ZP_PHYS_ROLLING ? sim_root_rolling : sim_root, s,
@@ -533,10 +533,14 @@ static zp_status fail(zp_sim *s, zp_result *r, double t, const char *why) {
 }
 
 static void add_stats(zp_sim *s, zp_result *r) {
-    long steps = 0, evals = 0;
+    long steps = 0, evals = 0, rejected = 0;
     s->meth->stats(s->mwork, &steps, &evals);
+    if (s->meth->rejections) {
+        s->meth->rejections(s->mwork, &rejected);
+    }
     r->steps += steps;
     r->rhs_evals += evals;
+    r->rejected += rejected;
 }
 
 /* where the integrator stops next: the schedule's next break after t, or t_max */

@@ -100,6 +100,7 @@ typedef struct zp_result {
     double env_longest[8]; /* s, per [limits] g_envelope level: the longest time felt g (of
                               the judged links) stayed above it at once (o.peaks) */
     long steps, rhs_evals;
+    long rejected; /* steps the integrator's error test rejected (each cost a step's rhs_evals) */
     double wall_s;
     char message[256]; /* why a run failed (status ZP_ERR_NUMERIC) */
 } zp_result;

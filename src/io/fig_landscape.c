@@ -41,9 +41,12 @@ void zp_fig_landscape_1d(FILE *f, const char *scene, const zp_fig_axis *r) {
             "set origin 0, 0.25\nset size 1, 0.7\nset bmargin 0\nset format x ''\n"
             "set ylabel 'time (s)'\n"
             "set key inside right top opaque box lc rgb '#cccccc'\n"
-            "plot 'landscape.csv' using 'force':(strcol('outcome') eq 'finished' ? "
+            "plot 'landscape.csv' using 'force':(column('kept') == 1 ? "
             "column('time') : NaN) with linespoints pt 7 ps 0.6 lw 2 lc rgb '#2ca02c' "
-            "title 'finished: finish time', \\\n"
+            "title 'survivable: finish time', \\\n"
+            "     '' using 'force':(strcol('outcome') eq 'finished' && column('kept') == 0 ? "
+            "column('time') : NaN) with points pt 7 ps 0.6 lc rgb '#ff7f0e' "
+            "title 'finished, margin or a limit broken', \\\n"
             "     '' using 'force':(strcol('outcome') eq 'died' ? column('time') : NaN) "
             "with points pt 2 ps 0.8 lw 1.5 lc rgb '#d62728' title 'died: time of death'\n"
             "# bottom: the outcome of each push as a strip\n"
@@ -52,8 +55,10 @@ void zp_fig_landscape_1d(FILE *f, const char *scene, const zp_fig_axis *r) {
             "set ylabel 'outcome'\nset yrange [0:1]\nunset ytics\nunset grid\n"
             "set style fill solid 1 noborder\n"
             "set key outside below horizontal\n"
-            "plot 'landscape.csv' using 'force':(strcol('outcome') eq 'finished' ? 1 : NaN):"
-            "(%g) with boxes lc rgb '#2ca02c' title 'finished', \\\n"
+            "plot 'landscape.csv' using 'force':(column('kept') == 1 ? 1 : NaN):"
+            "(%g) with boxes lc rgb '#2ca02c' title 'survivable', \\\n"
+            "     '' using 'force':(strcol('outcome') eq 'finished' && column('kept') == 0 ? 1 "
+            ": NaN):(%g) with boxes lc rgb '#ff7f0e' title 'finished, broken', \\\n"
             "     '' using 'force':(strcol('outcome') eq 'died' ? 1 : NaN):(%g) with boxes "
             "lc rgb '#d62728' title 'died', \\\n"
             "     '' using 'force':(strcol('outcome') eq 'stalled' ? 1 : NaN):(%g) with boxes "
@@ -62,7 +67,7 @@ void zp_fig_landscape_1d(FILE *f, const char *scene, const zp_fig_axis *r) {
             "lc rgb 'black' title 'integrator failed'\n"
             "unset multiplot\n",
             gp_safe(scene, name, sizeof name), r->a - step / 2, r->b + step / 2, 1.05 * step,
-            1.05 * step, 1.05 * step, 1.05 * step);
+            1.05 * step, 1.05 * step, 1.05 * step, 1.05 * step);
 }
 
 void zp_fig_landscape_2d(FILE *f, const char *scene, int nsec, int si, int sj,
@@ -113,7 +118,6 @@ void zp_fig_landscape_2d(FILE *f, const char *scene, int nsec, int si, int sj,
             "     $base using 1:2:3 with labels %s offset %g, %g tc rgb 'black' boxed "
             "font ',10' notitle\n",
             si + 1, sj + 1, si + 1, sj + 1, 0.51 * dx, 0.51 * dy, si + 1, sj + 1, 0.51 * dx,
-            0.51 * dy, si + 1, sj + 1, 0.51 * dx, 0.51 * dy, si + 1, sj + 1, 0.51 * dx,
-            0.51 * dy, right ? "right" : "left",
-            right ? -1.5 : 1.5, upper ? -1.2 : 1.2);
+            0.51 * dy, si + 1, sj + 1, 0.51 * dx, 0.51 * dy, si + 1, sj + 1, 0.51 * dx, 0.51 * dy,
+            right ? "right" : "left", right ? -1.5 : 1.5, upper ? -1.2 : 1.2);
 }

@@ -12,6 +12,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -54,16 +55,10 @@ static pid_t start(zp_tx *t, const zp_gnuplot_job *j, int g) {
     }
     argv[argc] = NULL;
     snprintf(log, sizeof log, ".log.%s", j->script[g]);
-    zp_tx_block_signals(1);
+    zp_tx_lock();
     pid_t pid = fork();
     if (pid == 0) {
-        struct sigaction dfl = {.sa_handler = SIG_DFL};
-        sigemptyset(&dfl.sa_mask);
-        const int sigs[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
-        for (int i = 0; i < 4; i++) {
-            sigaction(sigs[i], &dfl, NULL);
-        }
-        zp_tx_block_signals(0);
+        zp_tx_child_signals();
         setpgid(0, 0);
         int fd = fchdir(zp_tx_workdir(t)) ? -1
                                           : openat(zp_tx_workdir(t), log,
@@ -84,7 +79,7 @@ static pid_t start(zp_tx *t, const zp_gnuplot_job *j, int g) {
         pid = -1;
         errno = EAGAIN;
     }
-    zp_tx_block_signals(0);
+    zp_tx_unlock();
     return pid;
 }
 
@@ -115,6 +110,104 @@ static const char *failed_script(const zp_tx *t, const zp_gnuplot_job *j, int g,
         *p = *p == '\n' ? ' ' : *p;
     }
     return name;
+}
+
+/* the n bytes of fd at off (from the end when off < 0) into buf; 0 when all were read */
+static int read_at(int fd, off_t size, off_t off, void *buf, size_t n) {
+    off_t at = off < 0 ? size + off : off;
+    return at < 0 || at + (off_t)n > size || pread(fd, buf, n, at) != (ssize_t)n ? -1 : 0;
+}
+
+/* 1 when the boxes of an MP4 file (size, type; size 1: a 64-bit size follows; 0: to the end)
+   add up to the file's length exactly, the first being ftyp */
+static int mp4_whole(int fd, off_t size) {
+    off_t off = 0;
+    while (off < size) {
+        unsigned char h[16];
+        if (read_at(fd, size, off, h, 8) || (off == 0 && memcmp(h + 4, "ftyp", 4))) {
+            return 0;
+        }
+        unsigned long long box = (unsigned long long)h[0] << 24 | (unsigned long long)h[1] << 16 |
+                                 (unsigned long long)h[2] << 8 | h[3];
+        if (box == 1) {
+            if (read_at(fd, size, off + 8, h + 8, 8)) {
+                return 0;
+            }
+            box = 0;
+            for (int i = 8; i < 16; i++) {
+                box = box << 8 | h[i];
+            }
+        } else if (box == 0) {
+            box = (unsigned long long)(size - off);
+        }
+        if (box < 8 || box > (unsigned long long)(size - off)) {
+            return 0;
+        }
+        off += (off_t)box;
+    }
+    return off == size && size > 0;
+}
+
+int zp_gnuplot_whole(int dirfd, const char *name) {
+    int fd = openat(dirfd, name, O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+    struct stat st;
+    if (fd < 0) {
+        return 0;
+    }
+    int ok = fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0;
+    const char *ext = strrchr(name, '.');
+    ext = ext ? ext + 1 : "";
+    unsigned char head[8], tail[64];
+    size_t ntail = st.st_size < (off_t)sizeof tail ? (size_t)st.st_size : sizeof tail;
+    if (ok && !strcmp(ext, "png")) {
+        static const unsigned char sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+        static const unsigned char iend[12] = {0,   0,   0,    0,    'I',  'E',
+                                               'N', 'D', 0xae, 0x42, 0x60, 0x82};
+        ok = !read_at(fd, st.st_size, 0, head, 8) && !memcmp(head, sig, 8) &&
+             !read_at(fd, st.st_size, -12, tail, 12) && !memcmp(tail, iend, 12);
+    } else if (ok && !strcmp(ext, "gif")) {
+        ok = !read_at(fd, st.st_size, 0, head, 6) &&
+             (!memcmp(head, "GIF87a", 6) || !memcmp(head, "GIF89a", 6)) &&
+             !read_at(fd, st.st_size, -1, tail, 1) && tail[0] == 0x3b;
+    } else if (ok && !strcmp(ext, "svg")) {
+        ok = !read_at(fd, st.st_size, -(off_t)ntail, tail, ntail);
+        while (ok && ntail > 0 && strchr(" \t\r\n", tail[ntail - 1])) {
+            ntail--;
+        }
+        ok = ok && ntail >= 6 && !memcmp(tail + ntail - 6, "</svg>", 6);
+    } else if (ok && !strcmp(ext, "mp4")) {
+        ok = mp4_whole(fd, st.st_size);
+    }
+    close(fd);
+    return ok;
+}
+
+/* the first image that script (in the private folder) names in `set output '...'` and that
+   is missing or not whole, into bad; 0 when every one is whole */
+static int check_images(const zp_tx *t, const char *script, char *bad, size_t badlen) {
+    int fd = openat(zp_tx_workdir(t), script, O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+    FILE *f = fd >= 0 ? fdopen(fd, "r") : NULL;
+    if (!f) {
+        if (fd >= 0) {
+            close(fd);
+        }
+        snprintf(bad, badlen, "%s (its script cannot be read back)", script);
+        return -1;
+    }
+    static const char key[] = "set output '";
+    char line[1024];
+    int failed = 0;
+    while (!failed && fgets(line, sizeof line, f)) {
+        const char *at = strstr(line, key);
+        const char *end = at ? strchr(at + sizeof key - 1, '\'') : NULL;
+        if (!end) {
+            continue;
+        }
+        snprintf(bad, badlen, "%.*s", (int)(end - at - (sizeof key - 1)), at + sizeof key - 1);
+        failed = !zp_gnuplot_whole(zp_tx_workdir(t), bad);
+    }
+    fclose(f);
+    return failed ? -1 : 0;
 }
 
 /* one finished child: its status, retried through interruptions; -1 when none is left */
@@ -178,6 +271,15 @@ zp_status zp_gnuplot_wait(zp_tx *t, zp_gnuplot_job *j, char *err, size_t errlen)
                 snprintf(err, errlen, "gnuplot %s failed: %s", name, *log ? log : "no message");
                 failed = 1;
             }
+        }
+    }
+    /* gnuplot ends with 0 when the disk fills under an image: each is checked whole */
+    for (int i = 0; !failed && i < j->n; i++) {
+        char image[300];
+        if (check_images(t, j->script[i], image, sizeof image)) {
+            snprintf(err, errlen, "gnuplot %s: %s was not written whole (is the disk full?)",
+                     j->script[i], image);
+            failed = 1;
         }
     }
     return failed ? ZP_ERR_IO : ZP_OK;

@@ -35,9 +35,16 @@ int zp_gnuplot_have(const char *prog);
    err; the caller then aborts the transaction. */
 zp_status zp_gnuplot_start(zp_tx *t, const char *const *scripts, int n, int nproc,
                            zp_gnuplot_job *j, char *err, size_t errlen);
-/* Waits for j's processes. A failing script: ZP_ERR_IO with its name and its part of the log
-   (gnuplot's own message) in err; the caller then aborts the transaction. */
+/* Waits for j's processes, then checks that every image a script names (`set output
+   'NAME'`) is whole (zp_gnuplot_whole): gnuplot ends with 0 when the disk fills under one.
+   A failing script or an image not whole: ZP_ERR_IO with the script's name and its part of
+   the log (gnuplot's own message), or the image's name, in err; the caller then aborts the
+   transaction. */
 zp_status zp_gnuplot_wait(zp_tx *t, zp_gnuplot_job *j, char *err, size_t errlen);
+/* 1 when the file name in the folder dirfd is a whole image by its extension: a PNG ending
+   in its IEND chunk, a GIF in its trailer, an SVG in its closing tag, an MP4 whose boxes
+   fill it exactly; another extension: not empty. 0 when missing, cut short or not a file. */
+int zp_gnuplot_whole(int dirfd, const char *name);
 /* Both: *missing = 1 when gnuplot is not on PATH. */
 zp_status zp_gnuplot_run(zp_tx *t, const char *const *scripts, int n, int *missing, char *err,
                          size_t errlen);

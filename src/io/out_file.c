@@ -1,10 +1,11 @@
 /* The write-aside transaction (out_file.h): folders opened one name at a time, files made
    exclusively in a private folder, moved as a set under flock, and a cleanup that never
-   follows a link and is safe to run from a signal handler. */
+   follows a link, run on a signal by the one thread that takes the signals. */
 #include "out_file.h"
 
 #include <errno.h>
 #include <fcntl.h>
+#include <pthread.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,10 +19,12 @@
 
 static const int handled[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
 #define NHANDLED ((int)(sizeof handled / sizeof handled[0]))
-static struct sigaction saved[NHANDLED];
-static zp_tx *volatile active; /* the transaction a signal cleans up */
+static zp_tx *active; /* the transaction a signal cleans up; under lock */
+/* held by every step that moves or creates files of a transaction, and by the signal thread
+   while it cleans up: the cleanup never runs in the middle of a commit or a checkpoint */
+static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
 
-/* one entry as getdents64 returns it: readdir allocates, so a signal handler cannot use it */
+/* one entry as getdents64 returns it: readdir allocates, and the cleanup must not */
 struct dirent64_raw {
     uint64_t ino;
     int64_t off;
@@ -34,7 +37,7 @@ static int dots(const char *n) {
     return n[0] == '.' && (!n[1] || (n[1] == '.' && !n[2]));
 }
 
-/* unlinks every entry of the folder fd (async-signal-safe; never follows a link) */
+/* unlinks every entry of the folder fd (allocates nothing; never follows a link) */
 static void empty_dir(int fd) {
     _Alignas(8) char buf[4096];
     for (int pass = 0; pass < 64; pass++) {
@@ -66,7 +69,8 @@ static void drop_checkpoint(zp_tx *t) {
 }
 
 /* everything but the open FILEs: helpers killed, private folder removed, descriptors closed;
-   with undo, also the checkpoint and the empty folders this run created. Async-signal-safe. */
+   with undo, also the checkpoint and the empty folders this run created. Allocates nothing
+   (readdir would), so it may run while another thread is stopped anywhere. */
 static void cleanup(zp_tx *t, int undo) {
     for (int i = 0; i < ZP_TX_MAX_CHILD; i++) {
         pid_t pid = t->child[i];
@@ -99,53 +103,89 @@ static void cleanup(zp_tx *t, int undo) {
     t->ndir = 0;
 }
 
-static void on_signal(int sig) {
-    zp_tx *t = active;
-    if (t && sig == SIGINT && t->soft_stop && !*t->soft_stop) {
-        *t->soft_stop = 1;
-        return;
+/* Design note: the handled signals are blocked in every thread and taken by one thread in
+   sigwait. A handler runs on whichever thread does not block the signal, and OpenMP's and
+   OpenMPI's threads do not: it then cleaned up beside a commit that blocked the signal only
+   in its own thread, leaving a mix of two runs. A thread that waits for the signals can take
+   the lock the commit holds, so the cleanup comes before or after the moves, never amid
+   them; blocking in the handler thread alone was rejected for that reason. */
+static void *signal_loop(void *arg) {
+    const sigset_t *set = arg;
+    for (;;) {
+        int sig;
+        if (sigwait(set, &sig)) {
+            continue;
+        }
+        pthread_mutex_lock(&lock);
+        zp_tx *t = active;
+        if (t && sig == SIGINT && t->soft_stop && !*t->soft_stop) {
+            *t->soft_stop = 1;
+            pthread_mutex_unlock(&lock);
+            continue;
+        }
+        if (t) {
+            active = NULL;
+            cleanup(t, 1);
+            static const char msg[] =
+                "zipopt: stopped by a signal; nothing of this run was written\n";
+            ssize_t ignored = write(STDERR_FILENO, msg, sizeof msg - 1);
+            (void)ignored;
+        }
+        /* the lock stays held: no thread moves a file before the process ends of the signal */
+        struct sigaction dfl = {.sa_handler = SIG_DFL};
+        sigemptyset(&dfl.sa_mask);
+        sigaction(sig, &dfl, NULL);
+        sigset_t one;
+        sigemptyset(&one);
+        sigaddset(&one, sig);
+        pthread_sigmask(SIG_UNBLOCK, &one, NULL);
+        raise(sig);
     }
-    if (t) {
-        active = NULL;
-        cleanup(t, 1);
-        static const char msg[] = "zipopt: stopped by a signal; nothing of this run was written\n";
-        ssize_t ignored = write(STDERR_FILENO, msg, sizeof msg - 1);
-        (void)ignored;
-    }
-    struct sigaction dfl = {.sa_handler = SIG_DFL};
-    sigemptyset(&dfl.sa_mask);
-    sigaction(sig, &dfl, NULL);
-    raise(sig); /* delivered when the handler returns: the process ends of the signal */
+    return NULL;
 }
 
-void zp_tx_block_signals(int block) {
-    sigset_t set;
+static void start_signal_thread(void) {
+    static sigset_t set;
     sigemptyset(&set);
     for (int i = 0; i < NHANDLED; i++) {
         sigaddset(&set, handled[i]);
     }
-    sigprocmask(block ? SIG_BLOCK : SIG_UNBLOCK, &set, NULL);
-}
-
-static void arm(zp_tx *t) {
-    struct sigaction sa = {.sa_handler = on_signal, .sa_flags = SA_RESTART};
-    sigemptyset(&sa.sa_mask);
-    for (int i = 0; i < NHANDLED; i++) {
-        sigaddset(&sa.sa_mask, handled[i]);
-    }
-    active = t;
-    for (int i = 0; i < NHANDLED; i++) {
-        sigaction(handled[i], &sa, &saved[i]);
-    }
-}
-
-static void disarm(void) {
-    if (active) {
-        active = NULL;
-        for (int i = 0; i < NHANDLED; i++) {
-            sigaction(handled[i], &saved[i], NULL);
+    pthread_sigmask(SIG_BLOCK, &set, NULL);
+    pthread_attr_t attr;
+    pthread_t th;
+    if (pthread_attr_init(&attr) == 0) {
+        pthread_attr_setdetachstate(&attr, PTHREAD_CREATE_DETACHED);
+        if (pthread_create(&th, &attr, signal_loop, &set)) {
+            /* no thread: the signals keep their default action (the run ends, uncleaned) */
+            pthread_sigmask(SIG_UNBLOCK, &set, NULL);
         }
+        pthread_attr_destroy(&attr);
     }
+}
+
+void zp_tx_signals_start(void) {
+    static pthread_once_t once = PTHREAD_ONCE_INIT;
+    pthread_once(&once, start_signal_thread);
+}
+
+void zp_tx_lock(void) {
+    pthread_mutex_lock(&lock);
+}
+
+void zp_tx_unlock(void) {
+    pthread_mutex_unlock(&lock);
+}
+
+void zp_tx_child_signals(void) {
+    sigset_t set;
+    sigemptyset(&set);
+    struct sigaction dfl = {.sa_handler = SIG_DFL};
+    sigemptyset(&dfl.sa_mask);
+    for (int i = 0; i < NHANDLED; i++) {
+        sigaddset(&set, handled[i]);
+        sigaction(handled[i], &dfl, NULL);
+    }
+    sigprocmask(SIG_UNBLOCK, &set, NULL);
 }
 
 /* opens path one folder at a time from cur (owned), creating what is missing (a failed run
@@ -220,8 +260,9 @@ zp_status zp_tx_begin(zp_tx *t, const char *base, const char *sub, char *err, si
                  sizeof t->dir - 1);
         return ZP_ERR_IO;
     }
-    zp_tx_block_signals(1);
-    arm(t);
+    zp_tx_signals_start();
+    zp_tx_lock();
+    active = t;
     int fd = open(base[0] == '/' ? "/" : ".", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (fd < 0) {
         snprintf(err, errlen, "cannot open the current folder: %s", strerror(errno));
@@ -234,9 +275,9 @@ zp_status zp_tx_begin(zp_tx *t, const char *base, const char *sub, char *err, si
     int bad = fd < 0 || make_private(t, err, errlen);
     if (bad) {
         cleanup(t, 1);
-        disarm();
+        active = NULL;
     }
-    zp_tx_block_signals(0);
+    zp_tx_unlock();
     return bad ? ZP_ERR_IO : ZP_OK;
 }
 
@@ -256,7 +297,9 @@ FILE *zp_tx_open(zp_tx *t, const char *name, char *err, size_t errlen) {
         snprintf(err, errlen, "cannot write %s in %s: too many files or a bad name", name, t->dir);
         return NULL;
     }
+    zp_tx_lock();
     int fd = openat(t->tmpfd, name, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+    zp_tx_unlock();
     FILE *f = NULL;
     if (fd >= 0 && test_full()) {
         close(fd);
@@ -314,6 +357,7 @@ int zp_tx_checkpoint(zp_tx *t, const char *name, void (*write)(FILE *f, void *us
                      char *err, size_t errlen) {
     char aside[80];
     snprintf(aside, sizeof aside, ".ck.%s", name);
+    zp_tx_lock();
     int fd = openat(t->tmpfd, aside, O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0666);
     FILE *f = fd >= 0 ? fdopen(fd, "w") : NULL;
     struct stat st;
@@ -325,7 +369,6 @@ int zp_tx_checkpoint(zp_tx *t, const char *name, void (*write)(FILE *f, void *us
     } else if (fd >= 0) {
         close(fd);
     }
-    zp_tx_block_signals(1);
     flock(t->dirfd, LOCK_EX);
     bad = bad || renameat(t->tmpfd, aside, t->dirfd, name);
     if (!bad) {
@@ -334,11 +377,11 @@ int zp_tx_checkpoint(zp_tx *t, const char *name, void (*write)(FILE *f, void *us
         t->ck_ino = st.st_ino;
     }
     flock(t->dirfd, LOCK_UN);
-    zp_tx_block_signals(0);
     if (bad) {
         snprintf(err, errlen, "cannot write %s in %s: %s", name, t->dir, strerror(errno));
         unlinkat(t->tmpfd, aside, 0);
     }
+    zp_tx_unlock();
     return bad ? -1 : 0;
 }
 
@@ -441,14 +484,15 @@ zp_status zp_tx_commit(zp_tx *t, char *err, size_t errlen) {
         return ZP_ERR_IO;
     }
     char(*names)[256] = NULL;
+    zp_tx_lock();
     int n = list_files(t, &names);
     if (n < 0) {
         snprintf(err, errlen, "cannot read the private folder in %s", t->dir);
         free(names);
+        zp_tx_unlock();
         zp_tx_abort(t);
         return ZP_ERR_IO;
     }
-    zp_tx_block_signals(1);
     flock(t->dirfd, LOCK_EX);
     int bad = move_all(t, names, n, err, errlen);
     if (!bad) {
@@ -463,8 +507,8 @@ zp_status zp_tx_commit(zp_tx *t, char *err, size_t errlen) {
     free(names);
     flock(t->dirfd, LOCK_UN);
     cleanup(t, bad);
-    disarm();
-    zp_tx_block_signals(0);
+    active = NULL;
+    zp_tx_unlock();
     return bad ? ZP_ERR_IO : ZP_OK;
 }
 
@@ -473,13 +517,13 @@ void zp_tx_abort(zp_tx *t) {
         fclose(t->f[i]);
     }
     t->nopen = 0;
-    zp_tx_block_signals(1);
+    zp_tx_lock();
     if (t->dirfd >= 0) {
         flock(t->dirfd, LOCK_EX); /* the checkpoint is compared and removed as one step */
     }
     cleanup(t, 1);
     if (active == t) {
-        disarm();
+        active = NULL;
     }
-    zp_tx_block_signals(0);
+    zp_tx_unlock();
 }

@@ -32,10 +32,16 @@ typedef struct zp_tx {
     char written[4096]; /* after a commit: the names moved into place, comma-separated */
 } zp_tx;
 
+/* Blocks SIGINT, SIGTERM, SIGHUP and SIGQUIT in the calling thread (so in every thread it
+   or its threads start later) and starts the one thread that takes them: with a transaction
+   begun, it cleans up under the transaction lock, then the process dies of the signal. Call
+   it first in main, before any thread exists (zp_tx_begin calls it too; threads started
+   before then keep the default actions). Once per process; later calls do nothing. */
+void zp_tx_signals_start(void);
 /* Opens (creating it like mkdir -p) base, following links as the user named it, then the
    plain folder names of sub ("a/b", may be NULL) below it, never following a link there;
-   makes the private folder and arms the signal handler (SIGINT, SIGTERM, SIGHUP, SIGQUIT:
-   clean up, then die of the signal). ZP_ERR_IO with why in err, nothing left behind. */
+   makes the private folder and hands the transaction to the signal thread (see
+   zp_tx_signals_start). ZP_ERR_IO with why in err, nothing left behind. */
 zp_status zp_tx_begin(zp_tx *t, const char *base, const char *sub, char *err, size_t errlen);
 /* With stop set, the first SIGINT only sets *stop (the command then finishes and commits);
    the next one ends the run like SIGTERM. */
@@ -51,8 +57,12 @@ int zp_tx_workdir(const zp_tx *t);
 /* Registers a running helper process (killed if the run is ended by a signal); 0 when full. */
 int zp_tx_add_child(zp_tx *t, pid_t pid);
 void zp_tx_drop_child(zp_tx *t, pid_t pid);
-/* Blocks the signals the transaction handles (block = 1) or lets them in again (0). */
-void zp_tx_block_signals(int block);
+/* Holds off the signal thread's cleanup (a process-wide lock, not recursive) while a step
+   must finish whole, such as starting a helper and registering it; any thread may hold it. */
+void zp_tx_lock(void);
+void zp_tx_unlock(void);
+/* In a forked child before exec: the handled signals unblocked, at their default actions. */
+void zp_tx_child_signals(void);
 /* Writes a file straight into the output folder (made aside, renamed under the lock), for a
    checkpoint kept while the run goes on; removed by the commit or the abort when it is still
    the one this run wrote. 0, or -1 with why. */

@@ -176,6 +176,7 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
     fputs("  \"samples_not_reached\": ", f);
     num_list(f, meta->unreached, meta->nunreached, 1.0);
     fputs(",\n", f);
-    fprintf(f, "  \"stats\": {\"steps\": %ld, \"rhs_evals\": %ld, ", r->steps, r->rhs_evals);
+    fprintf(f, "  \"stats\": {\"steps\": %ld, \"rejected_steps\": %ld, \"rhs_evals\": %ld, ",
+            r->steps, r->rejected, r->rhs_evals);
     key_num(f, "wall_s", r->wall_s, "}\n}\n");
 }

@@ -6,8 +6,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <fcntl.h>
-#include <sys/stat.h>
+#include <unistd.h>
 
 #include "gnuplot.h"
 #include "plot_parts.h"
@@ -18,7 +17,7 @@
 #define COURSE_W 1400 /* px, width of course.png */
 
 const char *const zp_plot_link_color[ZP_MAX_LINKS] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728",
-                                                     "#9467bd", "#8c564b", "#e377c2", "#17becf"};
+                                                      "#9467bd", "#8c564b", "#e377c2", "#17becf"};
 
 void zp_plot_opts_default(zp_plot_opts *o) {
     memset(o, 0, sizeof *o);
@@ -107,7 +106,7 @@ void zp_plot_section_text(const zp_plot_opts *o, int sec, char *buf, size_t len)
 }
 
 void zp_plot_head_png(FILE *f, const zp_model *m, const char *name, const char *what, int w, int h,
-                     int several) {
+                      int several) {
     fprintf(f,
             "# %s%s: %s. Written by zipopt; run `gnuplot %s.gp` here to redraw.\n"
             "set terminal pngcairo size %d,%d enhanced font 'DejaVu Sans,11' linewidth 1.3\n"
@@ -229,11 +228,14 @@ static void script_course(FILE *f, const zp_model *m, const zp_result *r, const 
 }
 
 static void script_energy(FILE *f, const zp_model *m, const zp_result *r, const kinks *kk) {
-    zp_plot_head_png(f, m, "energy", "energy terms and cumulative work against time", FIG_W, 560, 0);
-    fputs("set title 'Energy: kinetic + potential = E(0) + drive work − damper and kink losses'\n"
-          "set xlabel 't (s)'\nset ylabel 'energy (J)'\n"
-          "set key outside right top box lc rgb '#cccccc'\n",
-          f);
+    zp_plot_head_png(f, m, "energy", "energy terms and cumulative work against time", FIG_W, 560,
+                     0);
+    /* the title names every term of the balance the figure draws */
+    fprintf(f,
+            "set title 'Energy: kinetic + potential = E(0) + drive work − damper%s and kink "
+            "losses'\nset xlabel 't (s)'\nset ylabel 'energy (J)'\n"
+            "set key outside right top box lc rgb '#cccccc'\n",
+            m->physics ? ", drag, friction" : "");
     kink_lines(f, kk);
     death_line(f, r);
     fputs("plot 'plot_run.dat' using 't':'kinetic' with lines lw 2 lc rgb '#1f77b4' "
@@ -402,9 +404,10 @@ zp_status zp_plot_finish(zp_tx *t, zp_gnuplot_job *j, zp_plot_info *info, char *
                          size_t errlen) {
     zp_status st = zp_gnuplot_wait(t, j, err, errlen);
     if (info->mp4) { /* ffmpeg's own failure does not stop the other figures */
-        struct stat sb;
-        info->mp4 = !info->no_gnuplot &&
-                    fstatat(zp_tx_workdir(t), "run.mp4", &sb, AT_SYMLINK_NOFOLLOW) == 0;
+        info->mp4 = !info->no_gnuplot && zp_gnuplot_whole(zp_tx_workdir(t), "run.mp4");
+        if (!info->mp4) { /* cut short or half made: not committed */
+            unlinkat(zp_tx_workdir(t), "run.mp4", 0);
+        }
     }
     return st;
 }

@@ -233,6 +233,43 @@ static void header(parse_ctx *c, char *str, int num) {
     snprintf(str, (size_t)num, "[%s]", name);
 }
 
+/* Design note: inih's line buffer (200 bytes, fixed in the system's library) is too short for
+   the forces of many sections, which the search writes on one line (16 sections and more).
+   Continuation lines were rejected: inih hands each to the handler as a repeat of the key,
+   indistinguishable from a duplicate. A long `forces =` line is kept here whole and inih is
+   given a stand-in, which the handler swaps back. */
+#define LONG_FORCES_MARK "<long line>"
+
+/* 1 when the raw line s (len bytes) is a `forces = ..` line short enough to keep whole: its
+   value (comments and blanks cut) is put aside for on_key */
+static int long_forces(parse_ctx *c, const char *s, size_t len) {
+    if (len >= sizeof c->forces_long) {
+        return 0;
+    }
+    char *line = c->forces_long;
+    memcpy(line, s, len);
+    line[len] = '\0';
+    for (size_t i = 0; line[i]; i++) {
+        if ((line[i] == ';' || line[i] == '#') && (i == 0 || isspace((unsigned char)line[i - 1]))) {
+            line[i] = '\0';
+            break;
+        }
+    }
+    zp_text_trim(line);
+    size_t eq = strcspn(line, "=");
+    char name[16];
+    snprintf(name, sizeof name, "%.*s", (int)(eq < 15 ? eq : 15), line);
+    zp_text_trim(name);
+    if (!line[eq] || eq >= 15 || strcmp(name, "forces")) {
+        line[0] = '\0';
+        return 0;
+    }
+    memmove(line, line + eq + 1, strlen(line + eq + 1) + 1);
+    zp_text_trim(line);
+    c->forces_long_line = c->line;
+    return 1;
+}
+
 /* hands inih one line at a time, left-trimmed (so no line reads as a continuation of the
    previous value), without ` ;...` or ` #...` comments, and blank if malformed (reported) */
 static char *read_line(char *str, int num, void *stream) {
@@ -243,9 +280,15 @@ static char *read_line(char *str, int num, void *stream) {
         return NULL;
     }
     str[0] = '\0';
+    if (len + 2 > (size_t)num && long_forces(c, s, len)) {
+        snprintf(str, (size_t)num, "forces = %s", LONG_FORCES_MARK);
+        return str;
+    }
     if (len + 2 > (size_t)num) {
-        zp_scene_bad(c, c->line, NULL, NULL, "line is %zu characters long; expected at most %d",
-                     len, num - 2);
+        zp_scene_bad(c, c->line, NULL, NULL,
+                     "line is %zu characters long; expected at most %d (a [drive] forces line: "
+                     "at most %d)",
+                     len, num - 2, ZP_FORCES_TEXT_MAX - 1);
         return str;
     }
     memcpy(str, s, len);
@@ -309,7 +352,12 @@ static int on_key(void *user, const char *section, const char *name, const char 
         return 1;
     }
     c->key_line[k] = c->line;
-    snprintf(c->val[k], LINE_CAP, "%s", value);
+    if (k == K_FORCES) {
+        int kept = c->forces_long_line == c->line && !strcmp(value, LONG_FORCES_MARK);
+        snprintf(c->forces_val, sizeof c->forces_val, "%s", kept ? c->forces_long : value);
+    } else {
+        snprintf(c->val[k], LINE_CAP, "%s", value);
+    }
     return 1;
 }
 void zp_scene_parse_text(parse_ctx *c, const char *text, size_t len) {

@@ -82,7 +82,9 @@ typedef struct zp_scene_key {
 extern const zp_scene_key zp_scene_keys[K_COUNT];
 extern const char *const zp_scene_sec_names[S_COUNT];
 
-#define LINE_CAP INI_MAX_LINE     /* inih's line buffer; a longer line is an error, not split */
+#define LINE_CAP INI_MAX_LINE /* inih's line buffer; a longer line is an error, not split */
+/* a [drive] forces line: every parameter of the largest schedule in 17 digits */
+#define ZP_FORCES_TEXT_MAX (ZP_SCHED_MAX_PARAMS * 26 + 64)
 #define MSG_MAX (2 * ZP_DIAG_MAX) /* enough to pick the first ZP_DIAG_MAX by line */
 
 /* Design note: inih is built here without INI_HANDLER_LINENO, so it cannot say where a key
@@ -93,6 +95,7 @@ typedef struct parse_ctx {
     const char *file; /* borrowed: the name in messages */
     zp_diag *d;
     int schedule;     /* a schedule file: only [drive] forces */
+    int need_name;    /* the scene must name a plain folder (a command writes under it) */
     const char *text; /* borrowed: the whole file */
     size_t len;       /* its length: a NUL before it is an error, not the end */
     size_t pos;
@@ -101,7 +104,10 @@ typedef struct parse_ctx {
     int key_line[K_COUNT]; /* line of each key, 0 if absent */
     int key_bad[K_COUNT];  /* 1 once a value of the key was refused: rules joining keys skip it */
     char val[K_COUNT][LINE_CAP];
-    int nsect; /* `section` lines seen (may exceed ZP_MAX_SECTIONS) */
+    char forces_val[ZP_FORCES_TEXT_MAX];  /* [drive] forces: its line may exceed LINE_CAP */
+    char forces_long[ZP_FORCES_TEXT_MAX]; /* a long forces line's value, before inih sees it */
+    int forces_long_line;                 /* its line, 0 if none */
+    int nsect;                            /* `section` lines seen (may exceed ZP_MAX_SECTIONS) */
     int sect_line[ZP_MAX_SECTIONS];
     char sect_val[ZP_MAX_SECTIONS][LINE_CAP];
     /* messages are held here and handed to the zp_diag in line order at the end, since the

@@ -54,8 +54,7 @@ static void set_defaults(zp_scene *sc, const char *path) {
 /* a scene is a few kilobytes; the cap keeps /dev/zero or a wrong file from eating memory */
 #define SCENE_FILE_MAX (1 << 20)
 
-/* the whole file (caller frees) and its length, or NULL with a message */
-static char *slurp(const char *path, size_t *len, zp_diag *d) {
+char *zp_scene_read_file(const char *path, size_t *len, zp_diag *d) {
     FILE *f = fopen(path, "rb");
     if (!f) {
         zp_diag_add(d, path, 0, NULL, NULL, "cannot open: %s; expected a readable scene file",
@@ -94,9 +93,9 @@ static void read_sections(parse_ctx *c, zp_scene *sc) {
     zp_scene_rules(c, sc);
 }
 
-/* text of len bytes (a NUL inside is reported) */
-static zp_status load_text(const char *text, size_t len, const char *path, zp_scene *sc,
-                           zp_diag *d) {
+/* text of len bytes (a NUL inside is reported); need_name: see zp_scene_load_text */
+static zp_status load_text(const char *text, size_t len, const char *path, int need_name,
+                           zp_scene *sc, zp_diag *d) {
     set_defaults(sc, path);
     parse_ctx *c = calloc(1, sizeof *c);
     if (!c) {
@@ -105,6 +104,7 @@ static zp_status load_text(const char *text, size_t len, const char *path, zp_sc
     }
     c->file = path;
     c->d = d;
+    c->need_name = need_name;
     zp_scene_parse_text(c, text, len);
     read_sections(c, sc);
     for (int k = 0; k < K_COUNT; k++) {
@@ -117,20 +117,29 @@ static zp_status load_text(const char *text, size_t len, const char *path, zp_sc
     return nbad ? ZP_ERR_INPUT : ZP_OK;
 }
 
-zp_status zp_scene_load_string(const char *text, const char *path, zp_scene *sc, zp_diag *d) {
-    return load_text(text, strlen(text), path ? path : "<string>", sc, d);
+zp_status zp_scene_load_text(const char *text, size_t len, const char *path, int need_name,
+                             zp_scene *sc, zp_diag *d) {
+    return load_text(text, len, path, need_name, sc, d);
 }
 
-zp_status zp_scene_load(const char *path, zp_scene *sc, zp_diag *d) {
+zp_status zp_scene_load_string(const char *text, const char *path, zp_scene *sc, zp_diag *d) {
+    return load_text(text, strlen(text), path ? path : "<string>", 1, sc, d);
+}
+
+zp_status zp_scene_load_file(const char *path, int need_name, zp_scene *sc, zp_diag *d) {
     size_t len;
-    char *text = slurp(path, &len, d);
+    char *text = zp_scene_read_file(path, &len, d);
     if (!text) {
         set_defaults(sc, path);
         return ZP_ERR_INPUT;
     }
-    zp_status st = load_text(text, len, path, sc, d);
+    zp_status st = load_text(text, len, path, need_name, sc, d);
     free(text);
     return st;
+}
+
+zp_status zp_scene_load(const char *path, zp_scene *sc, zp_diag *d) {
+    return zp_scene_load_file(path, 1, sc, d);
 }
 
 void zp_scene_seed(zp_scene *sc) {
@@ -160,7 +169,7 @@ void zp_scene_seed(zp_scene *sc) {
 
 zp_status zp_scene_overlay_schedule(const char *path, zp_scene *sc, zp_diag *d) {
     size_t len;
-    char *text = slurp(path, &len, d);
+    char *text = zp_scene_read_file(path, &len, d);
     if (!text) {
         return ZP_ERR_INPUT;
     }

@@ -35,10 +35,12 @@ void zp_scene_read_scene(parse_ctx *c, zp_scene *sc) {
         zp_scene_bad_key(c, K_NAME, "`%s` is not a plain folder name", shown(name));
     } else if (given > 0) {
         strcpy(sc->name, name);
-    } else if (!given && !plain_name(sc->name)) {
+    } else if (!given && !plain_name(sc->name) && c->need_name) {
         zp_scene_bad(c, 0, "scene", "name",
                      "missing, and the file's name `%s` gives no plain folder name; expected %s",
                      shown(c->file), zp_scene_keys[K_NAME].expect);
+    } else if (!given && !plain_name(sc->name)) {
+        sc->name[0] = '\0'; /* no folder is made from it: the scene has no name */
     }
     zp_scene_get_number(c, K_GRAVITY, R_NONNEG, &sc->gravity);
 }
@@ -157,7 +159,7 @@ int zp_scene_read_forces(parse_ctx *c, int nsec, zp_schedule *s) {
         return 0;
     }
     char why[LINE_CAP + 64];
-    int rc = zp_schedule_parse(c->val[K_FORCES], nsec, s, why, sizeof why);
+    int rc = zp_schedule_parse(c->forces_val, nsec, s, why, sizeof why);
     if (rc == -2) {
         c->key_bad[K_FORCES] = 1;
         zp_scene_bad(c, c->key_line[K_FORCES], "drive", zp_scene_keys[K_FORCES].name, "%s", why);

@@ -1,5 +1,6 @@
-/* What zipopt added to a scene: each key the file did not give, with the value it took
-   (CONFIG.md defaults, the file's stem for the name), for `check`. */
+/* What `check` shows of a scene's keys: each key the file did not give, with the value zipopt
+   took (the documented defaults, the file's stem for the name), and the settings of the
+   optional sections ([limits], [robust], [physics]) as text or JSON. */
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -41,6 +42,11 @@ static const struct {
         {K_WIND, offsetof(zp_scene, wind)},
         {K_ROLLING, offsetof(zp_scene, rolling)},
         {K_KINK_RADIUS, offsetof(zp_scene, kink_radius)},
+        {K_MAX_G, offsetof(zp_scene, max_g)},
+        {K_MAX_JOINT_FORCE, offsetof(zp_scene, max_joint_force)},
+        {K_MAX_ARRIVAL_SPEED, offsetof(zp_scene, max_arrival_speed)},
+        {K_MAX_KINK_DV, offsetof(zp_scene, max_kink_dv)},
+        {K_MIN_ARRIVAL_SPEED, offsetof(zp_scene, min_arrival_speed)},
 },
   pairs[] = {
       {K_MASS_RANGE, offsetof(zp_scene, mass_range)},
@@ -100,7 +106,11 @@ static void other_text(const zp_scene *sc, int k, char *out, size_t cap) {
         snprintf(out, cap, "0 for every section");
         break;
     case K_DRAG_AREA:
-        snprintf(out, cap, "none (no drag)");
+        if (sc->ndrag) {
+            list(out, cap, sc->drag_area, sc->ndrag);
+        } else {
+            snprintf(out, cap, "none (no drag)");
+        }
         break;
     case K_G_ENVELOPE:
         if (sc->nenv == 0) {
@@ -125,22 +135,19 @@ static void other_text(const zp_scene *sc, int k, char *out, size_t cap) {
         }
         break;
     }
-    case K_MIN_ARRIVAL_SPEED:
-    case K_MAX_G:
-    case K_MAX_JOINT_FORCE:
-    case K_MAX_ARRIVAL_SPEED:
-    case K_MAX_KINK_DV:
-        snprintf(out, cap, "off");
-        break;
     default:
         snprintf(out, cap, "(required, not given)");
         break;
     }
 }
 
-/* the value key k holds in sc, as scene-file text */
+/* the value key k holds in sc, as scene-file text; a limit not given is off */
 static void value_text(const zp_scene *sc, int k, char *out, size_t cap) {
     const char *base = (const char *)sc;
+    if (zp_scene_keys[k].sec == S_LIMITS && !(sc->given >> k & 1)) {
+        snprintf(out, cap, "off");
+        return;
+    }
     if (sc->accuracy > 0 && (k == K_METHOD || k == K_RTOL || k == K_ATOL)) {
         snprintf(out, cap, "chosen for accuracy = %g s (work-precision table)", sc->accuracy);
         return;
@@ -183,4 +190,71 @@ int zp_scene_print_added(const zp_scene *sc, FILE *f, const char *indent) {
         }
     }
     return n;
+}
+
+/* the keys `check` shows of an optional section: the limits and effects given, and every
+   [robust] key of a robust scene (its defaults decide the search as much as what is given) */
+static int shown(const zp_scene *sc, int s, int k) {
+    if (zp_scene_keys[k].sec != s) {
+        return 0;
+    }
+    return (s == S_ROBUST && sc->robust) || (sc->given >> k & 1);
+}
+
+/* a value as JSON: a number, a list of numbers, or (anything else) a string */
+static void json_value(FILE *f, const char *text) {
+    double v[2 * ZP_MAX_LINKS + 2];
+    char why[64];
+    int n = zp_scene_parse_list(text, v, (int)(sizeof v / sizeof *v), why, sizeof why);
+    if (n == 1 && !strchr(text, ',')) {
+        fprintf(f, "%.17g", v[0]);
+        return;
+    }
+    if (n >= 1) {
+        fputc('[', f);
+        for (int i = 0; i < n; i++) {
+            fprintf(f, "%s%.17g", i ? ", " : "", v[i]);
+        }
+        fputc(']', f);
+        return;
+    }
+    fputc('"', f);
+    for (const char *c = text; *c; c++) {
+        if (*c == '"' || *c == '\\') {
+            fputc('\\', f);
+        }
+        fputc(*c, f);
+    }
+    fputc('"', f);
+}
+
+void zp_scene_print_optional(const zp_scene *sc, FILE *f, int json) {
+    static const int optional[] = {S_LIMITS, S_ROBUST, S_PHYSICS};
+    for (size_t i = 0; i < sizeof optional / sizeof *optional; i++) {
+        int s = optional[i], n = 0;
+        if (json) {
+            fprintf(f, "%s\"%s\": {", i ? ", " : "", zp_scene_sec_names[s]);
+        } else {
+            fprintf(f, "%s:", zp_scene_sec_names[s]);
+        }
+        for (int k = 0; k < K_COUNT; k++) {
+            if (!shown(sc, s, k)) {
+                continue;
+            }
+            char v[256];
+            value_text(sc, k, v, sizeof v);
+            if (json) {
+                fprintf(f, "%s\"%s\": ", n ? ", " : "", zp_scene_keys[k].name);
+                json_value(f, v);
+            } else {
+                fprintf(f, "%s %s = %s", n ? ";" : "", zp_scene_keys[k].name, v);
+            }
+            n++;
+        }
+        if (json) {
+            fputc('}', f);
+        } else {
+            fprintf(f, "%s\n", n ? "" : s == S_ROBUST ? " none (a nominal search)" : " none");
+        }
+    }
 }

@@ -6,6 +6,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "scene_read.h"
 
@@ -53,9 +54,10 @@ int zp_prep_load(const char *cmd, const char *path, const char *text, const zp_o
     st->m = NULL;
     int read_ok = 1;
     if (text) {
-        read_ok = zp_scene_load_string(text, path, sc, d) == ZP_OK;
+        read_ok = zp_scene_load_text(text, strlen(text), path ? path : "<string>",
+                                     !ov->unnamed_ok, sc, d) == ZP_OK;
     } else if (path) {
-        read_ok = zp_scene_load(path, sc, d) == ZP_OK;
+        read_ok = zp_scene_load_file(path, !ov->unnamed_ok, sc, d) == ZP_OK;
     } else {
         zp_scene_seed(sc);
     }

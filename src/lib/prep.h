@@ -13,9 +13,10 @@ typedef struct zp_overrides {
     int has_seed;         /* --seed given: seed replaces the scene's */
     unsigned long seed;   /* --seed, 0 to ULONG_MAX as [optimize] seed */
     long max_evals;       /* --max-evals, <= 0: the scene's */
+    int unnamed_ok;       /* the library: the scene need not name a folder (nothing is written) */
 } zp_overrides;
 
-#define ZP_OVERRIDES_NONE ((zp_overrides){NULL, NULL, 0, 0, 0})
+#define ZP_OVERRIDES_NONE ((zp_overrides){NULL, NULL, 0, 0, 0, 0})
 
 typedef struct zp_setup {
     zp_scene sc;        /* the scene as read: names, lines and settings for messages */

@@ -14,6 +14,7 @@
 
 #include "prep.h"
 #include "robust.h"
+#include "scene_read.h"
 #include "search.h"
 
 /* the stop flag is handed to the search as its sig_atomic_t flag */
@@ -98,7 +99,9 @@ static zipopt_scene *load(const char *path, const char *text, char *err, size_t 
     zp_diag_init(&d);
     pthread_mutex_lock(&turn);
     gsl_set_error_handler_off();
-    int rc = zp_prep_load("library", path, text, &ZP_OVERRIDES_NONE, &s->st, &d);
+    /* nothing is written under the scene's name: a scene without one is fine here */
+    zp_overrides ov = {.unnamed_ok = 1};
+    int rc = zp_prep_load("library", path, text, &ov, &s->st, &d);
     if (rc == 0) {
         s->sim = zp_sim_create(s->st.m, &s->st.sim);
     }
@@ -141,27 +144,37 @@ void zipopt_scene_free(zipopt_scene *s) {
     }
 }
 
+/* Every entry point takes a NULL handle and a NULL output array (zipopt.h): a caller's
+   mistake comes back as -1, NaN or NULL, never as a crash inside the library. */
+
 const char *zipopt_scene_name(const zipopt_scene *s) {
-    return s->st.sc.name;
+    return s ? s->st.sc.name : NULL;
 }
 
 int zipopt_scene_sections(const zipopt_scene *s) {
-    return s->st.m->nsec;
+    return s ? s->st.m->nsec : -1;
 }
 
 int zipopt_scene_links(const zipopt_scene *s) {
-    return s->st.m->nlink;
+    return s ? s->st.m->nlink : -1;
 }
 
 int zipopt_scene_forces(const zipopt_scene *s, double *force, int n) {
+    if (!s) {
+        return -1;
+    }
     const zp_schedule *sh = &s->st.sched;
-    for (int k = 0; k < sh->np && k < n; k++) {
+    for (int k = 0; force && k < sh->np && k < n; k++) {
         force[k] = sh->p[k];
     }
     return sh->np;
 }
 
 int zipopt_scene_set_forces(zipopt_scene *s, const double *force, int n, char *err, size_t errlen) {
+    if (!s || !force) {
+        say(err, errlen, "%s", !s ? "no scene given" : "forces: no array given");
+        return -1;
+    }
     const zp_schedule *sh = &s->st.sched;
     if (n != sh->np) {
         say(err, errlen, "forces: %d values, expected %d (one per section, N)", n, sh->np);
@@ -175,6 +188,31 @@ int zipopt_scene_set_forces(zipopt_scene *s, const double *force, int n, char *e
     }
     s->st.sched = zp_schedule_with(sh, force);
     return 0;
+}
+
+int zipopt_scene_load_schedule(zipopt_scene *s, const char *path, char *err, size_t errlen) {
+    if (!s || !path) {
+        say(err, errlen, "%s", !s ? "no scene given" : "no schedule file given");
+        return -1;
+    }
+    /* read onto a copy, so that a bad file leaves the scene as it was */
+    zp_scene *sc = malloc(sizeof *sc);
+    zp_diag d;
+    zp_diag_init(&d);
+    if (!sc) {
+        say(err, errlen, "out of memory");
+        return -1;
+    }
+    *sc = s->st.sc;
+    int rc = zp_scene_overlay_schedule(path, sc, &d) == ZP_OK ? 0 : -1;
+    if (rc) {
+        diag_text(&d, err, errlen);
+    } else {
+        zp_schedule given = zp_schedule_of_scene(sc);
+        s->st.sched = zp_schedule_with(&s->st.sched, given.p);
+    }
+    free(sc);
+    return rc;
 }
 
 /* the trajectory columns (zipopt.h): names, then one row's values */
@@ -273,6 +311,10 @@ static void run_numbers(const zp_result *r, double *v) {
 }
 
 zipopt_run *zipopt_simulate(zipopt_scene *s, char *err, size_t errlen) {
+    if (!s) {
+        say(err, errlen, "no scene given");
+        return NULL;
+    }
     zipopt_run *u = calloc(1, sizeof *u);
     if (!u) {
         say(err, errlen, "out of memory");
@@ -303,7 +345,7 @@ void zipopt_run_free(zipopt_run *r) {
 }
 
 int zipopt_run_outcome(const zipopt_run *r) {
-    return (int)r->r.outcome;
+    return r ? (int)r->r.outcome : -1;
 }
 
 const char *zipopt_outcome_name(int outcome) {
@@ -311,6 +353,9 @@ const char *zipopt_outcome_name(int outcome) {
 }
 
 const char *zipopt_run_stall(const zipopt_run *r) {
+    if (!r) {
+        return NULL;
+    }
     return r->r.outcome == ZP_OUTCOME_STALLED ? zp_sim_stall_name(r->r.stall) : "";
 }
 
@@ -325,7 +370,7 @@ static double lookup(const char *const *keys, int n, const double *v, const char
 }
 
 double zipopt_run_get(const zipopt_run *r, const char *key) {
-    return lookup(run_keys, NRUN_KEYS, r->num, key);
+    return r ? lookup(run_keys, NRUN_KEYS, r->num, key) : NAN;
 }
 
 const char *zipopt_run_key(int i) {
@@ -333,13 +378,19 @@ const char *zipopt_run_key(int i) {
 }
 
 int zipopt_run_max_angles(const zipopt_run *r, double *angle, int n) {
-    for (int i = 0; i < r->nlink && i < n; i++) {
+    if (!r) {
+        return -1;
+    }
+    for (int i = 0; angle && i < r->nlink && i < n; i++) {
         angle[i] = r->r.max_rel_angle[i];
     }
     return r->nlink;
 }
 
 int zipopt_run_kinks(const zipopt_run *r, double *out, int max) {
+    if (!r) {
+        return -1;
+    }
     if (out && max > 0) {
         int n = r->nkink < max ? r->nkink : max;
         memcpy(out, r->kinks, sizeof *out * (size_t)n * 6);
@@ -348,19 +399,19 @@ int zipopt_run_kinks(const zipopt_run *r, double *out, int max) {
 }
 
 int zipopt_run_rows(const zipopt_run *r) {
-    return r->nrow;
+    return r ? r->nrow : -1;
 }
 
 int zipopt_run_columns(const zipopt_run *r) {
-    return r->ncol;
+    return r ? r->ncol : -1;
 }
 
 const char *zipopt_run_column(const zipopt_run *r, int j) {
-    return j >= 0 && j < r->ncol ? r->col[j] : NULL;
+    return r && j >= 0 && j < r->ncol ? r->col[j] : NULL;
 }
 
 const double *zipopt_run_trajectory(const zipopt_run *r) {
-    return r->traj;
+    return r ? r->traj : NULL;
 }
 
 /* the caller's progress function behind the search's; its nonzero return raises the flag */
@@ -384,8 +435,8 @@ static zp_status search(const zp_setup *st, const zp_search_opts *o, zp_search_r
                         char *err, size_t errlen) {
     zp_robust_problem *pb = calloc(1, sizeof *pb); /* large: kept off the stack */
     zp_sim_opts fast;
-    if (!pb || zp_robust_setup(pb, &st->sc, st->m, st->limit, &st->sched, &st->sim,
-                               &st->search, &fast)) {
+    if (!pb ||
+        zp_robust_setup(pb, &st->sc, st->m, st->limit, &st->sched, &st->sim, &st->search, &fast)) {
         snprintf(err, errlen, "out of memory building the scenarios");
         if (pb) {
             zp_robust_problem_free(pb);
@@ -393,8 +444,8 @@ static zp_status search(const zp_setup *st, const zp_search_opts *o, zp_search_r
         free(pb);
         return ZP_ERR_NOMEM;
     }
-    zp_status rc = zp_robust_solve(pb, &st->sc, &fast, st->sched.lo, st->sched.hi, o,
-                                   res, err, errlen);
+    zp_status rc =
+        zp_robust_solve(pb, &st->sc, &fast, st->sched.lo, st->sched.hi, o, res, err, errlen);
     zp_robust_problem_free(pb);
     free(pb);
     return rc;
@@ -420,6 +471,10 @@ static void search_numbers(const zp_search_result *r, double *v) {
 zipopt_search *zipopt_search_run(zipopt_scene *s, long max_evals, long seed,
                                  zipopt_progress_fn progress, void *user, volatile int *stop,
                                  char *err, size_t errlen) {
+    if (!s) {
+        say(err, errlen, "no scene given");
+        return NULL;
+    }
     zipopt_search *u = calloc(1, sizeof *u);
     if (!u) {
         say(err, errlen, "out of memory");
@@ -460,7 +515,7 @@ void zipopt_search_free(zipopt_search *r) {
 }
 
 double zipopt_search_get(const zipopt_search *r, const char *key) {
-    return lookup(search_keys, NSEARCH_KEYS, r->num, key);
+    return r ? lookup(search_keys, NSEARCH_KEYS, r->num, key) : NAN;
 }
 
 const char *zipopt_search_key(int i) {
@@ -468,7 +523,10 @@ const char *zipopt_search_key(int i) {
 }
 
 int zipopt_search_forces(const zipopt_search *r, double *force, int n) {
-    for (int k = 0; k < r->np && k < n; k++) {
+    if (!r) {
+        return -1;
+    }
+    for (int k = 0; force && k < r->np && k < n; k++) {
         force[k] = r->res.force[k];
     }
     return r->np;

@@ -3,7 +3,7 @@
 #include "jit.h"
 
 #include <dlfcn.h>
-#include <errno.h>
+#include <fcntl.h>
 #include <libgccjit.h>
 #include <limits.h>
 #include <pthread.h>
@@ -88,6 +88,9 @@ static int open_api(char *err, size_t errlen) {
 struct zp_jit {
     gcc_jit_result *result; /* owned: code compiled in memory, or */
     void *dl;               /* owned: the cache file loaded */
+    int fd;                 /* owned: that file, open while it is loaded, -1 if none; dlopen
+                               knows it by its /proc/self/fd name, and glibc returns a loaded
+                               object of the same name, so the number is not reused before */
     int nfn;
     zp_jit_fn fn[]; /* nfn */
 };
@@ -217,43 +220,78 @@ static unsigned long long pool_hash(unsigned long long h, const zp_expr *e, int 
     return h;
 }
 
-/* 1 when path is a real (not linked) file of the given type, owned by this user and writable
-   by nobody else: loading code runs its constructors, so a cache anyone else could plant a file
-   in is not used */
-static int private_to_us(const char *path, mode_t type) {
-    struct stat st;
-    return lstat(path, &st) == 0 && (st.st_mode & S_IFMT) == type && st.st_uid == geteuid() &&
-           (st.st_mode & (S_IWGRP | S_IWOTH)) == 0;
+/* Design note: the cache is used through descriptors only. Checking a path and then using it
+   by name lets whoever can rename a folder above it swap the folder in between (a planted
+   library loaded, or a file elsewhere overwritten), so the folder is opened once, its owner
+   and mode are checked on the descriptor, and every later step (compile target, rename,
+   remove, load) goes through that descriptor: openat/renameat/unlinkat, and /proc/self/fd
+   paths for libgccjit and dlopen, which take only names. */
+
+/* 1 when st is of the given type, owned by this user and writable by nobody else: loading
+   code runs its constructors, so a cache anyone else could plant a file in is not used */
+static int private_to_us(const struct stat *st, mode_t type) {
+    return (st->st_mode & S_IFMT) == type && st->st_uid == geteuid() &&
+           (st->st_mode & (S_IWGRP | S_IWOTH)) == 0;
 }
 
-/* the cache file for this pool in path (empty when there is no cache directory), and the
-   check value in key */
-static void cache_names(const zp_expr *e, int nfn, int nout, const int *roots, char *path,
-                        size_t pathlen, char *key, size_t keylen) {
+/* the folder name in parent (a descriptor), never through a link, created (0700) when
+   missing only when parent is this user's own: no folder is made in another user's tree.
+   Its descriptor (owned), or -1. */
+static int open_folder(int parent, const char *name) {
+    struct stat st;
+    if (fstat(parent, &st) == 0 && st.st_uid == geteuid()) {
+        mkdirat(parent, name, 0700);
+    }
+    return openat(parent, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+}
+
+/* the cache folder, opened and checked: $XDG_CACHE_HOME/zipopt or $HOME/.cache/zipopt (a
+   relative XDG_CACHE_HOME is ignored, as the XDG spec says); its descriptor (owned) or -1
+   when there is none to use */
+static int open_cache_dir(void) {
+    const char *xdg = getenv("XDG_CACHE_HOME"), *home = getenv("HOME");
+    char base[PATH_MAX];
+    if (xdg && xdg[0] == '/') {
+        snprintf(base, sizeof base, "%s", xdg);
+    } else if (home && home[0] == '/') {
+        snprintf(base, sizeof base, "%s/.cache", home);
+    } else {
+        return -1;
+    }
+    /* the base's parent as the user named it (links followed), then names below it alone */
+    size_t len = strlen(base);
+    while (len > 1 && base[len - 1] == '/') {
+        base[--len] = '\0';
+    }
+    char *slash = strrchr(base, '/');
+    if (!slash || !slash[1]) {
+        return -1;
+    }
+    *slash = '\0';
+    int parent = open(base[0] ? base : "/", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    int top = parent < 0 ? -1 : open_folder(parent, slash + 1);
+    int dir = top < 0 ? -1 : open_folder(top, "zipopt");
+    struct stat st;
+    if (dir >= 0 && (fstat(dir, &st) || !private_to_us(&st, S_IFDIR))) {
+        close(dir);
+        dir = -1;
+    }
+    if (top >= 0) {
+        close(top);
+    }
+    if (parent >= 0) {
+        close(parent);
+    }
+    return dir;
+}
+
+/* the cache file's name for this pool, and the check value in key */
+static void cache_names(const zp_expr *e, int nfn, int nout, const int *roots, char *name,
+                        size_t namelen, char *key, size_t keylen) {
     unsigned long long h1 = pool_hash(14695981039346656037ULL, e, nfn, nout, roots);
     unsigned long long h2 = pool_hash(h1 ^ 0x9e3779b97f4a7c15ULL, e, nfn, nout, roots);
     snprintf(key, keylen, "%016llx%016llx", h1, h2);
-    const char *xdg = getenv("XDG_CACHE_HOME"), *home = getenv("HOME");
-    char dir[PATH_MAX - 64]; /* room for the file name */
-    path[0] = '\0';
-    if (xdg && *xdg) {
-        snprintf(dir, sizeof dir, "%s/zipopt", xdg);
-    } else if (home && *home) {
-        snprintf(dir, sizeof dir, "%s/.cache/zipopt", home);
-    } else {
-        return;
-    }
-    /* the parent may be missing too (a fresh $HOME): make both levels */
-    char parent[sizeof dir];
-    snprintf(parent, sizeof parent, "%s", dir);
-    char *slash = strrchr(parent, '/');
-    if (slash) {
-        *slash = '\0';
-        mkdir(parent, 0700);
-    }
-    if ((mkdir(dir, 0700) == 0 || errno == EEXIST) && private_to_us(dir, S_IFDIR)) {
-        snprintf(path, pathlen, "%s/course-%016llx.so", dir, h1);
-    }
+    snprintf(name, namelen, "course-%016llx.so", h1);
 }
 
 /* the nfn functions from handle (a loaded file or a compile result) through get */
@@ -276,18 +314,29 @@ static void *result_get(void *r, const char *name) {
     return J(gcc_jit_result_get_code)(r, name);
 }
 
-/* a loaded cache file whose key matches; 0 on success */
-static int load_cached(zp_jit *j, const char *path, const char *key, int nfn) {
-    void *dl = path[0] && private_to_us(path, S_IFREG) ? dlopen(path, RTLD_NOW | RTLD_LOCAL)
-                                                        : NULL;
+/* the file name in the cache folder dir, loaded when it is a private regular file (checked
+   on the descriptor dlopen then reads) whose key matches; 0 on success */
+static int load_cached(zp_jit *j, int dir, const char *name, const char *key, int nfn) {
+    int fd = dir < 0 ? -1 : openat(dir, name, O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+    struct stat st;
+    void *dl = NULL;
+    if (fd >= 0 && fstat(fd, &st) == 0 && private_to_us(&st, S_IFREG)) {
+        char self[64];
+        snprintf(self, sizeof self, "/proc/self/fd/%d", fd);
+        dl = dlopen(self, RTLD_NOW | RTLD_LOCAL);
+    }
     const char *const *stored = dl ? dlsym(dl, "zp_expr_key") : NULL;
     if (!stored || strcmp(*stored, key) || resolve(j, nfn, dlsym, dl)) {
         if (dl) {
             dlclose(dl);
         }
+        if (fd >= 0) {
+            close(fd);
+        }
         return -1;
     }
     j->dl = dl;
+    j->fd = fd;
     return 0;
 }
 
@@ -326,17 +375,20 @@ static void declare_functions(gen *g) {
     }
 }
 
-/* compiles into the cache file (written aside, then renamed: concurrent commands never see
-   half a file) and loads it; else compiles in memory */
-static int compile(zp_jit *j, gen *g, const char *path, const char *key, int nfn, char *err,
-                   size_t errlen) {
-    if (path[0]) {
-        char tmp[PATH_MAX + 32];
-        snprintf(tmp, sizeof tmp, "%s.%ld.tmp", path, (long)getpid());
-        J(gcc_jit_context_compile_to_file)(g->ctx, GCC_JIT_OUTPUT_KIND_DYNAMIC_LIBRARY, tmp);
-        int ok = !J(gcc_jit_context_get_first_error)(g->ctx) && rename(tmp, path) == 0 &&
-                 load_cached(j, path, key, nfn) == 0;
-        remove(tmp);
+/* compiles into the cache file (written aside under a fresh name in the folder dir, then
+   renamed: concurrent commands never see half a file) and loads it; else compiles in memory */
+static int compile(zp_jit *j, gen *g, int dir, const char *name, const char *key, int nfn,
+                   char *err, size_t errlen) {
+    unsigned char r[8];
+    if (dir >= 0 && getentropy(r, sizeof r) == 0) {
+        char tmp[96], target[160];
+        snprintf(tmp, sizeof tmp, ".%s.%02x%02x%02x%02x%02x%02x%02x%02x.tmp", name, r[0], r[1],
+                 r[2], r[3], r[4], r[5], r[6], r[7]);
+        snprintf(target, sizeof target, "/proc/self/fd/%d/%s", dir, tmp);
+        J(gcc_jit_context_compile_to_file)(g->ctx, GCC_JIT_OUTPUT_KIND_DYNAMIC_LIBRARY, target);
+        int ok = !J(gcc_jit_context_get_first_error)(g->ctx) &&
+                 renameat(dir, tmp, dir, name) == 0 && load_cached(j, dir, name, key, nfn) == 0;
+        unlinkat(dir, tmp, 0);
         if (ok) {
             return 0;
         }
@@ -359,14 +411,20 @@ zp_jit *zp_jit_compile(const zp_expr *e, int nfn, int nout, const int *roots, ch
         snprintf(err, errlen, "out of memory");
         return NULL;
     }
-    char path[PATH_MAX], key[40];
-    cache_names(e, nfn, nout, roots, path, sizeof path, key, sizeof key);
-    if (load_cached(j, path, key, nfn) == 0) {
+    j->fd = -1;
+    char name[64], key[40];
+    cache_names(e, nfn, nout, roots, name, sizeof name, key, sizeof key);
+    int dir = open_cache_dir();
+    int cached = load_cached(j, dir, name, key, nfn) == 0;
+    if (cached || open_api(err, errlen)) {
+        if (dir >= 0) {
+            close(dir);
+        }
+        if (!cached) {
+            free(j);
+            j = NULL;
+        }
         return j;
-    }
-    if (open_api(err, errlen)) {
-        free(j);
-        return NULL;
     }
     gen g = {.val = calloc((size_t)e->n + 1, sizeof *g.val), .ctx = J(gcc_jit_context_acquire)()};
     int bad = !g.val || !g.ctx;
@@ -375,7 +433,11 @@ zp_jit *zp_jit_compile(const zp_expr *e, int nfn, int nout, const int *roots, ch
     } else {
         set_options(g.ctx);
         declare_functions(&g);
-        bad = generate(&g, e, nfn, nout, roots, key) || compile(j, &g, path, key, nfn, err, errlen);
+        bad = generate(&g, e, nfn, nout, roots, key) ||
+              compile(j, &g, dir, name, key, nfn, err, errlen);
+    }
+    if (dir >= 0) {
+        close(dir);
     }
     if (g.ctx) {
         J(gcc_jit_context_release)(g.ctx);
@@ -401,6 +463,9 @@ void zp_jit_free(zp_jit *j) {
     }
     if (j->dl) {
         dlclose(j->dl);
+    }
+    if (j->fd >= 0) {
+        close(j->fd);
     }
     free(j);
 }

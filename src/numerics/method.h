@@ -15,6 +15,10 @@ typedef struct zp_method_opts {
        integration's resolution (g is the rate of what is recorded, which is stationary
        there): a method that lands its roots by a step may skip refining such a time */
     const int *root_state_only;
+    /* components [0, npos) are positions whose rates are components [npos, 2 npos), so the
+       rates of those are their accelerations: a method may interpolate positions from
+       values, rates and accelerations at both ends of a step. 0: no such structure */
+    int npos;
 } zp_method_opts;
 
 /* What one advance did. */
@@ -46,6 +50,9 @@ typedef struct zp_method {
     /* Steps and rhs evaluations since the last reset. */
     void (*stats)(void *w, long *steps, long *rhs_evals);
     void (*free)(void *w);
+    /* Steps the error test rejected since the last reset (each cost a step's evaluations and
+       was taken again shorter); NULL where a method does not count them. */
+    void (*rejections)(void *w, long *rejected);
 } zp_method;
 
 /* ZP_METHOD_<ID> for every line of methods.def */

@@ -166,6 +166,12 @@ static void cvode_stats(void *work, long *steps, long *rhs_evals) {
     *rhs_evals = nfe + nfels;
 }
 
+static void cvode_rejections(void *work, long *rejected) {
+    cvode_work *w = work;
+    *rejected = 0;
+    CVodeGetNumErrTestFails(w->mem, rejected);
+}
+
 const zp_method zp_method_cvode_adams = {
     .name = "cvode-adams",
     .doc = "CVODE Adams-Moulton orders 1-12, fixed-point iteration: non-stiff runs (default)",
@@ -175,6 +181,7 @@ const zp_method zp_method_cvode_adams = {
     .interpolate = cvode_interpolate,
     .stats = cvode_stats,
     .free = cvode_free,
+    .rejections = cvode_rejections,
 };
 
 const zp_method zp_method_cvode_bdf = {
@@ -186,4 +193,5 @@ const zp_method zp_method_cvode_bdf = {
     .interpolate = cvode_interpolate,
     .stats = cvode_stats,
     .free = cvode_free,
+    .rejections = cvode_rejections,
 };
