@@ -21,42 +21,57 @@ void zp_box_widen(const zp_box *b, double f, zp_box *out) {
         }
     }
     out->theta_max = f * b->theta_max;
+    for (int e = 0; e < 2; e++) {
+        out->wind[e] = b->wind0 + f * (b->wind[e] - b->wind0);
+    }
 }
 
+/* the lines: the force, the four factors (mass, length, trolley, damping), the start angles,
+   the wind, then the whole box */
+enum { LINE_FORCE = 0, LINE_THETA = 5, LINE_WIND = 6, LINE_BOX = 7 };
+
 static const char *const range_names[ZP_HEADROOM_LINES] = {
-    "force error",   "rider mass",  "rider size",   "trolley mass",
-    "joint damping", "start angle", "the whole box"};
+    "force error",   "rider mass",  "rider size", "trolley mass",
+    "joint damping", "start angle", "wind",       "the whole box"};
 
 const char *zp_headroom_range_name(int range) {
     return range >= 0 && range < ZP_HEADROOM_LINES ? range_names[range] : "";
 }
 
-/* a deviation from the nominal: coordinate k of the force, 4 factors - 1, nlink angles (rad) */
+/* a deviation from the nominal: coordinate k of the force, 4 factors - 1, nlink angles (rad),
+   the wind (m/s) */
 typedef struct dev {
     double force[ZP_MAX_SECTIONS];
     double fac[4];
     double theta[ZP_MAX_LINKS];
+    double wind;
 } dev;
 
-/* which of the 6 ranges a box varies */
-static int varied(const zp_box *b, int range) {
-    return range == 0 ? b->nforce > 0 : range == 5 ? b->theta0 >= 0 : b->dim[range - 1] >= 0;
+/* whether a box varies the range of line l (not the whole box's) */
+static int varied(const zp_box *b, int l) {
+    return l == LINE_FORCE   ? b->nforce > 0
+           : l == LINE_THETA ? b->theta0 >= 0
+           : l == LINE_WIND  ? b->wind_dim >= 0
+                             : b->dim[l - 1] >= 0;
 }
 
-/* the deviation d restricted to one range (0..5) or whole (6) */
-static dev restrict_to(const dev *d, int range) {
+/* the deviation d restricted to line l's range, or whole for the box's line */
+static dev restrict_to(const dev *d, int l) {
     dev r;
     memset(&r, 0, sizeof r);
-    if (range == 0 || range == 6) {
+    if (l == LINE_FORCE || l == LINE_BOX) {
         memcpy(r.force, d->force, sizeof r.force);
     }
     for (int q = 0; q < 4; q++) {
-        if (range == q + 1 || range == 6) {
+        if (l == q + 1 || l == LINE_BOX) {
             r.fac[q] = d->fac[q];
         }
     }
-    if (range == 5 || range == 6) {
+    if (l == LINE_THETA || l == LINE_BOX) {
         memcpy(r.theta, d->theta, sizeof r.theta);
+    }
+    if (l == LINE_WIND || l == LINE_BOX) {
+        r.wind = d->wind;
     }
     return r;
 }
@@ -79,6 +94,10 @@ static double face(const zp_box *b, const dev *d) {
         if (d->theta[i] != 0) {
             s = fmin(s, b->theta_max / fabs(d->theta[i]));
         }
+    }
+    double wb = d->wind > 0 ? b->wind[1] - b->wind0 : b->wind[0] - b->wind0;
+    if (b->wind_dim >= 0 && d->wind != 0 && wb / d->wind > 0) {
+        s = fmin(s, wb / d->wind);
     }
     return s;
 }
@@ -109,6 +128,8 @@ static int holds_at(ray *ry, double f, char *why, size_t n) {
     for (int i = 0; i < nom->nlink; i++) {
         sc.theta[i] = f * ry->d.theta[i];
     }
+    sc.wind_set = ry->d.wind != 0;
+    sc.wind = nom->wind + f * ry->d.wind;
     if (!physical) {
         snprintf(why, n, "a range reaching 0 %%");
         return 0;
@@ -196,10 +217,11 @@ void zp_headroom_find(const zp_objective *ob, const zp_box *b, const zp_box *hol
     for (int i = 0; hold->theta0 >= 0 && i < hold->nlink; i++) {
         worst.theta[i] = ws.theta[i];
     }
+    worst.wind = ws.wind_set ? ws.wind - hold->wind0 : 0;
     ray ry = {ob, s, &r, zp_objective_schedule(ob, p), {{0}, {0}}, worst};
     zp_state_start(ob->m, ob->m->course, &ry.c0);
     for (int l = 0; l < ZP_HEADROOM_LINES; l++) {
-        if (l < 6 && !varied(b, l)) {
+        if (l != LINE_BOX && !varied(b, l)) {
             continue;
         }
         dev d = restrict_to(&worst, l);
@@ -216,6 +238,7 @@ void zp_headroom_find(const zp_objective *ob, const zp_box *b, const zp_box *hol
         for (int i = 0; i < ZP_MAX_LINKS; i++) {
             d.theta[i] *= sf;
         }
+        d.wind *= sf;
         ry.d = d;
         h->line[l].range = l;
         search_ray(&ry, &h->line[l]);

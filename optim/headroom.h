@@ -6,7 +6,7 @@
 #include "robust.h"
 
 /* b widened by factor f about the nominal: force error and start angle times f, each range
-   [lo, hi] to [1 + f (lo - 1), 1 + f (hi - 1)]. */
+   [lo, hi] to [1 + f (lo - 1), 1 + f (hi - 1)], the wind's about the nominal wind. */
 void zp_box_widen(const zp_box *b, double f, zp_box *out);
 /* The headroom of the schedule of parameters p in the stated box b along the direction from
    the nominal to the scenario at wu, a point of the held box `hold` (the adversary's worst;

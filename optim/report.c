@@ -339,6 +339,10 @@ static void md_survivable(FILE *f, const zp_report *r) {
     md_range(f, "rider size (all link lengths)", sc->length_range);
     md_range(f, "trolley mass", sc->trolley_mass_range);
     md_range(f, "joint damping", sc->damping_range);
+    if (sc->wind_varied) {
+        fprintf(f, "- the horizontal wind anywhere from %g to %g m/s\n", sc->wind_range[0],
+                sc->wind_range[1]);
+    }
     if (sc->start_angle > 0) {
         fprintf(f, "- each link starting swung by up to +/-%g deg\n", sc->start_angle);
     }

@@ -51,6 +51,13 @@ void zp_box_from_scene(const zp_scene *sc, const zp_model *m, zp_box *b) {
         b->theta_max = sc->start_angle / DEG;
         b->d += m->nlink;
     }
+    b->wind_dim = -1;
+    b->wind0 = m->wind;
+    if (sc->wind_varied) {
+        b->wind_dim = b->d++;
+        b->wind[0] = sc->wind_range[0];
+        b->wind[1] = sc->wind_range[1];
+    }
 }
 
 void zp_box_scenario(const zp_box *b, const double *u, zp_scenario *s) {
@@ -67,6 +74,10 @@ void zp_box_scenario(const zp_box *b, const double *u, zp_scenario *s) {
     }
     for (int i = 0; b->theta0 >= 0 && i < b->nlink; i++) {
         s->theta[i] = b->theta_max * u[b->theta0 + i];
+    }
+    if (b->wind_dim >= 0) {
+        s->wind_set = 1;
+        s->wind = b->wind[0] + 0.5 * (u[b->wind_dim] + 1) * (b->wind[1] - b->wind[0]);
     }
 }
 

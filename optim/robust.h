@@ -17,6 +17,9 @@ typedef struct zp_box {
     int theta0;           /* first start-angle coordinate (one per link), -1: none */
     double theta_max;     /* rad */
     int nlink;
+    int wind_dim;         /* coordinate of the wind, -1: not varied */
+    double wind[2];       /* m/s at u = -1 and u = +1 */
+    double wind0;         /* m/s, the nominal wind ([physics] wind) */
 } zp_box;
 
 void zp_box_from_scene(const zp_scene *sc, const zp_model *m, zp_box *b);
@@ -40,7 +43,7 @@ typedef struct zp_scen_set {
 } zp_scen_set;
 
 #define ZP_ROBUST_STREAM_VERIFY 0x7e1fUL
-#define ZP_BOX_MAX (ZP_MAX_SECTIONS + 4 + ZP_MAX_LINKS)
+#define ZP_BOX_MAX (ZP_MAX_SECTIONS + 5 + ZP_MAX_LINKS)
 
 /* samples scenarios of b around nom: every corner when 2^d fits in samples (else samples/2
    corners picked by quasi-random signs), then Sobol (Halton past 40 coordinates) points
@@ -63,9 +66,10 @@ void zp_scen_set_free(zp_scen_set *set);
 /* How far past the stated box the answer still holds (headroom.c): per range and for the box
    as a whole, along the worst direction found, as a factor on the stated range about the
    nominal. */
-enum { ZP_HEADROOM_LINES = 7 }; /* force, mass, length, trolley, damping, start angle; the box */
+enum { ZP_HEADROOM_LINES = 8 }; /* force, mass, length, trolley, damping, start angle, wind; the
+                                   box */
 typedef struct zp_headroom_line {
-    int range;      /* 0..5 the range in that order, 6 the whole box; -1: not varied */
+    int range;      /* 0..6 the range in that order, 7 the whole box; -1: not varied */
     double holds;   /* the largest factor found holding (bisected; 0: even the nominal breaks) */
     double breaks;  /* the first factor found breaking; INFINITY: none up to the search's cap */
     char limited_by[32]; /* what breaks there: died, stalled, margin, a [limits] key */

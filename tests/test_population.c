@@ -4,7 +4,8 @@
    scale_links = 2 makes mass_range scale the rider's link 2 only (the lanyard, link 1, stays):
    each scenario's M, hence its arrival speed, follows by hand; min_arrival_speed between the
    light and the heavy rider's speeds is kept by the one and broken by the other, with the
-   excess 1 - v / min. Bad link numbers are refused at their line. */
+   excess 1 - v / min. wind_range: the scenario at each end is the scene read with that wind.
+   Bad link numbers, envelope pairs, and a wind range without drag are refused at their line. */
 #include <math.h>
 #include <string.h>
 
@@ -93,11 +94,50 @@ static void check_population(void) {
     zp_model_free(m);
 }
 
+/* wind_range: the scenario at each end of the range is the scene read with that [physics]
+   wind (the same run, bit for bit), and a headwind arrives slower than a tailwind */
+static void check_wind(void) {
+    const char *fmt = "[course]\nx_start = 0\nsection = 200 : 100 - 0.2*x\n[trolley]\nmass = 5\n"
+                      "[body]\nlengths = 1, 2\nmasses = 1, 70\ndamping = 1\n[drive]\nforces = 50\n"
+                      "[physics]\ndrag_area = 0.05, 0.05, 0.6\nwind = %g\n"
+                      "[robust]\nwind_range = -3, 3\n";
+    char ini[1024];
+    snprintf(ini, sizeof ini, fmt, 0.0);
+    zp_scene sc;
+    zp_model *m = tu_model(ini, &sc);
+    zp_box b;
+    zp_box_from_scene(&sc, m, &b);
+    CHECK(b.d == 1 && b.wind_dim == 0);
+    zp_sim_opts o = tu_opts(&sc, 1e-9);
+    double f = 50, speed[2];
+    zp_schedule sched = tu_sched(m, &f);
+    for (int k = 0; k < 2; k++) {
+        double u = k ? 1 : -1;
+        zp_scenario s;
+        zp_box_scenario(&b, &u, &s);
+        zp_model ms;
+        zp_scenario_model(m, &s, &ms);
+        CHECK(ms.wind == (k ? 3 : -3));
+        zp_input in = {.sched = &sched};
+        zp_result a = *tu_run(&ms, &o, &in);
+        snprintf(ini, sizeof ini, fmt, k ? 3.0 : -3.0);
+        zp_scene sw;
+        zp_model *mw = tu_model(ini, &sw);
+        zp_result want = *tu_run(mw, &o, &in);
+        CHECK(a.outcome == want.outcome && a.time == want.time && a.v == want.v);
+        speed[k] = a.v;
+        zp_model_free(mw);
+    }
+    CHECK(speed[0] < speed[1]);
+    zp_model_free(m);
+}
+
 /* g_links and scale_links take link numbers 1..nlink */
 static void check_bad_links(void) {
     const char *bad[] = {"[limits]\ng_links = 3\n", "[robust]\nscale_links = 1.5\n",
-                         "[limits]\ng_envelope = 6:1, 4\n"};
-    for (int k = 0; k < 3; k++) {
+                         "[limits]\ng_envelope = 6:1, 4\n", "[robust]\nwind_range = -3, 3\n"};
+    const char *keys[] = {"g_links", "scale_links", "g_envelope", "wind_range"};
+    for (int k = 0; k < 4; k++) {
         char ini[1024];
         snprintf(ini, sizeof ini,
                  "[course]\nx_start = 0\nsection = 200 : 100 - 0.2*x\n[trolley]\nmass = 5\n"
@@ -111,13 +151,13 @@ static void check_bad_links(void) {
         FILE *f = fmemopen(msg, sizeof msg, "w");
         zp_diag_print(&d, f);
         fclose(f);
-        const char *key = k == 0 ? "g_links" : k == 1 ? "scale_links" : "g_envelope";
-        CHECK(strstr(msg, "bad.ini:") && strstr(msg, key));
+        CHECK(strstr(msg, "bad.ini:") && strstr(msg, keys[k]));
     }
 }
 
 int main(void) {
     check_population();
+    check_wind();
     check_bad_links();
     zp_sim_free(*tu_last_sim());
     return CHECK_DONE();

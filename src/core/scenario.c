@@ -27,6 +27,7 @@ void zp_scenario_model(const zp_model *nom, const zp_scenario *s, zp_model *out)
         out->inertia[i] = out->mass[i] * out->len[i] * out->len[i] / 12.0;
         out->damp[i] = nom->damp[i] * s->damping;
     }
+    out->wind = s->wind_set ? s->wind : nom->wind;
     zp_model_derive(out);
 }
 

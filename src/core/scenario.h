@@ -12,6 +12,8 @@ typedef struct zp_scenario {
     double mass, length, trolley, damping; /* factors on all link masses, all link lengths, the
                                               trolley mass, every joint's damping */
     double theta[ZP_MAX_LINKS];    /* rad, each link's start angle from the vertical */
+    int wind_set;                  /* 1: wind replaces the nominal wind */
+    double wind;                   /* m/s, horizontal */
 } zp_scenario;
 
 void zp_scenario_nominal(zp_scenario *s);

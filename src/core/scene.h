@@ -97,6 +97,8 @@ typedef struct zp_scene {
     double start_angle;           /* deg, each link may start swung by up to this either way */
     int robust_samples;           /* scenarios every candidate is held to (default 64) */
     int verify_samples;           /* fresh scenarios the answer is checked on (default 2000) */
+    int wind_varied;              /* 1: wind_range given */
+    double wind_range[2];         /* m/s, the horizontal wind's range (needs drag_area) */
     unsigned scale_links;         /* bit i: mass_range and length_range scale link i + 1; 0: all */
     double safety_factor;         /* the box held is the stated one widened this much about the
                                      nominal (default 1); reports stay against the stated box */

@@ -117,6 +117,16 @@ void zp_scene_read_robust(parse_ctx *c, zp_scene *sc) {
         sc->verify_samples = (int)u;
     }
     sc->scale_links = read_links(c, K_SCALE_LINKS, sc->nlink);
+    double w[2];
+    int nw = zp_scene_get_list(c, K_WIND_RANGE, R_ANY, w, 2);
+    if (nw == 1) {
+        zp_scene_bad_count(c, K_WIND_RANGE, nw, "2 (lo, hi)");
+    } else if (nw == 2 && w[0] > w[1]) {
+        zp_scene_bad_key(c, K_WIND_RANGE, "the range %g, %g is reversed", w[0], w[1]);
+    } else if (nw == 2) {
+        sc->wind_varied = 1;
+        memcpy(sc->wind_range, w, sizeof w);
+    }
     /* the box held is the stated one widened about the nominal (100 %): no range may then
        reach 0 % or below */
     double f;

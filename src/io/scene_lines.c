@@ -58,6 +58,8 @@ const zp_scene_key zp_scene_keys[K_COUNT] = {
     [K_START_ANGLE] = {S_ROBUST, "start_angle", "a number in [0, 90) (deg)"},
     [K_SAMPLES] = {S_ROBUST, "samples", "a whole number >= 1"},
     [K_VERIFY_SAMPLES] = {S_ROBUST, "verify_samples", "a whole number >= 1"},
+    [K_WIND_RANGE] = {S_ROBUST, "wind_range",
+                      "two numbers lo, hi with lo <= hi (m/s), with [physics] drag_area"},
     [K_SCALE_LINKS] = {S_ROBUST, "scale_links", "link numbers from 1 to the number of links"},
     [K_SAFETY_FACTOR] = {S_ROBUST, "safety_factor",
                          "a number >= 1 that keeps every widened range above 0 %"},

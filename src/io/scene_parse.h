@@ -65,6 +65,7 @@ enum {
     K_VERIFY_SAMPLES,
     K_SAFETY_FACTOR,
     K_SCALE_LINKS,
+    K_WIND_RANGE,
     K_DRAG_AREA,
     K_AIR_DENSITY,
     K_WIND,

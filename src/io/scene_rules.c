@@ -61,7 +61,16 @@ static void drag(parse_ctx *c, const zp_scene *sc) {
     }
 }
 
+/* wind acts on the bodies through their drag only: a range of it without drag changes nothing */
+static void wind_needs_drag(parse_ctx *c, const zp_scene *sc) {
+    if (sc->wind_varied && !sc->ndrag && all_good(c, K_DRAG_AREA, -1, -1)) {
+        zp_scene_bad_key(c, K_WIND_RANGE, "given without [physics] drag_area, through which "
+                                          "wind acts");
+    }
+}
+
 void zp_scene_rules(parse_ctx *c, zp_scene *sc) {
+    wind_needs_drag(c, sc);
     force_bounds(c, sc);
     margin_below_death(c, sc);
     row_count(c, sc);

@@ -121,6 +121,13 @@ static void other_text(const zp_scene *sc, int k, char *out, size_t cap) {
                              sc->env_s[l]);
         }
         break;
+    case K_WIND_RANGE:
+        if (sc->wind_varied) {
+            list(out, cap, sc->wind_range, 2);
+        } else {
+            snprintf(out, cap, "off");
+        }
+        break;
     case K_G_LINKS:
     case K_SCALE_LINKS: {
         unsigned mask = k == K_G_LINKS ? sc->g_links : sc->scale_links;
