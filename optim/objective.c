@@ -25,10 +25,7 @@ static void set_score(const zp_objective *ob, zp_eval *e) {
 void zp_objective_eval_run(const zp_objective *ob, const zp_model *m, zp_sim *s, const zp_input *in,
                      zp_eval *e, zp_result *r) {
     int failed = zp_sim_run(m, s, in, r) != ZP_OK;
-    double angle = 0;
-    for (int i = 0; i < m->nlink; i++) {
-        angle = fmax(angle, r->max_rel_angle[i]);
-    }
+    double angle = zp_model_angle_used(m, r->max_rel_angle);
     double span = m->xb[m->nsec] - m->xb[0];
     double progress = fmin(fmax((r->x - m->xb[0]) / span, 0), 1);
     if (failed || !isfinite(progress) || !isfinite(angle) || !isfinite(r->time)) {

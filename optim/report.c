@@ -107,7 +107,7 @@ static void md_margins(FILE *f, const zp_report *r) {
             sc->death_angle, sc->margin, sc->death_angle - sc->margin);
     for (int i = 0; i < r->m->nlink; i++) {
         double a = r->v->run->max_rel_angle[i] * DEG;
-        fprintf(f, "| %d | %.3f | %.3f |\n", i + 1, a, sc->death_angle - a);
+        fprintf(f, "| %d | %.3f | %.3f |\n", i + 1, a, r->m->phi_max_j[i] * DEG - a);
     }
 }
 

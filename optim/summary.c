@@ -10,11 +10,7 @@
 #define DEG (180.0 / M_PI)
 
 static double largest_angle(const zp_model *m, const zp_result *r) {
-    double a = 0;
-    for (int i = 0; i < m->nlink; i++) {
-        a = fmax(a, r->max_rel_angle[i]);
-    }
-    return a;
+    return zp_model_angle_used(m, r->max_rel_angle);
 }
 
 static void json_convergence(FILE *f, const zp_search_result *s) {

@@ -288,10 +288,7 @@ static void print_summary(const zp_report *r) {
     for (int k = 0; k < r->m->nsec; k++) {
         printf(" %.4f", s->force[k]);
     }
-    double angle = 0;
-    for (int i = 0; i < r->m->nlink; i++) {
-        angle = fmax(angle, run->max_rel_angle[i]);
-    }
+    double angle = zp_model_angle_used(r->m, run->max_rel_angle);
     printf("\noutcome: %s, time %.4f s (+/- %.1e s), margin %.2f deg%s\n",
            zp_sim_outcome_name(run->outcome), run->time, fabs(run->time - r->v->tight->time),
            r->sc->death_angle - angle * 180 / M_PI,

@@ -42,7 +42,7 @@ void zp_events_eval(const zp_model *m, int sec, double x, const double *phi, con
     g[ZP_ROOT_LEFT] = x - m->xb[sec];
     g[ZP_ROOT_RIGHT] = x - m->xb[sec + 1];
     for (int i = 0; i < m->nlink; i++) {
-        g[ZP_ROOT_DEATH + i] = m->phi_max - fabs(phi[i]);
+        g[ZP_ROOT_DEATH + i] = m->phi_max_j[i] - fabs(phi[i]);
         g[ZP_ROOT_DEATH + m->nlink + i] = w[i];
     }
     /* the arcs' tangent points inside the section: the end of the arc around its left end,

@@ -24,7 +24,7 @@ static double inside(double t, void *p) {
         return NAN;
     }
     g->f->relative(g->m, g->y, phi, w);
-    return g->m->phi_max - fabs(phi[g->link]);
+    return g->m->phi_max_j[g->link] - fabs(phi[g->link]);
 }
 
 /* the crossing of joint `link` in [ta, tb] (inside at ta, not at tb), by bisection to the last
@@ -57,7 +57,7 @@ int zp_graze_locate(const zp_model *m, const zp_formulation *f, const zp_method 
     graze_fn g = {m, f, meth, mwork, 0, y};
     int found = 0;
     for (int i = 0; i < m->nlink; i++) {
-        if (!(fabs(phi[i]) >= m->phi_max)) {
+        if (!(fabs(phi[i]) >= m->phi_max_j[i])) {
             continue;
         }
         g.link = i;

@@ -196,6 +196,14 @@ static int round_kinks(zp_model *m, const zp_scene *sc, zp_diag *d) {
     return ok;
 }
 
+double zp_model_angle_used(const zp_model *m, const double *max_rel_angle) {
+    double a = 0;
+    for (int i = 0; i < m->nlink; i++) {
+        a = fmax(a, max_rel_angle[i] + (m->phi_max - m->phi_max_j[i]));
+    }
+    return a;
+}
+
 int zp_model_track_arc(const zp_model *m, int sec, double x) {
     int lo = m->arc_at[sec], hi = m->arc_at[sec + 1];
     return lo >= 0 && x < m->arc[lo].x2 ? lo : hi >= 0 && x > m->arc[hi].x1 ? hi : -1;
@@ -277,6 +285,9 @@ zp_model *zp_model_build(const zp_scene *sc, zp_diag *d) {
         m->damp[i] = sc->ndamping == 1 ? sc->damping[0] : sc->damping[i];
     }
     m->phi_max = sc->death_angle * M_PI / 180.0;
+    for (int i = 0; i < ZP_MAX_LINKS; i++) {
+        m->phi_max_j[i] = sc->death_angles[i] * M_PI / 180.0;
+    }
     m->g_links = sc->g_links ? sc->g_links : (1u << sc->nlink) - 1;
     m->scale_links = sc->scale_links ? sc->scale_links : (1u << sc->nlink) - 1;
     m->nenv = sc->nenv;

@@ -45,7 +45,8 @@ typedef struct zp_model {
     double mass[ZP_MAX_LINKS];    /* kg */
     double inertia[ZP_MAX_LINKS]; /* kg m^2, m l^2 / 12 about the centre of mass */
     double damp[ZP_MAX_LINKS];    /* N m s/rad, joint i joins link i to its parent */
-    double phi_max;               /* rad, death angle */
+    double phi_max;               /* rad, the largest joint's death angle */
+    double phi_max_j[ZP_MAX_LINKS]; /* rad, each joint's death angle */
     zp_drive_dir drive;
     unsigned g_links;             /* bit i: link i's felt g is judged ([limits] g_links); all set
                                      when the scene names none */
@@ -84,6 +85,11 @@ int zp_model_track_arc(const zp_model *m, int sec, double x);
    sees no jump of f'' before its root is found. */
 zp_track zp_model_track_piece(const zp_model *m, const zp_course *course, int sec, int arc,
                               double x);
+/* The largest |relative angle| of a run (max_rel_angle, per joint) as the margin judges it:
+   measured against phi_max, each joint's angle raised by how much its own death angle lies
+   below phi_max, so that phi_max - the result is the smallest margin of any joint (with one
+   death angle for every joint: the largest angle itself). */
+double zp_model_angle_used(const zp_model *m, const double *max_rel_angle);
 /* Recomputes mtot, B and C from m0, len, half, mass and inertia (after changing them). */
 void zp_model_derive(zp_model *m);
 /* A course for one simulating thread (zp_course_for_thread: compiled code shared by all),

@@ -56,7 +56,9 @@ typedef struct zp_scene {
     double masses[ZP_MAX_LINKS];  /* kg */
     int ndamping;                 /* 1 (all joints) or nlink */
     double damping[ZP_MAX_LINKS]; /* N m s/rad */
-    double death_angle;           /* deg */
+    double death_angle;           /* deg, the largest joint's (all of them when one is given) */
+    int ndeath;                   /* death_angle values given: 1 (every joint) or nlink */
+    double death_angles[ZP_MAX_LINKS]; /* deg, per joint (each set, also from one value) */
 
     char direction[16];                /* horizontal | tangent */
     int drive_kind;                    /* zp_sched_kind (drive.h) of the forces */

@@ -26,7 +26,6 @@ static const struct {
 } numbers[] =
     {
         {K_GRAVITY, offsetof(zp_scene, gravity)},
-        {K_DEATH_ANGLE, offsetof(zp_scene, death_angle)},
         {K_MIN, offsetof(zp_scene, force_min)},
         {K_MAX, offsetof(zp_scene, force_max)},
         {K_RTOL, offsetof(zp_scene, rtol)},
@@ -120,6 +119,9 @@ static void other_text(const zp_scene *sc, int k, char *out, size_t cap) {
             used += snprintf(out + used, cap - used, "%s%g:%g", l ? ", " : "", sc->env_g[l],
                              sc->env_s[l]);
         }
+        break;
+    case K_DEATH_ANGLE:
+        list(out, cap, sc->death_angles, sc->ndeath);
         break;
     case K_WIND_RANGE:
         if (sc->wind_varied) {
