@@ -535,7 +535,8 @@ zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_mod
                           double limit, const zp_schedule *shape, const zp_sim_opts *so,
                           const zp_sim_opts *search, zp_sim_opts *fast) {
     memset(p, 0, sizeof *p);
-    p->ob = (zp_objective){.m = m, .limit = limit, .t_max = so->t_max, .shape = shape};
+    p->ob = (zp_objective){.m = m, .limit = limit, .t_max = so->t_max, .shape = shape,
+                           .slowest = sc->objective_slowest};
     zp_limits_from_scene(sc, &p->ob.lim);
     *fast = *search;
     fast->peaks = zp_limits_need_peaks(&p->ob.lim);

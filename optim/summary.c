@@ -148,6 +148,11 @@ void zp_report_write_json(FILE *f, const zp_report *r) {
     zp_out_json_number(f, run->time);
     fputs(",\n  \"time_error\": ", f);
     zp_out_json_number(f, fabs(run->time - r->v->tight->time));
+    /* what the search minimised: the nominal rider's finish, or the slowest held finish (at
+       the search's own tolerance) */
+    fprintf(f, ",\n  \"objective\": \"%s\", \"objective_s\": ",
+            r->sc->objective_slowest ? "slowest" : "nominal");
+    zp_out_json_number(f, s->best.obj);
     if (r->acc) {
         json_accuracy(f, r->acc);
     }

@@ -5,6 +5,7 @@
    each scenario's M, hence its arrival speed, follows by hand; min_arrival_speed between the
    light and the heavy rider's speeds is kept by the one and broken by the other, with the
    excess 1 - v / min. wind_range: the scenario at each end is the scene read with that wind.
+   objective = slowest: the slowest held finish, by a brute-force loop (the heaviest rider's).
    Bad link numbers, envelope pairs, and a wind range without drag are refused at their line. */
 #include <math.h>
 #include <string.h>
@@ -132,6 +133,48 @@ static void check_wind(void) {
     zp_model_free(m);
 }
 
+/* objective = slowest: a survivor's objective is the slowest finish over the nominal run and
+   every held scenario (a brute-force loop over them), and under a horizontal push downhill
+   that is the heaviest rider's; objective = nominal keeps the nominal finish */
+static void check_slowest(void) {
+    char ini[1024];
+    snprintf(ini, sizeof ini, slope, 1.0);
+    zp_scene sc;
+    zp_model *m = tu_model(ini, &sc);
+    zp_box b;
+    zp_box_from_scene(&sc, m, &b);
+    zp_scen_set set;
+    CHECK(zp_scen_set_build(&set, &b, m, 6, 1) == ZP_OK);
+    zp_sim_opts o = tu_opts(&sc, 1e-9);
+    zp_objective ob = tu_objective(m, &sc, &o);
+    ob.set = &set;
+    zp_sim *s = zp_sim_create(m, &o);
+    static zp_result r;
+    double f = 50;
+    zp_eval nominal, slow;
+    zp_objective_eval(&ob, s, &f, &nominal, &r);
+    ob.slowest = 1;
+    zp_objective_eval(&ob, s, &f, &slow, &r);
+    CHECK(zp_objective_feasible(&slow) && nominal.obj == nominal.time);
+    zp_schedule sched = tu_sched(m, &f);
+    double want = nominal.time, heaviest = 0, t_heaviest = 0;
+    for (int j = 0; j < set.n; j++) {
+        zp_input in = {.sched = &sched, .force_scale = set.sc[j].force, .start = &set.start[j]};
+        zp_eval e;
+        zp_objective_eval_run(&ob, &set.m[j], s, &in, &e, &r);
+        want = fmax(want, e.obj);
+        if (set.m[j].mtot > heaviest) {
+            heaviest = set.m[j].mtot;
+            t_heaviest = e.obj;
+        }
+    }
+    CHECK(slow.obj == want);
+    CHECK(slow.obj == t_heaviest && slow.obj > nominal.obj);
+    zp_sim_free(s);
+    zp_scen_set_free(&set);
+    zp_model_free(m);
+}
+
 /* g_links and scale_links take link numbers 1..nlink */
 static void check_bad_links(void) {
     const char *bad[] = {"[limits]\ng_links = 3\n", "[robust]\nscale_links = 1.5\n",
@@ -158,6 +201,7 @@ static void check_bad_links(void) {
 int main(void) {
     check_population();
     check_wind();
+    check_slowest();
     check_bad_links();
     zp_sim_free(*tu_last_sim());
     return CHECK_DONE();

@@ -76,6 +76,8 @@ typedef struct zp_scene {
     double margin;  /* deg */
     long max_evals; /* simulations the search may spend */
     unsigned long seed;
+    int objective_slowest;  /* [optimize] objective = slowest: the slowest finish over the held
+                               scenarios is minimised, not the nominal rider's */
     char search_method[32]; /* integrator of the search's runs (the answer is rerun with [solver]) */
     double search_rtol;     /* their rtol; atol = rtol / 100 */
 

@@ -40,6 +40,7 @@ const zp_scene_key zp_scene_keys[K_COUNT] = {
     [K_MARGIN] = {S_OPTIMIZE, "margin", "a number >= 0 (deg) below death_angle"},
     [K_MAX_EVALS] = {S_OPTIMIZE, "max_evals", "a whole number >= 1"},
     [K_SEED] = {S_OPTIMIZE, "seed", "a whole number >= 0"},
+    [K_OBJECTIVE] = {S_OPTIMIZE, "objective", "nominal or slowest"},
     [K_SEARCH_METHOD] = {S_OPTIMIZE, "method", "a method name (see zipopt --help)"},
     [K_SEARCH_RTOL] = {S_OPTIMIZE, "rtol", "a number in [" ZP_RTOL_MIN_S ", " ZP_RTOL_MAX_S "]"},
     [K_MAX_G] = {S_LIMITS, "max_g", "a number > 0 (g)"},

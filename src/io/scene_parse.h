@@ -48,6 +48,7 @@ enum {
     K_SEED,
     K_SEARCH_METHOD,
     K_SEARCH_RTOL,
+    K_OBJECTIVE,
     K_MAX_G,
     K_MAX_JOINT_FORCE,
     K_MAX_ARRIVAL_SPEED,

@@ -264,6 +264,14 @@ void zp_scene_read_optimize(parse_ctx *c, zp_scene *sc) {
         sc->seed = u;
     }
     zp_scene_get_text(c, K_SEARCH_METHOD, sc->search_method, sizeof sc->search_method);
+    char objective[16];
+    if (zp_scene_get_text(c, K_OBJECTIVE, objective, sizeof objective) > 0) {
+        if (strcmp(objective, "nominal") && strcmp(objective, "slowest")) {
+            zp_scene_bad_key(c, K_OBJECTIVE, "'%s' is not an objective", objective);
+        } else {
+            sc->objective_slowest = !strcmp(objective, "slowest");
+        }
+    }
     sc->line_search_method = c->key_line[K_SEARCH_METHOD];
     get_tolerance(c, K_SEARCH_RTOL, ZP_RTOL_MIN, ZP_RTOL_MAX, &sc->search_rtol);
 }

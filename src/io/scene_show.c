@@ -123,6 +123,9 @@ static void other_text(const zp_scene *sc, int k, char *out, size_t cap) {
     case K_DEATH_ANGLE:
         list(out, cap, sc->death_angles, sc->ndeath);
         break;
+    case K_OBJECTIVE:
+        snprintf(out, cap, "%s", sc->objective_slowest ? "slowest" : "nominal");
+        break;
     case K_WIND_RANGE:
         if (sc->wind_varied) {
             list(out, cap, sc->wind_range, 2);
