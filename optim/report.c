@@ -469,6 +469,9 @@ static void md_figures_rerun(FILE *f, const zp_report *r) {
               "![course and paths](course.png)\n\n![energy](energy.png)\n\n"
               "![joint angles](angles.png)\n\n![loads](loads.png)\n",
               f);
+        if (r->m->nenv > 0) {
+            fputs("\n![felt g against the g-duration envelope](envelope.png)\n", f);
+        }
     }
     fprintf(f,
             "\n## Rerun\n\n```\nzipopt %s --out %s          # this search\n"

@@ -322,7 +322,8 @@ static int say_figures(const char *dir, const zp_plot_opts *po, const zp_plot_in
                 dir);
         return ZP_EXIT_FAIL;
     }
-    fprintf(say, "figures in %s: course.png (and .svg) energy.png angles.png loads.png", dir);
+    fprintf(say, "figures in %s: course.png (and .svg) energy.png angles.png loads.png%s", dir,
+            info->envelope ? " envelope.png" : "");
     if (info->nframe) {
         fprintf(say, ", %d still frame%s", info->nframe, info->nframe == 1 ? "" : "s");
     }
