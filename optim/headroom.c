@@ -108,7 +108,8 @@ typedef struct ray {
     zp_result *r;
     zp_schedule sched;
     zp_chain c0;
-    dev d; /* the direction, scaled to meet the stated box's face at factor 1 */
+    dev d;          /* the direction, scaled to meet the stated box's face at factor 1 */
+    int alive_only; /* 1: "holds" is finishing alive, whatever the margin and limits */
 } ray;
 
 /* whether the answer holds at factor f along the ray; what broke in why */
@@ -145,6 +146,9 @@ static int holds_at(ray *ry, double f, char *why, size_t n) {
         snprintf(why, n, "%s", e.failed ? "numerical failure" : zp_sim_outcome_name(e.outcome));
         return 0;
     }
+    if (ry->alive_only) {
+        return 1;
+    }
     if (e.angle > ry->ob->limit) {
         snprintf(why, n, "margin");
         return 0;
@@ -158,8 +162,9 @@ static int holds_at(ray *ry, double f, char *why, size_t n) {
 }
 
 /* the factor up to which the answer holds along the ray: grown from 1 until it breaks (or the
-   cap), or shrunk toward the nominal if it breaks inside the box, then bisected */
-static void search_ray(ray *ry, zp_headroom_line *L) {
+   cap), or shrunk toward the nominal if it breaks inside the box, then bisected; *holds, the
+   first factor found breaking (*breaks, INFINITY: none) and what broke there */
+static void search_ray(ray *ry, double *holds, double *breaks, char *what, size_t n) {
     static const double grow[] = {1, 1.25, 1.5, 2, 3, GROW_CAP};
     double lo = 0, hi = INFINITY;
     char why[32] = "", last[32] = "";
@@ -180,9 +185,9 @@ static void search_ray(ray *ry, zp_headroom_line *L) {
             memcpy(last, why, sizeof last);
         }
     }
-    L->holds = lo;
-    L->breaks = hi;
-    snprintf(L->limited_by, sizeof L->limited_by, "%s", isfinite(hi) ? last : "");
+    *holds = lo;
+    *breaks = hi;
+    snprintf(what, n, "%s", isfinite(hi) ? last : "");
 }
 
 void zp_headroom_find(const zp_objective *ob, const zp_box *b, const zp_box *hold, const double *wu,
@@ -218,7 +223,7 @@ void zp_headroom_find(const zp_objective *ob, const zp_box *b, const zp_box *hol
         worst.theta[i] = ws.theta[i];
     }
     worst.wind = ws.wind_set ? ws.wind - hold->wind0 : 0;
-    ray ry = {ob, s, &r, zp_objective_schedule(ob, p), {{0}, {0}}, worst};
+    ray ry = {ob, s, &r, zp_objective_schedule(ob, p), {{0}, {0}}, worst, 0};
     zp_state_start(ob->m, ob->m->course, &ry.c0);
     for (int l = 0; l < ZP_HEADROOM_LINES; l++) {
         if (l != LINE_BOX && !varied(b, l)) {
@@ -241,7 +246,12 @@ void zp_headroom_find(const zp_objective *ob, const zp_box *b, const zp_box *hol
         d.wind *= sf;
         ry.d = d;
         h->line[l].range = l;
-        search_ray(&ry, &h->line[l]);
+        zp_headroom_line *L = &h->line[l];
+        ry.alive_only = 0;
+        search_ray(&ry, &L->holds, &L->breaks, L->limited_by, sizeof L->limited_by);
+        /* and how much further the rider at least finishes alive */
+        ry.alive_only = 1;
+        search_ray(&ry, &L->alive, &L->dies, L->ends_by, sizeof L->ends_by);
     }
     zp_sim_free(s);
 }

@@ -293,8 +293,9 @@ static void md_headroom(FILE *f, const zp_report *r) {
                 h->safety_factor);
     }
     fputs("\nHeadroom past the stated ranges (along the worst direction found, by bisection; "
-          "1x is the stated range):\n\n| range | holds to | breaks at | what breaks |\n"
-          "|---|---|---|---|\n",
+          "1x is the stated range; holds: finishes with the margin and every limit kept):\n\n"
+          "| range | holds to | breaks at | what breaks | finishes alive to | then |\n"
+          "|---|---|---|---|---|---|\n",
           f);
     for (int l = 0; l < ZP_HEADROOM_LINES; l++) {
         const zp_headroom_line *L = &h->line[l];
@@ -310,9 +311,18 @@ static void md_headroom(FILE *f, const zp_report *r) {
             if (L->range == 0) {
                 fprintf(f, " (+/-%.4g %%)", L->breaks * r->sc->force_error);
             }
-            fprintf(f, " | %s |\n", L->limited_by);
+            fprintf(f, " | %s", L->limited_by);
         } else {
-            fputs(" or more | not found | - |\n", f);
+            fputs(" or more | not found | -", f);
+        }
+        fprintf(f, " | %.4fx", L->alive);
+        if (L->range == 0) {
+            fprintf(f, " (+/-%.4g %%)", L->alive * r->sc->force_error);
+        }
+        if (isfinite(L->dies)) {
+            fprintf(f, " | %s at %.4fx |\n", L->ends_by, L->dies);
+        } else {
+            fputs(" or more | - |\n", f);
         }
     }
 }

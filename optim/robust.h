@@ -73,6 +73,9 @@ typedef struct zp_headroom_line {
     double holds;   /* the largest factor found holding (bisected; 0: even the nominal breaks) */
     double breaks;  /* the first factor found breaking; INFINITY: none up to the search's cap */
     char limited_by[32]; /* what breaks there: died, stalled, margin, a [limits] key */
+    double alive;   /* the largest factor found at which the rider still finishes alive */
+    double dies;    /* the first factor found where not; INFINITY: none up to the cap */
+    char ends_by[32]; /* how the ride ends there: died, stalled */
 } zp_headroom_line;
 typedef struct zp_headroom {
     double safety_factor;                 /* the box held: the stated one widened this much */

@@ -77,6 +77,10 @@ void zp_summary_headroom_json(FILE *f, const zp_headroom *h) {
     zp_out_json_string(f, box->range < 0 ? "" : box->limited_by);
     fputs(", \"breaks_at\": ", f);
     zp_out_json_number(f, box->range < 0 || !isfinite(box->breaks) ? NAN : box->breaks);
+    fputs(", \"alive_to\": ", f);
+    zp_out_json_number(f, box->range < 0 ? NAN : box->alive);
+    fputs(", \"ends_at\": ", f);
+    zp_out_json_number(f, box->range < 0 || !isfinite(box->dies) ? NAN : box->dies);
     fputs(", \"safety_factor\": ", f);
     zp_out_json_number(f, h->safety_factor);
     fputs(", \"ranges\": [", f);
@@ -94,6 +98,12 @@ void zp_summary_headroom_json(FILE *f, const zp_headroom *h) {
         zp_out_json_number(f, isfinite(L->breaks) ? L->breaks : NAN);
         fputs(", \"limited_by\": ", f);
         zp_out_json_string(f, L->limited_by);
+        fputs(", \"alive_to\": ", f);
+        zp_out_json_number(f, L->alive);
+        fputs(", \"ends_at\": ", f);
+        zp_out_json_number(f, isfinite(L->dies) ? L->dies : NAN);
+        fputs(", \"ends_by\": ", f);
+        zp_out_json_string(f, L->ends_by);
         fputs("}", f);
         first = 0;
     }

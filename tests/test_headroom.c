@@ -2,8 +2,9 @@
    breaking point is known by construction: on tu_swing survival is monotone in the one force,
    so a schedule F with force error p breaks exactly where F (1 + s p) reaches the largest push
    that keeps the margin (found here by bisecting whole runs); the headroom must bracket that
-   s. With safety_factor k the robust optimum is that largest push over 1 + k p, and its
-   headroom is k. Also: safety_factor is refused below 1 at its line. */
+   s; likewise where it stops finishing alive (the largest push that does not die). With
+   safety_factor k the robust optimum is that largest push over 1 + k p, and its headroom is k.
+   Also: safety_factor is refused below 1 at its line. */
 #include <math.h>
 #include <string.h>
 
@@ -19,7 +20,8 @@
     1e-2 /* N: what the search's slack under the margin (objective.c) and its                      \
             polish (~1e-3 N, as in test_robust) may leave below the edge */
 
-/* the largest constant push keeping the margin, at options o */
+/* the largest constant push keeping the margin (limit, rad; INFINITY: finishing alive is
+   enough), at options o */
 static double largest_push(const zp_model *m, const zp_sim_opts *o, double limit) {
     double lo = 0, hi = 400;
     zp_schedule sch = tu_sched(m, (double[1]){0});
@@ -36,7 +38,7 @@ static double largest_push(const zp_model *m, const zp_sim_opts *o, double limit
 static void check_headroom(double safety) {
     zp_scene sc;
     zp_model *m = tu_model(tu_swing, &sc);
-    double p = 0.05;
+    double p = 0.15; /* wide enough that the rider stops finishing alive inside 4x */
     sc.force_error = 100 * p;
     sc.robust = 1;
     sc.robust_samples = 8;
@@ -58,6 +60,7 @@ static void check_headroom(double safety) {
     to.output_dt = 0;
     double top = largest_push(m, &to, limit);
     double s_break = (top / res.force[0] - 1) / p;
+    double s_alive = (largest_push(m, &to, INFINITY) / res.force[0] - 1) / p;
     const zp_headroom *h = &pb.check.headroom;
     CHECK(h->safety_factor == safety);
     for (int l = 0; l < ZP_HEADROOM_LINES; l++) {
@@ -76,6 +79,15 @@ static void check_headroom(double safety) {
         CHECK(L->holds <= s_break + tol && L->breaks >= s_break - tol);
         CHECK(L->breaks - L->holds <= 1e-3);
         CHECK(!strcmp(L->limited_by, "margin"));
+        /* finishing alive: the push that first dies, or beyond the search's cap (4x) */
+        printf("  finishes alive to %.6fx (%s at %.6fx); by construction %.6fx\n", L->alive,
+               L->ends_by, L->dies, s_alive);
+        if (isfinite(L->dies)) {
+            CHECK(L->alive <= s_alive + tol && L->dies >= s_alive - tol);
+            CHECK(!strcmp(L->ends_by, "died"));
+        } else {
+            CHECK(s_alive >= 4 && L->alive == 4);
+        }
     }
     /* the optimum held to the widened box: the largest push over 1 + k p, a hair below it
        (the search keeps SLACK = 1e-3 deg under the margin, ~4e-3 N here) */
