@@ -270,14 +270,15 @@ static void md_spread(FILE *f, const zp_report *r) {
                                     &c->arrival_high};
     const char *what[4] = {"fastest finish", "slowest finish", "lowest arrival speed",
                            "highest arrival speed"};
-    const char *unit[4] = {"s", "s", "km/h", "km/h"};
+    const char *fmt[4] = {"%.4f s", "%.4f s", "%.2f km/h", "%.2f km/h"};
     fprintf(f, "\nSpread over the %d fresh scenarios that finished (of %d):\n\n", c->survived,
             c->samples);
     for (int k = 0; k < 4; k++) {
         char sc[512];
         scenario_text(r, ends[k]->u, sc, sizeof sc);
-        fprintf(f, "- %s: %.4g %s (fresh scenario %d: %s)\n", what[k], ends[k]->value, unit[k],
-                ends[k]->sample + 1, sc);
+        fprintf(f, "- %s: ", what[k]);
+        fprintf(f, fmt[k], ends[k]->value);
+        fprintf(f, " (fresh scenario %d: %s)\n", ends[k]->sample + 1, sc);
     }
 }
 
