@@ -117,6 +117,20 @@ static void md_margins(FILE *f, const zp_report *r) {
     }
 }
 
+void zp_report_breaks(const zp_report *r, const zp_result *run, char *out, size_t cap) {
+    double angle = 0;
+    for (int i = 0; i < r->m->nlink; i++) {
+        angle = fmax(angle, run->max_rel_angle[i]);
+    }
+    int which = -1;
+    double excess = r->lim ? zp_limits_excess(r->lim, r->m, run, &which) : -1;
+    snprintf(out, cap, "%s", run->outcome == ZP_OUTCOME_DIED      ? "death"
+                             : run->outcome == ZP_OUTCOME_STALLED ? "a stall"
+                             : angle > r->m->phi_max - r->sc->margin * M_PI / 180 ? "the margin"
+                             : which >= 0 && excess > 0 ? zp_limit_name(which)
+                                                        : "");
+}
+
 static void md_gains(FILE *f, const zp_report *r) {
     const zp_search_result *s = r->res;
     const zp_result *run = r->v->run, *study = r->study;
@@ -132,13 +146,24 @@ static void md_gains(FILE *f, const zp_report *r) {
               "margin)\n",
               f);
     }
+    if (!study) {
+        return;
+    }
+    char forces[256] = "", breaks[64];
+    for (int k = 0, len = 0; k < r->shape->np && len < (int)sizeof forces; k++) {
+        len += snprintf(forces + len, sizeof forces - (size_t)len, "%s%g", k ? ", " : "",
+                        r->shape->p[k]);
+    }
+    zp_report_breaks(r, study, breaks, sizeof breaks);
     if (fin && study->outcome == ZP_OUTCOME_FINISHED) {
-        char what[128];
-        snprintf(what, sizeof what, "the study's %g N (%.4f s)", r->study_force, study->time);
+        char what[400];
+        snprintf(what, sizeof what, "the scene's own [drive] forces (%s N: %.4f s%s%s)", forces,
+                 study->time, breaks[0] ? ", breaks " : "", breaks);
         md_gain(f, what, run->time, study->time);
     } else {
-        fprintf(f, "- the study's %g N everywhere does not finish: %s at t = %.3f s, x = %.2f m",
-                r->study_force, zp_sim_outcome_name(study->outcome), study->time, study->x);
+        fprintf(f, "- the scene's own [drive] forces (%s N) do not finish: %s at t = %.3f s, x = "
+                   "%.2f m",
+                forces, zp_sim_outcome_name(study->outcome), study->time, study->x);
         if (study->died_link) {
             fprintf(f, " (joint of link %d looped)", study->died_link);
         }
@@ -185,21 +210,30 @@ static void md_arcs(FILE *f, const zp_report *r) {
     }
 }
 
+/* the kinks crossed; section ends where the slopes agree knock nothing and are no kinks */
 static void md_kinks(FILE *f, const zp_report *r) {
     fputs("## Kink impulses\n\n", f);
-    int n;
+    int n, nkink = 0;
     const zp_crossing *cross = zp_sim_crossings(r->best, &n);
-    if (n == 0) {
-        fputs("No kinks crossed.\n", f);
-        return;
-    }
-    fputs("| t (s) | x (m) | sections | impulse (N s) | energy lost (J) |\n"
-          "|---|---|---|---|---|\n",
-          f);
     for (int i = 0; i < n; i++) {
         const zp_crossing *c = &cross[i];
+        if (!zp_model_is_kink(r->m, c->from < c->to ? c->from : c->to)) {
+            continue;
+        }
+        if (!nkink++) {
+            fputs("| t (s) | x (m) | sections | impulse (N s) | energy lost (J) |\n"
+                  "|---|---|---|---|---|\n",
+                  f);
+        }
         fprintf(f, "| %.4f | %g | %d -> %d | %.3f | %.2f |\n", c->t, c->x, c->from + 1, c->to + 1,
                 c->impulse, c->energy_lost);
+    }
+    if (!nkink) {
+        fputs("No kinks crossed.\n", f);
+    }
+    if (nkink < n) {
+        fprintf(f, "%s%d crossing%s of section ends where the slopes agree (no impulse).\n",
+                nkink ? "\n" : "", n - nkink, n - nkink == 1 ? "" : "s");
     }
 }
 
@@ -230,7 +264,10 @@ static void md_limits(FILE *f, const zp_report *r) {
     zp_limits_reached(r->m, r->v->run, v);
     fputs("\n## Limits\n\n| limit | reached | allowed | |\n|---|---|---|---|\n", f);
     for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
-        if (r->lim->max[i] > 0) {
+        if (r->lim->max[i] > 0 && !zp_limit_reached_in(r->v->run, i)) {
+            fprintf(f, "| %s | not reached (did not arrive) | %g %s | |\n", zp_limit_name(i),
+                    r->lim->max[i], zp_limit_unit(i));
+        } else if (r->lim->max[i] > 0) {
             fprintf(f, "| %s | %.4g %s | %g %s | %s |\n", zp_limit_name(i), v[i],
                     zp_limit_unit(i), r->lim->max[i], zp_limit_unit(i),
                     zp_limits_kept(i, v[i], r->lim->max[i]) ? "kept" : "**broken**");
@@ -401,6 +438,9 @@ static void md_survivable(FILE *f, const zp_report *r) {
         fprintf(f, " (%s).\n", w->cons > 0 ? "**broken**: the search ran out of rounds"
                                              : "kept");
     }
+    if (r->diag) {
+        zp_report_diagnosis_md(f, r->diag);
+    }
 }
 
 static void md_search(FILE *f, const zp_report *r) {
@@ -442,15 +482,17 @@ static void md_search(FILE *f, const zp_report *r) {
             sentence + 1);
 }
 
-static void md_robustness(FILE *f, const zp_verify *v) {
+static void md_robustness(FILE *f, const zp_verify *v, const zp_limits *lim) {
     fputs("\n## Robustness\n\n", f);
     if (!v->robust_done) {
         fputs("Not measured (the search was interrupted).\n", f);
         return;
     }
-    fputs("Every force scaled by 1 + p u, u uniform in [-1, 1] (seeded):\n\n"
-          "| p | runs | finished alive | margin kept |\n|---|---|---|---|\n",
-          f);
+    /* a run counts as kept when it keeps what the search kept: the margin, and the limits */
+    fprintf(f,
+            "Every force scaled by 1 + p u, u uniform in [-1, 1] (seeded):\n\n"
+            "| p | runs | finished alive | margin%s kept |\n|---|---|---|---|\n",
+            lim && zp_limits_any(lim) ? " and every limit" : "");
     for (int i = 0; i < ZP_VERIFY_LEVELS; i++) {
         const zp_robust *rb = &v->rob[i];
         fprintf(f, "| %g %% | %d | %.1f %% | %.1f %% |\n", 100 * rb->level, rb->n,
@@ -508,6 +550,6 @@ void zp_report_write_md(FILE *f, const zp_report *r) {
         md_survivable(f, r);
     }
     md_search(f, r);
-    md_robustness(f, r->v);
+    md_robustness(f, r->v, r->lim);
     md_figures_rerun(f, r);
 }

@@ -5,6 +5,7 @@
 
 #include <stdio.h>
 
+#include "diagnose.h"
 #include "robust.h"
 #include "search.h"
 #include "verify.h"
@@ -15,8 +16,8 @@ typedef struct zp_report {
     const zp_search_result *res;   /* borrowed */
     const zp_verify *v;            /* borrowed: v->run is the best run at the scene's tolerance */
     const zp_sim *best;            /* borrowed: the workspace of v->run (its kink crossings) */
-    const zp_result *study;        /* borrowed: the study's constant push, study_force */
-    double study_force;            /* N */
+    const zp_result *study;        /* borrowed, NULL: the scene gives no [drive] forces; else
+                                      their run, at the search's options */
     const char *algo;              /* strategy name */
     const char *method;            /* integrator name */
     const char *scene_arg;         /* the scene file as given, NULL: the built-in seed */
@@ -34,6 +35,7 @@ typedef struct zp_report {
     const zp_robust_check *check;  /* borrowed with box: the verification on fresh scenarios */
     const zp_accuracy *acc;        /* borrowed, NULL: no [solver] accuracy; else what the
                                       answer's run (at *solver) met */
+    const zp_diagnosis *diag;      /* borrowed, NULL: the answer keeps every fresh scenario */
 } zp_report;
 
 /* A schedule file: only [drive] forces (CONFIG.md), with comments saying what it is. */
@@ -47,5 +49,11 @@ void zp_summary_headroom_json(FILE *f, const zp_headroom *h);
    budget is likely to help. */
 void zp_report_convergence(char *buf, size_t n, const zp_search_result *s);
 void zp_report_write_md(FILE *f, const zp_report *r);
+/* What run (of r's scene) breaks first: "death", "a stall", "the margin", a [limits] key, or
+   "" when it keeps them all. */
+void zp_report_breaks(const zp_report *r, const zp_result *run, char *out, size_t cap);
+/* The scenarios the answer fails (report_diag.c): a report.md section, summary.json's value. */
+void zp_report_diagnosis_md(FILE *f, const zp_diagnosis *d);
+void zp_report_diagnosis_json(FILE *f, const zp_diagnosis *d);
 
 #endif

@@ -477,6 +477,12 @@ static void spread_take(zp_spread_end *e, double v, int i, const double *u, int 
 zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
                            const double *p, int n, unsigned long seed, int nthreads,
                            const zp_spread *sp, zp_robust_check *c) {
+    return zp_robust_verify_each(ob, b, so, p, n, seed, nthreads, sp, c, NULL);
+}
+
+zp_status zp_robust_verify_each(const zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
+                                const double *p, int n, unsigned long seed, int nthreads,
+                                const zp_spread *sp, zp_robust_check *c, zp_robust_worst *each) {
     zp_schedule sched = zp_objective_schedule(ob, p);
     memset(c, 0, sizeof *c);
     c->samples = n;
@@ -524,6 +530,9 @@ zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim
     c->fastest.value = -c->fastest.value;
     c->arrival_low.value = -c->arrival_low.value;
     c->lower_95 = zp_clopper_pearson_lower(c->all_kept, n, 0.05);
+    if (each && !st) {
+        memcpy(each, pw, sizeof *pw * (size_t)n);
+    }
     zp_pool_free(w);
     free(u);
     free(pw);

@@ -145,6 +145,10 @@ zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts 
 zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
                            const double *p, int n, unsigned long seed, int nthreads,
                            const zp_spread *sp, zp_robust_check *c);
+/* zp_robust_verify, with each scenario's point and verdict in each[n] as well (may be NULL). */
+zp_status zp_robust_verify_each(const zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
+                                const double *p, int n, unsigned long seed, int nthreads,
+                                const zp_spread *sp, zp_robust_check *c, zp_robust_worst *each);
 /* A scene's problem as the search sees it: the objective (margin, limits, and the set when
    the scene has [robust] ranges), the box and the set, then what the robust search found. */
 typedef struct zp_robust_problem {

@@ -139,7 +139,12 @@ static void json_scenarios(FILE *f, const zp_report *r) {
         }
         fputs("]}", f);
     }
-    fputs("}}", f);
+    fputs("}", f);
+    if (r->diag) {
+        fputs(", \"diagnosis\": ", f);
+        zp_report_diagnosis_json(f, r->diag);
+    }
+    fputs("}", f);
 }
 
 void zp_report_write_json(FILE *f, const zp_report *r) {
@@ -191,11 +196,19 @@ void zp_report_write_json(FILE *f, const zp_report *r) {
     } else {
         fputs("null", f);
     }
-    fputs(",\n  \"study\": {\"force\": ", f);
-    zp_out_json_number(f, r->study_force);
-    fprintf(f, ", \"outcome\": \"%s\", \"time\": ", zp_sim_outcome_name(r->study->outcome));
-    zp_out_json_number(f, r->study->time);
-    fputs("},\n  \"robustness\": ", f);
+    fputs(",\n  \"scene_forces\": ", f);
+    if (r->study) {
+        char breaks[64];
+        zp_report_breaks(r, r->study, breaks, sizeof breaks);
+        fprintf(f, "{\"outcome\": \"%s\", \"time\": ", zp_sim_outcome_name(r->study->outcome));
+        zp_out_json_number(f, r->study->time);
+        fputs(", \"breaks\": ", f);
+        zp_out_json_string(f, breaks);
+        fputc('}', f);
+    } else {
+        fputs("null", f);
+    }
+    fputs(",\n  \"robustness\": ", f);
     json_robust(f, r->v);
     fputs(",\n  \"limits\": ", f);
     zp_out_json_limits(f, m, run, r->lim);

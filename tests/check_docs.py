@@ -4,7 +4,7 @@ accepts is in docs/scene-file.md under its section, every option the commands' -
 and every top-level JSON key `simulate --json` prints is in docs/commands.md, every link
 between the docs resolves, and nothing a user reads sends them to files a clone lacks.
 
-usage: check_docs.py SOURCE_DIR ZIPOPT_EXE"""
+usage: check_docs.py ZIPOPT_EXE SOURCE_DIR"""
 import json
 import os
 import re
@@ -12,13 +12,9 @@ import subprocess
 import sys
 import tempfile
 
-src, exe = sys.argv[1], sys.argv[2]
-failures = []
+from checklib import check, done
 
-
-def fail(msg):
-    failures.append(msg)
-    print("FAIL:", msg)
+exe, src = sys.argv[1], sys.argv[2]
 
 
 def read(rel):
@@ -32,25 +28,25 @@ sec_names = re.search(r"zp_scene_sec_names\[S_COUNT\] = \{(.*?)\};", lines_c, re
 sections = re.findall(r'"([a-z]+)"', sec_names)
 keys = re.findall(r'\[K_[A-Z0-9_]+\] = \{S_([A-Z]+), "([a-z0-9_]+)"', lines_c)
 if len(keys) < 40 or not sections:
-    fail("could not read the key table of src/io/scene_lines.c (%d keys)" % len(keys))
+    check(False, "could not read the key table of src/io/scene_lines.c (%d keys)" % len(keys))
 
 scene_doc = read("docs/scene-file.md")
 # the text under each `## [section]` heading
 blocks = dict(re.findall(r"^## \[([a-z]+)\]\n(.*?)(?=^## |\Z)", scene_doc, re.S | re.M))
 for s in sections:
     if s not in blocks:
-        fail("docs/scene-file.md has no heading `## [%s]`" % s)
+        check(False, "docs/scene-file.md has no heading `## [%s]`" % s)
 for sec, name in keys:
     block = blocks.get(sec.lower(), "")
     if not re.search(r"^\| `%s` \|" % re.escape(name), block, re.M):
-        fail("docs/scene-file.md does not document [%s] %s in a table row" % (sec.lower(), name))
+        check(False, "docs/scene-file.md does not document [%s] %s in a table row" % (sec.lower(), name))
 
 # every option of every command's --help
 commands_doc = read("docs/commands.md")
 help_all = subprocess.run([exe, "--help-all"], capture_output=True, text=True, check=True).stdout
 for opt in sorted(set(re.findall(r"(?<![\w-])--[a-z][a-z-]*", help_all))):
     if not re.search(r"`[^`]*%s(?![a-z-])" % re.escape(opt), commands_doc):
-        fail("docs/commands.md does not document the option %s" % opt)
+        check(False, "docs/commands.md does not document the option %s" % opt)
 
 # every top-level key of simulate --json, on a plain scene and one with every optional effect
 for scene in ("config/seed.ini", "config/seed_real.ini"):
@@ -61,11 +57,11 @@ for scene in ("config/seed.ini", "config/seed_real.ini"):
     try:
         obj = json.loads(out.stdout)
     except ValueError:
-        fail("simulate %s --json printed no JSON object: %s" % (scene, out.stderr.strip()))
+        check(False, "simulate %s --json printed no JSON object: %s" % (scene, out.stderr.strip()))
         continue
     for key in obj:
         if "`%s`" % key not in commands_doc:
-            fail("docs/commands.md does not document the JSON key %s (simulate %s)" % (key, scene))
+            check(False, "docs/commands.md does not document the JSON key %s (simulate %s)" % (key, scene))
 
 # links between the docs resolve (files, and anchors as headings render them)
 def anchors(text):
@@ -87,11 +83,11 @@ for doc in docs:
         full = os.path.normpath(os.path.join(src, os.path.dirname(doc), path)) if path else \
             os.path.join(src, doc)
         if not os.path.exists(full):
-            fail("%s links to %s, which does not exist" % (doc, target))
+            check(False, "%s links to %s, which does not exist" % (doc, target))
         elif anchor and full.endswith(".md"):
             with open(full, encoding="utf-8") as f:
                 if anchor not in anchors(f.read()):
-                    fail("%s links to %s: no such heading" % (doc, target))
+                    check(False, "%s links to %s: no such heading" % (doc, target))
 
 # nothing a user reads points outside the clone
 outside = re.compile(r"\.\./shared|\b(CONFIG|CLI|MODEL)\.md")
@@ -101,12 +97,11 @@ readable["zipopt --help-all"] = help_all
 for name, text in readable.items():
     m = outside.search(text)
     if m:
-        fail("%s refers to %s, which a user's clone does not have" % (name, m.group(0)))
+        check(False, "%s refers to %s, which a user's clone does not have" % (name, m.group(0)))
 
 readme_lines = read("README.md").count("\n")
 if readme_lines > 300:
-    fail("README.md has %d lines; it is the front door (at most 300), details go to docs/"
+    check(False, "README.md has %d lines; it is the front door (at most 300), details go to docs/"
          % readme_lines)
 
-print("check_docs: %d problems" % len(failures))
-sys.exit(1 if failures else 0)
+done("check_docs")

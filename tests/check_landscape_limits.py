@@ -14,16 +14,9 @@ import subprocess
 import sys
 import tempfile
 
+from checklib import check, done
+
 exe, src = sys.argv[1], sys.argv[2]
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-        print("FAIL:", what)
-
-
 ARRIVAL, G, MARGIN = 42.0, 12.5, 10.0  # km/h, g, deg: the seed's constant pushes straddle them
 with open(os.path.join(src, "config", "seed.ini")) as f:
     seed = f.read()
@@ -88,5 +81,4 @@ with tempfile.TemporaryDirectory() as tmp:
               or (kept_rows and min(kept_rows)[1] == force),
               "the fastest finishing push is named with what it breaks: %s" % p.stdout)
 
-print("check_landscape_limits: %d problems" % len(failures))
-sys.exit(1 if failures else 0)
+done("check_landscape_limits")

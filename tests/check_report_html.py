@@ -11,6 +11,8 @@ import subprocess
 import sys
 import tempfile
 
+from checklib import check, done
+
 exe, src = sys.argv[1], sys.argv[2]
 browser = shutil.which("chromium") or shutil.which("chromium-browser")
 if not browser:
@@ -38,7 +40,6 @@ document.getElementById('r').onload = function () {
 </script></body></html>
 """
 
-failures = []
 with tempfile.TemporaryDirectory() as tmp:
     out = os.path.join(tmp, "search")
     p = subprocess.run([exe, os.path.join(src, "config", "seed.ini"), "--max-evals", "300",
@@ -60,24 +61,21 @@ with tempfile.TemporaryDirectory() as tmp:
                        capture_output=True, text=True, timeout=120)
     m = re.search(r'data-result="images=(\d+) tables=(\d+) bad=([^"]*)"', r.stdout)
     if not m:
-        failures.append("the browser did not load report.html: %s" % r.stderr[-600:])
+        check(False, "the browser did not load report.html: %s" % r.stderr[-600:])
     else:
         images, tables, bad = int(m.group(1)), int(m.group(2)), m.group(3)
         if want_images < 4:
-            failures.append("report.md shows %d figures; the search draws 4" % want_images)
+            check(False, "report.md shows %d figures; the search draws 4" % want_images)
         if images != want_images:
-            failures.append("report.html shows %d images, report.md %d" % (images, want_images))
+            check(False, "report.html shows %d images, report.md %d" % (images, want_images))
         if tables != want_tables or tables == 0:
-            failures.append("report.html has %d tables, report.md %d" % (tables, want_tables))
+            check(False, "report.html has %d tables, report.md %d" % (tables, want_tables))
         if bad != "none":
-            failures.append("report.html: " + bad)
+            check(False, "report.html: " + bad)
     # no file the page could need lies beside it: it is one file
     with open(os.path.join(out, "report.html"), encoding="utf-8") as f:
         page = f.read()
     if re.search(r'(src|href)="(?!data:|#|https?:)[^"]+"', page):
-        failures.append("report.html refers to a file beside it")
+        check(False, "report.html refers to a file beside it")
 
-for f in failures:
-    print("FAIL:", f)
-print("check_report_html: %d problems" % len(failures))
-sys.exit(1 if failures else 0)
+done("check_report_html")

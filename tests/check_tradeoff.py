@@ -12,19 +12,12 @@ import signal
 import subprocess
 import sys
 import tempfile
+
+from checklib import check, done
 import time
 
 exe, src = sys.argv[1], sys.argv[2]
 seed = os.path.join(src, "config", "seed.ini")
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-        print("FAIL:", what)
-
-
 # the seed's nominal optimum: a 40-simulation search does not find it, the given schedule is it
 GIVEN = "59.5891457,500,500"
 with tempfile.TemporaryDirectory() as tmp:
@@ -76,5 +69,4 @@ with tempfile.TemporaryDirectory() as tmp:
             rows = list(csv.DictReader(f))
         check([r["force_error_pct"] for r in rows] == ["0"], "only the finished level: %s" % rows)
 
-print("check_tradeoff: %d problems" % len(failures))
-sys.exit(1 if failures else 0)
+done("check_tradeoff")

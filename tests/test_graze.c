@@ -38,6 +38,17 @@ static const char *seed_ini(double death_deg) {
     return seed_ini_text(v);
 }
 
+/* the trajectory rows of s's last run, copied out of its packed store (the caller frees) */
+static zp_row *rows_copy(const zp_sim *s, int *n) {
+    const zp_row_store *st = zp_sim_rows(s);
+    zp_row *v = malloc(sizeof *v * (size_t)(st->n > 0 ? st->n : 1));
+    for (int k = 0; v && k < st->n; k++) {
+        zp_row_store_get(st, k, &v[k]);
+    }
+    *n = v ? st->n : 0;
+    return v;
+}
+
 static void check_graze(const char *method, double rtol) {
     zp_scene sc;
     zp_model *m = tu_model(seed_ini(180), &sc);
@@ -77,13 +88,14 @@ static void check_graze(const char *method, double rtol) {
         zp_state_relative(m, &smp[0].c, phi, w);
         CHECK_NEAR(fabs(phi[k]), m2->phi_max, AT_ANGLE_TOL);
     }
-    const zp_row *rows = zp_sim_rows(s, &n);
+    zp_row *rows = rows_copy(s, &n);
     int before = 0;
     for (int j = 0; j < n && rows[j].t < died.time; j++) {
         zp_state_relative(m, &rows[j].c, phi, w);
         before += fabs(phi[k]) >= m2->phi_max;
     }
     CHECK(before == 0);
+    free(rows);
     printf("%-12s rtol %.0e: link %d dies at %.9f s (largest angle %.6f deg)\n", method, rtol,
            died.died_link, died.time, alive.max_rel_angle[k] * DEG);
     zp_sim_free(s);
@@ -125,7 +137,7 @@ static void check_per_joint(void) {
     CHECK(alive.outcome == ZP_OUTCOME_FINISHED && alive.max_rel_angle[2] * DEG > 130);
     /* the first row of the survivor past 130 deg on joint 3 bounds the death from above */
     int n;
-    const zp_row *rows = zp_sim_rows(*tu_last_sim(), &n);
+    zp_row *rows = rows_copy(*tu_last_sim(), &n);
     double t_past = INFINITY, t_before = 0;
     for (int j = 0; j < n && !isfinite(t_past); j++) {
         double phi[ZP_MAX_LINKS], w[ZP_MAX_LINKS];
@@ -136,6 +148,7 @@ static void check_per_joint(void) {
             t_before = rows[j].t;
         }
     }
+    free(rows);
     zp_scene s3, s1;
     zp_model *m3 = tu_model(seed_ini_text("180, 180, 130"), &s3);
     zp_model *m1 = tu_model(seed_ini_text("130, 180, 180"), &s1);

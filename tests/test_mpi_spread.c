@@ -1,10 +1,14 @@
 /* `mpirun -np 2 zipopt landscape` and the robust search under mpirun: the same files, bit for
    bit, as without MPI, written once by rank 0: each rank is told its own --out folder
-   (OMPI_COMM_WORLD_RANK) and only rank 0's may appear; the other rank prints nothing.
+   (OMPI_COMM_WORLD_RANK) and only rank 0's may appear; the other rank prints nothing. Ranks
+   that do not read the same scene (missing on rank 1, or other contents under its name) stop
+   together within seconds, exit 2, rank 0 saying which rank and why, nothing written (they
+   used to hang or abort with MPI's "Data unpack had inadequate space").
    Skipped (77) when zipopt is built without MPI or mpirun is missing. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "check.h"
@@ -94,6 +98,39 @@ static void robust_search(const char *mpirun, const char *dir) {
     CHECK(same_listing(a, b, parent));
 }
 
+/* every MPI command with rank r reading dir/rank<r>.ini: rank 1's missing, then different */
+static void disagreeing_ranks(const char *mpirun, const char *dir) {
+    char cmd[4096], path[700];
+    const char *commands[3] = {"sweep %s --vary drive.max=400:500:3 --run simulate",
+                               "%s --no-plot --max-evals 300", "landscape %s"};
+    snprintf(path, sizeof path, "%s/rank0.ini", dir);
+    snprintf(cmd, sizeof cmd, "cp %s/config/seed.ini %s", ZP_SOURCE_DIR, path);
+    CHECK(system(cmd) == 0);
+    for (int differ = 0; differ < 2; differ++) {
+        if (differ) { /* the same name on rank 1's machine, another body */
+            snprintf(cmd, sizeof cmd,
+                     "sed 's/^masses = 15, 5, 2/masses = 15, 5, 3/' %s > %s/rank1.ini", path, dir);
+            CHECK(system(cmd) == 0);
+        }
+        for (int c = 0; c < 3; c++) {
+            char args[1024];
+            snprintf(args, sizeof args, commands[c], "'\"$D\"'/rank$OMPI_COMM_WORLD_RANK.ini");
+            snprintf(cmd, sizeof cmd,
+                     "D=%s; export D; timeout 120 %s %s sh -c 'exec %s %s --out %s/out' 2>&1", dir,
+                     mpirun, mpi, ZP_EXE, args, dir);
+            time_t t0 = time(NULL);
+            int rc = run(cmd);
+            CHECK(rc == 2);
+            CHECK(time(NULL) - t0 < 60); /* not a hang: seconds, on a loaded machine */
+            CHECK(strstr(out, "the MPI ranks must read the same input") != NULL);
+            CHECK(strstr(out, differ ? "differs from rank 0's" : "rank 1: ") != NULL);
+            CHECK(differ || strstr(out, "No such file or directory") != NULL);
+            snprintf(cmd, sizeof cmd, "%s/out", dir);
+            CHECK(!tu_exists(cmd));
+        }
+    }
+}
+
 int main(void) {
     const char *mpirun = tu_mpirun();
     if (!mpirun) {
@@ -103,6 +140,7 @@ int main(void) {
     CHECK(mkdtemp(dir) != NULL);
     landscape(mpirun, dir);
     robust_search(mpirun, dir);
+    disagreeing_ranks(mpirun, dir);
     snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
     CHECK(system(cmd) == 0);
     return CHECK_DONE();

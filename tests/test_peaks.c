@@ -40,13 +40,29 @@ static double history(const zp_model *m, const zp_row *r, int q) {
     return q < m->nlink ? acc[q] : joint[q - m->nlink];
 }
 
+/* the trajectory rows of s's last run, copied out of its packed store (the caller frees) */
+static zp_row *rows_copy(const zp_sim *s, int *n) {
+    const zp_row_store *st = zp_sim_rows(s);
+    zp_row *v = malloc(sizeof *v * (size_t)(st->n > 0 ? st->n : 1));
+    for (int k = 0; v && k < st->n; k++) {
+        zp_row_store_get(st, k, &v[k]);
+    }
+    *n = v ? st->n : 0;
+    return v;
+}
+
 static const zp_row *run_rows(const zp_model *m, zp_sim *s, zp_input *in, zp_result *r, int *n,
                               int samples) {
     if (zp_sim_run(m, s, in, r) != ZP_OK) {
         fprintf(stderr, "run failed: %s\n", r->message);
         abort();
     }
-    return samples ? zp_sim_samples(s, n) : zp_sim_rows(s, n);
+    static zp_row *copy; /* the last rows copied out, kept until the next call */
+    if (samples) {
+        return zp_sim_samples(s, n);
+    }
+    free(copy);
+    return copy = rows_copy(s, n);
 }
 
 static void check_schedule(const zp_model *m, const zp_scene *sc, const double *f) {

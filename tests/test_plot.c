@@ -169,7 +169,7 @@ static int column(const char *header, const char *name) {
 }
 
 /* plot_run.dat against the rows: time and every centre of mass from state.c */
-static void check_run_data(const char *dir, const zp_model *m, const zp_row *rows, int n) {
+static void check_run_data(const char *dir, const zp_model *m, const zp_row_store *rows) {
     char path[2048];
     snprintf(path, sizeof path, "%s/plot_run.dat", dir);
     FILE *f = fopen(path, "r");
@@ -188,22 +188,24 @@ static void check_run_data(const char *dir, const zp_model *m, const zp_row *row
         CHECK(cc[b] > 0);
     }
     int k = 0, bad = 0;
-    while (fgets(line, sizeof line, f) && k < n) {
+    while (fgets(line, sizeof line, f) && k < rows->n) {
         double v[128];
         int nv = 0;
         for (char *t = strtok(line, " \n"); t && nv < 128; t = strtok(NULL, " \n")) {
             v[nv++] = atof(t);
         }
         double com[ZP_MAX_LINKS + 1][2];
-        zp_state_com(m, &rows[k].c, com);
-        bad += fabs(v[ct] - rows[k].t) > DATA_TOL * fmax(1, rows[k].t);
+        zp_row row;
+        zp_row_store_get(rows, k, &row);
+        zp_state_com(m, &row.c, com);
+        bad += fabs(v[ct] - row.t) > DATA_TOL * fmax(1, row.t);
         for (int b = 0; b <= m->nlink; b++) {
             bad += fabs(v[cc[b]] - com[b][0]) > DATA_TOL * fmax(1, fabs(com[b][0]));
             bad += fabs(v[cc[b] + 1] - com[b][1]) > DATA_TOL * fmax(1, fabs(com[b][1]));
         }
         k++;
     }
-    CHECK(k == n);
+    CHECK(k == rows->n);
     CHECK(bad == 0);
     fclose(f);
 }
@@ -261,8 +263,7 @@ static void test_figures(void) {
     zp_plot_frames_input(&po, &in);
     CHECK(s && zp_sim_run(m, s, &in, &r) == ZP_OK);
     CHECK(r.outcome == ZP_OUTCOME_FINISHED);
-    int n;
-    const zp_row *rows = zp_sim_rows(s, &n);
+    const zp_row_store *rows = zp_sim_rows(s);
 
     CHECK(zp_plot_parse_size("480x200", &po, why, sizeof why) == 0);
     po.animate = 1;
@@ -315,7 +316,7 @@ static void test_figures(void) {
     for (int i = 0; i < 10; i++) {
         CHECK(exists(dir, scripts[i]));
     }
-    check_run_data(dir, m, rows, n);
+    check_run_data(dir, m, rows);
     check_frame_data(dir, m, 0); /* block 0: the frame at x = 0 */
     /* no hidden working folder is left behind */
     char cmd[2400];

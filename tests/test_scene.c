@@ -609,7 +609,8 @@ static void test_expr_names(void) {
 }
 
 /* the model's course checks: continuity states its tolerance; a NaN gap and a pole are
-   refused; a smooth step whose f'' expression overflows is accepted */
+   refused, also a pole of residue 1e-9 or 1e-15 (which used to pass: the run "died" at it with
+   a 1443 J energy residual) and 1e-12/(x - p)^2; a smooth step whose f'' expression overflows is accepted */
 static void test_course_probing(void) {
     zp_scene sc;
     zp_diag d;
@@ -622,6 +623,20 @@ static void test_course_probing(void) {
     CHECK(build(with_line(6, "section = 100 : -x/10 + 16 + tan(x/10) - tan(6)"), &d, &sc, NULL,
                 NULL) == ZP_ERR_INPUT);
     CHECK(has_message(&d, "t.ini:6: [course] section: ") && has_message(&d, "near x = 78.5"));
+    /* poles with residues too small for the jump between probes: found where f'' turns */
+    CHECK(build(with_line(6, "section = 100 : -x/10 + 16 + 1e-9/(x - 80.3)"), &d, &sc, NULL,
+                NULL) == ZP_ERR_INPUT);
+    CHECK(has_message(&d, "t.ini:6: [course] section: ") && has_message(&d, "near x = 80.3"));
+    CHECK(build(with_line(6, "section = 100 : -x/10 + 16 + 1e-15/(x - 80.3)"), &d, &sc, NULL,
+                NULL) == ZP_ERR_INPUT);
+    CHECK(has_message(&d, "near x = 80.3"));
+    /* and one that f' does not reveal (f'' keeps its sign): the denominator's base turns */
+    CHECK(build(with_line(6, "section = 100 : -x/10 + 16 + 1e-12/(x - 80.3)^2"), &d, &sc, NULL,
+                NULL) == ZP_ERR_INPUT);
+    CHECK(has_message(&d, "t.ini:6: [course] section: ") && has_message(&d, "near x = 80.3"));
+    /* a denominator that never vanishes is no pole */
+    CHECK(build(with_line(6, "section = 100 : -x/10 + 16 + 1/((x - 80)^2 + 1) - 1/401"), &d,
+                &sc, NULL, NULL) == ZP_OK);
     /* -10 tanh(100 (x - 80)): a 20 m drop over a few cm, smooth; f'' = inf/inf far from 80 */
     double x[3] = {60, 80, 100}, y[3];
     zp_status st =

@@ -87,11 +87,15 @@ static void check_small_oscillation(void) {
     CHECK(r.outcome == ZP_OUTCOME_STALLED && r.stall == ZP_STALL_T_MAX);
     int n, ncross = 0;
     double first = 0, last = 0;
-    const zp_row *rows = zp_sim_rows(s, &n);
+    const zp_row_store *rows = zp_sim_rows(s);
+    n = rows->n;
     for (int k = 1; k < n; k++) {
-        double a = rows[k - 1].c.q[2], b = rows[k].c.q[2];
+        zp_row r0, r1;
+        zp_row_store_get(rows, k - 1, &r0);
+        zp_row_store_get(rows, k, &r1);
+        double a = r0.c.q[2], b = r1.c.q[2];
         if (a < 0 && b >= 0) { /* upward zero crossing, linearly interpolated */
-            double t = rows[k - 1].t + (rows[k].t - rows[k - 1].t) * (-a) / (b - a);
+            double t = r0.t + (r1.t - r0.t) * (-a) / (b - a);
             first = ncross ? first : t;
             last = t;
             ncross++;
@@ -164,11 +168,13 @@ static void check_dampers(void) {
     CHECK(zp_sim_run(m, s, &in, &r) == ZP_OK);
     CHECK(r.outcome == ZP_OUTCOME_STALLED && r.stall == ZP_STALL_T_MAX);
     CHECK_NEAR(r.time, 120, 1e-9);
-    int n;
-    const zp_row *rows = zp_sim_rows(s, &n);
-    for (int k = 1; k < n; k++) {
-        CHECK(rows[k].w_damp >= rows[k - 1].w_damp);
-        zp_energy e = zp_state_energy(m, &rows[k].c);
+    const zp_row_store *rows = zp_sim_rows(s);
+    for (int k = 1; k < rows->n; k++) {
+        zp_row r0, r1;
+        zp_row_store_get(rows, k - 1, &r0);
+        zp_row_store_get(rows, k, &r1);
+        CHECK(r1.w_damp >= r0.w_damp);
+        zp_energy e = zp_state_energy(m, &r1.c);
         CHECK(e.kinetic + e.potential <= r.e_initial + 1e-6 * r.e_initial);
     }
     zp_sim_free(s);
@@ -287,11 +293,13 @@ static void check_samples_and_extremes(void) {
         CHECK(smp[k].sec == k + 1);
         CHECK_NEAR(smp[k].c.v[1], slope_after[k] * smp[k].c.v[0], 1e-9);
     }
-    const zp_row *rows = zp_sim_rows(s, &n);
+    const zp_row_store *rows = zp_sim_rows(s);
     double row_max[ZP_MAX_LINKS] = {0};
-    for (int k = 0; k < n; k++) {
+    for (int k = 0; k < rows->n; k++) {
         double phi[ZP_MAX_LINKS], w[ZP_MAX_LINKS];
-        zp_state_relative(m, &rows[k].c, phi, w);
+        zp_row row;
+        zp_row_store_get(rows, k, &row);
+        zp_state_relative(m, &row.c, phi, w);
         for (int i = 0; i < m->nlink; i++) {
             row_max[i] = fmax(row_max[i], fabs(phi[i]));
         }

@@ -39,15 +39,6 @@ static const char *formulation_doc(const char *name) {
 }
 
 /* the model decides what counts as a kink; check only reports it */
-static int is_kink(const zp_model *m, int left) {
-    for (int i = 0; i < m->nkink; i++) {
-        if (m->kink[i].left == left) {
-            return 1;
-        }
-    }
-    return 0;
-}
-
 static void print_course(const zp_model *m) {
     printf("course: %d section%s, x from %g to %g m\n", m->nsec, m->nsec == 1 ? "" : "s", m->xb[0],
            m->xb[m->nsec]);
@@ -68,7 +59,7 @@ static void print_course(const zp_model *m) {
     for (int k = 1; k < m->nsec; k++) {
         double x = m->xb[k];
         zp_track l = zp_course_eval(m->course, k - 1, x), r = zp_course_eval(m->course, k, x);
-        int kink = is_kink(m, k - 1);
+        int kink = zp_model_is_kink(m, k - 1);
         /* 10 digits: typed back, the height is within the continuity tolerance 1e-9 (1 + |y|) */
         printf("  x = %g m, y = %.10g m: slope %.6g -> %.6g (jump %+.6g, %.3g deg): %s\n", x, l.f,
                l.fp, r.fp, r.fp - l.fp, (atan(r.fp) - atan(l.fp)) * 180 / M_PI,
@@ -213,7 +204,7 @@ static void print_json(const zp_setup *st) {
         json_num("y", l.f, ", ");
         json_num("slope_left", l.fp, ", ");
         json_num("slope_right", r.fp, ", ");
-        printf("\"kink\": %s}", is_kink(m, k - 1) ? "true" : "false");
+        printf("\"kink\": %s}", zp_model_is_kink(m, k - 1) ? "true" : "false");
     }
     printf("], ");
     json_num("trolley_mass", m->m0, ", ");

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "estimate.h"
 #include "mpi_spread.h"
 #include "out_csv.h"
 #include "out_file.h"
@@ -20,7 +21,6 @@
 #include "setup.h"
 #include "verify.h"
 
-#define STUDY_FORCE 100 /* N per section: the original study's push */
 #define NROBUST 200     /* robustness runs per perturbation level */
 
 /* set by the first Ctrl-C (the transaction's handler): the search stops cleanly; a second
@@ -209,6 +209,25 @@ static void on_verify(void *user, int done, int total) {
     }
 }
 
+/* The fresh scenarios the answer fails, when it fails any, told apart by what breaks and
+   where: the verification's scenarios run again with its options, each verdict kept. 0, or -1
+   without memory (then no diagnosis). */
+static int diagnose(const zp_robust_problem *pb, const zp_scene *sc, const zp_sim_opts *fast,
+                    const double *p, zp_diagnosis *d) {
+    int n = pb->check.samples;
+    zp_robust_worst *each = malloc(sizeof *each * (size_t)n);
+    zp_sim_opts to = zp_estimate_tighter(fast); /* as zp_robust_solve verified */
+    to.track_loads = 0;
+    zp_robust_check c;
+    int bad = !each || zp_robust_verify_each(&pb->ob, &pb->box, &to, p, n, sc->seed, 0, NULL,
+                                             &c, each);
+    if (!bad) {
+        zp_diagnose(&pb->box, &pb->ob, each, n, d);
+    }
+    free(each);
+    return bad ? -1 : 0;
+}
+
 /* report.md, report.html, schedule.ini, summary.json and trajectory.csv into the transaction */
 static int write_outputs(zp_tx *t, const zp_report *r, zp_sim *best_sim) {
     char err[1400] = "", note[200];
@@ -229,9 +248,7 @@ static int write_outputs(zp_tx *t, const zp_report *r, zp_sim *best_sim) {
     zp_schedule best = zp_schedule_with(r->shape, r->res->force);
     zp_report_write_schedule(ini, r->sc, &best, note);
     zp_report_write_json(js, r);
-    int nrows;
-    const zp_row *rows = zp_sim_rows(best_sim, &nrows);
-    zp_out_csv_trajectory(csv, r->m, rows, nrows);
+    zp_out_csv_trajectory(csv, r->m, zp_sim_rows(best_sim));
     /* report.html: report.md as one page a person can share, its figures inside it */
     char title[300];
     snprintf(title, sizeof title, "zipopt: best forcing, %s", r->sc->name);
@@ -275,10 +292,38 @@ static int figures_finish(zp_tx *t, zp_gnuplot_job *job, zp_plot_info *info) {
     return !info->no_gnuplot;
 }
 
-static void print_summary(const zp_report *r) {
+/* whether the answer holds when rerun with [solver] (v->run) and 100x tighter (v->tight): it
+   finishes with the margin at both, at times that agree. The search ranks with [optimize]'s
+   own, possibly much looser, tolerance. 0 with why in why. */
+static int answer_holds(const zp_objective *ob, const zp_verify *v, char *why, size_t n) {
+    double angle = 0;
+    for (int i = 0; i < ob->m->nlink; i++) {
+        angle = fmax(angle, v->run->max_rel_angle[i]);
+    }
+    if (v->run->outcome != ZP_OUTCOME_FINISHED) {
+        snprintf(why, n, "rerun with [solver] it %s at %.4f s",
+                 zp_sim_outcome_name(v->run->outcome), v->run->time);
+    } else if (angle > ob->limit) {
+        snprintf(why, n,
+                 "rerun with [solver] its largest joint angle is %.2f deg, past the %.2f deg the "
+                 "margin allows",
+                 angle * 180 / M_PI, ob->limit * 180 / M_PI);
+    } else if (!v->agree) {
+        snprintf(why, n, "it is not verified at the tighter tolerance (rtol %.0e)", v->rtol);
+    } else {
+        return 1;
+    }
+    return 0;
+}
+
+static void print_summary(const zp_report *r, const char *unheld) {
     const zp_search_result *s = r->res;
     const zp_result *run = r->v->run;
-    if (!s->found) {
+    if (unheld[0]) {
+        printf("no schedule found: the search's best (ranked with [optimize]'s tolerance) does not "
+               "hold: %s; it is written as the closest candidate (tighten [optimize] rtol)\n",
+               unheld);
+    } else if (!s->found) {
         printf("no schedule keeps the margin%s: none of %ld simulations survived with it; the "
                "closest candidate is written, marked as such\n",
                r->box || zp_limits_any(r->lim) ? ", the [limits] and the [robust] scenarios" : "",
@@ -419,17 +464,21 @@ static int search(int argc, char **argv, const zp_spread *sp) {
         fprintf(stderr, "zipopt: %s; nothing was written\n", err);
         goto done;
     }
-    zp_result study;
-    double study_f[ZP_MAX_SECTIONS];
-    for (int k = 0; k < m->nsec; k++) {
-        study_f[k] = STUDY_FORCE;
+    /* not found unless it holds with [solver]: exit 3 with it as the closest candidate */
+    char unheld[256] = "";
+    if (res.found && !res.interrupted && !answer_holds(&ob, &v, unheld, sizeof unheld)) {
+        res.found = 0;
     }
-    study_sim = zp_sim_create(m, &st.search);
-    zp_schedule study_sched = zp_schedule_sections(m->nsec, study_f, 0, 0);
-    zp_input in = {.sched = &study_sched};
-    if (!study_sim || zp_sim_run(m, study_sim, &in, &study)) {
-        fprintf(stderr, "zipopt: the study's %d N run failed: %s; nothing was written\n",
-                STUDY_FORCE, study_sim ? study.message : "out of memory");
+    /* the scene's own [drive] forces, judged as the search judges (peaks where limits need
+       them), for the report's comparison */
+    static zp_result study;
+    int given = sc->nforce > 0;
+    study_sim = given ? zp_sim_create(m, &fast) : NULL;
+    zp_input in = {.sched = &st.sched};
+    if (given && (!study_sim || zp_sim_run(m, study_sim, &in, &study))) {
+        fprintf(stderr, "zipopt: the run of the scene's [drive] forces failed: %s; nothing was "
+                        "written\n",
+                study_sim ? study.message : "out of memory");
         goto done;
     }
     /* the figures before the report, so that it links only those drawn */
@@ -442,19 +491,26 @@ static int search(int argc, char **argv, const zp_spread *sp) {
         drawn = figures_finish(&tx, &job, &info);
     }
     int robust = pb.robust;
-    zp_report r = {sc, m, &res, &v, best_sim, &study, STUDY_FORCE,
+    static zp_diagnosis diag;
+    int failing = robust && pb.check.samples > 0 && pb.check.all_kept < pb.check.samples;
+    if (failing) {
+        phase_start(&pc, "diagnosis: the fresh scenarios the answer fails\n");
+        failing = !diagnose(&pb, sc, &fast, res.force, &diag);
+    }
+    zp_report r = {sc, m, &res, &v, best_sim, given ? &study : NULL,
                    zp_search_algo_get(o.algo)->name, zp_method_get(st.sim.method)->name, a.scene,
                    tx.dir, drawn > 0, &fast, &answer, &st.sched, st.seed, st.max_evals,
                    .lim = &pb.ob.lim, .box = robust ? &pb.box : NULL,
                    .set = robust ? &pb.set : NULL, .rinfo = robust ? &pb.info : NULL,
-                   .check = robust ? &pb.check : NULL, .acc = sc->accuracy > 0 ? &acc : NULL};
+                   .check = robust ? &pb.check : NULL, .acc = sc->accuracy > 0 ? &acc : NULL,
+                   .diag = failing ? &diag : NULL};
     if (drawn < 0 || write_outputs(&tx, &r, best_sim) || zp_cli_out_commit(&tx, "")) {
         goto done;
     }
     if (a.json) {
         zp_report_write_json(stdout, &r); /* summary.json's object */
     } else {
-        print_summary(&r);
+        print_summary(&r, unheld);
     }
     fprintf(a.json ? stderr : stdout, "wrote in %s: %s\n", tx.dir, tx.written);
     status = ZP_EXIT_OK;

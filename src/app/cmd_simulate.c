@@ -153,7 +153,9 @@ static void print_limits(const zp_model *m, const zp_result *r, const zp_limits 
     double v[ZP_LIMIT_COUNT];
     zp_limits_reached(m, r, v);
     for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
-        if (lim->max[i] > 0) {
+        if (lim->max[i] > 0 && !zp_limit_reached_in(r, i)) {
+            printf("limit %s: not reached (the trolley did not arrive)\n", zp_limit_name(i));
+        } else if (lim->max[i] > 0) {
             printf("limit %s: reached %.4g %s of %g (%s)\n", zp_limit_name(i), v[i],
                    zp_limit_unit(i), lim->max[i],
                    zp_limits_kept(i, v[i], lim->max[i]) ? "kept" : "BROKEN");
@@ -183,8 +185,7 @@ static void print_text(const zp_model *m, const zp_result *r) {
     if (m->physics) {
         printf("drag work: %.6g J, friction work: %.6g J\n", r->w_drag, r->w_fric);
     }
-    printf("energy audit residual: %.3g J\n", r->e_final - r->e_initial - r->w_drive + r->w_damp +
-                                                   r->e_impulse + r->w_drag + r->w_fric);
+    printf("energy audit residual: %.3g J\n", zp_estimate_energy_residual(r));
     printf("steps: %ld (and %ld rejected), rhs evaluations: %ld, wall: %.4f s\n", r->steps,
            r->rejected, r->rhs_evals, r->wall_s);
 }
@@ -219,9 +220,7 @@ static int write_files(zp_tx *t, const zp_model *m, zp_sim *s, const zp_result *
         fprintf(stderr, "zipopt simulate: %s; nothing was written\n", err);
         return -1;
     }
-    int nrows;
-    const zp_row *rows = zp_sim_rows(s, &nrows);
-    zp_out_csv_trajectory(csv, m, rows, nrows);
+    zp_out_csv_trajectory(csv, m, zp_sim_rows(s));
     zp_out_json_result(js, m, r, s, meta);
     return 0;
 }

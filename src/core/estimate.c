@@ -6,15 +6,16 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-/* the work-energy audit of MODEL.md: E_final - E_initial - W_drive + W_damp + E_impulse */
-static double energy_residual(const zp_result *r) {
-    return r->e_final - r->e_initial - r->w_drive + r->w_damp + r->e_impulse;
+double zp_estimate_energy_residual(const zp_result *r) {
+    /* drag and friction work are 0 without [physics]: the sum is then the plain audit's */
+    return r->e_final - r->e_initial - r->w_drive + r->w_damp + r->e_impulse + r->w_drag +
+           r->w_fric;
 }
 
 /* the energies the audit adds up: a residual is judged against their size */
 static double energy_scale(const zp_result *r) {
     return fabs(r->e_initial) + fabs(r->e_final) + fabs(r->w_drive) + fabs(r->w_damp) +
-           fabs(r->e_impulse);
+           fabs(r->e_impulse) + fabs(r->w_drag) + fabs(r->w_fric);
 }
 
 zp_sim_opts zp_estimate_tighter(const zp_sim_opts *o) {
@@ -47,7 +48,7 @@ void zp_estimate_run(const zp_model *m, const zp_sim_opts *o, const zp_input *in
         e->time_error = fabs(r->time - tight->time);
         e->sensitive = tight->outcome != r->outcome || tight->died_link != r->died_link ||
                        tight->stall != r->stall;
-        e->energy_residual = energy_residual(r);
+        e->energy_residual = zp_estimate_energy_residual(r);
         e->energy_large = fabs(e->energy_residual) > ZP_ESTIMATE_ENERGY_REL * energy_scale(r);
     }
     zp_sim_free(s);

@@ -114,10 +114,11 @@ static void lagrange_relative(const zp_model *m, const double *y, double *phi, d
 }
 
 /* centre-of-mass accelerations, joint reactions and normal force from q''; fx, fy the force on
-   the system other than gravity and the course, fd NULL or the drag on each body */
+   the system other than gravity and the course, fd NULL or the drag on each body; sn, cs the
+   sines and cosines of the angles, which the equations computed already */
 static void lagrange_loads(const zp_model *m, const zp_drive_now *dn, double fx, double fy,
-                           double (*fd)[2], const double *y, const double *qdd,
-                           zp_loads *ld) {
+                           double (*fd)[2], const double *y, const double *qdd, const double *sn,
+                           const double *cs, zp_loads *ld) {
     int n = m->nlink, nq = n + 1;
     double xd = y[nq], fp = dn->tr.fp;
     double ax = qdd[0], ay = fp * qdd[0] + dn->tr.fpp * xd * xd; /* joint above the link */
@@ -125,7 +126,7 @@ static void lagrange_loads(const zp_model *m, const zp_drive_now *dn, double fx,
     ld->acc[0][1] = ay;
     double sx = m->m0 * ax, sy = m->m0 * (ay + m->g); /* sum of m (a - g) */
     for (int i = 0; i < n; i++) {
-        double th = y[1 + i], w = y[nq + 1 + i], s = sin(th), c = cos(th);
+        double w = y[nq + 1 + i], s = sn[i], c = cs[i];
         double tx = c * qdd[1 + i] - s * w * w, ty = s * qdd[1 + i] + c * w * w;
         ld->acc[i + 1][0] = ax + m->half[i] * tx;
         ld->acc[i + 1][1] = ay + m->half[i] * ty;
@@ -187,11 +188,13 @@ static inline double drag_terms(const zp_model *m, double fp, double xd, const d
 /* rolling resistance: its generalized force (x row only) along u = M^-1 e_x added to qdd,
    with N affine in it; with dn->hold the force that keeps x'' = 0 instead, its tangential
    value in *hold. fx, fy: the force on the system other than gravity, course and friction.
-   Returns the power the friction takes out. */
-static inline double friction_terms(const zp_model *m, const zp_drive_now *dn, double xd,
-                                    double fx, double fy, const double *s, const double *c,
-                                    const double *wd2, int n, const double *u, double *qdd,
-                                    double *hold) {
+   The power the friction takes out in *pout. Sliding, N = n0 + cf |N| nu has one solution
+   while mu |(1, f')| |nu| < 1; past that (Painleve) either none, which returns
+   ZP_RHS_FRICTION_INCONSISTENT, or two, of which the one continuing the regular regime is
+   taken (the other appears from infinity). 0 otherwise. */
+static inline int friction_terms(const zp_model *m, const zp_drive_now *dn, double xd, double fx,
+                                 double fy, const double *s, const double *c, const double *wd2,
+                                 int n, const double *u, double *qdd, double *hold, double *pout) {
     double fp = dn->tr.fp, sq = sqrt(1 + fp * fp);
     double sx = m->mtot * qdd[0], sy = m->mtot * (fp * qdd[0] + dn->tr.fpp * xd * xd), nu = 0;
     for (int j = 0; j < n; j++) {
@@ -205,27 +208,33 @@ static inline double friction_terms(const zp_model *m, const zp_drive_now *dn, d
         q = -qdd[0] / u[0];
         *hold = q / sq;
     } else {
-        double dir = xd != 0 ? xd : qdd[0]; /* from rest: against the motion it starts */
+        /* the way the simulator keeps, else x's sign; from rest against the motion it starts */
+        double dir = dn->slide ? dn->slide : xd != 0 ? xd : qdd[0];
         double cf = -m->mu * ((dir > 0) - (dir < 0)) * sq;
-        double N = n0 / (1 - cf * nu);
-        if (N < 0) {
-            N = n0 / (1 + cf * nu);
+        /* N >= 0 needs 1 - cf nu > 0, N < 0 needs 1 + cf nu > 0: the one solution of the
+           regular regime, which continues into Painleve's where the other sign appears too */
+        double den = n0 >= 0 ? 1 - cf * nu : 1 + cf * nu, N = n0 / den;
+        if (!(den > 0) || fabs(N) > ZP_FRICTION_NORMAL_MAX * m->mtot) {
+            return ZP_RHS_FRICTION_INCONSISTENT;
         }
         q = cf * fabs(N);
     }
     for (int i = 0; i <= n; i++) {
         qdd[i] += q * u[i];
     }
-    return -q * xd;
+    *pout = -q * xd;
+    return 0;
 }
 
 /* the rates both paths end with: q' and q'' (1 on a non-finite acceleration), the work
    integrals (power of the drive, dampers, and with physics of drag and friction: p[0..2]),
-   and the loads when asked for; phys is the model's effects (a constant where inlined) */
+   and the loads when asked for (s, c: the angles' sines and cosines); phys is the model's
+   effects (a constant where inlined) */
 __attribute__((always_inline)) static inline int
 store_rates(const zp_model *m, const zp_drive_now *dn, unsigned phys, const double *y,
             const double *qdd, double xd, double fp, const double p[3], const double f[2],
-            double (*fd)[2], double hold, double *ydot, zp_loads *loads) {
+            double (*fd)[2], double hold, const double *s, const double *c, double *ydot,
+            zp_loads *loads) {
     int nq = m->nlink + 1;
     for (int i = 0; i < nq; i++) {
         ydot[i] = y[nq + i];
@@ -241,7 +250,7 @@ store_rates(const zp_model *m, const zp_drive_now *dn, unsigned phys, const doub
         ydot[2 * nq + 3] = p[2];
     }
     if (loads) {
-        lagrange_loads(m, dn, f[0], f[1], phys & ZP_PHYS_DRAG ? fd : NULL, y, qdd, loads);
+        lagrange_loads(m, dn, f[0], f[1], phys & ZP_PHYS_DRAG ? fd : NULL, y, qdd, s, c, loads);
         loads->hold = hold;
     }
     return 0;
@@ -302,12 +311,15 @@ static int lagrange_rhs_general(const zp_model *m, void *work, const zp_drive_no
         if (gsl_linalg_cholesky_solve(M, lw->R, lw->u)) {
             return 1;
         }
-        pfric = friction_terms(m, dn, xd, f[0], f[1], s, c, wd2, n,
-                               gsl_vector_const_ptr(lw->u, 0), qdd, &hold);
+        int rc = friction_terms(m, dn, xd, f[0], f[1], s, c, wd2, n,
+                                gsl_vector_const_ptr(lw->u, 0), qdd, &hold, &pfric);
+        if (rc) {
+            return rc;
+        }
     }
     unsigned phys = m->physics & (ZP_PHYS_DRAG | ZP_PHYS_ROLLING); /* the work integrals' */
     return store_rates(m, dn, phys, y, qdd, xd, fp, (const double[]){pdamp, pdrag, pfric}, f, fd,
-                       hold, ydot, loads);
+                       hold, s, c, ydot, loads);
 }
 
 /* M's Cholesky factor in its lower triangle (M SPD of size nq, lower triangle read); 0, or 1
@@ -412,10 +424,13 @@ __attribute__((always_inline)) static inline int fast_rhs(const zp_model *m,
     if (phys & ZP_PHYS_ROLLING) {
         double ex[ZP_MAX_LINKS + 1] = {1}, u[ZP_MAX_LINKS + 1];
         cholesky_subst(M, ex, u, nq);
-        pfric = friction_terms(m, dn, xd, f[0], f[1], s, c, wd2, n, u, qdd, &hold);
+        int rc = friction_terms(m, dn, xd, f[0], f[1], s, c, wd2, n, u, qdd, &hold, &pfric);
+        if (rc) {
+            return rc;
+        }
     }
     return store_rates(m, dn, phys, y, qdd, xd, fp, (const double[]){pdamp, pdrag, pfric}, f, fd,
-                       hold, ydot, loads);
+                       hold, s, c, ydot, loads);
 }
 
 #define FAST_RHS_P(N, P, NAME)                                                                     \

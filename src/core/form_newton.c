@@ -46,6 +46,8 @@ struct newton_work {
     gsl_vector *b, *z;
     gsl_permutation *perm;
     newton_fn fn; /* the equations with this model's effects */
+    int sgn_free; /* sign of det A with the frictionless course row, found on first need: it
+                     never vanishes, so it is one sign for every state */
 };
 
 /* positions per body coordinate: trolley (X, Y), link i (x, y, th) at 2 + 3i */
@@ -195,41 +197,61 @@ static void course_row(gsl_matrix *A, int rn, double fp, double cf, double sn, i
     gsl_matrix_set(A, rn + 1, rn + 1, fp - cf * sn);
 }
 
-/* A z = b, A kept (its LU factors go to lu) */
-static int newton_solve(newton_work *nw) {
+/* A z = b, A kept (its LU factors go to lu); the sign of det A in *sgn */
+static int newton_solve(newton_work *nw, int *sgn) {
     int sign = 0;
     gsl_matrix_memcpy(nw->lu, nw->A);
-    return gsl_linalg_LU_decomp(nw->lu, nw->perm, &sign) ||
-           gsl_linalg_LU_solve(nw->lu, nw->perm, nw->b, nw->z);
+    if (gsl_linalg_LU_decomp(nw->lu, nw->perm, &sign) ||
+        gsl_linalg_LU_solve(nw->lu, nw->perm, nw->b, nw->z)) {
+        return 1;
+    }
+    *sgn = gsl_linalg_LU_sgndet(nw->lu, sign);
+    return 0;
 }
 
-/* A z = b with the course row of rolling resistance: against x' (from rest, against the
-   motion the frictionless system starts), the normal part's sign tried + first; or held */
+/* A z = b with the course row of rolling resistance: against the way it slides (dn->slide,
+   else x', from rest against the motion the frictionless system starts), or held. The
+   friction changes A by one row, so det A / det A_frictionless is lagrange's 1 - cf nu for the
+   normal part's sign tried (+ first), and the choice is friction_terms' (form_lagrange.c): the
+   solution that continues the frictionless regime, ZP_RHS_FRICTION_INCONSISTENT where it does
+   not exist or has grown past ZP_FRICTION_NORMAL_MAX. 0, or 1 when a solve fails. */
 static int newton_friction(const zp_model *m, newton_work *nw, const zp_drive_now *dn,
                            double xd) {
     const int rn = npos(m) + 2 * m->nlink;
     const double fp = dn->tr.fp, *z = gsl_vector_const_ptr(nw->z, 0);
-    double dir = xd;
-    if (dn->hold || dir == 0) {
+    double dir = dn->slide ? dn->slide : xd;
+    int sgn = 0;
+    if (dn->hold || dir == 0 || !nw->sgn_free) {
         course_row(nw->A, rn, fp, 0, 1, dn->hold);
-        if (newton_solve(nw)) {
+        if (newton_solve(nw, &sgn)) {
             return 1;
         }
         if (dn->hold) {
             return 0;
         }
-        dir = z[0];
+        nw->sgn_free = sgn;
+        dir = dir == 0 ? z[0] : dir;
     }
     double cf = -m->mu * ((dir > 0) - (dir < 0));
     course_row(nw->A, rn, fp, cf, 1, 0);
-    if (newton_solve(nw)) {
+    if (newton_solve(nw, &sgn)) {
         return 1;
     }
-    if (-fp * z[rn] + z[rn + 1] < 0) {
-        course_row(nw->A, rn, fp, cf, -1, 0);
-        return newton_solve(nw);
+    double normal = -fp * z[rn] + z[rn + 1], normal_max = ZP_FRICTION_NORMAL_MAX * m->mtot;
+    normal_max *= sqrt(1 + fp * fp); /* normal is |(-f', 1)| times N */
+    int gain_below_1 = sgn == nw->sgn_free; /* 1 - cf nu > 0 */
+    if (gain_below_1 && normal >= 0) {
+        return normal > normal_max ? ZP_RHS_FRICTION_INCONSISTENT : 0; /* n0 >= 0 */
     }
-    return 0;
+    if (!gain_below_1 && normal <= 0) {
+        return ZP_RHS_FRICTION_INCONSISTENT; /* n0 >= 0 with 1 - cf nu <= 0 */
+    }
+    course_row(nw->A, rn, fp, cf, -1, 0);
+    if (newton_solve(nw, &sgn)) {
+        return 1;
+    }
+    normal = -fp * z[rn] + z[rn + 1];
+    return normal > 0 || -normal > normal_max ? ZP_RHS_FRICTION_INCONSISTENT : 0;
 }
 
 /* phys constant where inlined (always: a copy per set of effects) */
@@ -321,8 +343,9 @@ __attribute__((always_inline)) static inline int newton_rhs_with(const zp_model 
 
     int sign = 0;
     if (phys & ZP_PHYS_ROLLING) {
-        if (newton_friction(m, nw, dn, xd)) {
-            return 1;
+        int rc = newton_friction(m, nw, dn, xd);
+        if (rc) {
+            return rc;
         }
     } else if (gsl_linalg_LU_decomp(A, nw->perm, &sign) ||
                gsl_linalg_LU_solve(A, nw->perm, b, nw->z)) {

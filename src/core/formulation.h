@@ -15,12 +15,24 @@
 /* The work integrals at the state's end (zp_model.nwork of them). */
 enum { ZP_W_DRIVE, ZP_W_DAMP, ZP_W_DRAG, ZP_W_FRICTION, ZP_W_MAX };
 
+/* An rhs status: sliding friction and the normal force contradict each other (Painleve's
+   paradox: every sign of N gives the other sign back); see form_lagrange.c. */
+#define ZP_RHS_FRICTION_INCONSISTENT 2
+/* kg m/s^2 per kg of the whole body: sliding friction's normal force beyond this times the
+   total mass counts as Painleve's boundary too; N grows without bound as it is approached and
+   an integrator would crawl towards it for ever (1e6 standard weights) */
+#define ZP_FRICTION_NORMAL_MAX (1e6 * 9.80665)
+
 /* The drive and the course under the trolley at this instant (set by the simulator). */
 typedef struct zp_drive_now {
     zp_track tr;    /* course at the trolley's x, on the current section */
     double fx, fy;  /* N, drive force on the trolley */
     int hold;       /* with rolling resistance, 1: rates and loads with the trolley held at rest
                        (x'' = 0), the holding tangential force in zp_loads.hold */
+    int slide;      /* with rolling resistance, +1 or -1: the way the trolley slides, which
+                       friction opposes whatever the sign of x' (the simulator keeps it from
+                       one stop to the next, so friction never flips inside a step); 0: the
+                       sign of x', or from rest of the frictionless x'' */
 } zp_drive_now;
 
 /* Loads, computed on request (outputs, not the hot path). */
@@ -47,7 +59,8 @@ typedef struct zp_formulation {
     /* Relative joint angles phi_i (rad) and rates w_i (rad/s): the root functions' inputs. */
     void (*relative)(const zp_model *m, const double *y, double *phi, double *w);
     /* Rates of every state entry. Returns 0, or >0 when y gives non-finite rates (the
-       integrator may retry with a smaller step). loads may be NULL. */
+       integrator may retry with a smaller step): ZP_RHS_FRICTION_INCONSISTENT where rolling
+       resistance has no consistent normal force, 1 otherwise. loads may be NULL. */
     int (*rhs)(const zp_model *m, void *work, const zp_drive_now *dn, const double *y,
                double *ydot, zp_loads *loads);
     /* Largest violation of the formulation's own position constraints (m), tr the course at

@@ -9,6 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "expr.h"
+
 /* the chain's constant coefficients: M_x,thj = B_j (cos thj + f' sin thj),
    M_thj,thk = C_jk cos(thj - thk) (derivation in form_lagrange.c) */
 void zp_model_derive(zp_model *m) {
@@ -41,10 +43,112 @@ static int probe_count(double width) {
     return (int)fmin(fmax(4096, ceil(width / 0.01)), 1 << 20);
 }
 
+/* a slope this many times the probes' own (plus 1) where f' or f'' turns between them is a
+   pole, not a bend: a smooth f's slope between two probes 1 cm apart lies near theirs, while
+   r / (x - p) reaches r / (round-off)^2 at p however small the residue r */
+#define ZP_POLE_SLOPE_GROWTH 1e6
+
+/* between neighbouring probes a and b whose f' or f'' differ in sign, where that sign turns
+   (bisection to round-off): 1 and there in *at when f is not finite there or its slope has
+   grown ZP_POLE_SLOPE_GROWTH-fold (a pole whose residue is too small for the jump test) */
+static int pole_between(const zp_model *m, int k, double a, zp_track ta, double b, zp_track tb,
+                        double *at) {
+    int which = (ta.fp > 0) != (tb.fp > 0) ? 1 : (ta.fpp > 0) != (tb.fpp > 0) ? 2 : 0;
+    if (!which) {
+        return 0;
+    }
+    double bound = ZP_POLE_SLOPE_GROWTH * (1 + fmax(fabs(ta.fp), fabs(tb.fp)));
+    for (int it = 0; it < 80; it++) {
+        double mid = 0.5 * (a + b);
+        if (!(mid > a && mid < b)) {
+            break;
+        }
+        zp_track tm = zp_course_eval(m->course, k, mid);
+        *at = mid;
+        if (!isfinite(tm.f) || !isfinite(tm.fp) || fabs(tm.fp) > bound) {
+            return 1;
+        }
+        double va = which == 1 ? ta.fp : ta.fpp, vm = which == 1 ? tm.fp : tm.fpp;
+        if ((va > 0) == (vm > 0)) {
+            a = mid;
+            ta = tm;
+        } else {
+            b = mid;
+        }
+    }
+    return 0;
+}
+
+/* whether f has a pole where node c of e (a denominator, or a base raised to a negative power)
+   changes sign between the probes a and b: its zero bisected to round-off, where f must be
+   finite with a slope within ZP_POLE_SLOPE_GROWTH of the probes'; 1 and there in *at if not */
+static int pole_at_zero(const zp_model *m, int k, const zp_expr *e, int c, double a, double b,
+                        double *at) {
+    zp_track ta = zp_course_eval(m->course, k, a), tb = zp_course_eval(m->course, k, b);
+    double bound = ZP_POLE_SLOPE_GROWTH * (1 + fmax(fabs(ta.fp), fabs(tb.fp)));
+    double va = zp_expr_eval(e, c, a);
+    for (int it = 0; it < 80; it++) {
+        double mid = 0.5 * (a + b);
+        if (!(mid > a && mid < b)) {
+            break;
+        }
+        double vm = zp_expr_eval(e, c, mid);
+        if ((va > 0) == (vm > 0)) {
+            a = mid;
+            va = vm;
+        } else {
+            b = mid;
+        }
+    }
+    for (int end = 0; end < 2; end++) {
+        zp_track tz = zp_course_eval(m->course, k, end ? b : a);
+        *at = end ? b : a;
+        if (!isfinite(tz.f) || !isfinite(tz.fp) || fabs(tz.fp) > bound) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* poles the probes of f cannot see: a denominator that vanishes with a residue so small, or
+   without changing sign ((x - p)^2), that f and its slope look smooth at every probe. Each
+   denominator (the base, when it is a power) and each base raised to a negative power is
+   probed itself; where it changes sign there must be no pole. 0 and the x in *bad. */
+static int section_no_hidden_pole(const zp_model *m, int k, double *bad) {
+    zp_expr e = {0};
+    char err[128];
+    /* text only libmatheval reads (the compiled course's fallback) keeps the probes' word */
+    int ok = 1, parsed = zp_expr_parse(&e, m->expr[k], err, sizeof err) >= 0;
+    int n = probe_count(m->xb[k + 1] - m->xb[k]);
+    for (int i = 0; parsed && ok && i < e.n; i++) {
+        const zp_ex_node *nd = &e.node[i];
+        int c = -1;
+        if (nd->op == ZP_EX_DIV) {
+            c = e.node[nd->b].op == ZP_EX_POW ? e.node[nd->b].a : nd->b;
+        } else if (nd->op == ZP_EX_POW && e.node[nd->b].op == ZP_EX_NUM &&
+                   e.node[nd->b].value < 0) {
+            c = nd->a;
+        }
+        double prev_x = m->xb[k], prev_v = c >= 0 ? zp_expr_eval(&e, c, prev_x) : 0;
+        for (int p = 1; c >= 0 && ok && p <= n; p++) {
+            double x = m->xb[k] + (m->xb[k + 1] - m->xb[k]) * p / n;
+            double v = zp_expr_eval(&e, c, x);
+            if ((v > 0) != (prev_v > 0) && pole_at_zero(m, k, &e, c, prev_x, x, bad)) {
+                ok = 0;
+            }
+            prev_x = x;
+            prev_v = v;
+        }
+    }
+    zp_expr_free(&e);
+    return ok;
+}
+
 /* section k over its range: f and f' finite (an f'' that overflows where f' is finite is the
-   derivative expression's overflow, which zp_course_eval replaces by a difference), and no
-   jump between neighbouring probes that the slopes at both ends do not explain (a pole, where
-   tan stays finite in floating point). 0 and the x that fails in *bad. */
+   derivative expression's overflow, which zp_course_eval replaces by a difference), no jump
+   between neighbouring probes that the slopes at both ends do not explain (a pole, where tan
+   stays finite in floating point), and no pole where the slope or its rate turns between
+   them. 0 and the x that fails in *bad. */
 static int section_smooth(const zp_model *m, int k, double *bad) {
     int n = probe_count(m->xb[k + 1] - m->xb[k]);
     double h = (m->xb[k + 1] - m->xb[k]) / n;
@@ -60,6 +164,9 @@ static int section_smooth(const zp_model *m, int k, double *bad) {
         if (p > 0 && fabs(df - trap) > 0.5 * (fabs(df) + fabs(trap)) + 1e-9 * (1 + fabs(tr.f))) {
             return 0;
         }
+        if (p > 0 && pole_between(m, k, x - h, prev, x, tr, bad)) {
+            return 0;
+        }
         prev = tr;
     }
     return 1;
@@ -70,7 +177,7 @@ static int check_course(zp_model *m, const zp_scene *sc, zp_diag *d) {
     int ok = 1;
     for (int k = 0; k < m->nsec; k++) {
         double x;
-        if (!section_smooth(m, k, &x)) {
+        if (!section_smooth(m, k, &x) || !section_no_hidden_pole(m, k, &x)) {
             zp_diag_add(d, sc->path, sc->sec_line[k], "course", "section",
                         "f(x) = %s is not finite or not continuous near x = %.9g (or its slope "
                         "is not); expected a smooth curve over [%g, %g]",
@@ -306,6 +413,15 @@ zp_model *zp_model_build(const zp_scene *sc, zp_diag *d) {
         m->physics |= ZP_PHYS_ROUNDED;
     }
     return m;
+}
+
+int zp_model_is_kink(const zp_model *m, int left) {
+    for (int i = 0; i < m->nkink; i++) {
+        if (m->kink[i].left == left) {
+            return 1;
+        }
+    }
+    return 0;
 }
 
 void zp_model_free(zp_model *m) {

@@ -75,6 +75,8 @@ typedef struct zp_model {
    and finds the kinks. Returns NULL and fills d on bad input. */
 zp_model *zp_model_build(const zp_scene *sc, zp_diag *d);
 void zp_model_free(zp_model *m);
+/* 1 when the boundary after section left (0-based) is a kink: the slope jumps there. */
+int zp_model_is_kink(const zp_model *m, int left);
 /* The course under the trolley on section sec at x, arcs included (the plain course when the
    model has none); course: the caller's evaluators. */
 zp_track zp_model_track(const zp_model *m, const zp_course *course, int sec, double x);

@@ -28,9 +28,33 @@ typedef struct zp_row_view {
                                         centre: 1 hanging at rest */
 } zp_row_view;
 
+/* A run's trajectory rows, packed: each keeps only its model's entries (2 + nlink coordinates
+   and rates, nwork work integrals, nlink joint and nlink + 1 body loads), so a run writes a
+   fraction of the fresh memory whole zp_rows would (for 3 links 31 doubles of 63). */
+typedef struct zp_row_store {
+    double *v; /* owned, cap x stride */
+    int n, cap;
+    int stride, nlink, nwork;
+} zp_row_store;
+
 /* The load magnitudes of loads: joint reactions (N) and felt accelerations (g), per link. */
 void zp_row_loads(const zp_model *m, const zp_loads *loads, double *joint, double *acc_g);
+/* The running maxima joint[i] (N) and acc_g[i] (g) taken over loads: bit for bit fmax of each
+   with zp_row_loads' value, whose hypot is skipped where the sum of squares shows it below. */
+void zp_row_loads_max(const zp_model *m, const zp_loads *loads, double *joint, double *acc_g);
 /* Everything r implies. */
 void zp_row_derive(const zp_model *m, const zp_row *r, zp_row_view *v);
+
+/* Room for cap rows of m's size (no memory is touched before a row is put); 0, or -1 out of
+   memory. zp_row_store_free(t) on a zeroed or initialized t frees it. */
+int zp_row_store_init(zp_row_store *t, const zp_model *m, int cap);
+void zp_row_store_free(zp_row_store *t);
+/* Appends r, a row of the model t was made for (its entries beyond nlink zero, as every row the
+   simulator makes): t->n < t->cap is the caller's to check. */
+void zp_row_store_put(zp_row_store *t, const zp_row *r);
+/* Row k (0 <= k < t->n) exactly as it was put. */
+void zp_row_store_get(const zp_row_store *t, int k, zp_row *r);
+/* The time of row k, s. */
+double zp_row_store_t(const zp_row_store *t, int k);
 
 #endif

@@ -74,6 +74,10 @@ int zp_limits_need_peaks(const zp_limits *l) {
            l->max[ZP_LIMIT_G_ENVELOPE] > 0;
 }
 
+int zp_limit_reached_in(const zp_result *r, int i) {
+    return i != ZP_LIMIT_ARRIVAL || r->outcome == ZP_OUTCOME_FINISHED;
+}
+
 void zp_limits_reached(const zp_model *m, const zp_result *r, double v[ZP_LIMIT_COUNT]) {
     v[ZP_LIMIT_G] = v[ZP_LIMIT_JOINT] = 0;
     for (int i = 0; i < m->nlink; i++) {

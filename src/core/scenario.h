@@ -46,6 +46,9 @@ int zp_limits_need_peaks(const zp_limits *l);
 /* The key name of limit i ("max_g", ...) and its unit. */
 const char *zp_limit_name(int i);
 const char *zp_limit_unit(int i);
+/* 0 when run r never reached what limit i measures (the arrival speed of a ride that did not
+   arrive): neither kept nor broken there. */
+int zp_limit_reached_in(const zp_result *r, int i);
 /* What run r reached, in each limit's unit: the largest felt acceleration (over the judged
    links, zp_model.g_links) and joint force (over links and the run), the arrival speed (0
    unless finished), the largest kink dv, and for the g envelope the longest excursion above a

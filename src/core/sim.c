@@ -10,6 +10,7 @@
 
 #include "accuracy.h"
 #include "events.h"
+#include "friction.h"
 #include "graze.h"
 #include "impulse.h"
 #include "envelope.h"
@@ -22,6 +23,10 @@
 #define ZP_ZENO_RUN 4
 /* an output time this close (s) to an event shows the state after the event */
 #define ZP_EVENT_TIME_EPS 1e-9
+/* this many steps in a row, each refused a trial stage for want of a consistent friction (or
+   one such step that no longer advances the time), mean the run is closing in on Painleve's
+   boundary, where it would crawl for ever */
+#define ZP_PAINLEVE_STEPS 10
 
 typedef zp_track (*track_fn)(const zp_model *m, const zp_course *c, int sec, double x);
 
@@ -44,8 +49,7 @@ struct zp_sim {
     int nbreak;
     int sec;
     double e_impulse; /* J, cumulative */
-    zp_row *rows;     /* owned, cap_rows */
-    int nrows, cap_rows;
+    zp_row_store rows; /* owned; cap 0 without a trajectory */
     zp_row *samples; /* owned, cap_samples */
     int nsamples, cap_samples;
     zp_row *frames; /* owned, cap_frames */
@@ -59,6 +63,12 @@ struct zp_sim {
 
     /* [physics] */
     track_fn track; /* the course with its arcs, or the plain course (chosen at create) */
+    int stuck;      /* rolling resistance: 1 while static friction holds the trolley */
+    int slide;      /* +1, -1: the way it slides since the last stop, kink or start */
+    double hold_t;  /* s, when that hold began */
+    double inconsistent_t, inconsistent_x; /* s, m: the last evaluation since the last step
+                                              where friction had no solution (NaN: none) */
+    int inconsistent_steps; /* steps in a row that met such an evaluation */
     int w0;         /* index of the first work integral in the state */
     zp_arc_peaks arc_peaks[ZP_MAX_SECTIONS]; /* load peaks on each arc */
     int arc; /* the piece the integrator reads since its last restart: an arc, or -1 the plain
@@ -72,7 +82,7 @@ static zp_track plain_track(const zp_model *m, const zp_course *c, int sec, doub
 
 /* the drive at time t and the trolley's x on the current section, the course there being tr */
 static inline zp_drive_now drive_with(const zp_sim *s, zp_track tr, double t, double x) {
-    zp_drive_now dn = {tr, 0, 0, 0};
+    zp_drive_now dn = {tr, 0, 0, 0, 0};
     double F = zp_schedule_force(s->sched, t, x, s->sec);
     if (s->m->drive == ZP_DRIVE_TANGENT) {
         double norm = sqrt(1 + dn.tr.fp * dn.tr.fp);
@@ -90,8 +100,12 @@ static inline zp_drive_now drive_at(const zp_sim *s, track_fn track, double t, d
     return drive_with(s, track(s->m, s->course, s->sec, x), t, x);
 }
 
+/* the drive now, for outputs and decisions: held, the trolley's rates and loads at rest */
 static zp_drive_now drive_now(const zp_sim *s, double t, double x) {
-    return drive_at(s, s->track, t, x);
+    zp_drive_now dn = drive_at(s, s->track, t, x);
+    dn.hold = s->stuck;
+    dn.slide = s->slide;
+    return dn;
 }
 
 /* the equations of motion as the integrator sees them: on the plain course, or with arcs */
@@ -118,11 +132,30 @@ static int sim_root(double t, const double *y, double *g, void *user) {
     return 0;
 }
 
-/* with rolling resistance also the trolley's x' (the state contract puts it at w0 / 2) */
+/* with rolling resistance: held or sliding as the stick rule says, and where the friction
+   has no consistent solution noted for the failure's message */
+static int sim_rhs_rolling(double t, const double *y, double *ydot, void *user) {
+    zp_sim *s = user;
+    zp_drive_now dn = drive_now(s, t, y[0]);
+    int rc = s->form->rhs(s->m, s->fwork, &dn, y, ydot, NULL);
+    if (rc == ZP_RHS_FRICTION_INCONSISTENT) {
+        s->inconsistent_t = t;
+        s->inconsistent_x = y[0];
+    }
+    return rc;
+}
+
+/* with rolling resistance also the trolley's x' (the state contract puts it at w0 / 2): a
+   stop; held, instead the hold's margin mu |N| - |F_t|: a release */
 static int sim_root_rolling(double t, const double *y, double *g, void *user) {
     zp_sim *s = user;
     sim_root(t, y, g, user);
-    g[zp_events_rest(s->m)] = y[s->w0 / 2];
+    double *rest = &g[zp_events_rest(s->m)];
+    zp_friction_hold h = {.margin = 1}; /* where it cannot be computed the rates fail too */
+    if (s->stuck) {
+        zp_friction_hold_at(s->m, s->form, s->fwork, drive_now(s, t, y[0]), y, s->ydot, &h);
+    }
+    *rest = s->stuck ? h.margin : y[s->w0 / 2];
     return 0;
 }
 
@@ -141,7 +174,7 @@ void zp_sim_free(zp_sim *s) {
     free(s->ydot);
     free(s->yout);
     free(s->roots);
-    free(s->rows);
+    zp_row_store_free(&s->rows);
     free(s->samples);
     free(s->frames);
     free(s->cross);
@@ -179,19 +212,20 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
     int state_only[ZP_EVENTS_MAX];
     zp_events_state_only(m, state_only);
     zp_method_opts mo = {o->rtol, o->atol, o->max_steps, state_only, s->w0 / 2};
-    s->mwork = s->meth->create(s->n, s->nroot, dir,
-                               m->physics & ZP_PHYS_ROUNDED ? sim_rhs_rounded : zp_sim_rhs,
+    zp_rhs_fn rhs = m->physics & ZP_PHYS_ROLLING   ? sim_rhs_rolling
+                    : m->physics & ZP_PHYS_ROUNDED ? sim_rhs_rounded
+                                                   : zp_sim_rhs;
+    s->mwork = s->meth->create(s->n, s->nroot, dir, rhs,
                                m->physics & ZP_PHYS_ROLLING ? sim_root_rolling : sim_root, s,
                                &mo);
     if (o->peaks) {
         s->pk = zp_peaks_create(2 * m->nlink);
     }
-    if (o->output_dt > 0) {
-        s->cap_rows = (int)fmin(o->t_max / o->output_dt + 2, ZP_MAX_ROWS + 2);
-        s->rows = malloc(sizeof *s->rows * s->cap_rows);
-    }
+    int rows_failed =
+        o->output_dt > 0 &&
+        zp_row_store_init(&s->rows, m, (int)fmin(o->t_max / o->output_dt + 2, ZP_MAX_ROWS + 2));
     if (!s->course || !s->fwork || !s->y || !s->ydot || !s->yout || !s->roots || !s->cross ||
-        !s->mwork || (o->output_dt > 0 && !s->rows) || (o->peaks && !s->pk)) {
+        !s->mwork || rows_failed || (o->peaks && !s->pk)) {
         zp_sim_free(s);
         return NULL;
     }
@@ -227,15 +261,12 @@ static zp_row row_of(zp_sim *s, double t, const double *y) {
     zp_load_peaks *p = &s->peaks;
     p->normal_min = fmin(p->normal_min, r.loads.normal);
     p->normal_max = fmax(p->normal_max, r.loads.normal);
-    double joint[ZP_MAX_LINKS], acc_g[ZP_MAX_LINKS];
-    zp_row_loads(s->m, &r.loads, joint, acc_g);
-    for (int i = 0; i < s->m->nlink; i++) {
-        p->joint[i] = fmax(p->joint[i], joint[i]);
-        p->acc_g[i] = fmax(p->acc_g[i], acc_g[i]);
-    }
+    zp_row_loads_max(s->m, &r.loads, p->joint, p->acc_g);
     for (int a = 0; a < s->m->narc; a++) {
         zp_arc_peaks *ap = &s->arc_peaks[a];
         if (r.c.q[0] >= s->m->arc[a].x1 && r.c.q[0] <= s->m->arc[a].x2) {
+            double joint[ZP_MAX_LINKS], acc_g[ZP_MAX_LINKS];
+            zp_row_loads(s->m, &r.loads, joint, acc_g);
             ap->normal_min = ap->visited ? fmin(ap->normal_min, r.loads.normal) : r.loads.normal;
             ap->normal_max = ap->visited ? fmax(ap->normal_max, r.loads.normal) : r.loads.normal;
             for (int i = 0; i < s->m->nlink; i++) {
@@ -310,19 +341,6 @@ static int departure(zp_sim *s, double t, const double *y) {
     return (v > 0) - (v < 0);
 }
 
-/* with rolling resistance, at rest: whether static friction holds the trolley (MODEL.md:
-   the tangential force that keeps x'' = 0 within mu |N| then) */
-static int held(zp_sim *s, double t, const double *y) {
-    if (!(s->m->physics & ZP_PHYS_ROLLING)) {
-        return 0;
-    }
-    zp_drive_now dn = drive_now(s, t, y[0]);
-    dn.hold = 1;
-    zp_loads ld;
-    return s->form->rhs(s->m, s->fwork, &dn, y, s->ydot, &ld) == 0 &&
-           fabs(ld.hold) <= s->m->mu * fabs(ld.normal);
-}
-
 /* where the outputs of a run stand: the next row's time, the next sample and frame */
 typedef struct out_cursor {
     double next_row; /* s */
@@ -338,7 +356,7 @@ static double next_frame_t(const zp_input *in, const out_cursor *oc) {
 
 /* the next output time (row, sample or frame), or INFINITY */
 static double next_output(const zp_sim *s, const zp_input *in, const out_cursor *oc) {
-    double t = s->rows && s->nrows < s->cap_rows ? oc->next_row : INFINITY;
+    double t = s->rows.n < s->rows.cap ? oc->next_row : INFINITY;
     t = fmin(t, next_frame_t(in, oc));
     return oc->next_sample < in->nsample ? fmin(t, in->sample_t[oc->next_sample]) : t;
 }
@@ -375,15 +393,15 @@ static void emit_outputs(zp_sim *s, const zp_input *in, double t_upto, int dense
             }
             oc->next_frame++;
         }
-        int row = s->rows && s->nrows < s->cap_rows && oc->next_row == to;
+        int row = s->rows.n < s->rows.cap && oc->next_row == to;
         int sample = oc->next_sample < in->nsample && in->sample_t[oc->next_sample] == to;
         if (!row && !sample) {
             continue;
         }
         zp_row r = row_of(s, to, y);
         if (row) {
-            s->rows[s->nrows++] = r;
-            oc->next_row = s->nrows * s->o.output_dt;
+            zp_row_store_put(&s->rows, &r);
+            oc->next_row = s->rows.n * s->o.output_dt;
         }
         if (sample) {
             if (push_row(&s->samples, &s->nsamples, &s->cap_samples, r)) {
@@ -512,8 +530,10 @@ static void finish_result(zp_sim *s, zp_result *r, double t, zp_outcome o, zp_st
     }
     r->e_impulse = s->e_impulse;
     /* the last row shows the end state */
-    if (s->rows && s->nrows < s->cap_rows && (s->nrows == 0 || s->rows[s->nrows - 1].t < t)) {
-        s->rows[s->nrows++] = row_of(s, t, s->y);
+    if (s->rows.n < s->rows.cap &&
+        (s->rows.n == 0 || zp_row_store_t(&s->rows, s->rows.n - 1) < t)) {
+        zp_row last = row_of(s, t, s->y);
+        zp_row_store_put(&s->rows, &last);
     }
     r->peaks = s->peaks; /* after the last row, whose loads count too */
     if (s->env.n) {
@@ -523,13 +543,93 @@ static void finish_result(zp_sim *s, zp_result *r, double t, zp_outcome o, zp_st
 }
 
 static zp_status fail(zp_sim *s, zp_result *r, double t, const char *why) {
+    if (isfinite(s->inconsistent_t)) {
+        snprintf(r->message, sizeof r->message,
+                 "rolling resistance has no consistent normal force at t = %.9g s, x = %.9g m "
+                 "(Painleve's paradox: mu = %g is too large for this trolley and chain; the rigid "
+                 "model of MODEL.md has no motion there)",
+                 s->inconsistent_t, s->inconsistent_x, s->m->mu);
+        return ZP_ERR_NUMERIC;
+    }
     char where[64] = "";
     if (isfinite(s->y[0])) {
-        snprintf(where, sizeof where, ", x = %.9g m", s->y[0]);
+        snprintf(where, sizeof where, ", x = %.9g m (section %d)", s->y[0], s->sec + 1);
     }
     snprintf(r->message, sizeof r->message, "numerical failure at t = %.9g s%s: %.180s", t, where,
              why);
     return ZP_ERR_NUMERIC;
+}
+
+/* the trolley put at rest exactly, the chain keeping its rates: a residual x' of a root's
+   tolerance would set the friction against the wrong way and bring the root straight back */
+static void snap_rest(zp_sim *s) {
+    zp_chain rest = chain_of(s, s->y);
+    rest.v[0] = rest.v[1] = 0;
+    double wk[ZP_W_MAX];
+    memcpy(wk, s->y + s->w0, sizeof *wk * s->m->nwork);
+    s->form->from_chain(s->m, &rest, wk, s->y);
+}
+
+/* a hold that lasted: stalled, held_by_friction, at the time the hold began (MODEL.md) */
+static void finish_held(zp_sim *s, zp_result *r, double t) {
+    finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_HELD_BY_FRICTION);
+    r->time = s->hold_t;
+}
+
+/* whether the chain under the held trolley has settled, which ends the hold */
+static int hold_settled(zp_sim *s) {
+    zp_chain c = chain_of(s, s->y);
+    return zp_friction_settled(s->m, &c);
+}
+
+/* the hold at the current state, at rest at t; 0, or the rhs's nonzero status */
+static int hold_now(zp_sim *s, double t, zp_friction_hold *h) {
+    return zp_friction_hold_at(s->m, s->form, s->fwork, drive_now(s, t, s->y[0]), s->y, s->ydot,
+                               h);
+}
+
+/* MODEL.md's stick rule for the trolley at rest at t (the start, a stop, a jump of the drive
+   while held): held (|F_t| <= mu |N|), it stays while the chain swings on (s->stuck) and the
+   run ends at once when the chain has settled; otherwise it slides off toward -F_t, *dir.
+   Returns 1 when the run ended (r filled), -1 when it failed (r's message: the forces cannot
+   be computed, or sliding friction has no consistent motion there, Painleve), 0 to go on. */
+static int stick_rule(zp_sim *s, double t, zp_result *r, int *dir) {
+    s->stuck = 0;
+    snap_rest(s);
+    zp_friction_hold h;
+    if (hold_now(s, t, &h)) {
+        fail(s, r, t, "the forces at rest cannot be computed");
+        return -1;
+    }
+    s->stuck = h.margin >= 0;
+    *dir = s->stuck ? 0 : h.tangential > 0 ? -1 : 1;
+    if (s->stuck) {
+        s->hold_t = t;
+        if (hold_settled(s)) {
+            finish_held(s, r, t);
+            return 1;
+        }
+        return 0;
+    }
+    /* sliding off: friction needs a consistent normal force here, and must leave the trolley
+       going that way (Painleve's regime can turn it round) */
+    s->slide = *dir;
+    int rc = sim_rhs_rolling(t, s->y, s->ydot, s);
+    int turned = rc == 0 && s->ydot[s->w0 / 2] * *dir < 0;
+    if (turned) {
+        s->inconsistent_t = t;
+        s->inconsistent_x = s->y[0];
+    }
+    if (rc || turned) {
+        fail(s, r, t, "the forces at rest cannot be computed"); /* or Painleve's, said */
+        return -1;
+    }
+    return 0;
+}
+
+/* the run's status after the stick rule ended it (end != 0) */
+static zp_status stick_end(int end) {
+    return end < 0 ? ZP_ERR_NUMERIC : ZP_OK;
 }
 
 static void add_stats(zp_sim *s, zp_result *r) {
@@ -586,14 +686,23 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
 
     double t = 0;
     out_cursor oc = {0};
+    s->stuck = 0;
+    s->slide = (c.v[0] > 0) - (c.v[0] < 0);
+    s->inconsistent_t = NAN;
+    s->inconsistent_steps = 0;
     emit_outputs(s, in, t, 0, &oc);
     frames_at_x_here(s, in, t, s->y[0], &oc);
-    if (held(s, t, s->y)) {
-        finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_HELD_BY_FRICTION);
-        return ZP_OK;
+    int dir;
+    if (m->physics & ZP_PHYS_ROLLING && c.v[0] == 0) {
+        int end = stick_rule(s, t, r, &dir);
+        if (end) {
+            return stick_end(end);
+        }
+    } else {
+        dir = departure(s, t, s->y);
     }
     /* a root finder ignores a root at t0: a start that rolls back at once is caught here */
-    if (departure(s, t, s->y) < 0) {
+    if (dir < 0) {
         finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_ROLLED_BACK);
         return ZP_OK;
     }
@@ -625,6 +734,14 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             }
             return fail(s, r, t, err);
         }
+        /* closing in on Painleve's boundary: steps that each meet it, or no longer advance */
+        s->inconsistent_steps = isfinite(s->inconsistent_t) ? s->inconsistent_steps + 1 : 0;
+        if (s->inconsistent_steps >= ZP_PAINLEVE_STEPS ||
+            (s->inconsistent_steps > 0 && !(t > t_before))) {
+            add_stats(s, r);
+            return fail(s, r, t, "");
+        }
+        s->inconsistent_t = NAN; /* a step was taken: what a trial stage met is past */
         if (!died_at_root(m, s->roots, adv)) {
             int link;
             if (zp_graze_locate(m, s->form, s->meth, s->mwork, t_before, t, s->y, s->n, &t,
@@ -652,13 +769,23 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
         }
         if (adv != ZP_ADV_ROOT) {
             emit_outputs(s, in, t, 1, &oc);
+            if (s->stuck && hold_settled(s)) {
+                add_stats(s, r);
+                finish_held(s, r, t);
+                return ZP_OK;
+            }
             /* a boundary passed without a root (one masked at a restart) is crossed here */
             if (s->y[0] < m->xb[s->sec] || s->y[0] > m->xb[s->sec + 1]) {
                 memset(s->roots, 0, sizeof *s->roots * s->nroot);
                 s->roots[s->y[0] < m->xb[s->sec] ? ZP_ROOT_LEFT : ZP_ROOT_RIGHT] = 1;
             } else if (adv == ZP_ADV_STOP && s->nbreak > 0 && t < s->o.t_max) {
-                /* a break of the schedule: the force jumps, the integrator starts afresh */
+                /* a break of the schedule: the force jumps (a held trolley is judged again),
+                   the integrator starts afresh */
                 add_stats(s, r);
+                int end = s->stuck ? stick_rule(s, t, r, &dir) : 0;
+                if (end) {
+                    return stick_end(end);
+                }
                 if (restart(s, t)) {
                     return fail(s, r, t, "the integrator could not restart at a break");
                 }
@@ -668,7 +795,11 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
                 continue;
             } else if (adv == ZP_ADV_STOP) {
                 add_stats(s, r);
-                finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_T_MAX);
+                if (s->stuck) {
+                    finish_held(s, r, t);
+                } else {
+                    finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_T_MAX);
+                }
                 return ZP_OK;
             } else {
                 continue;
@@ -704,18 +835,22 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             continue;
         }
         if (ev == ZP_EVENT_REST) {
-            /* held, or off the other way: friction turns round, the integrator restarts */
-            if (held(s, t, s->y)) {
-                finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_HELD_BY_FRICTION);
-                return ZP_OK;
+            /* a release (the hold's margin reached 0): off toward -F_t from rest; a stop: the
+               stick rule. Either way the equations change and the integrator restarts */
+            zp_friction_hold h;
+            if (s->stuck) {
+                s->stuck = 0;
+                snap_rest(s);
+                if (hold_now(s, t, &h)) {
+                    return fail(s, r, t, "the forces at rest cannot be computed");
+                }
+                s->slide = h.tangential > 0 ? -1 : 1;
+            } else {
+                int end = stick_rule(s, t, r, &dir);
+                if (end) {
+                    return stick_end(end);
+                }
             }
-            /* at rest exactly: a residual x' of the root's tolerance would set the friction
-               against the wrong way and bring the root straight back, at the same t */
-            zp_chain rest = chain_of(s, s->y);
-            rest.v[0] = rest.v[1] = 0;
-            double wk[ZP_W_MAX];
-            memcpy(wk, s->y + s->w0, sizeof *wk * m->nwork);
-            s->form->from_chain(m, &rest, wk, s->y);
             if (restart(s, t)) {
                 return fail(s, r, t, "the integrator could not restart at rest");
             }
@@ -746,6 +881,8 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_TRAPPED_AT_KINK);
             return ZP_OK;
         }
+        /* friction now opposes the way it leaves the kink */
+        s->slide = departure(s, t, s->y);
         if (restart(s, t)) {
             return fail(s, r, t, "the integrator could not restart after the kink");
         }
@@ -770,7 +907,7 @@ zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     s->nbreak = zp_schedule_breaks(in->sched, s->breaks, ZP_SCHED_MAX_BREAKS);
     s->sec = 0;
     s->e_impulse = 0;
-    s->nrows = s->nsamples = s->nframes = s->ncross = 0;
+    s->rows.n = s->nsamples = s->nframes = s->ncross = 0;
     s->peaks = (zp_load_peaks){.normal_min = INFINITY, .normal_max = -INFINITY};
     s->env.n = 0;
     memset(s->arc_peaks, 0, sizeof s->arc_peaks);
@@ -780,9 +917,8 @@ zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     return st;
 }
 
-const zp_row *zp_sim_rows(const zp_sim *s, int *n) {
-    *n = s->nrows;
-    return s->rows;
+const zp_row_store *zp_sim_rows(const zp_sim *s) {
+    return &s->rows;
 }
 
 const zp_row *zp_sim_samples(const zp_sim *s, int *n) {

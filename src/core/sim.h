@@ -116,9 +116,9 @@ void zp_sim_free(zp_sim *s);
    from it by zp_scenario_model (same course and links). ZP_OK with r filled (any outcome), or
    ZP_ERR_NUMERIC with r->message naming t, x and the cause. */
 zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result *r);
-/* Trajectory rows (every output_dt and the end) and samples of the last run; valid until the
-   next run. */
-const zp_row *zp_sim_rows(const zp_sim *s, int *n);
+/* Trajectory rows (every output_dt and the end; zp_row_store_get reads them) and samples of the
+   last run; valid until the next run. */
+const zp_row_store *zp_sim_rows(const zp_sim *s);
 const zp_row *zp_sim_samples(const zp_sim *s, int *n);
 /* The still frames of the last run: one per reached frame_at value, in its order (those never
    reached are the tail of frame_at); valid until the next run. */

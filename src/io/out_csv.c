@@ -33,10 +33,12 @@ static void header(FILE *f, const zp_model *m) {
     fputc('\n', f);
 }
 
-void zp_out_csv_trajectory(FILE *f, const zp_model *m, const zp_row *rows, int n) {
+void zp_out_csv_trajectory(FILE *f, const zp_model *m, const zp_row_store *rows) {
     header(f, m);
-    for (int k = 0; k < n; k++) {
-        const zp_row *r = &rows[k];
+    for (int k = 0; k < rows->n; k++) {
+        zp_row row;
+        zp_row_store_get(rows, k, &row);
+        const zp_row *r = &row;
         zp_row_view v;
         zp_row_derive(m, r, &v);
         fprintf(f, "%.10g,%d,%.10g,%.10g,%.10g", r->t, r->sec + 1, r->c.q[0], r->c.q[1], v.speed);

@@ -6,6 +6,6 @@
 
 #include "sim.h"
 
-void zp_out_csv_trajectory(FILE *f, const zp_model *m, const zp_row *rows, int n);
+void zp_out_csv_trajectory(FILE *f, const zp_model *m, const zp_row_store *rows);
 
 #endif

@@ -3,6 +3,8 @@
 
 #include <math.h>
 
+#include "estimate.h"
+
 #define DEG (180.0 / M_PI)
 
 void zp_out_json_number(FILE *f, double v) {
@@ -78,6 +80,12 @@ void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp
             continue;
         }
         fprintf(f, "\"%s\": {", zp_limit_name(i));
+        if (!zp_limit_reached_in(r, i)) { /* never measured: neither kept nor broken */
+            fputs("\"reached\": null, ", f);
+            key_num(f, "limit", max > 0 ? max : NAN, max > 0 ? ", \"kept\": null}" : "}");
+            fputs(i + 1 < ZP_LIMIT_COUNT ? ", " : "}", f);
+            continue;
+        }
         key_num(f, "reached", v[i], ", ");
         if (max > 0) {
             key_num(f, "limit", max, "");
@@ -153,13 +161,11 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
     key_num(f, "drive_work", r->w_drive, ", ");
     key_num(f, "damper_work", r->w_damp, ", ");
     key_num(f, "impulse_loss", r->e_impulse, ", ");
-    double res = r->e_final - r->e_initial - r->w_drive + r->w_damp + r->e_impulse;
     if (m->physics) {
         key_num(f, "drag_work", r->w_drag, ", ");
         key_num(f, "friction_work", r->w_fric, ", ");
-        res += r->w_drag + r->w_fric;
     }
-    key_num(f, "residual", res, "},\n  ");
+    key_num(f, "residual", zp_estimate_energy_residual(r), "},\n  ");
     key_num(f, "constraint_residual", r->constraint_residual, ",\n");
     fputs("  \"loads\": {\"joint_peak\": ", f);
     num_list(f, r->peaks.joint, m->nlink, 1.0);

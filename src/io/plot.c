@@ -365,11 +365,10 @@ zp_status zp_plot_start(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_r
                         size_t errlen) {
     memset(j, 0, sizeof *j);
     memset(info, 0, sizeof *info);
-    int n;
-    const zp_row *rows = zp_sim_rows(s, &n);
+    const zp_row_store *rows = zp_sim_rows(s);
     kinks kk;
     kk.c = zp_sim_crossings(s, &kk.n);
-    if (n < 1) {
+    if (rows->n < 1) {
         snprintf(err, errlen, "the run has no trajectory rows to plot (output_dt <= 0?)");
         return ZP_ERR_IO;
     }
@@ -382,11 +381,12 @@ zp_status zp_plot_start(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_r
         return ZP_ERR_IO;
     }
     zp_plot_box cb = zp_plot_write_course(course, m);
-    zp_plot_box pb = zp_plot_write_run(run, m, rows, n);
+    zp_plot_box pb = zp_plot_write_run(run, m, rows);
     zp_plot_box both = cb;
     zp_plot_grow(&both, pb.x0, pb.y0);
     zp_plot_grow(&both, pb.x1, pb.y1);
-    const zp_row *last = &rows[n - 1];
+    zp_row end, *last = &end;
+    zp_row_store_get(rows, rows->n - 1, last);
     const char *names[] = {"course.gp", "energy.gp", "angles.gp", "loads.gp"};
     FILE *gp[4];
     for (int k = 0; k < 4; k++) {
@@ -425,7 +425,7 @@ zp_status zp_plot_start(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_r
             return ZP_ERR_IO;
         }
         info->mp4 = zp_gnuplot_have("ffmpeg");
-        zp_plot_anim(ag, ad, al, m, rows, n, r, o, cb, info->mp4, info);
+        zp_plot_anim(ag, ad, al, m, rows, r, o, cb, info->mp4, info);
     }
     zp_status st = zp_gnuplot_start(t, scripts, ns, o->procs, j, err, errlen);
     info->no_gnuplot = j->missing;

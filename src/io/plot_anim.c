@@ -71,15 +71,16 @@ int zp_plot_frames(FILE *gp, FILE *dat, const zp_model *m, const zp_row *frames,
     return drawn;
 }
 
-void zp_plot_anim(FILE *gp, FILE *dat, FILE *lab, const zp_model *m, const zp_row *rows, int n,
-                       const zp_result *r, const zp_plot_opts *o, zp_plot_box course, int mp4,
-                       zp_plot_info *info) {
-    double t0 = rows[0].t, t1 = rows[n - 1].t, dt = o->speedup / o->fps;
+void zp_plot_anim(FILE *gp, FILE *dat, FILE *lab, const zp_model *m, const zp_row_store *rows,
+                  const zp_result *r, const zp_plot_opts *o, zp_plot_box course, int mp4,
+                  zp_plot_info *info) {
+    double t0 = zp_row_store_t(rows, 0), t1 = zp_row_store_t(rows, rows->n - 1),
+           dt = o->speedup / o->fps;
     int nf = (int)floor((t1 - t0) / dt) + 1;
     nf += t0 + (nf - 1) * dt < t1; /* the last pose too */
     char text[256], sec[64];
     for (int j = 0; j < nf; j++) {
-        zp_plot_pose ps = zp_plot_pose_at_t(m, rows, n, fmin(t0 + j * dt, t1));
+        zp_plot_pose ps = zp_plot_pose_at_t(m, rows, fmin(t0 + j * dt, t1));
         zp_plot_write_pose(dat, m, &ps);
         zp_plot_section_text(o, ps.sec, sec, sizeof sec);
         if (j == nf - 1) {

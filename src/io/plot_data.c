@@ -31,12 +31,14 @@ zp_plot_pose zp_plot_pose_of_row(const zp_model *m, const zp_row *r) {
     return pose_of(m, r->t, r->sec, &r->c);
 }
 
-zp_plot_pose zp_plot_pose_at_t(const zp_model *m, const zp_row *rows, int n, double t) {
+zp_plot_pose zp_plot_pose_at_t(const zp_model *m, const zp_row_store *rows, double t) {
     int k = 0;
-    while (k + 1 < n && rows[k].t < t) {
+    while (k + 1 < rows->n && zp_row_store_t(rows, k) < t) {
         k++;
     }
-    const zp_row *a = &rows[k ? k - 1 : 0], *b = &rows[k];
+    zp_row ra, rb, *a = &ra, *b = &rb;
+    zp_row_store_get(rows, k ? k - 1 : 0, a);
+    zp_row_store_get(rows, k, b);
     double u = b->t > a->t ? (t - a->t) / (b->t - a->t) : 1;
     /* positions interpolated linearly: enough for an animation's moving picture */
     zp_chain c;
@@ -74,7 +76,7 @@ zp_plot_box zp_plot_write_course(FILE *f, const zp_model *m) {
 
 /* plot_run.dat: one line per trajectory row, named columns; returns the extent of the
    centres-of-mass paths */
-zp_plot_box zp_plot_write_run(FILE *f, const zp_model *m, const zp_row *rows, int n) {
+zp_plot_box zp_plot_write_run(FILE *f, const zp_model *m, const zp_row_store *rows) {
     zp_plot_box b = {HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL};
     fputs("t section x y speed", f);
     for (int i = 0; i <= m->nlink; i++) {
@@ -93,8 +95,10 @@ zp_plot_box zp_plot_write_run(FILE *f, const zp_model *m, const zp_row *rows, in
     fputs(" felt_g", f); /* the largest felt g over the judged links ([limits] g_links) */
     fputc('\n', f);
     double e0 = 0;
-    for (int k = 0; k < n; k++) {
-        const zp_row *r = &rows[k];
+    for (int k = 0; k < rows->n; k++) {
+        zp_row row;
+        zp_row_store_get(rows, k, &row);
+        const zp_row *r = &row;
         zp_row_view v;
         zp_row_derive(m, r, &v);
         double total = v.e.kinetic + v.e.potential;

@@ -29,14 +29,14 @@ extern const char *const zp_plot_link_color[ZP_MAX_LINKS];
 /* the pose of one row (a still frame: the simulator's state at the asked moment) */
 zp_plot_pose zp_plot_pose_of_row(const zp_model *m, const zp_row *r);
 /* the pose at time t (within the rows' span) between the two rows around it */
-zp_plot_pose zp_plot_pose_at_t(const zp_model *m, const zp_row *rows, int n, double t);
+zp_plot_pose zp_plot_pose_at_t(const zp_model *m, const zp_row_store *rows, double t);
 /* b grown to hold (x, y) */
 void zp_plot_grow(zp_plot_box *b, double x, double y);
 /* plot_course.dat: the course, one block per section; returns its extent */
 zp_plot_box zp_plot_write_course(FILE *f, const zp_model *m);
 /* plot_run.dat: one line per trajectory row, named columns; returns the extent of the
    centres-of-mass paths */
-zp_plot_box zp_plot_write_run(FILE *f, const zp_model *m, const zp_row *rows, int n);
+zp_plot_box zp_plot_write_run(FILE *f, const zp_model *m, const zp_row_store *rows);
 /* one block of a pose: a line per link "x0 y0 x1 y1 link com_x com_y" */
 void zp_plot_write_pose(FILE *f, const zp_model *m, const zp_plot_pose *ps);
 
@@ -55,7 +55,7 @@ int zp_plot_frames(FILE *gp, FILE *dat, const zp_model *m, const zp_row *frames,
                    const zp_plot_opts *o, zp_plot_info *info);
 /* run.gp, plot_anim.dat and plot_anim_label.dat: the body followed along the course, and
    where it is on the whole course (extent course) */
-void zp_plot_anim(FILE *gp, FILE *dat, FILE *lab, const zp_model *m, const zp_row *rows, int n,
+void zp_plot_anim(FILE *gp, FILE *dat, FILE *lab, const zp_model *m, const zp_row_store *rows,
                   const zp_result *r, const zp_plot_opts *o, zp_plot_box course, int mp4,
                   zp_plot_info *info);
 

@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "estimate.h"
 #include "prep.h"
 #include "robust.h"
 #include "scene_read.h"
@@ -27,7 +28,9 @@ _Static_assert(_Generic((sig_atomic_t)0, int : 1, default : 0), "sig_atomic_t is
 static const char *const run_keys[] = {
     "time",    "x",         "speed",  "died_link", "kinks",           "e_initial",
     "e_final", "w_drive",   "w_damp", "e_impulse", "energy_residual", "constraint_residual",
-    "steps",   "rhs_evals", "wall_s"};
+    "steps",   "rhs_evals", "wall_s", "w_drag",    "w_fric",          "peak_g",
+    "peak_joint_force", "max_kink_dv", "arrival_kmh", "normal_min", "normal_max",
+    "rejected_steps"};
 #define NRUN_KEYS ((int)(sizeof run_keys / sizeof *run_keys))
 static const char *const search_keys[] = {"found",       "time",       "angle",      "evals",
                                           "feasible",    "failed",     "threads",    "wall_s",
@@ -103,6 +106,10 @@ static zipopt_scene *load(const char *path, const char *text, char *err, size_t 
     zp_overrides ov = {.unnamed_ok = 1};
     int rc = zp_prep_load("library", path, text, &ov, &s->st, &d);
     if (rc == 0) {
+        /* the peaks [limits] judge located exactly, as `zipopt simulate` locates them */
+        zp_limits lim;
+        zp_limits_from_scene(&s->st.sc, &lim);
+        s->st.sim.peaks = zp_limits_need_peaks(&lim);
         s->sim = zp_sim_create(s->st.m, &s->st.sim);
     }
     pthread_mutex_unlock(&turn);
@@ -263,8 +270,9 @@ static void row_values(const zp_model *m, const zp_row *r, double *out) {
 
 /* the run's rows and kink crossings copied out of the workspace, which the next run reuses */
 static int copy_out(zipopt_run *u, const zp_model *m, const zp_sim *sim) {
-    int nrow, nk;
-    const zp_row *rows = zp_sim_rows(sim, &nrow);
+    int nk;
+    const zp_row_store *rows = zp_sim_rows(sim);
+    int nrow = rows->n;
     const zp_crossing *cr = zp_sim_crossings(sim, &nk);
     u->nlink = m->nlink;
     u->ncol = columns(u);
@@ -275,7 +283,9 @@ static int copy_out(zipopt_run *u, const zp_model *m, const zp_sim *sim) {
     }
     u->nrow = nrow;
     for (int i = 0; i < nrow; i++) {
-        row_values(m, &rows[i], u->traj + (size_t)i * (size_t)u->ncol);
+        zp_row row;
+        zp_row_store_get(rows, i, &row);
+        row_values(m, &row, u->traj + (size_t)i * (size_t)u->ncol);
     }
     u->nkink = nk;
     for (int i = 0; i < nk; i++) {
@@ -290,7 +300,9 @@ static int copy_out(zipopt_run *u, const zp_model *m, const zp_sim *sim) {
     return 0;
 }
 
-static void run_numbers(const zp_result *r, double *v) {
+static void run_numbers(const zp_model *m, const zp_result *r, double *v) {
+    double reached[ZP_LIMIT_COUNT];
+    zp_limits_reached(m, r, reached);
     const double n[] = {r->time,
                         r->x,
                         r->v,
@@ -301,11 +313,20 @@ static void run_numbers(const zp_result *r, double *v) {
                         r->w_drive,
                         r->w_damp,
                         r->e_impulse,
-                        r->e_final - r->e_initial - r->w_drive + r->w_damp + r->e_impulse,
+                        zp_estimate_energy_residual(r),
                         r->constraint_residual,
                         (double)r->steps,
                         (double)r->rhs_evals,
-                        r->wall_s};
+                        r->wall_s,
+                        r->w_drag,
+                        r->w_fric,
+                        reached[ZP_LIMIT_G],
+                        reached[ZP_LIMIT_JOINT],
+                        reached[ZP_LIMIT_KINK_DV],
+                        zp_limit_reached_in(r, ZP_LIMIT_ARRIVAL) ? reached[ZP_LIMIT_ARRIVAL] : NAN,
+                        r->peaks.normal_min,
+                        r->peaks.normal_max,
+                        (double)r->rejected};
     _Static_assert(sizeof n / sizeof *n == NRUN_KEYS, "one number per key");
     memcpy(v, n, sizeof n);
 }
@@ -327,7 +348,7 @@ zipopt_run *zipopt_simulate(zipopt_scene *s, char *err, size_t errlen) {
         free(u);
         return NULL;
     }
-    run_numbers(&u->r, u->num);
+    run_numbers(m, &u->r, u->num);
     if (copy_out(u, m, s->sim)) {
         say(err, errlen, "out of memory");
         zipopt_run_free(u);
