@@ -25,10 +25,7 @@ static void sweep_job(void *user, int k, zp_sim *s, zp_result *r) {
     p->x = r->x;
     p->died_link = r->died_link;
     zp_limits_reached(m, r, p->reached);
-    p->max_rel_angle = 0;
-    for (int i = 0; i < m->nlink; i++) {
-        p->max_rel_angle = fmax(p->max_rel_angle, r->max_rel_angle[i]);
-    }
+    p->max_rel_angle = zp_model_angle_used(m, r->max_rel_angle);
 }
 
 zp_status zp_landscape_sweep(const zp_model *m, const zp_sim_opts *o, const double *force, int n,

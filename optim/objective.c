@@ -25,10 +25,7 @@ static void set_score(const zp_objective *ob, zp_eval *e) {
 void zp_objective_eval_run(const zp_objective *ob, const zp_model *m, zp_sim *s, const zp_input *in,
                      zp_eval *e, zp_result *r) {
     int failed = zp_sim_run(m, s, in, r) != ZP_OK;
-    double angle = 0;
-    for (int i = 0; i < m->nlink; i++) {
-        angle = fmax(angle, r->max_rel_angle[i]);
-    }
+    double angle = zp_model_angle_used(m, r->max_rel_angle);
     double span = m->xb[m->nsec] - m->xb[0];
     double progress = fmin(fmax((r->x - m->xb[0]) / span, 0), 1);
     if (failed || !isfinite(progress) || !isfinite(angle) || !isfinite(r->time)) {
@@ -79,13 +76,16 @@ int zp_objective_eval_nominal(const zp_objective *ob, zp_sim *s, const zp_schedu
 }
 
 double zp_objective_scenario(const zp_objective *ob, int i, const zp_schedule *sched, zp_sim *s,
-                             zp_result *r) {
+                             zp_result *r, double *obj) {
     const zp_scen_set *set = ob->set;
     int j = set->order[i];
     const zp_objective *oj = set->judge && set->judge[j].m ? &set->judge[j] : ob;
     zp_input in = {.sched = sched, .force_scale = set->sc[j].force, .start = &set->start[j]};
     zp_eval ej;
     zp_objective_eval_run(oj, &set->m[j], s, &in, &ej, r);
+    if (obj) {
+        *obj = ej.obj;
+    }
     return zp_objective_scenario_cons(oj, &ej);
 }
 
@@ -109,8 +109,10 @@ void zp_objective_eval(const zp_objective *ob, zp_sim *s, const double *p, zp_ev
     }
     int i = 0, broke = 0;
     while (i < ob->set->n && !broke) {
-        double cons = zp_objective_scenario(ob, i++, &sched, s, r);
+        double obj;
+        double cons = zp_objective_scenario(ob, i++, &sched, s, r, &obj);
         e->cons = fmax(e->cons, cons);
+        e->obj = ob->slowest ? fmax(e->obj, obj) : e->obj;
         broke = cons > 0;
     }
     zp_objective_eval_close(ob, i, broke, e);

@@ -31,6 +31,8 @@ typedef struct zp_objective {
     zp_limits lim;     /* [limits]; all 0: none */
     struct zp_scen_set *set; /* borrowed, NULL: the nominal scene only; else every candidate
                                 that survives the nominal scene is held to each scenario */
+    int slowest;       /* [optimize] objective = slowest: obj is the slowest of the nominal run
+                          and the set's scenarios run (a throughput: the line's slowest rider) */
 } zp_objective;
 
 /* How many parameters the search varies: ob->shape's, or one force per section. */
@@ -46,13 +48,15 @@ void zp_objective_eval(const zp_objective *ob, zp_sim *s, const double *p, zp_ev
                        zp_result *r);
 /* The parts of zp_objective_eval, for a caller that shares a survivor's scenarios out: the
    nominal run of sched scored into e (1: a survivor with a set, the scenarios follow); the
-   constraint of the scenario at position i of the set's order; and, once positions [0, nrun)
-   ran with their constraints folded into e->cons in order (broke: the last one broke), the
-   counts and the score as the serial loop leaves them. */
+   constraint of the scenario at position i of the set's order (and in *obj, may be NULL, its
+   objective: its finish time, or past t_max); and, once positions [0, nrun) ran with their
+   constraints folded into e->cons in order (and with ob->slowest their objectives into
+   e->obj; broke: the last one broke), the counts and the score as the serial loop leaves
+   them. */
 int zp_objective_eval_nominal(const zp_objective *ob, zp_sim *s, const zp_schedule *sched,
                               zp_eval *e, zp_result *r);
 double zp_objective_scenario(const zp_objective *ob, int i, const zp_schedule *sched, zp_sim *s,
-                             zp_result *r);
+                             zp_result *r, double *obj);
 void zp_objective_eval_close(const zp_objective *ob, int nrun, int broke, zp_eval *e);
 /* One run of in on model m (ob->m or a scenario's model), scored without the set. */
 void zp_objective_eval_run(const zp_objective *ob, const zp_model *m, zp_sim *s,

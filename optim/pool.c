@@ -111,7 +111,7 @@ typedef struct scen_share {
     int n;           /* positions */
     atomic_int next; /* the next position to take */
     atomic_int stop; /* the first position that broke so far (it only falls); n: none */
-    double *cons;    /* owned, n: the constraint of each position run */
+    double *cons;    /* owned, 2n: the constraint of each position run, then its objective */
 } scen_share;
 
 static void share_work(scen_share *sh, zp_sim *s, zp_result *r) {
@@ -120,7 +120,7 @@ static void share_work(scen_share *sh, zp_sim *s, zp_result *r) {
         if (i >= sh->n || i > atomic_load(&sh->stop)) {
             return;
         }
-        sh->cons[i] = zp_objective_scenario(sh->ob, i, sh->sched, s, r);
+        sh->cons[i] = zp_objective_scenario(sh->ob, i, sh->sched, s, r, &sh->cons[sh->n + i]);
         int stop = atomic_load(&sh->stop);
         while (sh->cons[i] > 0 && i < stop && !atomic_compare_exchange_weak(&sh->stop, &stop, i)) {
         }
@@ -139,7 +139,7 @@ void zp_pool_objective_eval(zp_pool *p, const zp_objective *ob, zp_sim *s, zp_re
         return;
     }
     int n = ob->set->n;
-    scen_share sh = {ob, &sched, n, 0, n, malloc(sizeof *sh.cons * n)};
+    scen_share sh = {ob, &sched, n, 0, n, malloc(sizeof *sh.cons * 2 * n)};
     if (!sh.cons) {
         zp_objective_eval(ob, s, f, e, r);
         return;
@@ -161,6 +161,7 @@ void zp_pool_objective_eval(zp_pool *p, const zp_objective *ob, zp_sim *s, zp_re
     int nrun = stop < n ? stop + 1 : n;
     for (int i = 0; i < nrun; i++) {
         e->cons = fmax(e->cons, sh.cons[i]);
+        e->obj = ob->slowest ? fmax(e->obj, sh.cons[n + i]) : e->obj;
     }
     zp_objective_eval_close(ob, nrun, stop < n, e);
     free(sh.cons);

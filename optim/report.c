@@ -4,6 +4,8 @@
 
 #include <math.h>
 
+#include "headroom.h"
+
 #define DEG (180.0 / M_PI)
 #define KMH 3.6
 #define BRAKE_KMH 10  /* zip-line practice: arriving faster than this needs a brake */
@@ -118,6 +120,12 @@ static void md_result(FILE *f, const zp_report *r) {
         fprintf(f, "Outcome: **%s** at t = %.4f s, x = %.2f m.\n",
                 zp_sim_outcome_name(run->outcome), run->time, run->x);
     }
+    if (r->sc->objective_slowest && r->set) {
+        fprintf(f, "\nThe search minimised the slowest finish over the nominal scene and the %d "
+                   "scenarios held ([optimize] objective = slowest): %.4f s for this schedule "
+                   "(at the search's tolerance); the nominal rider's is above.\n",
+                r->set->n, r->res->best.obj);
+    }
     fprintf(f, "Verification at rtol %.0e, atol %.0e: ", v->rtol, v->atol);
     if (v->agree) {
         fprintf(f, "same outcome, finish times agree within %g s, margin kept.\n\n", ZP_VERIFY_DT);
@@ -135,7 +143,7 @@ static void md_margins(FILE *f, const zp_report *r) {
             sc->death_angle, sc->margin, sc->death_angle - sc->margin);
     for (int i = 0; i < r->m->nlink; i++) {
         double a = r->v->run->max_rel_angle[i] * DEG;
-        fprintf(f, "| %d | %.3f | %.3f |\n", i + 1, a, sc->death_angle - a);
+        fprintf(f, "| %d | %.3f | %.3f |\n", i + 1, a, r->m->phi_max_j[i] * DEG - a);
     }
 }
 
@@ -292,7 +300,7 @@ static void md_limits(FILE *f, const zp_report *r) {
         } else if (r->lim->max[i] > 0) {
             fprintf(f, "| %s | %.4g %s | %g %s | %s |\n", zp_limit_name(i), v[i],
                     zp_limit_unit(i), r->lim->max[i], zp_limit_unit(i),
-                    v[i] <= r->lim->max[i] ? "kept" : "**broken**");
+                    zp_limits_kept(i, v[i], r->lim->max[i]) ? "kept" : "**broken**");
         }
     }
 }
@@ -302,6 +310,103 @@ static void md_range(FILE *f, const char *what, const double range[2]) {
     if (range[0] != 100 || range[1] != 100) {
         fprintf(f, "- %s from %g %% to %g %% of nominal\n", what, range[0], range[1]);
     }
+}
+
+/* the scenario at u of the stated box, in words */
+static void scenario_text(const zp_report *r, const double *u, char *buf, size_t n) {
+    zp_scenario s;
+    zp_box_scenario(r->box, u, &s);
+    int used = snprintf(buf, n, "forces x");
+    for (int k = 0; k < r->m->nsec && used < (int)n; k++) {
+        used += snprintf(buf + used, n - used, " %.4f", s.force[k]);
+    }
+    if (used < (int)n) {
+        snprintf(buf + used, n - used,
+                 ", masses x %.3f, lengths x %.3f, trolley x %.3f, damping x %.3f", s.mass,
+                 s.length, s.trolley, s.damping);
+    }
+}
+
+/* the population's spread over the fresh scenarios, with the scenario at each end */
+static void md_spread(FILE *f, const zp_report *r) {
+    const zp_robust_check *c = r->check;
+    if (c->samples == 0 || c->fastest.sample < 0) {
+        return;
+    }
+    const zp_spread_end *ends[4] = {&c->fastest, &c->slowest, &c->arrival_low,
+                                    &c->arrival_high};
+    const char *what[4] = {"fastest finish", "slowest finish", "lowest arrival speed",
+                           "highest arrival speed"};
+    const char *fmt[4] = {"%.4f s", "%.4f s", "%.2f km/h", "%.2f km/h"};
+    fprintf(f, "\nSpread over the %d fresh scenarios that finished (of %d):\n\n", c->survived,
+            c->samples);
+    for (int k = 0; k < 4; k++) {
+        char sc[512];
+        scenario_text(r, ends[k]->u, sc, sizeof sc);
+        fprintf(f, "- %s: ", what[k]);
+        fprintf(f, fmt[k], ends[k]->value);
+        fprintf(f, " (fresh scenario %d: %s)\n", ends[k]->sample + 1, sc);
+    }
+}
+
+/* how far past the stated box the answer holds (headroom.c) */
+static void md_headroom(FILE *f, const zp_report *r) {
+    const zp_headroom *h = &r->check->headroom;
+    if (r->check->samples == 0) {
+        return;
+    }
+    if (h->safety_factor != 1) {
+        fprintf(f, "\nHeld to the ranges widened %gx about the nominal ([robust] safety_factor); "
+                   "the verification above is on the stated ranges.\n",
+                h->safety_factor);
+    }
+    fputs("\nHeadroom past the stated ranges (along the worst direction found, by bisection; "
+          "1x is the stated range; holds: finishes with the margin and every limit kept):\n\n"
+          "| range | holds to | breaks at | what breaks | finishes alive to | then |\n"
+          "|---|---|---|---|---|---|\n",
+          f);
+    for (int l = 0; l < ZP_HEADROOM_LINES; l++) {
+        const zp_headroom_line *L = &h->line[l];
+        if (L->range < 0) {
+            continue;
+        }
+        fprintf(f, "| %s | %.4fx", zp_headroom_range_name(L->range), L->holds);
+        if (L->range == 0) {
+            fprintf(f, " (+/-%.4g %%)", L->holds * r->sc->force_error);
+        }
+        if (isfinite(L->breaks)) {
+            fprintf(f, " | %.4fx", L->breaks);
+            if (L->range == 0) {
+                fprintf(f, " (+/-%.4g %%)", L->breaks * r->sc->force_error);
+            }
+            fprintf(f, " | %s", L->limited_by);
+        } else {
+            fputs(" or more | not found | -", f);
+        }
+        fprintf(f, " | %.4fx", L->alive);
+        if (L->range == 0) {
+            fprintf(f, " (+/-%.4g %%)", L->alive * r->sc->force_error);
+        }
+        if (isfinite(L->dies)) {
+            fprintf(f, " | %s at %.4fx |\n", L->ends_by, L->dies);
+        } else {
+            fputs(" or more | - |\n", f);
+        }
+    }
+}
+
+/* where zp_held.worst lies, in words */
+static const char *held_where(const zp_report *r, int worst) {
+    static _Thread_local char buf[64];
+    if (worst < 0) {
+        return "the nominal scene";
+    }
+    if (worst >= r->set->n) {
+        return "the adversary's worst";
+    }
+    snprintf(buf, sizeof buf, "%s %d of the set", worst < r->set->ncorner ? "corner" : "scenario",
+             worst + 1);
+    return buf;
 }
 
 /* the ranges held, the verification on fresh scenarios, the worst scenario found */
@@ -318,6 +423,10 @@ static void md_survivable(FILE *f, const zp_report *r) {
     md_range(f, "rider size (all link lengths)", sc->length_range);
     md_range(f, "trolley mass", sc->trolley_mass_range);
     md_range(f, "joint damping", sc->damping_range);
+    if (sc->wind_varied) {
+        fprintf(f, "- the horizontal wind anywhere from %g to %g m/s\n", sc->wind_range[0],
+                sc->wind_range[1]);
+    }
     if (sc->start_angle > 0) {
         fprintf(f, "- each link starting swung by up to +/-%g deg\n", sc->start_angle);
     }
@@ -330,13 +439,20 @@ static void md_survivable(FILE *f, const zp_report *r) {
         fprintf(f, "\nChecked on %d fresh random scenarios at rtol %.0e: %d finished alive, %d "
                    "kept the margin, %d kept every limit; survivable (both) in %d, so the "
                    "probability of a survivable ride is at least **%.2f %%** (95 %% confidence, "
-                   "Clopper-Pearson). Smallest margin seen: %.2f deg.\n",
+                   "Clopper-Pearson). Smallest margin over everything held and checked: "
+                   "%.2f deg (over the nominal scene, the scenarios held and the adversary's "
+                   "worst, rerun at the same tolerance: %.2f deg, %s).\n",
                 c->samples, r->v->rtol, c->survived, c->margin_kept,
-                c->limits_kept, c->all_kept, 100 * c->lower_95, c->worst_margin_deg);
+                c->limits_kept, c->all_kept, 100 * c->lower_95, c->worst_margin_deg,
+                c->held_margin_deg, held_where(r, c->held_worst));
     }
+    md_spread(f, r);
+    md_headroom(f, r);
     if (r->rinfo->rounds > 0 && isfinite(w->cons)) {
         zp_scenario s;
-        zp_box_scenario(r->box, w->u, &s);
+        zp_box hold; /* the adversary searched the box held */
+        zp_box_widen(r->box, r->sc->safety_factor, &hold);
+        zp_box_scenario(&hold, w->u, &s);
         fprintf(f, "\nWorst scenario found (the adversary's search of the ranges): forces x");
         for (int k = 0; k < r->m->nsec; k++) {
             fprintf(f, " %.4f", s.force[k]);
@@ -437,6 +553,9 @@ static void md_figures_rerun(FILE *f, const zp_report *r) {
               "![course and paths](course.png)\n\n![energy](energy.png)\n\n"
               "![joint angles](angles.png)\n\n![loads](loads.png)\n",
               f);
+        if (r->m->nenv > 0) {
+            fputs("\n![felt g against the g-duration envelope](envelope.png)\n", f);
+        }
     }
     fprintf(f,
             "\n## Rerun\n\n```\nzipopt %s --out %s          # this search\n"

@@ -42,6 +42,9 @@ typedef struct zp_report {
 void zp_report_write_schedule(FILE *f, const zp_scene *sc, const zp_schedule *sched,
                               const char *comment);
 void zp_report_write_json(FILE *f, const zp_report *r);
+/* robust.headroom (CLI.md) as one JSON object: factor and limited_by for the whole box (null
+   and "" when not searched), breaks_at, safety_factor, and ranges: per varied range. */
+void zp_summary_headroom_json(FILE *f, const zp_headroom *h);
 /* The plain sentence on convergence: how many polishes reached the best, and whether a larger
    budget is likely to help. */
 void zp_report_convergence(char *buf, size_t n, const zp_search_result *s);

@@ -13,6 +13,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "headroom.h"
+#include "held.h"
 #include "pool.h"
 #include "state.h"
 #include "estimate.h"
@@ -49,6 +51,13 @@ void zp_box_from_scene(const zp_scene *sc, const zp_model *m, zp_box *b) {
         b->theta_max = sc->start_angle / DEG;
         b->d += m->nlink;
     }
+    b->wind_dim = -1;
+    b->wind0 = m->wind;
+    if (sc->wind_varied) {
+        b->wind_dim = b->d++;
+        b->wind[0] = sc->wind_range[0];
+        b->wind[1] = sc->wind_range[1];
+    }
 }
 
 void zp_box_scenario(const zp_box *b, const double *u, zp_scenario *s) {
@@ -65,6 +74,10 @@ void zp_box_scenario(const zp_box *b, const double *u, zp_scenario *s) {
     }
     for (int i = 0; b->theta0 >= 0 && i < b->nlink; i++) {
         s->theta[i] = b->theta_max * u[b->theta0 + i];
+    }
+    if (b->wind_dim >= 0) {
+        s->wind_set = 1;
+        s->wind = b->wind[0] + 0.5 * (u[b->wind_dim] + 1) * (b->wind[1] - b->wind[0]);
     }
 }
 
@@ -271,6 +284,8 @@ static double scen_judge(const zp_objective *ob, const zp_box *b, const zp_chain
     w->cons = zp_objective_scenario_cons(ob, &e);
     w->margin_deg = (m.phi_max - e.angle) * DEG;
     w->outcome = e.outcome;
+    w->time = e.time;
+    w->arrival_kmh = !e.failed && e.outcome == ZP_OUTCOME_FINISHED ? r->v * 3.6 : 0;
     w->joint = 1;
     for (int i = 0; i < m.nlink; i++) {
         w->joint = r->max_rel_angle[i] > r->max_rel_angle[w->joint - 1] ? i + 1 : w->joint;
@@ -450,6 +465,15 @@ zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts 
     return st;
 }
 
+/* scenario i (its point u + i d) into the end e when v is larger than e's (the first wins) */
+static void spread_take(zp_spread_end *e, double v, int i, const double *u, int d) {
+    if (e->sample < 0 || v > e->value) {
+        e->value = v;
+        e->sample = i;
+        memcpy(e->u, u + (size_t)i * d, sizeof *u * (size_t)d);
+    }
+}
+
 zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
                            const double *p, int n, unsigned long seed, int nthreads,
                            const zp_spread *sp, zp_robust_check *c) {
@@ -463,6 +487,11 @@ zp_status zp_robust_verify_each(const zp_objective *ob, const zp_box *b, const z
     memset(c, 0, sizeof *c);
     c->samples = n;
     c->worst_margin_deg = INFINITY;
+    zp_spread_end *ends[4] = {&c->fastest, &c->slowest, &c->arrival_low, &c->arrival_high};
+    for (int k = 0; k < 4; k++) {
+        ends[k]->value = NAN;
+        ends[k]->sample = -1;
+    }
     zp_pool *w = NULL;
     double *u = malloc(sizeof *u * (size_t)n * (b->d + 1));
     zp_robust_worst *pw = malloc(sizeof *pw * (size_t)(n + 1));
@@ -491,8 +520,15 @@ zp_status zp_robust_verify_each(const zp_objective *ob, const zp_box *b, const z
         c->all_kept += margin && limits;
         if (fin) {
             c->worst_margin_deg = fmin(c->worst_margin_deg, pw[i].margin_deg);
+            spread_take(&c->fastest, -pw[i].time, i, u, b->d);
+            spread_take(&c->slowest, pw[i].time, i, u, b->d);
+            spread_take(&c->arrival_low, -pw[i].arrival_kmh, i, u, b->d);
+            spread_take(&c->arrival_high, pw[i].arrival_kmh, i, u, b->d);
         }
     }
+    /* two ends were kept as the largest of -value: back to the value */
+    c->fastest.value = -c->fastest.value;
+    c->arrival_low.value = -c->arrival_low.value;
     c->lower_95 = zp_clopper_pearson_lower(c->all_kept, n, 0.05);
     if (each && !st) {
         memcpy(each, pw, sizeof *pw * (size_t)n);
@@ -508,13 +544,15 @@ zp_status zp_robust_setup(zp_robust_problem *p, const zp_scene *sc, const zp_mod
                           double limit, const zp_schedule *shape, const zp_sim_opts *so,
                           const zp_sim_opts *search, zp_sim_opts *fast) {
     memset(p, 0, sizeof *p);
-    p->ob = (zp_objective){.m = m, .limit = limit, .t_max = so->t_max, .shape = shape};
+    p->ob = (zp_objective){.m = m, .limit = limit, .t_max = so->t_max, .shape = shape,
+                           .slowest = sc->objective_slowest};
     zp_limits_from_scene(sc, &p->ob.lim);
     *fast = *search;
     fast->peaks = zp_limits_need_peaks(&p->ob.lim);
     zp_box_from_scene(sc, m, &p->box);
+    zp_box_widen(&p->box, sc->safety_factor, &p->hold);
     p->robust = sc->robust && p->box.d > 0;
-    if (p->robust && zp_scen_set_build(&p->set, &p->box, m, sc->robust_samples, sc->seed)) {
+    if (p->robust && zp_scen_set_build(&p->set, &p->hold, m, sc->robust_samples, sc->seed)) {
         return ZP_ERR_NOMEM;
     }
     p->ob.set = p->robust ? &p->set : NULL;
@@ -553,7 +591,7 @@ zp_status zp_robust_solve(zp_robust_problem *p, const zp_scene *sc, const zp_sim
     const zp_spread *sp = zp_spread_active(p->spread) ? p->spread : NULL;
     zp_status st = ZP_OK;
     if (!sp || sp->rank == 0) {
-        st = zp_robust_search(&p->ob, &p->box, fast, lo, hi, o, p->robust ? ZP_ROBUST_ROUNDS : 1,
+        st = zp_robust_search(&p->ob, &p->hold, fast, lo, hi, o, p->robust ? ZP_ROBUST_ROUNDS : 1,
                               res, &p->info, err, errlen);
     }
     int verify = !st && p->robust && !res->interrupted;
@@ -572,6 +610,20 @@ zp_status zp_robust_solve(zp_robust_problem *p, const zp_scene *sc, const zp_sim
     to.track_loads = 0;
     st = zp_robust_verify(&p->ob, &p->box, &to, res->force, sc->verify_samples, sc->seed,
                           o->nthreads, sp, &p->check);
+    /* the worst margin is over everything held as well as everything verified (rank 0 alone
+       holds the set the search grew) */
+    zp_held h;
+    if (!st && (!sp || sp->rank == 0) &&
+        !(st = zp_held_check(&p->ob, &p->hold, &p->info.worst, &to, res->force, o->nthreads, &h))) {
+        p->check.held_margin_deg = h.worst_margin_deg;
+        p->check.held_worst = h.worst;
+        p->check.worst_margin_deg = fmin(p->check.worst_margin_deg, h.worst_margin_deg);
+        /* past the stated box, along the adversary's worst direction */
+        p->check.headroom.safety_factor = sc->safety_factor;
+        zp_headroom_find(&p->ob, &p->box, &p->hold,
+                         isfinite(p->info.worst.cons) ? p->info.worst.u : NULL, &to, res->force,
+                         &p->check.headroom);
+    }
     if (st) {
         snprintf(err, errlen, "%s",
                  st == ZP_ERR_IO ? "the MPI ranks could not exchange the verification"

@@ -17,6 +17,9 @@ typedef struct zp_box {
     int theta0;           /* first start-angle coordinate (one per link), -1: none */
     double theta_max;     /* rad */
     int nlink;
+    int wind_dim;         /* coordinate of the wind, -1: not varied */
+    double wind[2];       /* m/s at u = -1 and u = +1 */
+    double wind0;         /* m/s, the nominal wind ([physics] wind) */
 } zp_box;
 
 void zp_box_from_scene(const zp_scene *sc, const zp_model *m, zp_box *b);
@@ -40,7 +43,7 @@ typedef struct zp_scen_set {
 } zp_scen_set;
 
 #define ZP_ROBUST_STREAM_VERIFY 0x7e1fUL
-#define ZP_BOX_MAX (ZP_MAX_SECTIONS + 4 + ZP_MAX_LINKS)
+#define ZP_BOX_MAX (ZP_MAX_SECTIONS + 5 + ZP_MAX_LINKS)
 
 /* samples scenarios of b around nom: every corner when 2^d fits in samples (else samples/2
    corners picked by quasi-random signs), then Sobol (Halton past 40 coordinates) points
@@ -60,6 +63,32 @@ zp_status zp_scen_set_add_model(zp_scen_set *set, const zp_model *m, const zp_sc
 void zp_scen_set_reorder(zp_scen_set *set);
 void zp_scen_set_free(zp_scen_set *set);
 
+/* How far past the stated box the answer still holds (headroom.c): per range and for the box
+   as a whole, along the worst direction found, as a factor on the stated range about the
+   nominal. */
+enum { ZP_HEADROOM_LINES = 8 }; /* force, mass, length, trolley, damping, start angle, wind; the
+                                   box */
+typedef struct zp_headroom_line {
+    int range;      /* 0..6 the range in that order, 7 the whole box; -1: not varied */
+    double holds;   /* the largest factor found holding (bisected; 0: even the nominal breaks) */
+    double breaks;  /* the first factor found breaking; INFINITY: none up to the search's cap */
+    char limited_by[32]; /* what breaks there: died, stalled, margin, a [limits] key */
+    double alive;   /* the largest factor found at which the rider still finishes alive */
+    double dies;    /* the first factor found where not; INFINITY: none up to the cap */
+    char ends_by[32]; /* how the ride ends there: died, stalled */
+} zp_headroom_line;
+typedef struct zp_headroom {
+    double safety_factor;                 /* the box held: the stated one widened this much */
+    zp_headroom_line line[ZP_HEADROOM_LINES];
+} zp_headroom;
+
+/* One end of the spread over the fresh scenarios: its value and the scenario that gives it. */
+typedef struct zp_spread_end {
+    double value;         /* s or km/h; NAN: no scenario finished */
+    int sample;           /* index of the fresh scenario, -1: none */
+    double u[ZP_BOX_MAX]; /* its point in the stated box */
+} zp_spread_end;
+
 /* The answer on fresh random scenarios (a stream apart from the set's). */
 typedef struct zp_robust_check {
     int samples;
@@ -68,7 +97,15 @@ typedef struct zp_robust_check {
     int limits_kept; /* finished with every [limits] value kept */
     int all_kept;    /* both: survivable (MODEL.md) */
     double lower_95; /* 95 % lower confidence bound of P(survivable), Clopper-Pearson */
-    double worst_margin_deg; /* smallest margin over the finishing scenarios */
+    double worst_margin_deg; /* smallest margin over the finishing scenarios; after
+                                zp_robust_solve also over those of held_margin_deg */
+    double held_margin_deg;  /* zp_robust_solve: smallest margin over the nominal scene, every
+                                scenario held and the adversary's worst, rerun alike (held.h) */
+    int held_worst;          /* where (zp_held.worst) */
+    zp_headroom headroom;    /* zp_robust_solve: past the stated box */
+    /* the population's spread over the finishing fresh scenarios: fastest and slowest finish
+       (s), lowest and highest arrival speed (km/h) */
+    zp_spread_end fastest, slowest, arrival_low, arrival_high;
 } zp_robust_check;
 
 /* The worst scenario found for a schedule, and what limited it. */
@@ -80,6 +117,8 @@ typedef struct zp_robust_worst {
     int joint;        /* 1-based joint with the largest angle */
     int limit;        /* zp_limit_id with the largest excess, -1: none set */
     double excess;    /* that excess, reached / limit - 1 (> 0: broken; -1: none set) */
+    double time;      /* s: finish, death or stall */
+    double arrival_kmh; /* km/h at the finish, 0 when it does not finish */
 } zp_robust_worst;
 
 typedef struct zp_robust_info {
@@ -115,7 +154,8 @@ zp_status zp_robust_verify_each(const zp_objective *ob, const zp_box *b, const z
 typedef struct zp_robust_problem {
     zp_objective ob;
     int robust;          /* the scene has [robust] ranges: ob.set = &set */
-    zp_box box;
+    zp_box box;          /* the stated box: fresh scenarios and reports */
+    zp_box hold;         /* the box held: box widened by [robust] safety_factor */
     zp_scen_set set;
     zp_robust_info info;
     zp_robust_check check; /* samples 0: not verified */

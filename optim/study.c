@@ -40,10 +40,7 @@ static void fail(zp_study_row *row, const char *why) {
    decides the row: the scene's margin and [limits] judge every row, searched or simulated */
 static void fill(const zp_scene *sc, const zp_model *m, const zp_schedule *sh, const zp_result *r,
                  zp_study_row *row) {
-    double angle = 0;
-    for (int i = 0; i < m->nlink; i++) {
-        angle = fmax(angle, r->max_rel_angle[i]);
-    }
+    double angle = zp_model_angle_used(m, r->max_rel_angle);
     row->outcome = r->outcome;
     row->time = r->time;
     row->margin = sc->death_angle - angle * DEG;

@@ -2,6 +2,7 @@
    verification, the baseline, robustness and the evidence of convergence. */
 #include <math.h>
 
+#include "headroom.h"
 #include "method.h"
 #include "out_json.h"
 #include "report.h"
@@ -9,11 +10,7 @@
 #define DEG (180.0 / M_PI)
 
 static double largest_angle(const zp_model *m, const zp_result *r) {
-    double a = 0;
-    for (int i = 0; i < m->nlink; i++) {
-        a = fmax(a, r->max_rel_angle[i]);
-    }
-    return a;
+    return zp_model_angle_used(m, r->max_rel_angle);
 }
 
 static void json_number_or_null(FILE *f, double v) {
@@ -104,18 +101,76 @@ static void json_accuracy(FILE *f, const zp_accuracy *a) {
     fprintf(f, ", \"reruns\": %d}", a->reruns);
 }
 
+void zp_summary_headroom_json(FILE *f, const zp_headroom *h) {
+    const zp_headroom_line *box = &h->line[ZP_HEADROOM_LINES - 1];
+    fputs("{\"factor\": ", f);
+    zp_out_json_number(f, box->range < 0 ? NAN : box->holds);
+    fputs(", \"limited_by\": ", f);
+    zp_out_json_string(f, box->range < 0 ? "" : box->limited_by);
+    fputs(", \"breaks_at\": ", f);
+    zp_out_json_number(f, box->range < 0 || !isfinite(box->breaks) ? NAN : box->breaks);
+    fputs(", \"alive_to\": ", f);
+    zp_out_json_number(f, box->range < 0 ? NAN : box->alive);
+    fputs(", \"ends_at\": ", f);
+    zp_out_json_number(f, box->range < 0 || !isfinite(box->dies) ? NAN : box->dies);
+    fputs(", \"safety_factor\": ", f);
+    zp_out_json_number(f, h->safety_factor);
+    fputs(", \"ranges\": [", f);
+    int first = 1;
+    for (int l = 0; l + 1 < ZP_HEADROOM_LINES; l++) {
+        const zp_headroom_line *L = &h->line[l];
+        if (L->range < 0) {
+            continue;
+        }
+        fprintf(f, "%s{\"range\": ", first ? "" : ", ");
+        zp_out_json_string(f, zp_headroom_range_name(L->range));
+        fputs(", \"factor\": ", f);
+        zp_out_json_number(f, L->holds);
+        fputs(", \"breaks_at\": ", f);
+        zp_out_json_number(f, isfinite(L->breaks) ? L->breaks : NAN);
+        fputs(", \"limited_by\": ", f);
+        zp_out_json_string(f, L->limited_by);
+        fputs(", \"alive_to\": ", f);
+        zp_out_json_number(f, L->alive);
+        fputs(", \"ends_at\": ", f);
+        zp_out_json_number(f, isfinite(L->dies) ? L->dies : NAN);
+        fputs(", \"ends_by\": ", f);
+        zp_out_json_string(f, L->ends_by);
+        fputs("}", f);
+        first = 0;
+    }
+    fputs("]}", f);
+}
+
 /* the robust search's key (CLI.md): its scenarios, and the answer on fresh ones */
 static void json_scenarios(FILE *f, const zp_report *r) {
     const zp_robust_check *c = r->check;
     fprintf(f, ",\n  \"robust\": {\"scenarios\": %d, \"corners\": %d, \"added\": %d, "
                "\"rounds\": %d, \"worst_margin_deg\": ",
             r->set->n, r->set->ncorner, r->rinfo->added, r->rinfo->rounds);
-    /* the smallest margin seen: on the fresh scenarios or the adversary's worst */
-    zp_out_json_number(f, fmin(c->worst_margin_deg, r->rinfo->worst.margin_deg));
+    /* the smallest margin over everything held and verified (the adversary's worst included) */
+    zp_out_json_number(f, c->worst_margin_deg);
     fprintf(f, ", \"scenario_runs\": %ld, \"verify\": {\"samples\": %d, \"survived\": %d, "
                "\"margin_kept\": %d, \"limits_kept\": %d, \"all_kept\": %d, \"lower_95\": ",
             r->set->runs, c->samples, c->survived, c->margin_kept, c->limits_kept, c->all_kept);
     zp_out_json_number(f, c->lower_95);
+    fputs("}, \"headroom\": ", f);
+    zp_summary_headroom_json(f, &c->headroom);
+    /* the population's spread over the finishing fresh scenarios, each with its scenario */
+    const zp_spread_end *ends[4] = {&c->fastest, &c->slowest, &c->arrival_low,
+                                    &c->arrival_high};
+    const char *keys[4] = {"fastest_s", "slowest_s", "arrival_low_kmh", "arrival_high_kmh"};
+    fputs(", \"spread\": {", f);
+    for (int k = 0; k < 4; k++) {
+        fprintf(f, "%s\"%s\": {\"value\": ", k ? ", " : "", keys[k]);
+        zp_out_json_number(f, ends[k]->value);
+        fprintf(f, ", \"sample\": %d, \"u\": [", ends[k]->sample);
+        for (int d = 0; ends[k]->sample >= 0 && d < r->box->d; d++) {
+            fputs(d ? ", " : "", f);
+            zp_out_json_number(f, ends[k]->u[d]);
+        }
+        fputs("]}", f);
+    }
     fputs("}", f);
     if (r->diag) {
         fputs(", \"diagnosis\": ", f);
@@ -140,6 +195,11 @@ void zp_report_write_json(FILE *f, const zp_report *r) {
     zp_out_json_number(f, run->time);
     fputs(",\n  \"time_error\": ", f);
     zp_out_json_number(f, fabs(run->time - r->v->tight->time));
+    /* what the search minimised: the nominal rider's finish, or the slowest held finish (at
+       the search's own tolerance) */
+    fprintf(f, ",\n  \"objective\": \"%s\", \"objective_s\": ",
+            r->sc->objective_slowest ? "slowest" : "nominal");
+    zp_out_json_number(f, s->best.obj);
     if (r->acc) {
         json_accuracy(f, r->acc);
     }

@@ -14,7 +14,8 @@
 
 #include "out_file.h"
 
-#define NFIXED 12 /* result columns before the forces: status .. evals, the limited quantities */
+/* result columns before the forces: status .. evals (8), the limited quantities */
+#define NFIXED (8 + ZP_LIMIT_COUNT)
 #define LINE_MAX_BYTES                                                                             \
     16384 /* a row or grid line is shorter (a grid line of 10000 points:                           \
              twice 2500 hex digits, with 256 forces) */
@@ -22,7 +23,8 @@
 const char *zp_sweep_csv_limit_column(int i) {
     static const char *const columns[ZP_LIMIT_COUNT] = {
         [ZP_LIMIT_G] = "peak_g", [ZP_LIMIT_JOINT] = "peak_joint_force_N",
-        [ZP_LIMIT_ARRIVAL] = "arrival_kmh", [ZP_LIMIT_KINK_DV] = "max_kink_dv_m_s"};
+        [ZP_LIMIT_ARRIVAL] = "arrival_kmh", [ZP_LIMIT_KINK_DV] = "max_kink_dv_m_s",
+        [ZP_LIMIT_G_ENVELOPE] = "g_envelope_share", [ZP_LIMIT_MIN_ARRIVAL] = "slowest_arrival_kmh"};
     return columns[i];
 }
 
@@ -65,9 +67,9 @@ void zp_sweep_csv_row(FILE *f, const zp_sweep *s, int p, const zp_study_row *r) 
         put_num(f, zp_sweep_value(s, v, p));
     }
     if (r->failed) {
-        fputs(",failed,,,,,,,,,,,", f);
-        for (int k = 0; k < r->np; k++) {
-            fputc(',', f);
+        fputs(",failed", f);
+        for (int k = 1; k < NFIXED + r->np; k++) {
+            fputc(',', f); /* the empty result columns and forces */
         }
     } else {
         fprintf(f, ",ok,%d,%s", r->found, zp_sim_outcome_name(r->outcome));

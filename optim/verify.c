@@ -128,10 +128,7 @@ static void perturb(const double *force, int nsec, unsigned long seed, int nrobu
 
 /* the run and the tighter run agree: same outcome, close finish times, margin kept */
 static void agree(const zp_objective *ob, zp_verify *v) {
-    double angle = 0;
-    for (int i = 0; i < ob->m->nlink; i++) {
-        angle = fmax(angle, v->tight->max_rel_angle[i]);
-    }
+    double angle = zp_model_angle_used(ob->m, v->tight->max_rel_angle);
     v->agree = v->run->outcome == v->tight->outcome &&
                fabs(v->run->time - v->tight->time) <= ZP_VERIFY_DT && angle <= ob->limit;
 }

@@ -53,7 +53,7 @@ static void check_method(int id) {
     int hermite = !strncmp(me->name, "gsl-", 4);
     double t_end = 20;
     CHECK(me->reset(w, 0, y0, t_end) == 0);
-    int roots[2], n0 = 0, n1 = 0, stops = 0, bad_dense = 0;
+    int roots[2], n0 = 0, n1 = 0, stops = 0, bad_dense = 0, bad_land = 0;
     for (int guard = 0; guard < 100000; guard++) {
         char err[256] = "";
         zp_adv a = me->advance(w, &t, y, roots, err, sizeof err);
@@ -70,6 +70,12 @@ static void check_method(int id) {
         if (a != ZP_ADV_ROOT &&
             (me->interpolate(w, tm, yi) != 0 || fabs(yi[0] - cos(tm)) > dense_tol)) {
             bad_dense++;
+        }
+        /* a landed state carries no interpolant's error: the step's own accuracy */
+        if (me->land && a != ZP_ADV_ROOT &&
+            (me->land(w, tm, yi) != 0 || fabs(yi[0] - cos(tm)) > K_RTOL * RTOL ||
+             fabs(yi[1] + sin(tm)) > K_RTOL * RTOL)) {
+            bad_land++;
         }
         CHECK_NEAR(y[0], cos(t), K_RTOL * RTOL);
         CHECK_NEAR(y[1], -sin(t), K_RTOL * RTOL);
@@ -102,6 +108,7 @@ static void check_method(int id) {
     if (bad_dense) {
         fprintf(stderr, "%s: %d dense outputs off\n", me->name, bad_dense);
     }
+    CHECK(bad_land == 0);
     CHECK(stops == 1);
     CHECK_NEAR(t, t_end, 1e-12);
     /* pi/2 + 2 k pi < 20: k = 0, 1, 2; cos = 1/2 at +-pi/3 + 2 k pi in (0, 20): 7 */

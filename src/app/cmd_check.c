@@ -102,11 +102,15 @@ static void print_scene(const zp_setup *st) {
     printf("gravity: %g m/s^2\n", m->g);
     print_course(m);
     printf("trolley: mass %g kg\n", m->m0);
-    printf("body: %d link%s, death angle %g deg\n", m->nlink, m->nlink == 1 ? "" : "s",
-           sc->death_angle);
+    printf("body: %d link%s, death angle %g deg%s\n", m->nlink, m->nlink == 1 ? "" : "s",
+           sc->death_angle, sc->ndeath > 1 ? " at most (one per joint below)" : "");
     for (int i = 0; i < m->nlink; i++) {
-        printf("  link %d: length %g m, mass %g kg, inertia %.6g kg m^2, damping %g N m s/rad\n",
+        printf("  link %d: length %g m, mass %g kg, inertia %.6g kg m^2, damping %g N m s/rad",
                i + 1, m->len[i], m->mass[i], m->inertia[i], m->damp[i]);
+        if (sc->ndeath > 1) {
+            printf(", death angle %g deg", sc->death_angles[i]);
+        }
+        putchar('\n');
     }
     printf("drive: %s; forces:", zp_drive_dir_name(m->drive));
     for (int k = 0; k < m->nsec; k++) {

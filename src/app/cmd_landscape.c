@@ -176,10 +176,16 @@ static const char *binding(const zp_landscape_point *p, double limit, const zp_l
         return "margin";
     }
     int worst = -1;
+    double worst_ex = 0;
     for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
-        if (lim->max[i] > 0 && p->reached[i] > lim->max[i] &&
-            (worst < 0 || p->reached[i] / lim->max[i] > p->reached[worst] / lim->max[worst])) {
-            worst = i;
+        if (lim->max[i] > 0 && !zp_limits_kept(i, p->reached[i], lim->max[i])) {
+            /* relative excess past the limit: over a ceiling, under the one floor */
+            double ex = i == ZP_LIMIT_MIN_ARRIVAL ? 1 - p->reached[i] / lim->max[i]
+                                                  : p->reached[i] / lim->max[i] - 1;
+            if (worst < 0 || ex > worst_ex) {
+                worst = i;
+                worst_ex = ex;
+            }
         }
     }
     return worst < 0 ? "" : zp_limit_name(worst);
@@ -192,7 +198,7 @@ static void write_header(FILE *f, const zp_limits *lim) {
         if (lim->max[i] > 0) {
             fprintf(f, ",%s_reached_", zp_limit_name(i));
             for (const char *u = zp_limit_unit(i); *u; u++) { /* km/h -> km_h: a plain name */
-                fputc(*u == '/' ? '_' : *u, f);
+                fputc(*u == '/' || *u == ' ' ? '_' : *u, f);
             }
         }
     }

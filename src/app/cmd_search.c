@@ -333,10 +333,7 @@ static void print_summary(const zp_report *r, const char *unheld) {
     for (int k = 0; k < r->m->nsec; k++) {
         printf(" %.4f", s->force[k]);
     }
-    double angle = 0;
-    for (int i = 0; i < r->m->nlink; i++) {
-        angle = fmax(angle, run->max_rel_angle[i]);
-    }
+    double angle = zp_model_angle_used(r->m, run->max_rel_angle);
     printf("\noutcome: %s, time %.4f s (+/- %.1e s), margin %.2f deg%s\n",
            zp_sim_outcome_name(run->outcome), run->time, fabs(run->time - r->v->tight->time),
            r->sc->death_angle - angle * 180 / M_PI,
@@ -354,6 +351,16 @@ static void print_summary(const zp_report *r, const char *unheld) {
                "finished, %d kept the margin, %d every limit: P(survivable) >= %.4f (95 %%)\n",
                r->set->n, r->rinfo->added, c->samples, c->survived, c->margin_kept,
                c->limits_kept, c->lower_95);
+        const zp_headroom_line *L = &c->headroom.line[ZP_HEADROOM_LINES - 1];
+        if (L->range >= 0 && isfinite(L->breaks)) {
+            printf("headroom: holds to %.4fx the stated ranges along the worst direction found, "
+                   "breaks at %.4fx (%s)\n",
+                   L->holds, L->breaks, L->limited_by);
+        } else if (L->range >= 0) {
+            printf("headroom: holds to %.4fx the stated ranges or more along the worst "
+                   "direction found\n",
+                   L->holds);
+        }
     }
     char conv[512];
     zp_report_convergence(conv, sizeof conv, s);

@@ -157,8 +157,14 @@ static void print_limits(const zp_model *m, const zp_result *r, const zp_limits 
             printf("limit %s: not reached (the trolley did not arrive)\n", zp_limit_name(i));
         } else if (lim->max[i] > 0) {
             printf("limit %s: reached %.4g %s of %g (%s)\n", zp_limit_name(i), v[i],
-                   zp_limit_unit(i), lim->max[i], v[i] <= lim->max[i] ? "kept" : "BROKEN");
+                   zp_limit_unit(i), lim->max[i],
+                   zp_limits_kept(i, v[i], lim->max[i]) ? "kept" : "BROKEN");
         }
+    }
+    for (int l = 0; l < m->nenv; l++) {
+        printf("  felt g above %g g: longest %.4g s at once, allowed %g s%s\n", m->env_g[l],
+               r->env_longest[l], m->env_s[l],
+               l == zp_limits_envelope_worst(m, r) ? " (the worst level)" : "");
     }
 }
 
@@ -315,7 +321,8 @@ static int say_figures(const char *dir, const zp_plot_opts *po, const zp_plot_in
                 dir);
         return ZP_EXIT_FAIL;
     }
-    fprintf(say, "figures in %s: course.png (and .svg) energy.png angles.png loads.png", dir);
+    fprintf(say, "figures in %s: course.png (and .svg) energy.png angles.png loads.png%s", dir,
+            info->envelope ? " envelope.png" : "");
     if (info->nframe) {
         fprintf(say, ", %d still frame%s", info->nframe, info->nframe == 1 ? "" : "s");
     }

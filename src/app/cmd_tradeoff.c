@@ -13,6 +13,7 @@
 #include "cli.h"
 #include "estimate.h"
 #include "out_json.h"
+#include "report.h"
 #include "robust.h"
 #include "setup.h"
 
@@ -111,7 +112,10 @@ static void write_json(FILE *f, const zp_scene *sc, const level_out *L, int n, i
                 "\"margin_kept\": %d, \"all_kept\": %d, ",
                 L[i].scenarios, L[i].check.samples, L[i].check.survived, L[i].check.margin_kept,
                 L[i].check.all_kept);
-        json_num(f, "lower_95", L[i].check.lower_95, "}}");
+        json_num(f, "lower_95", L[i].check.lower_95, "}, ");
+        fputs("\"headroom\": ", f);
+        zp_summary_headroom_json(f, &L[i].check.headroom);
+        fputs("}", f);
     }
     fputs("\n  ]\n}\n", f);
 }
@@ -244,19 +248,21 @@ static int exchange_answers(tradeoff *T, char *err, size_t errlen) {
 
 static void write_csv(FILE *f, const level_out *L, int n, int np) {
     fputs("force_error_pct,found,time_s,cost_s,cost_pct,arrival_kmh,scenarios,verify_samples,"
-          "verify_kept,lower_95,from_level_pct",
+          "verify_kept,lower_95,from_level_pct,headroom_factor",
           f);
     for (int k = 0; k < np; k++) {
         fprintf(f, ",force_%d_N", k + 1);
     }
     fputc('\n', f);
     for (int i = 0; i < n; i++) {
+        const zp_headroom_line *h = &L[i].check.headroom.line[ZP_HEADROOM_LINES - 1];
         fprintf(f, "%g,%d,%.9g,%.6g,%.4g,%.6g,%d,%d,%d,%.6g,", L[i].p, L[i].found, L[i].time,
                 cost(L, i), 100 * cost(L, i) / L[0].time, L[i].arrival, L[i].scenarios,
                 L[i].check.samples, L[i].check.all_kept, L[i].check.lower_95);
         if (L[i].from != FROM_GIVEN) {
             fprintf(f, "%g", L[L[i].from].p);
         }
+        fprintf(f, ",%.6g", h->range >= 0 ? h->holds : NAN);
         for (int k = 0; k < np; k++) {
             fprintf(f, ",%.9g", L[i].force[k]);
         }

@@ -5,6 +5,10 @@
 #include <math.h>
 
 int zp_events_count(const zp_model *m) {
+    return zp_events_tangent(m) + (m->physics & ZP_PHYS_ROUNDED ? 2 : 0);
+}
+
+int zp_events_tangent(const zp_model *m) {
     return 2 + 2 * m->nlink + (m->physics & ZP_PHYS_ROLLING ? 1 : 0);
 }
 
@@ -22,6 +26,9 @@ void zp_events_directions(const zp_model *m, int *dir) {
     if (m->physics & ZP_PHYS_ROLLING) {
         dir[zp_events_rest(m)] = 0;
     }
+    if (m->physics & ZP_PHYS_ROUNDED) {
+        dir[zp_events_tangent(m)] = dir[zp_events_tangent(m) + 1] = 0;
+    }
 }
 
 void zp_events_state_only(const zp_model *m, int *flag) {
@@ -35,8 +42,15 @@ void zp_events_eval(const zp_model *m, int sec, double x, const double *phi, con
     g[ZP_ROOT_LEFT] = x - m->xb[sec];
     g[ZP_ROOT_RIGHT] = x - m->xb[sec + 1];
     for (int i = 0; i < m->nlink; i++) {
-        g[ZP_ROOT_DEATH + i] = m->phi_max - fabs(phi[i]);
+        g[ZP_ROOT_DEATH + i] = m->phi_max_j[i] - fabs(phi[i]);
         g[ZP_ROOT_DEATH + m->nlink + i] = w[i];
+    }
+    /* the arcs' tangent points inside the section: the end of the arc around its left end,
+       the start of the one around its right end (a constant 1 where there is none) */
+    if (m->physics & ZP_PHYS_ROUNDED) {
+        int lo = m->arc_at[sec], hi = m->arc_at[sec + 1], it = zp_events_tangent(m);
+        g[it] = lo >= 0 ? x - m->arc[lo].x2 : 1;
+        g[it + 1] = hi >= 0 ? x - m->arc[hi].x1 : 1;
     }
 }
 
@@ -63,6 +77,10 @@ zp_event zp_events_classify(const zp_model *m, int sec, const int *roots, int *l
     }
     if (m->physics & ZP_PHYS_ROLLING && roots[zp_events_rest(m)]) {
         return ZP_EVENT_REST;
+    }
+    if (m->physics & ZP_PHYS_ROUNDED &&
+        (roots[zp_events_tangent(m)] || roots[zp_events_tangent(m) + 1])) {
+        return ZP_EVENT_TANGENT;
     }
     return ZP_EVENT_NONE;
 }

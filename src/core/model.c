@@ -303,16 +303,31 @@ static int round_kinks(zp_model *m, const zp_scene *sc, zp_diag *d) {
     return ok;
 }
 
-zp_track zp_model_track(const zp_model *m, const zp_course *course, int sec, double x) {
+double zp_model_angle_used(const zp_model *m, const double *max_rel_angle) {
+    double a = 0;
+    for (int i = 0; i < m->nlink; i++) {
+        a = fmax(a, max_rel_angle[i] + (m->phi_max - m->phi_max_j[i]));
+    }
+    return a;
+}
+
+int zp_model_track_arc(const zp_model *m, int sec, double x) {
     int lo = m->arc_at[sec], hi = m->arc_at[sec + 1];
-    const zp_arc *a = lo >= 0 && x < m->arc[lo].x2   ? &m->arc[lo]
-                      : hi >= 0 && x > m->arc[hi].x1 ? &m->arc[hi]
-                                                     : NULL;
-    if (!a) {
+    return lo >= 0 && x < m->arc[lo].x2 ? lo : hi >= 0 && x > m->arc[hi].x1 ? hi : -1;
+}
+
+zp_track zp_model_track_piece(const zp_model *m, const zp_course *course, int sec, int arc,
+                              double x) {
+    if (arc < 0) {
         return zp_course_eval(course, sec, x);
     }
+    const zp_arc *a = &m->arc[arc];
     double u = x - a->cx, h = sqrt(a->r * a->r - u * u);
     return (zp_track){a->cy - a->side * h, a->side * u / h, a->side * a->r * a->r / (h * h * h)};
+}
+
+zp_track zp_model_track(const zp_model *m, const zp_course *course, int sec, double x) {
+    return zp_model_track_piece(m, course, sec, zp_model_track_arc(m, sec, x), x);
 }
 
 /* the optional effects the scene names, as the equations of motion read them */
@@ -377,6 +392,14 @@ zp_model *zp_model_build(const zp_scene *sc, zp_diag *d) {
         m->damp[i] = sc->ndamping == 1 ? sc->damping[0] : sc->damping[i];
     }
     m->phi_max = sc->death_angle * M_PI / 180.0;
+    for (int i = 0; i < ZP_MAX_LINKS; i++) {
+        m->phi_max_j[i] = sc->death_angles[i] * M_PI / 180.0;
+    }
+    m->g_links = sc->g_links ? sc->g_links : (1u << sc->nlink) - 1;
+    m->scale_links = sc->scale_links ? sc->scale_links : (1u << sc->nlink) - 1;
+    m->nenv = sc->nenv;
+    memcpy(m->env_g, sc->env_g, sizeof m->env_g);
+    memcpy(m->env_s, sc->env_s, sizeof m->env_s);
     int dir = zp_drive_dir_find(sc->direction);
     m->drive = dir < 0 ? ZP_DRIVE_HORIZONTAL : (zp_drive_dir)dir;
     zp_model_derive(m);

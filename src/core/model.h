@@ -45,8 +45,14 @@ typedef struct zp_model {
     double mass[ZP_MAX_LINKS];    /* kg */
     double inertia[ZP_MAX_LINKS]; /* kg m^2, m l^2 / 12 about the centre of mass */
     double damp[ZP_MAX_LINKS];    /* N m s/rad, joint i joins link i to its parent */
-    double phi_max;               /* rad, death angle */
+    double phi_max;               /* rad, the largest joint's death angle */
+    double phi_max_j[ZP_MAX_LINKS]; /* rad, each joint's death angle */
     zp_drive_dir drive;
+    unsigned g_links;             /* bit i: link i's felt g is judged ([limits] g_links); all set
+                                     when the scene names none */
+    unsigned scale_links;         /* bit i: [robust] mass_range and length_range scale link i */
+    int nenv;                     /* [limits] g_envelope levels, 0: none */
+    double env_g[8], env_s[8];    /* g, s: felt g above env_g[l] for at most env_s[l] at a time */
 
     /* [physics]: physics is the ZP_PHYS_* flags of the effects present, chosen once here */
     int physics;
@@ -74,6 +80,18 @@ int zp_model_is_kink(const zp_model *m, int left);
 /* The course under the trolley on section sec at x, arcs included (the plain course when the
    model has none); course: the caller's evaluators. */
 zp_track zp_model_track(const zp_model *m, const zp_course *course, int sec, double x);
+/* Which arc zp_model_track reads at x on section sec: its index, or -1 for the plain course. */
+int zp_model_track_arc(const zp_model *m, int sec, double x);
+/* The course as read on one piece: arc `arc` (its circle, continued past its tangent points)
+   or with arc -1 the plain course of section sec, so a step that overshoots a tangent point
+   sees no jump of f'' before its root is found. */
+zp_track zp_model_track_piece(const zp_model *m, const zp_course *course, int sec, int arc,
+                              double x);
+/* The largest |relative angle| of a run (max_rel_angle, per joint) as the margin judges it:
+   measured against phi_max, each joint's angle raised by how much its own death angle lies
+   below phi_max, so that phi_max - the result is the smallest margin of any joint (with one
+   death angle for every joint: the largest angle itself). */
+double zp_model_angle_used(const zp_model *m, const double *max_rel_angle);
 /* Recomputes mtot, B and C from m0, len, half, mass and inertia (after changing them). */
 void zp_model_derive(zp_model *m);
 /* A course for one simulating thread (zp_course_for_thread: compiled code shared by all),

@@ -19,12 +19,15 @@ void zp_scenario_model(const zp_model *nom, const zp_scenario *s, zp_model *out)
     *out = *nom;
     out->m0 = nom->m0 * s->trolley;
     for (int i = 0; i < nom->nlink; i++) {
-        out->len[i] = nom->len[i] * s->length;
+        /* a rider's size and weight scale the rider's links, not the rigging */
+        int rider = nom->scale_links >> i & 1;
+        out->len[i] = nom->len[i] * (rider ? s->length : 1);
         out->half[i] = 0.5 * out->len[i];
-        out->mass[i] = nom->mass[i] * s->mass;
+        out->mass[i] = nom->mass[i] * (rider ? s->mass : 1);
         out->inertia[i] = out->mass[i] * out->len[i] * out->len[i] / 12.0;
         out->damp[i] = nom->damp[i] * s->damping;
     }
+    out->wind = s->wind_set ? s->wind : nom->wind;
     zp_model_derive(out);
 }
 
@@ -35,9 +38,11 @@ void zp_scenario_start(const zp_chain *nominal, int nlink, const zp_scenario *s,
     }
 }
 
-static const char *const limit_names[ZP_LIMIT_COUNT] = {"max_g", "max_joint_force",
-                                                         "max_arrival_speed", "max_kink_dv"};
-static const char *const limit_units[ZP_LIMIT_COUNT] = {"g", "N", "km/h", "m/s"};
+static const char *const limit_names[ZP_LIMIT_COUNT] = {
+    "max_g", "max_joint_force", "max_arrival_speed", "max_kink_dv", "g_envelope",
+    "min_arrival_speed"};
+static const char *const limit_units[ZP_LIMIT_COUNT] = {"g",   "N", "km/h", "m/s",
+                                                        "x its allowance", "km/h"};
 
 const char *zp_limit_name(int i) { return limit_names[i]; }
 const char *zp_limit_unit(int i) { return limit_units[i]; }
@@ -47,6 +52,12 @@ void zp_limits_from_scene(const zp_scene *sc, zp_limits *l) {
     l->max[ZP_LIMIT_JOINT] = sc->max_joint_force;
     l->max[ZP_LIMIT_ARRIVAL] = sc->max_arrival_speed;
     l->max[ZP_LIMIT_KINK_DV] = sc->max_kink_dv;
+    l->max[ZP_LIMIT_G_ENVELOPE] = sc->nenv > 0 ? 1 : 0;
+    l->max[ZP_LIMIT_MIN_ARRIVAL] = sc->min_arrival_speed;
+}
+
+int zp_limits_kept(int i, double v, double max) {
+    return i == ZP_LIMIT_MIN_ARRIVAL ? v >= max : v <= max;
 }
 
 int zp_limits_any(const zp_limits *l) {
@@ -59,7 +70,8 @@ int zp_limits_any(const zp_limits *l) {
 }
 
 int zp_limits_need_peaks(const zp_limits *l) {
-    return l->max[ZP_LIMIT_G] > 0 || l->max[ZP_LIMIT_JOINT] > 0;
+    return l->max[ZP_LIMIT_G] > 0 || l->max[ZP_LIMIT_JOINT] > 0 ||
+           l->max[ZP_LIMIT_G_ENVELOPE] > 0;
 }
 
 int zp_limit_reached_in(const zp_result *r, int i) {
@@ -69,11 +81,26 @@ int zp_limit_reached_in(const zp_result *r, int i) {
 void zp_limits_reached(const zp_model *m, const zp_result *r, double v[ZP_LIMIT_COUNT]) {
     v[ZP_LIMIT_G] = v[ZP_LIMIT_JOINT] = 0;
     for (int i = 0; i < m->nlink; i++) {
-        v[ZP_LIMIT_G] = fmax(v[ZP_LIMIT_G], r->peaks.acc_g[i]);
+        if (m->g_links >> i & 1) {
+            v[ZP_LIMIT_G] = fmax(v[ZP_LIMIT_G], r->peaks.acc_g[i]);
+        }
         v[ZP_LIMIT_JOINT] = fmax(v[ZP_LIMIT_JOINT], r->peaks.joint[i]);
     }
     v[ZP_LIMIT_ARRIVAL] = r->outcome == ZP_OUTCOME_FINISHED ? r->v * KMH : 0;
+    v[ZP_LIMIT_MIN_ARRIVAL] = v[ZP_LIMIT_ARRIVAL];
     v[ZP_LIMIT_KINK_DV] = r->peaks.kink_dv;
+    int w = zp_limits_envelope_worst(m, r);
+    v[ZP_LIMIT_G_ENVELOPE] = w < 0 ? 0 : r->env_longest[w] / m->env_s[w];
+}
+
+int zp_limits_envelope_worst(const zp_model *m, const zp_result *r) {
+    int w = -1;
+    for (int l = 0; l < m->nenv; l++) {
+        if (w < 0 || r->env_longest[l] / m->env_s[l] > r->env_longest[w] / m->env_s[w]) {
+            w = l;
+        }
+    }
+    return w;
 }
 
 double zp_limits_excess(const zp_limits *l, const zp_model *m, const zp_result *r, int *which) {
@@ -81,7 +108,8 @@ double zp_limits_excess(const zp_limits *l, const zp_model *m, const zp_result *
     *which = -1;
     zp_limits_reached(m, r, v);
     for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
-        double ex = v[i] / l->max[i] - 1;
+        /* relative excess past the limit: over a ceiling, under the floor */
+        double ex = i == ZP_LIMIT_MIN_ARRIVAL ? 1 - v[i] / l->max[i] : v[i] / l->max[i] - 1;
         if (l->max[i] > 0 && (*which < 0 || ex > worst)) {
             worst = ex;
             *which = i;

@@ -12,6 +12,8 @@ typedef struct zp_scenario {
     double mass, length, trolley, damping; /* factors on all link masses, all link lengths, the
                                               trolley mass, every joint's damping */
     double theta[ZP_MAX_LINKS];    /* rad, each link's start angle from the vertical */
+    int wind_set;                  /* 1: wind replaces the nominal wind */
+    double wind;                   /* m/s, horizontal */
 } zp_scenario;
 
 void zp_scenario_nominal(zp_scenario *s);
@@ -22,11 +24,19 @@ void zp_scenario_model(const zp_model *nom, const zp_scenario *s, zp_model *out)
    turned to s->theta, at rest. */
 void zp_scenario_start(const zp_chain *nominal, int nlink, const zp_scenario *s, zp_chain *c);
 /* [limits] (CONFIG.md): each 0 when off. */
-typedef enum { ZP_LIMIT_G, ZP_LIMIT_JOINT, ZP_LIMIT_ARRIVAL, ZP_LIMIT_KINK_DV, ZP_LIMIT_COUNT }
-zp_limit_id;
+typedef enum {
+    ZP_LIMIT_G,
+    ZP_LIMIT_JOINT,
+    ZP_LIMIT_ARRIVAL,
+    ZP_LIMIT_KINK_DV,
+    ZP_LIMIT_G_ENVELOPE, /* the longest excursion over its allowance, at the worst level */
+    ZP_LIMIT_MIN_ARRIVAL, /* a floor: every rider arrives at least this fast */
+    ZP_LIMIT_COUNT
+} zp_limit_id;
 
 typedef struct zp_limits {
-    double max[ZP_LIMIT_COUNT]; /* g, N, km/h, m/s; 0: off */
+    double max[ZP_LIMIT_COUNT]; /* g, N, km/h, m/s, and 1 (its allowance) for the g envelope;
+                                   0: off */
 } zp_limits;
 
 void zp_limits_from_scene(const zp_scene *sc, zp_limits *l);
@@ -39,11 +49,19 @@ const char *zp_limit_unit(int i);
 /* 0 when run r never reached what limit i measures (the arrival speed of a ride that did not
    arrive): neither kept nor broken there. */
 int zp_limit_reached_in(const zp_result *r, int i);
-/* What run r reached, in each limit's unit: the largest felt acceleration and joint force
-   (over links and the run), the arrival speed (0 unless finished), the largest kink dv. */
+/* What run r reached, in each limit's unit: the largest felt acceleration (over the judged
+   links, zp_model.g_links) and joint force (over links and the run), the arrival speed (0
+   unless finished), the largest kink dv, and for the g envelope the longest excursion above a
+   level over that level's allowance, the worst level's (zp_limits_envelope_worst). */
 void zp_limits_reached(const zp_model *m, const zp_result *r, double v[ZP_LIMIT_COUNT]);
 /* The worst excess over the limits set, reached / limit - 1 (<= 0: all kept; -1 with no
    limit set), and in *which the limit that gave it (-1: none set). */
 double zp_limits_excess(const zp_limits *l, const zp_model *m, const zp_result *r, int *which);
+/* Whether value v (zp_limits_reached's) keeps limit i at max (> 0): below a ceiling, or at or
+   above min_arrival_speed, the one floor. */
+int zp_limits_kept(int i, double v, double max);
+/* The envelope level (index) whose longest excursion is largest against its allowance; -1: no
+   envelope. */
+int zp_limits_envelope_worst(const zp_model *m, const zp_result *r);
 
 #endif

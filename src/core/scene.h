@@ -56,7 +56,9 @@ typedef struct zp_scene {
     double masses[ZP_MAX_LINKS];  /* kg */
     int ndamping;                 /* 1 (all joints) or nlink */
     double damping[ZP_MAX_LINKS]; /* N m s/rad */
-    double death_angle;           /* deg */
+    double death_angle;           /* deg, the largest joint's (all of them when one is given) */
+    int ndeath;                   /* death_angle values given: 1 (every joint) or nlink */
+    double death_angles[ZP_MAX_LINKS]; /* deg, per joint (each set, also from one value) */
 
     char direction[16];                /* horizontal | tangent */
     int drive_kind;                    /* zp_sched_kind (drive.h) of the forces */
@@ -74,6 +76,8 @@ typedef struct zp_scene {
     double margin;  /* deg */
     long max_evals; /* simulations the search may spend */
     unsigned long seed;
+    int objective_slowest;  /* [optimize] objective = slowest: the slowest finish over the held
+                               scenarios is minimised, not the nominal rider's */
     char search_method[32]; /* integrator of the search's runs (the answer is rerun with [solver]) */
     double search_rtol;     /* their rtol; atol = rtol / 100 */
 
@@ -82,6 +86,10 @@ typedef struct zp_scene {
     double max_joint_force;   /* N, peak joint reaction at any joint */
     double max_arrival_speed; /* km/h, trolley speed at x_end */
     double max_kink_dv;       /* m/s, |v+ - v-| of the trolley at any kink */
+    double min_arrival_speed; /* km/h, every rider arrives at least this fast; 0: off */
+    int nenv;                 /* g_envelope levels, 0: none */
+    double env_g[8], env_s[8]; /* g, s: felt g above env_g[l] for at most env_s[l] at a time */
+    unsigned g_links;         /* bit i: link i + 1's felt g is judged (max_g, g_envelope); 0: all */
 
     /* [robust] (CONFIG.md): ranges in % of nominal; {100, 100} and 0 when absent */
     int robust;                   /* 1 when the scene has a [robust] section */
@@ -93,6 +101,11 @@ typedef struct zp_scene {
     double start_angle;           /* deg, each link may start swung by up to this either way */
     int robust_samples;           /* scenarios every candidate is held to (default 64) */
     int verify_samples;           /* fresh scenarios the answer is checked on (default 2000) */
+    int wind_varied;              /* 1: wind_range given */
+    double wind_range[2];         /* m/s, the horizontal wind's range (needs drag_area) */
+    unsigned scale_links;         /* bit i: mass_range and length_range scale link i + 1; 0: all */
+    double safety_factor;         /* the box held is the stated one widened this much about the
+                                     nominal (default 1); reports stay against the stated box */
 
     /* [physics] (CONFIG.md, MODEL.md "Optional effects"): all off when absent */
     int ndrag;                             /* 0: no drag; else nlink + 1 */

@@ -3,7 +3,6 @@
 #include "sim.h"
 
 #include <gsl/gsl_errno.h>
-#include <gsl/gsl_min.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,7 +11,10 @@
 #include "accuracy.h"
 #include "events.h"
 #include "friction.h"
+#include "graze.h"
 #include "impulse.h"
+#include "envelope.h"
+#include "peaks.h"
 
 /* ZP_ZENO_RUN crossings of one kink in a row, each closer than ZP_ZENO_DT (s) to the one
    before, mean the trolley has come to rest in it (an accumulation of ever smaller bounces).
@@ -25,9 +27,6 @@
    one such step that no longer advances the time), mean the run is closing in on Painleve's
    boundary, where it would crawl for ever */
 #define ZP_PAINLEVE_STEPS 10
-/* a load peak inside a step is located to this share of its time (Brent's method) */
-#define ZP_PEAK_RTOL 1e-10
-#define ZP_PEAK_ITER 60
 
 typedef zp_track (*track_fn)(const zp_model *m, const zp_course *c, int sec, double x);
 
@@ -59,7 +58,8 @@ struct zp_sim {
 
     zp_crossing *cross;  /* owned, ZP_MAX_CROSSINGS */
     int ncross;          /* kept in cross (the result counts all) */
-    gsl_min_fminimizer *brent; /* owned when o.peaks */
+    zp_peaks *pk;        /* owned when o.peaks */
+    zp_envelope env;     /* felt g against [limits] g_envelope (o.peaks; env.n 0: none) */
 
     /* [physics] */
     track_fn track; /* the course with its arcs, or the plain course (chosen at create) */
@@ -71,6 +71,8 @@ struct zp_sim {
     int inconsistent_steps; /* steps in a row that met such an evaluation */
     int w0;         /* index of the first work integral in the state */
     zp_arc_peaks arc_peaks[ZP_MAX_SECTIONS]; /* load peaks on each arc */
+    int arc; /* the piece the integrator reads since its last restart: an arc, or -1 the plain
+                course (zp_model_track_piece) */
 };
 
 static zp_track plain_track(const zp_model *m, const zp_course *c, int sec, double x) {
@@ -78,10 +80,9 @@ static zp_track plain_track(const zp_model *m, const zp_course *c, int sec, doub
     return zp_course_eval(c, sec, x);
 }
 
-/* course and drive at time t and the trolley's x on the current section; track a constant
-   where inlined */
-static inline zp_drive_now drive_at(const zp_sim *s, track_fn track, double t, double x) {
-    zp_drive_now dn = {track(s->m, s->course, s->sec, x), 0, 0, 0, 0};
+/* the drive at time t and the trolley's x on the current section, the course there being tr */
+static inline zp_drive_now drive_with(const zp_sim *s, zp_track tr, double t, double x) {
+    zp_drive_now dn = {tr, 0, 0, 0, 0};
     double F = zp_schedule_force(s->sched, t, x, s->sec);
     if (s->m->drive == ZP_DRIVE_TANGENT) {
         double norm = sqrt(1 + dn.tr.fp * dn.tr.fp);
@@ -91,6 +92,12 @@ static inline zp_drive_now drive_at(const zp_sim *s, track_fn track, double t, d
         dn.fx = F;
     }
     return dn;
+}
+
+/* course and drive at time t and the trolley's x on the current section; track a constant
+   where inlined */
+static inline zp_drive_now drive_at(const zp_sim *s, track_fn track, double t, double x) {
+    return drive_with(s, track(s->m, s->course, s->sec, x), t, x);
 }
 
 /* the drive now, for outputs and decisions: held, the trolley's rates and loads at rest */
@@ -111,7 +118,8 @@ int zp_sim_rhs(double t, const double *y, double *ydot, void *user) {
 
 static int sim_rhs_rounded(double t, const double *y, double *ydot, void *user) {
     zp_sim *s = user;
-    zp_drive_now dn = drive_at(s, zp_model_track, t, y[0]);
+    zp_track tr = zp_model_track_piece(s->m, s->course, s->sec, s->arc, y[0]);
+    zp_drive_now dn = drive_with(s, tr, t, y[0]);
     return s->form->rhs(s->m, s->fwork, &dn, y, ydot, NULL);
 }
 
@@ -170,9 +178,7 @@ void zp_sim_free(zp_sim *s) {
     free(s->samples);
     free(s->frames);
     free(s->cross);
-    if (s->brent) {
-        gsl_min_fminimizer_free(s->brent);
-    }
+    zp_peaks_free(s->pk);
     free(s);
 }
 
@@ -201,9 +207,9 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
     s->yout = calloc(s->n, sizeof *s->yout);
     s->roots = calloc(s->nroot, sizeof *s->roots);
     s->cross = malloc(sizeof *s->cross * ZP_MAX_CROSSINGS);
-    int dir[3 + 2 * ZP_MAX_LINKS];
+    int dir[ZP_EVENTS_MAX];
     zp_events_directions(m, dir);
-    int state_only[3 + 2 * ZP_MAX_LINKS];
+    int state_only[ZP_EVENTS_MAX];
     zp_events_state_only(m, state_only);
     zp_method_opts mo = {o->rtol, o->atol, o->max_steps, state_only, s->w0 / 2};
     zp_rhs_fn rhs = m->physics & ZP_PHYS_ROLLING   ? sim_rhs_rolling
@@ -213,13 +219,13 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
                                m->physics & ZP_PHYS_ROLLING ? sim_root_rolling : sim_root, s,
                                &mo);
     if (o->peaks) {
-        s->brent = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
+        s->pk = zp_peaks_create(2 * m->nlink);
     }
     int rows_failed =
         o->output_dt > 0 &&
         zp_row_store_init(&s->rows, m, (int)fmin(o->t_max / o->output_dt + 2, ZP_MAX_ROWS + 2));
     if (!s->course || !s->fwork || !s->y || !s->ydot || !s->yout || !s->roots || !s->cross ||
-        !s->mwork || rows_failed || (o->peaks && !s->brent)) {
+        !s->mwork || rows_failed || (o->peaks && !s->pk)) {
         zp_sim_free(s);
         return NULL;
     }
@@ -272,80 +278,59 @@ static zp_row row_of(zp_sim *s, double t, const double *y) {
     return r;
 }
 
-/* the largest felt acceleration (g) and joint force (N) over the links at state y; the peaks
-   take them in as a side effect */
-static void load_levels(zp_sim *s, double t, const double *y, double lv[2]) {
+/* every load history at state y: felt acceleration per link (g), then force per joint (N);
+   the peaks take them in as a side effect */
+static void load_values(zp_sim *s, double t, const double *y, double *v) {
     zp_row r = row_of(s, t, y);
-    double load[2][ZP_MAX_LINKS]; /* acceleration, joint force */
-    zp_row_loads(s->m, &r.loads, load[1], load[0]);
-    for (int q = 0; q < 2; q++) {
-        lv[q] = 0;
-        for (int i = 0; i < s->m->nlink; i++) {
-            lv[q] = fmax(lv[q], load[q][i]);
-        }
-        lv[q] = isfinite(lv[q]) ? lv[q] : 0;
+    int n = s->m->nlink;
+    zp_row_loads(s->m, &r.loads, v + n, v);
+    for (int q = 0; q < 2 * n; q++) {
+        v[q] = isfinite(v[q]) ? v[q] : 0;
     }
 }
 
-typedef struct level_fn {
-    zp_sim *s;
-    int which; /* 0: felt acceleration, 1: joint force */
-} level_fn;
-
-/* minus one load level at time t inside the last step, from the dense output */
-static double minus_level(double t, void *p) {
-    level_fn *L = p;
-    double lv[2] = {0, 0};
-    if (L->s->meth->interpolate(L->s->mwork, t, L->s->yout) == 0) {
-        load_levels(L->s, t, L->s->yout, lv);
+/* the load histories at time t inside the last step, from the dense output or (exact, where
+   the method offers it) a step landed there */
+static int dense_load_values(double t, int exact, double *v, void *user) {
+    zp_sim *s = user;
+    if (exact && !s->meth->land) {
+        exact = 0;
     }
-    return -lv[L->which];
+    if ((exact ? s->meth->land : s->meth->interpolate)(s->mwork, t, s->yout)) {
+        return 1;
+    }
+    load_values(s, t, s->yout, v);
+    return 0;
 }
 
-/* a maximum of level q inside the step [a, b] (f: minus the level at a, at guess and at b,
-   the guess below both ends), refined by Brent's method; every evaluation feeds the peaks */
-static void brent_peak(zp_sim *s, int q, double a, double fa, double guess, double fg, double b,
-                       double fb) {
-    level_fn L = {s, q};
-    gsl_function F = {minus_level, &L};
-    if (gsl_min_fminimizer_set_with_values(s->brent, &F, guess, fg, a, fa, b, fb)) {
-        return;
+/* felt g of the judged links among the load histories v (load_values) */
+static double judged_g(const zp_model *m, const double *v) {
+    double g = 0;
+    for (int i = 0; i < m->nlink; i++) {
+        g = m->g_links >> i & 1 ? fmax(g, v[i]) : g;
     }
-    for (int it = 0; it < ZP_PEAK_ITER; it++) {
-        if (gsl_min_fminimizer_iterate(s->brent)) {
-            return;
-        }
-        double lo = gsl_min_fminimizer_x_lower(s->brent), hi = gsl_min_fminimizer_x_upper(s->brent);
-        if (gsl_min_test_interval(lo, hi, 0, ZP_PEAK_RTOL) == GSL_SUCCESS) {
-            return;
-        }
-    }
+    return g;
 }
 
-/* the load peaks of the step [a, b] just taken (levels la, lb at its ends): the midpoint, and
-   the top of the parabola through the three, bracket a maximum inside for Brent's method */
-static void step_peaks(zp_sim *s, double a, double b, const double la[2], const double lb[2]) {
-    double m = 0.5 * (a + b), lm[2];
-    if (!(b > a) || s->meth->interpolate(s->mwork, m, s->yout)) {
-        return;
+/* judged felt g at time t inside the last step, from the dense output */
+static int dense_judged_g(double t, double *g, void *user) {
+    zp_sim *s = user;
+    double v[ZP_PEAKS_MAX];
+    if (dense_load_values(t, 0, v, s)) {
+        return 1;
     }
-    load_levels(s, m, s->yout, lm);
-    for (int q = 0; q < 2; q++) {
-        double guess = m, top = lm[q];
-        if (!(top > la[q] && top > lb[q])) {
-            double d1 = (m - a) * (lm[q] - lb[q]), d2 = (m - b) * (lm[q] - la[q]);
-            double v = d1 - d2 != 0 ? m - 0.5 * ((m - a) * d1 - (m - b) * d2) / (d1 - d2) : a;
-            if (!(v > a && v < b)) {
-                continue;
-            }
-            level_fn L = {s, q};
-            guess = v;
-            top = -minus_level(v, &L);
-            if (!(top > la[q] && top > lb[q])) {
-                continue;
-            }
-        }
-        brent_peak(s, q, a, -la[q], guess, -top, b, -lb[q]);
+    *g = judged_g(s->m, v);
+    return 0;
+}
+
+/* the integrator (re)starts at (t, s->y): the peak locator starts a new interval there, and
+   felt g may have jumped (an impulse) */
+static void peaks_restart(zp_sim *s, double t) {
+    double v[ZP_PEAKS_MAX];
+    load_values(s, t, s->y, v);
+    zp_peaks_restart(s->pk, t, v);
+    if (s->env.n) {
+        zp_envelope_jump(&s->env, t, judged_g(s->m, v));
     }
 }
 
@@ -551,6 +536,10 @@ static void finish_result(zp_sim *s, zp_result *r, double t, zp_outcome o, zp_st
         zp_row_store_put(&s->rows, &last);
     }
     r->peaks = s->peaks; /* after the last row, whose loads count too */
+    if (s->env.n) {
+        zp_envelope_end(&s->env, t);
+        memcpy(r->env_longest, s->env.longest, sizeof r->env_longest);
+    }
 }
 
 static zp_status fail(zp_sim *s, zp_result *r, double t, const char *why) {
@@ -664,6 +653,25 @@ static double stop_after(const zp_sim *s, double t) {
     return s->o.t_max;
 }
 
+/* the integrator (re)started at (t, s->y), reading the course piece the trolley is on */
+static int restart(zp_sim *s, double t) {
+    if (s->m->physics & ZP_PHYS_ROUNDED) {
+        s->arc = zp_model_track_arc(s->m, s->sec, s->y[0]);
+    }
+    return s->meth->reset(s->mwork, t, s->y, stop_after(s, t));
+}
+
+/* whether the advance ended on a located death root; if not, a joint found past the death
+   angle there (at an extremum) grazed it inside the step, and zp_graze_locate ends the run */
+static int died_at_root(const zp_model *m, const int *roots, zp_adv adv) {
+    for (int i = 0; adv == ZP_ADV_ROOT && i < m->nlink; i++) {
+        if (roots[ZP_ROOT_DEATH + i]) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
 static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result *r) {
     zp_chain c;
     if (in->start) {
@@ -698,12 +706,15 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
         finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_ROLLED_BACK);
         return ZP_OK;
     }
-    if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
+    if (restart(s, t)) {
         return fail(s, r, t, "the integrator could not start");
     }
-    double ta = t, la[2] = {0, 0}; /* the last step's start and load levels there (o.peaks) */
     if (s->o.peaks) {
-        load_levels(s, t, s->y, la);
+        zp_peaks_reset(s->pk);
+        if (m->nenv > 0) {
+            zp_envelope_start(&s->env, m->nenv, m->env_g, t, 0);
+        }
+        peaks_restart(s, t);
     }
     for (;;) {
         char err[256] = "";
@@ -731,14 +742,30 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             return fail(s, r, t, "");
         }
         s->inconsistent_t = NAN; /* a step was taken: what a trial stage met is past */
+        if (!died_at_root(m, s->roots, adv)) {
+            int link;
+            if (zp_graze_locate(m, s->form, s->meth, s->mwork, t_before, t, s->y, s->n, &t,
+                                s->yout, &link)) {
+                memcpy(s->y, s->yout, sizeof *s->y * s->n);
+                memset(s->roots, 0, sizeof *s->roots * s->nroot);
+                s->roots[ZP_ROOT_DEATH + link] = 1;
+                adv = ZP_ADV_ROOT;
+            }
+        }
         track_extremes(s, t, s->y, r);
         frames_at_x_in_step(s, in, t, &oc);
         if (s->o.peaks) {
-            double lb[2];
-            load_levels(s, t, s->y, lb);
-            step_peaks(s, ta, t, la, lb);
-            ta = t;
-            memcpy(la, lb, sizeof la);
+            double vb[ZP_PEAKS_MAX];
+            load_values(s, t, s->y, vb);
+            /* a root inside a step is landed, off the step's dense output by its error: the
+               interval is read on the one polynomial, or that gap shows as a false maximum */
+            if (adv == ZP_ADV_ROOT) {
+                dense_load_values(t, 0, vb, s);
+            }
+            zp_peaks_interval(s->pk, t, vb, dense_load_values, s);
+            if (s->env.n) {
+                zp_envelope_interval(&s->env, t, judged_g(m, vb), dense_judged_g, s);
+            }
         }
         if (adv != ZP_ADV_ROOT) {
             emit_outputs(s, in, t, 1, &oc);
@@ -759,8 +786,11 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
                 if (end) {
                     return stick_end(end);
                 }
-                if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
+                if (restart(s, t)) {
                     return fail(s, r, t, "the integrator could not restart at a break");
+                }
+                if (s->o.peaks) {
+                    peaks_restart(s, t);
                 }
                 continue;
             } else if (adv == ZP_ADV_STOP) {
@@ -783,6 +813,27 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             continue;
         }
         add_stats(s, r);
+        if (ev == ZP_EVENT_TANGENT) {
+            /* f'' jumps at an arc's tangent point: a step across it would lose the method's
+               order, so the integrator restarts there as at a section's end, the trolley put
+               one bit past the point the way it moves: a root left a hair short would fire
+               again at once, and the restart's rates must be those of the side it enters */
+            zp_chain c = chain_of(s, s->y);
+            int it = zp_events_tangent(m), lo = m->arc_at[s->sec], hi = m->arc_at[s->sec + 1];
+            c.q[0] = nextafter(s->roots[it] ? m->arc[lo].x2 : m->arc[hi].x1,
+                               c.v[0] < 0 ? -INFINITY : INFINITY);
+            c.q[1] = s->track(m, s->course, s->sec, c.q[0]).f;
+            double wk[ZP_W_MAX];
+            memcpy(wk, s->y + s->w0, sizeof *wk * m->nwork);
+            s->form->from_chain(m, &c, wk, s->y);
+            if (restart(s, t)) {
+                return fail(s, r, t, "the integrator could not restart at an arc's end");
+            }
+            if (s->o.peaks) {
+                peaks_restart(s, t);
+            }
+            continue;
+        }
         if (ev == ZP_EVENT_REST) {
             /* a release (the hold's margin reached 0): off toward -F_t from rest; a stop: the
                stick rule. Either way the equations change and the integrator restarts */
@@ -800,8 +851,11 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
                     return stick_end(end);
                 }
             }
-            if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
+            if (restart(s, t)) {
                 return fail(s, r, t, "the integrator could not restart at rest");
+            }
+            if (s->o.peaks) {
+                peaks_restart(s, t);
             }
             continue;
         }
@@ -829,11 +883,11 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
         }
         /* friction now opposes the way it leaves the kink */
         s->slide = departure(s, t, s->y);
-        if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
+        if (restart(s, t)) {
             return fail(s, r, t, "the integrator could not restart after the kink");
         }
         if (s->o.peaks) {
-            load_levels(s, t, s->y, la);
+            peaks_restart(s, t);
         }
     }
 }
@@ -855,6 +909,7 @@ zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     s->e_impulse = 0;
     s->rows.n = s->nsamples = s->nframes = s->ncross = 0;
     s->peaks = (zp_load_peaks){.normal_min = INFINITY, .normal_max = -INFINITY};
+    s->env.n = 0;
     memset(s->arc_peaks, 0, sizeof s->arc_peaks);
     zp_status st = run(m, s, in, r);
     clock_gettime(CLOCK_MONOTONIC, &t1);

@@ -97,6 +97,8 @@ typedef struct zp_result {
     double w_drag, w_fric;              /* J: drag and friction work taken out ([physics]) */
     double constraint_residual;         /* m */
     zp_load_peaks peaks;                /* the kink impulses are in zp_sim_crossings */
+    double env_longest[8]; /* s, per [limits] g_envelope level: the longest time felt g (of
+                              the judged links) stayed above it at once (o.peaks) */
     long steps, rhs_evals;
     long rejected; /* steps the integrator's error test rejected (each cost a step's rhs_evals) */
     double wall_s;

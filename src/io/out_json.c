@@ -67,6 +67,18 @@ void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp
     fputs("{", f);
     for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
         double max = lim ? lim->max[i] : 0;
+        if (i == ZP_LIMIT_G_ENVELOPE) {
+            /* CLI.md: per level {g, allowed_s, longest_s} */
+            fprintf(f, "\"%s\": [", zp_limit_name(i));
+            for (int l = 0; l < m->nenv; l++) {
+                fputs(l ? ", {" : "{", f);
+                key_num(f, "g", m->env_g[l], ", ");
+                key_num(f, "allowed_s", m->env_s[l], ", ");
+                key_num(f, "longest_s", r->env_longest[l], "}");
+            }
+            fputs(i + 1 < ZP_LIMIT_COUNT ? "], " : "]}", f);
+            continue;
+        }
         fprintf(f, "\"%s\": {", zp_limit_name(i));
         if (!zp_limit_reached_in(r, i)) { /* never measured: neither kept nor broken */
             fputs("\"reached\": null, ", f);
@@ -77,7 +89,7 @@ void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp
         key_num(f, "reached", v[i], ", ");
         if (max > 0) {
             key_num(f, "limit", max, "");
-            fprintf(f, ", \"kept\": %s}", v[i] <= max ? "true" : "false");
+            fprintf(f, ", \"kept\": %s}", zp_limits_kept(i, v[i], max) ? "true" : "false");
         } else {
             fputs("\"limit\": null}", f);
         }

@@ -327,6 +327,30 @@ static void script_loads(FILE *f, const zp_model *m, const zp_result *r, const k
           f);
 }
 
+/* felt g of the judged links against time, each [limits] g_envelope level drawn with its
+   allowance and the longest time the run stayed above it */
+static void script_envelope(FILE *f, const zp_model *m, const zp_result *r, const kinks *kk) {
+    zp_plot_head_png(f, m, "envelope", "felt g against time with the g-duration envelope", FIG_W,
+                     480, 0);
+    fputs("set key inside right top opaque box lc rgb '#cccccc'\n"
+          "set xlabel 't (s)'\nset ylabel 'felt g (g)'\n",
+          f);
+    kink_lines(f, kk);
+    death_line(f, r);
+    for (int l = 0; l < m->nenv; l++) {
+        fprintf(f,
+                "set arrow from graph 0, first %.9g to graph 1, first %.9g nohead dt 2 lw 1.5 "
+                "lc rgb '#d62728'\n"
+                "set label 'above %g g: at most %g s allowed, longest %.3g s' at graph 0.01, "
+                "first %.9g offset 0, 0.6 tc rgb '#d62728'\n",
+                m->env_g[l], m->env_g[l], m->env_g[l], m->env_s[l], r->env_longest[l],
+                m->env_g[l]);
+    }
+    fputs("plot 'plot_run.dat' using 't':'felt_g' with lines lw 2 lc rgb '#1f77b4' "
+          "title 'felt g (judged links)'\n",
+          f);
+}
+
 /* opens name in the transaction and, for a script, lists it to be drawn */
 static FILE *open_file(zp_tx *t, const char *name, const char **scripts, int *nscript, char *err,
                        size_t errlen) {
@@ -375,6 +399,14 @@ zp_status zp_plot_start(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_r
     script_energy(gp[1], m, r, &kk);
     script_angles(gp[2], m, r, &kk, o, last);
     script_loads(gp[3], m, r, &kk);
+    if (m->nenv > 0) {
+        FILE *ge = open_file(t, "envelope.gp", scripts, &ns, err, errlen);
+        if (!ge) {
+            return ZP_ERR_IO;
+        }
+        script_envelope(ge, m, r, &kk);
+        info->envelope = 1;
+    }
     if (o->nframe) {
         FILE *fg = open_file(t, "frames.gp", scripts, &ns, err, errlen);
         FILE *fd = fg ? zp_tx_open(t, "plot_frames.dat", err, errlen) : NULL;

@@ -33,6 +33,7 @@ typedef struct zp_plot_info {
     int nskipped;    /* still frames asked for that the run never reached */
     int anim_frames; /* frames in run.gif */
     int mp4;         /* 1: run.mp4 was made too */
+    int envelope;    /* 1: envelope.png (felt g against [limits] g_envelope) was drawn too */
 } zp_plot_info;
 
 /* The defaults: margin 0, no frames, no animation, 25 fps, 960 px wide, speed-up 1. */

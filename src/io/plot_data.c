@@ -92,6 +92,7 @@ zp_plot_box zp_plot_write_run(FILE *f, const zp_model *m, const zp_row_store *ro
     if (m->physics) {
         fputs(" drag_loss friction_loss", f);
     }
+    fputs(" felt_g", f); /* the largest felt g over the judged links ([limits] g_links) */
     fputc('\n', f);
     double e0 = 0;
     for (int k = 0; k < rows->n; k++) {
@@ -122,6 +123,11 @@ zp_plot_box zp_plot_write_run(FILE *f, const zp_model *m, const zp_row_store *ro
         if (m->physics) {
             fprintf(f, " %.9g %.9g", r->w_drag, r->w_fric);
         }
+        double g = 0;
+        for (int i = 0; i < m->nlink; i++) {
+            g = m->g_links >> i & 1 ? fmax(g, v.acc_g[i]) : g;
+        }
+        fprintf(f, " %.9g", g);
         fputc('\n', f);
     }
     return b;

@@ -1,8 +1,69 @@
 /* The scene reader's second pass for the optional sections (CONFIG.md [limits], [robust],
    [physics]): each key off unless given, each refusal naming the key and what it expects. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "scene_parse.h"
+
+/* key k as link numbers 1..nlink: a mask (bit i: link i + 1), 0 when absent or bad */
+static unsigned read_links(parse_ctx *c, int k, int nlink) {
+    double links[ZP_MAX_LINKS];
+    int n = zp_scene_get_list(c, k, R_POS, links, ZP_MAX_LINKS);
+    unsigned mask = 0;
+    for (int i = 0; i < n; i++) {
+        if (links[i] != floor(links[i]) || links[i] > nlink) {
+            zp_scene_bad_key(c, k, "item %d (%g) is not a link number from 1 to %d", i + 1,
+                             links[i], nlink);
+            return 0;
+        }
+        mask |= 1u << ((int)links[i] - 1);
+    }
+    return mask;
+}
+
+/* g_envelope: comma-separated pairs g:s, each number finite and > 0 */
+static void read_envelope(parse_ctx *c, zp_scene *sc) {
+    if (!c->key_line[K_G_ENVELOPE]) {
+        return;
+    }
+    char text[LINE_CAP];
+    snprintf(text, sizeof text, "%s", c->val[K_G_ENVELOPE]);
+    int n = 0;
+    for (char *save = NULL, *item = strtok_r(text, ",", &save); item;
+         item = strtok_r(NULL, ",", &save)) {
+        char *colon = strchr(item, ':'), *end1, *end2;
+        if (!colon) {
+            zp_scene_bad_key(c, K_G_ENVELOPE, "item %d ('%s') is not g:s", n + 1, item);
+            return;
+        }
+        *colon = '\0';
+        double g = strtod(item, &end1), s = strtod(colon + 1, &end2);
+        while (*end1 == ' ') {
+            end1++;
+        }
+        while (*end2 == ' ') {
+            end2++;
+        }
+        if (end1 == item || *end1 || end2 == colon + 1 || *end2 || !isfinite(g) ||
+            !isfinite(s) || !(g > 0) || !(s > 0)) {
+            zp_scene_bad_key(c, K_G_ENVELOPE, "item %d is not two numbers > 0", n + 1);
+            return;
+        }
+        if (n == 8) {
+            zp_scene_bad_key(c, K_G_ENVELOPE, "more than 8 levels");
+            return;
+        }
+        sc->env_g[n] = g;
+        sc->env_s[n++] = s;
+    }
+    if (n == 0) {
+        zp_scene_bad_key(c, K_G_ENVELOPE, "no levels");
+        return;
+    }
+    sc->nenv = n;
+}
 
 /* every limit is a positive ceiling: 0 would forbid any ride and means "off" inside */
 void zp_scene_read_limits(parse_ctx *c, zp_scene *sc) {
@@ -10,6 +71,9 @@ void zp_scene_read_limits(parse_ctx *c, zp_scene *sc) {
     zp_scene_get_number(c, K_MAX_JOINT_FORCE, R_POS, &sc->max_joint_force);
     zp_scene_get_number(c, K_MAX_ARRIVAL_SPEED, R_POS, &sc->max_arrival_speed);
     zp_scene_get_number(c, K_MAX_KINK_DV, R_POS, &sc->max_kink_dv);
+    zp_scene_get_number(c, K_MIN_ARRIVAL_SPEED, R_POS, &sc->min_arrival_speed);
+    read_envelope(c, sc);
+    sc->g_links = read_links(c, K_G_LINKS, sc->nlink);
 }
 
 /* key k as `lo, hi` percentages with 0 < lo <= hi */
@@ -51,6 +115,33 @@ void zp_scene_read_robust(parse_ctx *c, zp_scene *sc) {
     }
     if (zp_scene_get_whole(c, K_VERIFY_SAMPLES, 1, 1000000000, &u) > 0) {
         sc->verify_samples = (int)u;
+    }
+    sc->scale_links = read_links(c, K_SCALE_LINKS, sc->nlink);
+    double w[2];
+    int nw = zp_scene_get_list(c, K_WIND_RANGE, R_ANY, w, 2);
+    if (nw == 1) {
+        zp_scene_bad_count(c, K_WIND_RANGE, nw, "2 (lo, hi)");
+    } else if (nw == 2 && w[0] > w[1]) {
+        zp_scene_bad_key(c, K_WIND_RANGE, "the range %g, %g is reversed", w[0], w[1]);
+    } else if (nw == 2) {
+        sc->wind_varied = 1;
+        memcpy(sc->wind_range, w, sizeof w);
+    }
+    /* the box held is the stated one widened about the nominal (100 %): no range may then
+       reach 0 % or below */
+    double f;
+    if (zp_scene_get_number(c, K_SAFETY_FACTOR, R_POS, &f) > 0) {
+        const double *ranges[4] = {sc->mass_range, sc->length_range, sc->trolley_mass_range,
+                                   sc->damping_range};
+        int fits = f >= 1;
+        for (int q = 0; q < 4; q++) {
+            fits &= 100 + f * (ranges[q][0] - 100) > 0;
+        }
+        if (!fits) {
+            zp_scene_bad_key(c, K_SAFETY_FACTOR, "%g is out of range", f);
+        } else {
+            sc->safety_factor = f;
+        }
     }
 }
 

@@ -25,6 +25,10 @@ static void set_defaults(zp_scene *sc, const char *path) {
     sc->gravity = 9.81;
     sc->ndamping = 1;
     sc->death_angle = 180;
+    sc->ndeath = 1;
+    for (int i = 0; i < ZP_MAX_LINKS; i++) {
+        sc->death_angles[i] = 180;
+    }
     strcpy(sc->direction, "horizontal");
     sc->force_min = 0;
     sc->force_max = 500;
@@ -47,6 +51,7 @@ static void set_defaults(zp_scene *sc, const char *path) {
     }
     sc->robust_samples = 64;
     sc->verify_samples = 2000;
+    sc->safety_factor = 1;
     sc->air_density = 1.225;
 }
 

@@ -19,19 +19,23 @@ static void force_bounds(parse_ctx *c, const zp_scene *sc) {
     }
 }
 
-/* the default margin obeys the same rule as a given one: it is named at death_angle */
+/* the default margin obeys the same rule as a given one: it is named at death_angle; with a
+   death angle per joint, the smallest judges */
 static void margin_below_death(parse_ctx *c, const zp_scene *sc) {
-    if (!all_good(c, K_MARGIN, K_DEATH_ANGLE, -1) || sc->margin < sc->death_angle) {
+    double least = sc->death_angles[0];
+    for (int i = 1; i < sc->ndeath; i++) {
+        least = fmin(least, sc->death_angles[i]);
+    }
+    if (!all_good(c, K_MARGIN, K_DEATH_ANGLE, -1) || sc->margin < least) {
         return;
     }
     if (c->key_line[K_MARGIN]) {
-        zp_scene_bad_key(c, K_MARGIN, "%g is not below death_angle %g", sc->margin,
-                         sc->death_angle);
+        zp_scene_bad_key(c, K_MARGIN, "%g is not below death_angle %g", sc->margin, least);
     } else {
         zp_scene_bad_key(c, K_DEATH_ANGLE,
                          "%g is not above the default [optimize] margin %g (give a smaller "
                          "margin)",
-                         sc->death_angle, sc->margin);
+                         least, sc->margin);
     }
 }
 
@@ -61,7 +65,16 @@ static void drag(parse_ctx *c, const zp_scene *sc) {
     }
 }
 
+/* wind acts on the bodies through their drag only: a range of it without drag changes nothing */
+static void wind_needs_drag(parse_ctx *c, const zp_scene *sc) {
+    if (sc->wind_varied && !sc->ndrag && all_good(c, K_DRAG_AREA, -1, -1)) {
+        zp_scene_bad_key(c, K_WIND_RANGE, "given without [physics] drag_area, through which "
+                                          "wind acts");
+    }
+}
+
 void zp_scene_rules(parse_ctx *c, zp_scene *sc) {
+    wind_needs_drag(c, sc);
     force_bounds(c, sc);
     margin_below_death(c, sc);
     row_count(c, sc);

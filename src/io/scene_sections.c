@@ -144,12 +144,27 @@ void zp_scene_read_body(parse_ctx *c, zp_scene *sc) {
             sc->damping[i] = ndamp == 1 ? tmp[0] : i < ndamp ? tmp[i] : 0;
         }
     }
-    double v;
-    if (zp_scene_get_number(c, K_DEATH_ANGLE, R_POS, &v) > 0) {
-        if (v > 360) {
-            zp_scene_bad_key(c, K_DEATH_ANGLE, "%g is out of range", v);
-        } else {
-            sc->death_angle = v;
+    /* one value for every joint or one per joint, each in (0, 360] */
+    int ndeath = zp_scene_get_list(c, K_DEATH_ANGLE, R_POS, tmp, ZP_MAX_LINKS);
+    int fits = ndeath > 0;
+    for (int i = 0; i < ndeath; i++) {
+        if (tmp[i] > 360) {
+            zp_scene_bad_key(c, K_DEATH_ANGLE, "%g is out of range", tmp[i]);
+            fits = 0;
+            break;
+        }
+    }
+    if (fits && ndeath > 1 && nlen > 0 && ndeath != nlen) {
+        zp_scene_bad_count(c, K_DEATH_ANGLE, ndeath, "1 or %d (one per joint)", nlen);
+    } else if (fits) {
+        /* stored for each joint, as damping is; death_angle keeps the largest */
+        sc->ndeath = ndeath;
+        sc->death_angle = 0;
+        for (int i = 0; i < ZP_MAX_LINKS; i++) {
+            sc->death_angles[i] = i < ndeath ? tmp[i] : tmp[0];
+        }
+        for (int i = 0; i < ndeath; i++) {
+            sc->death_angle = tmp[i] > sc->death_angle ? tmp[i] : sc->death_angle;
         }
     }
 }
@@ -249,6 +264,14 @@ void zp_scene_read_optimize(parse_ctx *c, zp_scene *sc) {
         sc->seed = u;
     }
     zp_scene_get_text(c, K_SEARCH_METHOD, sc->search_method, sizeof sc->search_method);
+    char objective[16];
+    if (zp_scene_get_text(c, K_OBJECTIVE, objective, sizeof objective) > 0) {
+        if (strcmp(objective, "nominal") && strcmp(objective, "slowest")) {
+            zp_scene_bad_key(c, K_OBJECTIVE, "'%s' is not an objective", objective);
+        } else {
+            sc->objective_slowest = !strcmp(objective, "slowest");
+        }
+    }
     sc->line_search_method = c->key_line[K_SEARCH_METHOD];
     get_tolerance(c, K_SEARCH_RTOL, ZP_RTOL_MIN, ZP_RTOL_MAX, &sc->search_rtol);
 }

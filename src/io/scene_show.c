@@ -26,7 +26,6 @@ static const struct {
 } numbers[] =
     {
         {K_GRAVITY, offsetof(zp_scene, gravity)},
-        {K_DEATH_ANGLE, offsetof(zp_scene, death_angle)},
         {K_MIN, offsetof(zp_scene, force_min)},
         {K_MAX, offsetof(zp_scene, force_max)},
         {K_RTOL, offsetof(zp_scene, rtol)},
@@ -37,6 +36,7 @@ static const struct {
         {K_SEARCH_RTOL, offsetof(zp_scene, search_rtol)},
         {K_FORCE_ERROR, offsetof(zp_scene, force_error)},
         {K_START_ANGLE, offsetof(zp_scene, start_angle)},
+        {K_SAFETY_FACTOR, offsetof(zp_scene, safety_factor)},
         {K_AIR_DENSITY, offsetof(zp_scene, air_density)},
         {K_WIND, offsetof(zp_scene, wind)},
         {K_ROLLING, offsetof(zp_scene, rolling)},
@@ -45,6 +45,7 @@ static const struct {
         {K_MAX_JOINT_FORCE, offsetof(zp_scene, max_joint_force)},
         {K_MAX_ARRIVAL_SPEED, offsetof(zp_scene, max_arrival_speed)},
         {K_MAX_KINK_DV, offsetof(zp_scene, max_kink_dv)},
+        {K_MIN_ARRIVAL_SPEED, offsetof(zp_scene, min_arrival_speed)},
 },
   pairs[] = {
       {K_MASS_RANGE, offsetof(zp_scene, mass_range)},
@@ -110,6 +111,42 @@ static void other_text(const zp_scene *sc, int k, char *out, size_t cap) {
             snprintf(out, cap, "none (no drag)");
         }
         break;
+    case K_G_ENVELOPE:
+        if (sc->nenv == 0) {
+            snprintf(out, cap, "off");
+        }
+        for (int l = 0, used = 0; l < sc->nenv && used < (int)cap; l++) {
+            used += snprintf(out + used, cap - used, "%s%g:%g", l ? ", " : "", sc->env_g[l],
+                             sc->env_s[l]);
+        }
+        break;
+    case K_DEATH_ANGLE:
+        list(out, cap, sc->death_angles, sc->ndeath);
+        break;
+    case K_OBJECTIVE:
+        snprintf(out, cap, "%s", sc->objective_slowest ? "slowest" : "nominal");
+        break;
+    case K_WIND_RANGE:
+        if (sc->wind_varied) {
+            list(out, cap, sc->wind_range, 2);
+        } else {
+            snprintf(out, cap, "off");
+        }
+        break;
+    case K_G_LINKS:
+    case K_SCALE_LINKS: {
+        unsigned mask = k == K_G_LINKS ? sc->g_links : sc->scale_links;
+        if (mask == 0) {
+            snprintf(out, cap, "every link");
+        }
+        for (int i = 0, used = 0, first = 1; i < sc->nlink && used < (int)cap; i++) {
+            if (mask >> i & 1) {
+                used += snprintf(out + used, cap - used, "%s%d", first ? "" : ", ", i + 1);
+                first = 0;
+            }
+        }
+        break;
+    }
     default:
         snprintf(out, cap, "(required, not given)");
         break;

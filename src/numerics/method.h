@@ -43,6 +43,10 @@ typedef struct zp_method {
     zp_adv (*advance)(void *w, double *t, double *y, int *roots, char *err, size_t errlen);
     /* Dense output: y at a time t inside the last step. 0 on success. */
     int (*interpolate)(void *w, double t, double *y);
+    /* NULL where the dense output is as accurate as the steps; else y at a time t inside the
+       last step to the steps' own accuracy (a step from its start), for the few values that
+       must not carry a low-order interpolant's error. 0 on success. */
+    int (*land)(void *w, double t, double *y);
     /* Steps and rhs evaluations since the last reset. */
     void (*stats)(void *w, long *steps, long *rhs_evals);
     void (*free)(void *w);
