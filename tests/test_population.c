@@ -5,7 +5,8 @@
    each scenario's M, hence its arrival speed, follows by hand; min_arrival_speed between the
    light and the heavy rider's speeds is kept by the one and broken by the other, with the
    excess 1 - v / min. wind_range: the scenario at each end is the scene read with that wind.
-   objective = slowest: the slowest held finish, by a brute-force loop (the heaviest rider's).
+   objective = slowest: the slowest held finish, by a brute-force loop (the heaviest rider's),
+   and in closed form for a bare trolley on a straight slope (the heaviest trolley's time).
    Bad link numbers, envelope pairs, and a wind range without drag are refused at their line. */
 #include <math.h>
 #include <string.h>
@@ -175,6 +176,39 @@ static void check_slowest(void) {
     zp_model_free(m);
 }
 
+/* objective = slowest in closed form: a trolley with a negligible chain (1 mg, 1 m links) on
+   the straight slope y = 100 - 0.2 x, pushed horizontally by F: (1 + 0.04) x'' = F / m0 +
+   0.2 g, so the run of x over 200 m takes T = sqrt(2 * 200 / x''); the heaviest trolley of
+   trolley_mass_range is the slowest, and the slowest objective is its T */
+static void check_slowest_closed_form(void) {
+    const char *ini = "[course]\nx_start = 0\nsection = 200 : 100 - 0.2*x\n"
+                      "[trolley]\nmass = 20\n[body]\nlengths = 1, 1\n"
+                      "masses = 1e-6, 1e-6\ndamping = 1e-6\n[drive]\nforces = 30\n"
+                      "[robust]\ntrolley_mass_range = 80, 150\n";
+    zp_scene sc;
+    zp_model *m = tu_model(ini, &sc);
+    zp_box b;
+    zp_box_from_scene(&sc, m, &b);
+    zp_scen_set set;
+    CHECK(zp_scen_set_build(&set, &b, m, 4, 1) == ZP_OK);
+    zp_sim_opts o = tu_opts(&sc, 1e-10);
+    zp_objective ob = tu_objective(m, &sc, &o);
+    ob.set = &set;
+    ob.slowest = 1;
+    zp_sim *s = zp_sim_create(m, &o);
+    static zp_result r;
+    double f = 30;
+    zp_eval slow;
+    zp_objective_eval(&ob, s, &f, &slow, &r);
+    double acc = (f / (20 * 1.5) + 0.2 * G) / 1.04;
+    double want = sqrt(2 * 200 / acc);
+    CHECK(zp_objective_feasible(&slow));
+    CHECK(fabs(slow.obj - want) <= 1e-6 * want);
+    zp_sim_free(s);
+    zp_scen_set_free(&set);
+    zp_model_free(m);
+}
+
 /* g_links and scale_links take link numbers 1..nlink */
 static void check_bad_links(void) {
     const char *bad[] = {"[limits]\ng_links = 3\n", "[robust]\nscale_links = 1.5\n",
@@ -202,6 +236,7 @@ int main(void) {
     check_population();
     check_wind();
     check_slowest();
+    check_slowest_closed_form();
     check_bad_links();
     zp_sim_free(*tu_last_sim());
     return CHECK_DONE();
