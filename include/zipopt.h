@@ -130,8 +130,16 @@ ZIPOPT_API void zipopt_search_free(zipopt_search *r); /* NULL is fine */
    found (1 when a survivable schedule was found), time (s, its finish), angle (rad, its
    largest relative joint angle), evals, feasible, failed (simulations), threads, wall_s,
    interrupted, base_found, base_force (N, the best constant push), base_time (s); time,
-   angle and the base_ numbers are NaN when nothing survivable was found. A search stopped
-   before it began runs nothing: interrupted, and its forces are the scene's. */
+   angle and the base_ numbers are NaN when nothing survivable was found. How sure it is, as
+   summary.json's convergence says: rounds, polishes, basins, reached_best, converged,
+   budget_ran_out, time_ran_out (0 or 1), unseen_basins (the Boender-Rinnooy Kan estimate),
+   budget_to_help (simulations; NaN unless the budget or time ran out first), islands,
+   islands_polished. With [robust]: scenarios (held), verify_samples (fresh scenarios checked),
+   verify_survived, verify_margin_kept, verify_limits_kept, verify_all_kept, lower_95 (the 95 %
+   lower bound of P(survivable)), worst_margin_deg (over everything held and verified),
+   headroom and headroom_breaks (the factor on the stated box up to which the answer holds
+   along the worst direction found, and where it breaks); NaN without [robust]. A search
+   stopped before it began runs nothing: interrupted, and its forces are the scene's. */
 ZIPOPT_API double zipopt_search_get(const zipopt_search *r, const char *key);
 ZIPOPT_API const char *zipopt_search_key(int i); /* the i-th name, NULL past the last */
 /* The best schedule (N per section) into force (room for n); returns the number of sections.

@@ -32,9 +32,14 @@ static const char *const run_keys[] = {
     "peak_joint_force", "max_kink_dv", "arrival_kmh", "normal_min", "normal_max",
     "rejected_steps"};
 #define NRUN_KEYS ((int)(sizeof run_keys / sizeof *run_keys))
-static const char *const search_keys[] = {"found",       "time",       "angle",      "evals",
-                                          "feasible",    "failed",     "threads",    "wall_s",
-                                          "interrupted", "base_found", "base_force", "base_time"};
+static const char *const search_keys[] = {
+    "found",          "time",           "angle",          "evals",           "feasible",
+    "failed",         "threads",        "wall_s",         "interrupted",     "base_found",
+    "base_force",     "base_time",      "rounds",         "polishes",        "basins",
+    "reached_best",   "converged",      "budget_ran_out", "time_ran_out",    "unseen_basins",
+    "budget_to_help", "islands",        "islands_polished", "scenarios",     "verify_samples",
+    "verify_survived", "verify_margin_kept", "verify_limits_kept", "verify_all_kept",
+    "lower_95",       "worst_margin_deg", "headroom",     "headroom_breaks"};
 #define NSEARCH_KEYS ((int)(sizeof search_keys / sizeof *search_keys))
 
 /* libmatheval's parser keeps globals and nlopt_srand is process-wide: loads and searches take
@@ -59,6 +64,8 @@ struct zipopt_run {
 
 struct zipopt_search {
     zp_search_result res;
+    zp_robust_check check; /* the robust verification (samples 0: none) */
+    int nscen;             /* scenarios held */
     double num[NSEARCH_KEYS];
     int np; /* parameters of the schedule: one force per section */
 };
@@ -452,8 +459,10 @@ static void on_progress(void *user, const zp_search_progress *p, int improved) {
 
 /* the search over the scene's bounds, as the command runs it: held to the scene's [limits]
    and [robust] scenarios when it has them, the answer verified on fresh scenarios */
+/* the search as the command runs it; *check and *nscen: the robust verification and the
+   scenarios held (0 and samples 0 for a nominal scene) */
 static zp_status search(const zp_setup *st, const zp_search_opts *o, zp_search_result *res,
-                        char *err, size_t errlen) {
+                        zp_robust_check *check, int *nscen, char *err, size_t errlen) {
     zp_robust_problem *pb = calloc(1, sizeof *pb); /* large: kept off the stack */
     zp_sim_opts fast;
     if (!pb ||
@@ -467,12 +476,18 @@ static zp_status search(const zp_setup *st, const zp_search_opts *o, zp_search_r
     }
     zp_status rc =
         zp_robust_solve(pb, &st->sc, &fast, st->sched.lo, st->sched.hi, o, res, err, errlen);
+    *check = pb->check;
+    *nscen = pb->robust ? pb->set.n : 0;
     zp_robust_problem_free(pb);
     free(pb);
     return rc;
 }
 
-static void search_numbers(const zp_search_result *r, double *v) {
+static void search_numbers(const zp_search_result *r, const zp_robust_check *c, int nscen,
+                           double *v) {
+    int verified = c->samples > 0;
+    const zp_headroom_line *box = &c->headroom.line[ZP_HEADROOM_LINES - 1];
+    int headroom = verified && box->range >= 0;
     const double n[] = {r->found,
                         r->found ? r->best.time : NAN,
                         r->found ? r->best.angle : NAN,
@@ -484,7 +499,30 @@ static void search_numbers(const zp_search_result *r, double *v) {
                         r->interrupted,
                         r->base_found,
                         r->base_found ? r->base_force : NAN,
-                        r->base_found ? r->base.time : NAN};
+                        r->base_found ? r->base.time : NAN,
+                        r->nrounds,
+                        r->nstarts,
+                        r->nbasins,
+                        r->nreached,
+                        r->converged,
+                        r->budget_out,
+                        r->timed_out,
+                        r->nstarts > 0 ? r->unseen : NAN,
+                        !r->converged && r->found && (r->budget_out || r->timed_out)
+                            ? (double)r->help_evals
+                            : NAN,
+                        r->nislands,
+                        r->npolished,
+                        nscen,
+                        c->samples,
+                        verified ? c->survived : NAN,
+                        verified ? c->margin_kept : NAN,
+                        verified ? c->limits_kept : NAN,
+                        verified ? c->all_kept : NAN,
+                        verified ? c->lower_95 : NAN,
+                        verified ? c->worst_margin_deg : NAN,
+                        headroom ? box->holds : NAN,
+                        headroom && isfinite(box->breaks) ? box->breaks : NAN};
     _Static_assert(sizeof n / sizeof *n == NSEARCH_KEYS, "one number per key");
     memcpy(v, n, sizeof n);
 }
@@ -518,7 +556,7 @@ zipopt_search *zipopt_search_run(zipopt_scene *s, long max_evals, long seed,
         memcpy(u->res.force, st->sched.p, sizeof *u->res.force * (size_t)st->sched.np);
     } else {
         pthread_mutex_lock(&turn);
-        rc = search(st, &o, &u->res, why, sizeof why);
+        rc = search(st, &o, &u->res, &u->check, &u->nscen, why, sizeof why);
         pthread_mutex_unlock(&turn);
     }
     if (rc) {
@@ -527,7 +565,7 @@ zipopt_search *zipopt_search_run(zipopt_scene *s, long max_evals, long seed,
         return NULL;
     }
     u->np = st->sched.np;
-    search_numbers(&u->res, u->num);
+    search_numbers(&u->res, &u->check, u->nscen, u->num);
     return u;
 }
 
