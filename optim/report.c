@@ -549,9 +549,11 @@ static void md_figures_rerun(FILE *f, const zp_report *r) {
     if (r->figures) {
         fputs("\n## Figures\n\n"
               "The best run: the course with every centre-of-mass path, the energy account, the\n"
-              "relative joint angles against the death angle and the margin, and the loads.\n\n"
+              "relative joint angles against the death angle and the margin, and the loads;\n"
+              "then the angles, the felt g and the loads against distance.\n\n"
               "![course and paths](course.png)\n\n![energy](energy.png)\n\n"
-              "![joint angles](angles.png)\n\n![loads](loads.png)\n",
+              "![joint angles](angles.png)\n\n![loads](loads.png)\n\n"
+              "![the ride against distance](along.png)\n",
               f);
         if (r->m->nenv > 0) {
             fputs("\n![felt g against the g-duration envelope](envelope.png)\n", f);

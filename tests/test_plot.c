@@ -293,6 +293,12 @@ static void test_figures(void) {
     check_png(dir, "energy.png", 0, 0);
     check_png(dir, "angles.png", 0, 0);
     check_png(dir, "loads.png", 0, 0);
+    check_png(dir, "along.png", 0, 0);
+    /* against distance: every curve of along.gp is drawn over the run's x */
+    char *along = slurp(dir, "along.gp");
+    CHECK(along && strstr(along, "using 'x':'phi1'") && strstr(along, "using 'x':'felt_g'") &&
+          strstr(along, "using 'x':'joint1'") && strstr(along, "set xlabel 'x (m)'"));
+    free(along);
     const char *frames[] = {"frame_x0.png", "frame_x20.png", "frame_x60.png", "frame_x139.5.png"};
     for (int i = 0; i < 4; i++) {
         unsigned w = 0, h = 0;

@@ -327,6 +327,49 @@ static void script_loads(FILE *f, const zp_model *m, const zp_result *r, const k
           f);
 }
 
+/* the ride against distance, where a designer places brakes and towers: the relative joint
+   angles, the felt g and the joint reactions over x, each kink a dotted line at its x */
+static void script_along(FILE *f, const zp_model *m, const zp_result *r, const zp_plot_opts *o) {
+    double dmax = m->phi_max * ZP_PLOT_DEG, keep = (m->phi_max - o->margin) * ZP_PLOT_DEG;
+    zp_plot_head_png(f, m, "along", "joint angles, felt g and joint reactions against distance",
+                     FIG_W, 900, 0);
+    fputs("set multiplot layout 3, 1 title 'The ride against distance'\n"
+          "set lmargin 12\nset rmargin 4\n"
+          "set key inside right top opaque box lc rgb '#cccccc'\n",
+          f);
+    for (int k = 0; k < m->nkink; k++) {
+        double x = m->xb[m->kink[k].left + 1];
+        fprintf(f, "set arrow from %.9g, graph 0 to %.9g, graph 1 nohead dt 3 lc rgb '#999999'\n",
+                x, x);
+    }
+    if (r->outcome == ZP_OUTCOME_DIED) {
+        fprintf(f, "set arrow from %.9g, graph 0 to %.9g, graph 1 nohead lw 2 lc rgb '#d62728'\n",
+                r->x, r->x);
+    }
+    fprintf(f,
+            "set format x ''\nset ylabel 'joint angle (deg)'\nset yrange [%g:%g]\n"
+            "set arrow 101 from graph 0, first %g to graph 1, first %g nohead dt 2 "
+            "lc rgb '#ff7f0e'\n"
+            "set arrow 102 from graph 0, first %g to graph 1, first %g nohead dt 2 "
+            "lc rgb '#ff7f0e'\n"
+            "plot ",
+            -dmax - 20, dmax + 20, keep, keep, -keep, -keep);
+    for (int i = 1; i <= m->nlink; i++) {
+        fprintf(f, "%s'plot_run.dat' using 'x':'phi%d' with lines lt %d title 'joint %d'",
+                i > 1 ? ", \\\n     " : "", i, i, i);
+    }
+    fputs("\nunset arrow 101\nunset arrow 102\nset autoscale y\nset ylabel 'felt g (g)'\n"
+          "plot 'plot_run.dat' using 'x':'felt_g' with lines lw 2 lc rgb '#9467bd' "
+          "title 'largest felt g of the links'\n"
+          "set format x '%g'\nset xlabel 'x (m)'\nset ylabel 'joint reaction (N)'\nplot ",
+          f);
+    for (int i = 1; i <= m->nlink; i++) {
+        fprintf(f, "%s'plot_run.dat' using 'x':'joint%d' with lines lt %d title 'joint %d'",
+                i > 1 ? ", \\\n     " : "", i, i, i);
+    }
+    fputs("\nunset multiplot\n", f);
+}
+
 /* felt g of the judged links against time, each [limits] g_envelope level drawn with its
    allowance and the longest time the run stayed above it */
 static void script_envelope(FILE *f, const zp_model *m, const zp_result *r, const kinks *kk) {
@@ -372,7 +415,7 @@ zp_status zp_plot_start(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_r
         snprintf(err, errlen, "the run has no trajectory rows to plot (output_dt <= 0?)");
         return ZP_ERR_IO;
     }
-    const char *scripts[8];
+    const char *scripts[10];
     int ns = 0;
     /* data first, then each figure's script */
     FILE *course = zp_tx_open(t, "plot_course.dat", err, errlen);
@@ -387,9 +430,9 @@ zp_status zp_plot_start(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_r
     zp_plot_grow(&both, pb.x1, pb.y1);
     zp_row end, *last = &end;
     zp_row_store_get(rows, rows->n - 1, last);
-    const char *names[] = {"course.gp", "energy.gp", "angles.gp", "loads.gp"};
-    FILE *gp[4];
-    for (int k = 0; k < 4; k++) {
+    const char *names[] = {"course.gp", "energy.gp", "angles.gp", "loads.gp", "along.gp"};
+    FILE *gp[5];
+    for (int k = 0; k < 5; k++) {
         gp[k] = open_file(t, names[k], scripts, &ns, err, errlen);
         if (!gp[k]) {
             return ZP_ERR_IO;
@@ -399,6 +442,7 @@ zp_status zp_plot_start(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_r
     script_energy(gp[1], m, r, &kk);
     script_angles(gp[2], m, r, &kk, o, last);
     script_loads(gp[3], m, r, &kk);
+    script_along(gp[4], m, r, o);
     if (m->nenv > 0) {
         FILE *ge = open_file(t, "envelope.gp", scripts, &ns, err, errlen);
         if (!ge) {
