@@ -16,49 +16,50 @@
 /* every key of CONFIG.md, and how a study varies it; the reader stays the judge of values */
 static const struct {
     const char *sec, *key;
-    int kind; /* zp_vary_kind, or TEXT */
+    int kind;         /* zp_vary_kind, or TEXT */
+    const char *unit; /* of the value, "" for a pure number */
 } vary_keys[] = {
-    {"scene", "name", TEXT},
-    {"scene", "gravity", ZP_VARY_VALUE},
-    {"course", "x_start", ZP_VARY_VALUE},
-    {"course", "section", TEXT},
-    {"trolley", "mass", ZP_VARY_VALUE},
-    {"body", "lengths", ZP_VARY_SCALE},
-    {"body", "masses", ZP_VARY_SCALE},
-    {"body", "damping", ZP_VARY_SCALE},
-    {"body", "death_angle", ZP_VARY_VALUE},
-    {"drive", "direction", TEXT},
-    {"drive", "forces", ZP_VARY_SCALE},
-    {"drive", "min", ZP_VARY_VALUE},
-    {"drive", "max", ZP_VARY_VALUE},
-    {"solver", "method", TEXT},
-    {"solver", "rtol", ZP_VARY_VALUE},
-    {"solver", "atol", ZP_VARY_VALUE},
-    {"solver", "t_max", ZP_VARY_VALUE},
-    {"solver", "formulation", TEXT},
-    {"solver", "output_dt", ZP_VARY_VALUE},
-    {"optimize", "margin", ZP_VARY_VALUE},
-    {"optimize", "max_evals", ZP_VARY_WHOLE},
-    {"optimize", "seed", ZP_VARY_WHOLE},
-    {"optimize", "method", TEXT},
-    {"optimize", "rtol", ZP_VARY_VALUE},
-    {"limits", "max_g", ZP_VARY_VALUE},
-    {"limits", "max_joint_force", ZP_VARY_VALUE},
-    {"limits", "max_arrival_speed", ZP_VARY_VALUE},
-    {"limits", "max_kink_dv", ZP_VARY_VALUE},
-    {"robust", "force_error", ZP_VARY_VALUE},
-    {"robust", "mass_range", ZP_VARY_SCALE},
-    {"robust", "length_range", ZP_VARY_SCALE},
-    {"robust", "trolley_mass_range", ZP_VARY_SCALE},
-    {"robust", "damping_range", ZP_VARY_SCALE},
-    {"robust", "start_angle", ZP_VARY_VALUE},
-    {"robust", "samples", ZP_VARY_WHOLE},
-    {"robust", "verify_samples", ZP_VARY_WHOLE},
-    {"physics", "drag_area", ZP_VARY_SCALE},
-    {"physics", "air_density", ZP_VARY_VALUE},
-    {"physics", "wind", ZP_VARY_VALUE},
-    {"physics", "rolling", ZP_VARY_VALUE},
-    {"physics", "kink_radius", ZP_VARY_VALUE},
+    {"scene", "name", TEXT, ""},
+    {"scene", "gravity", ZP_VARY_VALUE, "m/s^2"},
+    {"course", "x_start", ZP_VARY_VALUE, "m"},
+    {"course", "section", TEXT, ""},
+    {"trolley", "mass", ZP_VARY_VALUE, "kg"},
+    {"body", "lengths", ZP_VARY_SCALE, "m"},
+    {"body", "masses", ZP_VARY_SCALE, "kg"},
+    {"body", "damping", ZP_VARY_SCALE, "N m s/rad"},
+    {"body", "death_angle", ZP_VARY_VALUE, "deg"},
+    {"drive", "direction", TEXT, ""},
+    {"drive", "forces", ZP_VARY_SCALE, "N"},
+    {"drive", "min", ZP_VARY_VALUE, "N"},
+    {"drive", "max", ZP_VARY_VALUE, "N"},
+    {"solver", "method", TEXT, ""},
+    {"solver", "rtol", ZP_VARY_VALUE, ""},
+    {"solver", "atol", ZP_VARY_VALUE, ""},
+    {"solver", "t_max", ZP_VARY_VALUE, "s"},
+    {"solver", "formulation", TEXT, ""},
+    {"solver", "output_dt", ZP_VARY_VALUE, "s"},
+    {"optimize", "margin", ZP_VARY_VALUE, "deg"},
+    {"optimize", "max_evals", ZP_VARY_WHOLE, ""},
+    {"optimize", "seed", ZP_VARY_WHOLE, ""},
+    {"optimize", "method", TEXT, ""},
+    {"optimize", "rtol", ZP_VARY_VALUE, ""},
+    {"limits", "max_g", ZP_VARY_VALUE, "g"},
+    {"limits", "max_joint_force", ZP_VARY_VALUE, "N"},
+    {"limits", "max_arrival_speed", ZP_VARY_VALUE, "km/h"},
+    {"limits", "max_kink_dv", ZP_VARY_VALUE, "m/s"},
+    {"robust", "force_error", ZP_VARY_VALUE, "%"},
+    {"robust", "mass_range", ZP_VARY_SCALE, "%"},
+    {"robust", "length_range", ZP_VARY_SCALE, "%"},
+    {"robust", "trolley_mass_range", ZP_VARY_SCALE, "%"},
+    {"robust", "damping_range", ZP_VARY_SCALE, "%"},
+    {"robust", "start_angle", ZP_VARY_VALUE, "deg"},
+    {"robust", "samples", ZP_VARY_WHOLE, ""},
+    {"robust", "verify_samples", ZP_VARY_WHOLE, ""},
+    {"physics", "drag_area", ZP_VARY_SCALE, "m^2"},
+    {"physics", "air_density", ZP_VARY_VALUE, "kg/m^3"},
+    {"physics", "wind", ZP_VARY_VALUE, "m/s"},
+    {"physics", "rolling", ZP_VARY_VALUE, ""},
+    {"physics", "kink_radius", ZP_VARY_VALUE, "m"},
 };
 #define NKEYS ((int)(sizeof vary_keys / sizeof vary_keys[0]))
 
@@ -154,6 +155,7 @@ int zp_sweep_vary_parse(const char *text, zp_sweep_vary *v, char *why, size_t wh
         return -1;
     }
     v->kind = (zp_vary_kind)vary_keys[k].kind;
+    snprintf(v->unit, sizeof v->unit, "%s", vary_keys[k].unit);
     if (parse_range(eq + 1, v, why, whylen)) {
         return -1;
     }
@@ -261,6 +263,27 @@ static int find_line(const char *t, const char *sec, const char *key, size_t *ls
         pos = next;
     }
     return 0;
+}
+
+void zp_sweep_note_base(zp_sweep *s, const char *base) {
+    for (int v = 0; v < s->nvary; v++) {
+        zp_sweep_vary *va = &s->vary[v];
+        char val[4096];
+        size_t ls, le, hdr;
+        va->base[0] = '\0';
+        if (find_line(base, va->section, va->key, &ls, &le, &hdr, val, sizeof val)) {
+            char *t = val + strspn(val, " \t"), *end = t + strlen(t);
+            while (end > t && isspace((unsigned char)end[-1])) {
+                end--;
+            }
+            /* a value too long for an axis label is not shown, rather than cut; nor one that
+               is not a plain list of numbers (it goes into a figure's script) */
+            size_t n = (size_t)(end - t);
+            if (n < sizeof va->base && strspn(t, "0123456789.eE+-, ") >= n) {
+                snprintf(va->base, sizeof va->base, "%.*s", (int)(end - t), t);
+            }
+        }
+    }
 }
 
 /* t with [from, to) replaced by ins; NULL without memory */

@@ -22,6 +22,8 @@ typedef struct zp_sweep_vary {
     double a, b;    /* the range, a <= b (for a list key: factors) */
     int n;          /* values, a and b included (one value: a) */
     char text[128]; /* as typed after --vary, for messages and the checkpoint */
+    char unit[16];  /* of the key's values ("kg", "km/h"), "" for a pure number */
+    char base[96];  /* the scene's own value text (what a factor scales), "" when not given */
 } zp_sweep_vary;
 
 typedef struct zp_sweep {
@@ -50,6 +52,8 @@ void zp_sweep_format(double x, char *out, size_t cap);
    section added at the end. A malloc'd text, or NULL (no memory, or a line over
    ZP_SWEEP_LINE_MAX). */
 char *zp_sweep_set_text(const char *t, const char *sec, const char *key, const char *value);
+/* Notes in each varied key of s the scene text base's own value of it (zp_sweep_vary.base). */
+void zp_sweep_note_base(zp_sweep *s, const char *base);
 /* Point p's scene: base with each varied key's line replaced (or added to its section, or the
    section added) with the point's value. Returns a malloc'd text, or NULL with why (a list key
    absent from base has nothing to scale; no memory). */

@@ -80,6 +80,15 @@ with tempfile.TemporaryDirectory() as tmp:
     with open(os.path.join(o, "sweep.csv")) as f:
         evals = [int(r["evals"]) for r in csv.DictReader(f)]
     check(len(evals) == 2 and all(0 < e <= 40 for e in evals), "--max-evals 40: %s" % evals)
+    # the figure's axes in the designer's units: a scaled list names what its factor scales
+    o = os.path.join(tmp, "axes")
+    q = subprocess.run([exe, "sweep", scene, "--vary", "body.masses=0.8:1.2:2", "--vary",
+                        "limits.max_arrival_speed=40:50:2", "--run", "simulate", "--out", o],
+                       capture_output=True, text=True)
+    with open(os.path.join(o, "sweep.gp")) as f:
+        gp = f.read()
+    check("set xlabel '[body] masses: factor on 15, 5, 2 kg (the scene)'" in gp and
+          "set ylabel '[limits] max_arrival_speed (km/h)'" in gp, "the axes: %s" % gp[:400])
     q = subprocess.run([exe, "sweep", scene, "--vary", "drive.forces=1:2:2", "--force", "1,2,3",
                         "--out", os.path.join(tmp, "no")], capture_output=True, text=True)
     check(q.returncode == 2 and not os.path.exists(os.path.join(tmp, "no")),

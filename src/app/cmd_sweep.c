@@ -448,6 +448,7 @@ static int prepare(const sweep_args *a, zp_sweep *s, study *st, char **base) {
             return ZP_EXIT_USAGE;
         }
     }
+    zp_sweep_note_base(s, *base);
     st->s = s;
     return check_points(st) ? ZP_EXIT_USAGE : 0;
 }

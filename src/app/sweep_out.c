@@ -170,11 +170,23 @@ static double half_step(const zp_sweep_vary *v) {
     return fabs(v->a) > 0 ? 0.1 * fabs(v->a) : 0.5;
 }
 
+/* the axis of vary v in the designer's units: the value's unit, or for a scaled list the
+   scene's own values the factor multiplies */
 static void axis(FILE *f, const char *ax, const zp_sweep_vary *v) {
     double h = half_step(v);
-    fprintf(f, "set %slabel '[%s] %s%s'\nset %srange [%.9g:%.9g]\n", ax, v->section, v->key,
-            v->kind == ZP_VARY_SCALE ? " (factor on the values in the scene)" : "", ax, v->a - h,
-            v->b + h);
+    char what[200];
+    if (v->kind == ZP_VARY_SCALE && v->base[0]) {
+        snprintf(what, sizeof what, ": factor on %s%s%s (the scene)", v->base, v->unit[0] ? " " : "",
+                 v->unit);
+    } else if (v->kind == ZP_VARY_SCALE) {
+        snprintf(what, sizeof what, " (factor on the values in the scene%s%s)",
+                 v->unit[0] ? ", " : "", v->unit);
+    } else {
+        snprintf(what, sizeof what, "%s%s%s", v->unit[0] ? " (" : "", v->unit,
+                 v->unit[0] ? ")" : "");
+    }
+    fprintf(f, "set %slabel '[%s] %s%s' noenhanced\nset %srange [%.9g:%.9g]\n", ax, v->section,
+            v->key, what, ax, v->a - h, v->b + h);
 }
 
 static void script_line(FILE *f, const zp_sweep_out *o, const char *col, const tally *t) {
