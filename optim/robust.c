@@ -438,12 +438,14 @@ zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts 
         return ZP_ERR_NOMEM;
     }
     zp_status st = ZP_OK;
+    zp_search_opts ro = *o; /* the progress says which restart it reports */
     for (;;) {
+        ro.restart = info->rounds;
         /* after the first round, a warm restart from what the last one found; a full search
            only when none of its starts can be made to survive the grown set */
-        st = info->rounds ? zp_search_warm(ob, so, lo, hi, o, res, err, errlen) : ZP_OK;
+        st = info->rounds ? zp_search_warm(ob, so, lo, hi, &ro, res, err, errlen) : ZP_OK;
         if (!st && (!info->rounds || (!res->found && !res->interrupted))) {
-            st = zp_search_run(ob, so, lo, hi, o, res, err, errlen);
+            st = zp_search_run(ob, so, lo, hi, &ro, res, err, errlen);
         }
         info->rounds++;
         if (st || !res->found || res->interrupted || b->d == 0) {

@@ -102,8 +102,8 @@ void zp_search_report(zp_search *S, int improved) {
         return;
     }
     S->last_report = now;
-    zp_search_progress p = {S->phase, S->round,   res->evals,     S->o->max_evals,
-                            now,      res->found, res->best.time, res->force};
+    zp_search_progress p = {S->phase, S->round,     res->evals, S->o->max_evals, now,
+                            res->found, res->best.time, res->force, S->o->restart};
     S->o->progress(S->o->user, &p, improved);
 }
 

@@ -40,6 +40,8 @@ typedef struct zp_search_progress {
     int found;           /* a survivable schedule is known */
     double time;         /* s, its finish time */
     const double *force; /* borrowed, N per section: the best so far */
+    int restart;         /* 0: the search; k > 0: the robust search's k-th restart, after its
+                            adversary added a k-th scenario (zp_search_opts.restart) */
 } zp_search_progress;
 
 typedef struct zp_search_opts {
@@ -54,6 +56,7 @@ typedef struct zp_search_opts {
     /* called, serialised, when the best improves (improved = 1) and now and then (0) */
     void (*progress)(void *user, const zp_search_progress *p, int improved);
     void *user;
+    int restart; /* passed to progress: which restart of the robust search this is, 0 the first */
 } zp_search_opts;
 
 typedef struct zp_search_hist {

@@ -187,8 +187,13 @@ static void on_progress(void *user, const zp_search_progress *p, int improved) {
     if (c->tty) {
         /* the budget left at the rate so far: an upper bound, as a round may converge first */
         double rate = p->evals / fmax(p->wall_s, 1e-9);
-        fprintf(stderr, "\rsearch round %d, %s: %ld of %ld simulations, %.0f/s, best %s%.4f s, "
-                "at most %.0f s left   ", p->round + 1, p->phase, p->evals, p->budget, rate,
+        char again[64] = "";
+        if (p->restart) { /* the robust search again, its adversary's scenarios added */
+            snprintf(again, sizeof again, "restart %d (%d scenario%s added), ", p->restart,
+                     p->restart, p->restart == 1 ? "" : "s");
+        }
+        fprintf(stderr, "\rsearch %sround %d, %s: %ld of %ld simulations, %.0f/s, best %s%.4f s, "
+                "at most %.0f s left   ", again, p->round + 1, p->phase, p->evals, p->budget, rate,
                 p->found ? "" : "(none survives) ", p->found ? p->time : 0.0,
                 (p->budget - p->evals) / fmax(rate, 1e-9));
         c->shown = 1;
