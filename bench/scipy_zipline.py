@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Independent, straightforward SciPy implementation of the zipline model
-(/work/shared/spec/MODEL.md), used as the accuracy reference and the speed
+(docs/model.md), used as the accuracy reference and the speed
 baseline for the C simulator.  Run it with Debian's /usr/bin/python3 (scipy).
 
 Model and derivation
@@ -200,7 +200,7 @@ class Model:
         return np.concatenate(([xd, fp * xd], s[n + 2:2 * n + 2]))
 
     def impulse(self, th, Qd_minus, fp_entered):
-        """MODEL.md kink impulse: returns (Qd_plus, Lambda, energy lost)."""
+        """docs/model.md kink impulse: returns (Qd_plus, Lambda, energy lost)."""
         M = self.mass_matrix(th)
         A = np.zeros(self.N + 2)
         A[0], A[1] = -fp_entered, 1.0
@@ -212,7 +212,7 @@ class Model:
 
 
 def simulate(model, forces, rtol=1e-10, atol=1e-12, t_max=120.0, max_crossings=1000, method="DOP853"):
-    """Runs one schedule (one constant force per section) from the MODEL.md start."""
+    """Runs one schedule (one constant force per section) from the docs/model.md start."""
     course = model.course
     n = model.N
     x_start, x_end = course[0].a, course[-1].b

@@ -1,5 +1,5 @@
 /* The schedule files of the search: checkpoint.ini while it runs and schedule.ini at the end,
-   both a scene file with only [drive] forces (CONFIG.md). */
+   both a scene file with only [drive] forces (docs/scene-file.md). */
 #include "report.h"
 
 void zp_report_write_schedule(FILE *f, const zp_scene *sc, const zp_schedule *sched,

@@ -212,7 +212,7 @@ static int search(grid_run *r, zp_grid_result *g) {
     return st ? -1 : 0;
 }
 
-/* MODEL.md's survivable: finished with the margin and every [limits] value kept (without the
+/* docs/model.md's survivable: finished with the margin and every [limits] value kept (without the
    search's slack: this is the answer's judgement, not the search's) */
 static int survives(const gpoint *q, const zp_eval *e, const zp_result *r, int *which) {
     return !e->failed && e->outcome == ZP_OUTCOME_FINISHED && e->angle <= q->ob.limit &&

@@ -1,5 +1,6 @@
-/* The headroom past the [robust] box (CONFIG.md safety_factor; CLI.md robust.headroom): the box
-   widened about the nominal, and how far along the worst direction found the answer holds. */
+/* The headroom past the [robust] box (docs/scene-file.md safety_factor; docs/commands.md
+   robust.headroom): the box widened about the nominal, and how far along the worst direction found
+   the answer holds. */
 #ifndef ZP_HEADROOM_H
 #define ZP_HEADROOM_H
 

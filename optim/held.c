@@ -16,7 +16,7 @@ typedef struct held_batch {
     const zp_box *b;
     const zp_robust_worst *w; /* NULL: no adversary's worst */
     zp_schedule sched;
-    zp_chain c0;    /* the nominal MODEL.md start */
+    zp_chain c0;    /* the nominal docs/model.md start */
     double *margin; /* per run, deg; NAN: did not finish */
 } held_batch;
 

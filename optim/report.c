@@ -1,4 +1,4 @@
-/* report.md of the search (CLI.md "Files"), one function per section. Angles in degrees,
+/* report.md of the search (docs/commands.md "Files"), one function per section. Angles in degrees,
    speeds in m/s and km/h, everything else SI. */
 #include "report.h"
 
@@ -267,7 +267,7 @@ static void md_kinks(FILE *f, const zp_report *r) {
     }
 }
 
-/* design loads of the best run, sampled at every step (MODEL.md sign conventions) */
+/* design loads of the best run, sampled at every step (docs/model.md sign conventions) */
 static void md_loads(FILE *f, const zp_report *r) {
     const zp_load_peaks *pk = &r->v->run->peaks;
     fputs("\n## Loads\n\n| joint | peak reaction (N) | link | peak felt acceleration (g) |\n"

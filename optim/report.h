@@ -38,12 +38,12 @@ typedef struct zp_report {
     const zp_diagnosis *diag;      /* borrowed, NULL: the answer keeps every fresh scenario */
 } zp_report;
 
-/* A schedule file: only [drive] forces (CONFIG.md), with comments saying what it is. */
+/* A schedule file: only [drive] forces (docs/scene-file.md), with comments saying what it is. */
 void zp_report_write_schedule(FILE *f, const zp_scene *sc, const zp_schedule *sched,
                               const char *comment);
 void zp_report_write_json(FILE *f, const zp_report *r);
-/* robust.headroom (CLI.md) as one JSON object: factor and limited_by for the whole box (null
-   and "" when not searched), breaks_at, safety_factor, and ranges: per varied range. */
+/* robust.headroom (docs/commands.md) as one JSON object: factor and limited_by for the whole box
+   (null and "" when not searched), breaks_at, safety_factor, and ranges: per varied range. */
 void zp_summary_headroom_json(FILE *f, const zp_headroom *h);
 /* The plain sentence on convergence: how many polishes reached the best, and whether a larger
    budget is likely to help. */

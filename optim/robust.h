@@ -1,4 +1,4 @@
-/* The robust search (MODEL.md "Uncertainty and limits"): the [robust] box of scenarios, the
+/* The robust search (docs/model.md "Uncertainty and limits"): the [robust] box of scenarios, the
    scenario sets every candidate is held to (corners first, then quasi-random points fixed by
    the seed), the adversarial growth of the set, and the verification on fresh scenarios. */
 #ifndef ZP_ROBUST_H
@@ -54,7 +54,7 @@ zp_status zp_scen_set_add(zp_scen_set *set, const zp_box *b, const zp_model *nom
                           const double *u);
 /* Adds the scenario sc (its force factors) on the model m itself, borrowed and copied as a
    struct (it must outlive the set and run on workspaces of the search's nominal model: the
-   same links, sections, course and effects), from start (NULL: m's own MODEL.md start turned
+   same links, sections, course and effects), from start (NULL: m's own docs/model.md start turned
    to sc's angles), judged by judge (copied; NULL: the search's objective). ZP_OK or
    ZP_ERR_NOMEM. */
 zp_status zp_scen_set_add_model(zp_scen_set *set, const zp_model *m, const zp_scenario *sc,
@@ -95,7 +95,7 @@ typedef struct zp_robust_check {
     int survived;    /* finished alive */
     int margin_kept; /* finished with the margin kept */
     int limits_kept; /* finished with every [limits] value kept */
-    int all_kept;    /* both: survivable (MODEL.md) */
+    int all_kept;    /* both: survivable (docs/model.md) */
     double lower_95; /* 95 % lower confidence bound of P(survivable), Clopper-Pearson */
     double worst_margin_deg; /* smallest margin over the finishing scenarios; after
                                 zp_robust_solve also over those of held_margin_deg */
@@ -137,11 +137,11 @@ zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts 
                            int max_rounds, zp_search_result *res, zp_robust_info *info, char *err,
                            size_t errlen);
 /* The schedule of parameters p checked on n fresh scenarios of b with workspaces from so (the
-   caller passes the tighter verification tolerance); nthreads 0: OpenMP's default. Scenario i is the point of
-   coordinates 2 U - 1, U the next b->d uniforms of gsl_rng_mt19937 seeded with
-   seed ^ ZP_ROBUST_STREAM_VERIFY (a stream apart from the set's and the adversary's). With sp
-   (may be NULL) every rank calls it alike, runs its share of the scenarios and ends with the
-   same c, bit for bit, as one process alone. ZP_OK, ZP_ERR_NOMEM or ZP_ERR_IO (the exchange). */
+   caller passes the tighter verification tolerance); nthreads 0: OpenMP's default. Scenario i is
+   the point of coordinates 2 U - 1, U the next b->d uniforms of gsl_rng_mt19937 seeded with seed ^
+   ZP_ROBUST_STREAM_VERIFY (a stream apart from the set's and the adversary's). With sp (may be
+   NULL) every rank calls it alike, runs its share of the scenarios and ends with the same c, bit
+   for bit, as one process alone. ZP_OK, ZP_ERR_NOMEM or ZP_ERR_IO (the exchange). */
 zp_status zp_robust_verify(const zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
                            const double *p, int n, unsigned long seed, int nthreads,
                            const zp_spread *sp, zp_robust_check *c);

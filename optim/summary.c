@@ -1,4 +1,4 @@
-/* summary.json of the search (CLI.md "The search's summary.json"): the answer, its
+/* summary.json of the search (docs/commands.md "The search's summary.json"): the answer, its
    verification, the baseline, robustness and the evidence of convergence. */
 #include <math.h>
 
@@ -142,7 +142,7 @@ void zp_summary_headroom_json(FILE *f, const zp_headroom *h) {
     fputs("]}", f);
 }
 
-/* the robust search's key (CLI.md): its scenarios, and the answer on fresh ones */
+/* the robust search's key (docs/commands.md): its scenarios, and the answer on fresh ones */
 static void json_scenarios(FILE *f, const zp_report *r) {
     const zp_robust_check *c = r->check;
     fprintf(f, ",\n  \"robust\": {\"scenarios\": %d, \"corners\": %d, \"added\": %d, "

@@ -1,5 +1,5 @@
-/* The grid of a design study (sweep.h): --vary specs checked against CONFIG.md's numeric keys,
-   point values, and each point's scene text with the varied lines rewritten. */
+/* The grid of a design study (sweep.h): --vary specs checked against docs/scene-file.md's numeric
+   keys, point values, and each point's scene text with the varied lines rewritten. */
 #include "sweep.h"
 
 #include <ctype.h>
@@ -11,9 +11,10 @@
 
 #include "scene_read.h"
 
-#define TEXT -1 /* a key CONFIG.md knows whose value is not a number */
+#define TEXT -1 /* a key docs/scene-file.md knows whose value is not a number */
 
-/* every key of CONFIG.md, and how a study varies it; the reader stays the judge of values */
+/* every key of docs/scene-file.md, and how a study varies it; the reader stays the judge of values
+ */
 static const struct {
     const char *sec, *key;
     int kind;         /* zp_vary_kind, or TEXT */

@@ -1,5 +1,5 @@
-/* A design study's grid (CLI.md `zipopt sweep`): the --vary specs, the points, and each point's
-   scene as text, so that the reader checks every point by every CONFIG.md rule. */
+/* A design study's grid (docs/commands.md `zipopt sweep`): the --vary specs, the points, and each
+   point's scene as text, so that the reader checks every point by every docs/scene-file.md rule. */
 #ifndef ZP_SWEEP_H
 #define ZP_SWEEP_H
 
@@ -33,8 +33,8 @@ typedef struct zp_sweep {
     zp_study_kind kind;
 } zp_sweep;
 
-/* Parses "SECTION.KEY=A:B:N" into v: the key must be one CONFIG.md lists as numeric, A <= B
-   finite, N >= 1 (and for a whole-number key every value whole). 0, or -1 with why. */
+/* Parses "SECTION.KEY=A:B:N" into v: the key must be one docs/scene-file.md lists as numeric, A <=
+   B finite, N >= 1 (and for a whole-number key every value whole). 0, or -1 with why. */
 int zp_sweep_vary_parse(const char *text, zp_sweep_vary *v, char *why, size_t whylen);
 /* Adds v to s (no key twice, at most ZP_SWEEP_MAX_VARY, at most ZP_SWEEP_MAX_POINTS points
    in all); 0, or -1 with why. */

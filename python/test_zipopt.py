@@ -125,7 +125,7 @@ class Simulate(unittest.TestCase):
         self.assertEqual(list(r.crossings["x"]), [60.0, 100.0])
 
     def test_energy_audit_with_drag_and_friction(self):
-        # seed_real: drag and rolling take out ~23 kJ, booked by the audit (MODEL.md)
+        # seed_real: drag and rolling take out ~23 kJ, booked by the audit (docs/model.md)
         r = zipopt.simulate(os.path.join(SRC, "config", "seed_real.ini"), forces=[80, 500, 500])
         self.assertEqual(r.outcome, "finished")
         self.assertGreater(r.w_drag, 1e4)

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""`zipopt bench trade --json` (CLI.md: one JSON object on stdout): the documented keys; each
+"""`zipopt bench trade --json` (docs/commands.md: one JSON object on stdout): the documented keys; each
 run's time error recomputed from its time and the reference's; the fastest configurations
 found again by a brute-force loop over the runs; nothing but the object on stdout."""
 import json

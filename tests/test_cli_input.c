@@ -1,6 +1,7 @@
-/* The zipopt binary on bad input (CLI.md, CONFIG.md): every command exits 2, names the file,
-   the line and the key on stderr, and leaves the output folder untouched; `zipopt check`
-   accepts every scene in config/ and reports the seed course's kinks where MODEL.md puts them. */
+/* The zipopt binary on bad input (docs/commands.md, docs/scene-file.md): every command exits 2,
+   names the file, the line and the key on stderr, and leaves the output folder untouched; `zipopt
+   check` accepts every scene in config/ and reports the seed course's kinks where docs/model.md
+   puts them. */
 #include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -165,7 +166,7 @@ static void test_configs(void) {
     }
     CHECK(n >= 5); /* seed, flat, straight, smooth, valley */
 
-    /* MODEL.md: the seed course is continuous with kinks at x = 60 (y = 10) and 100 (y = 6) */
+    /* docs/model.md: the seed course is continuous with kinks at x = 60 (y = 10) and 100 (y = 6) */
     char args[2048];
     snprintf(args, sizeof args, "check '%s/seed.ini'", dir);
     CHECK(run(args) == 0);
@@ -174,7 +175,7 @@ static void test_configs(void) {
     CHECK(k1 && strstr(k1, "kink") && strstr(k1, "kink") < k2);
     CHECK(k2 && strstr(k2, "kink"));
     CHECK(strstr(out, "link 3: length 5 m, mass 2 kg") != NULL);
-    /* a uniform rod: I = m l^2 / 12 (MODEL.md), printed to 6 significant digits */
+    /* a uniform rod: I = m l^2 / 12 (docs/model.md), printed to 6 significant digits */
     const char *l1 = strstr(out, "link 1: length 5 m, mass 15 kg, inertia ");
     double inertia = 0;
     CHECK(l1 &&
@@ -203,7 +204,7 @@ static void expect(const char *args, int status, const char *want) {
     }
 }
 
-/* getopt_long's forms (CLI.md): --name=value, `--`, and one message per mistake */
+/* getopt_long's forms (docs/commands.md): --name=value, `--`, and one message per mistake */
 static void test_options(const char *scene) {
     char args[4096], dir[1024], path[1100];
     snprintf(dir, sizeof dir, "%s/eq", tmp);
@@ -290,7 +291,7 @@ static void test_json(void) {
     snprintf(args, sizeof args, "check '%s/config/seed.ini' --json", ZP_SOURCE_DIR);
     expect(args, 0, NULL);
     write_file(json, out);
-    /* MODEL.md: the seed course's kinks at x = 60 (y = 10) and 100 (y = 6) */
+    /* docs/model.md: the seed course's kinks at x = 60 (y = 10) and 100 (y = 6) */
     snprintf(cmd, sizeof cmd,
              "python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); "
              "b=d[\"boundaries\"]; assert [(x[\"x\"], x[\"y\"], x[\"kink\"]) for x in b] == "
@@ -318,7 +319,8 @@ static void test_json(void) {
 }
 
 /* `check` shows slopes as numbers (x/5: f' = 0.2, f'' = 0), every key it added with the value
-   taken (CONFIG.md's defaults), and warns on stderr about a force the search could not pick */
+   taken (docs/scene-file.md's defaults), and warns on stderr about a force the search could not
+   pick */
 static void test_check_shows(void) {
     char text[1024], path[1024], args[2048];
     snprintf(text, sizeof text, "%s[drive]\nforces = 600\n[solver]\natol = 1e-9\n", valid);

@@ -1,4 +1,4 @@
-/* `zipopt SCENE.ini` as a user runs it (CLI.md): the three files and the trajectory
+/* `zipopt SCENE.ini` as a user runs it (docs/commands.md): the three files and the trajectory
    written, the schedule file round-trips through `simulate --schedule` to the same finish
    time, Ctrl-C writes the best so far marked interrupted, bad options exit 2 writing nothing,
    an answer that does not hold with [solver] is not reported found (exit 3).

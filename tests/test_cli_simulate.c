@@ -1,5 +1,5 @@
-/* `zipopt simulate` as a user runs it (CLI.md): every contract key in valid JSON, the files
-   written whole, samples at the requested times, a schedule file laid over the scene, and
+/* `zipopt simulate` as a user runs it (docs/commands.md): every contract key in valid JSON, the
+   files written whole, samples at the requested times, a schedule file laid over the scene, and
    exit 1 with nothing written when the numerics fail. The JSON is checked by Python's parser,
    the numbers against the library run in this process. */
 #include <stdio.h>
@@ -19,7 +19,7 @@ int main(void) {
     char cmd[2048], dir[] = "/tmp/zp_cli_simXXXXXX";
     CHECK(mkdtemp(dir) != NULL);
 
-    /* every key of CLI.md in one valid JSON object */
+    /* every key of docs/commands.md in one valid JSON object */
     snprintf(cmd, sizeof cmd,
              "%s simulate %s/config/seed.ini --json --sample-times 1,2.5 --out %s/a | "
              "python3 -c 'import json,sys; d=json.load(sys.stdin); "

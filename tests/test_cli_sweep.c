@@ -1,5 +1,5 @@
-/* `zipopt sweep` as a user runs it (CLI.md): bad --vary exits 2 writing nothing; each point
-   is the same run as `zipopt simulate` (or the search `zipopt SCENE`) of a scene file written
+/* `zipopt sweep` as a user runs it (docs/commands.md): bad --vary exits 2 writing nothing; each
+   point is the same run as `zipopt simulate` (or the search `zipopt SCENE`) of a scene file written
    here by hand with that value; a study killed mid-way and resumed gives the same sweep.csv
    as one never stopped; a checkpoint of another study is refused; the schedule that survives
    across the grid survives each point's scene written by hand, run by `zipopt simulate`, also

@@ -1,4 +1,4 @@
-/* course.c: f, f', f'' of interpreted and compiled sections equal the closed forms of MODEL.md
+/* course.c: f, f', f'' of interpreted and compiled sections equal the closed forms of docs/model.md
    "Course" (seed) and hand-derived derivatives of every allowed function; the compiled code
    agrees with libmatheval on every scene in config/ and on random expressions; bad
    expressions are refused. */
@@ -43,7 +43,7 @@ static void test_seed_course(void) {
         check_track(zp_course_eval(c, 2, x), -pow(x / 10 - 12, 2) + 10, -(x / 10 - 12) / 5,
                     -1.0 / 50);
     }
-    /* MODEL.md: continuous at 60 (y = 10) and 100 (y = 6); slopes 0.6 -> -0.1 -> 0.4 */
+    /* docs/model.md: continuous at 60 (y = 10) and 100 (y = 6); slopes 0.6 -> -0.1 -> 0.4 */
     CHECK_NEAR(zp_course_eval(c, 0, 60).f, 10, round_off(10));
     CHECK_NEAR(zp_course_eval(c, 1, 60).f, 10, round_off(10));
     CHECK_NEAR(zp_course_eval(c, 1, 100).f, 6, round_off(6));
@@ -181,7 +181,7 @@ static void test_scenes_compiled(void) {
     }
 }
 
-/* a random expression in x of the CONFIG.md grammar, depth levels deep, appended to buf */
+/* a random expression in x of the docs/scene-file.md grammar, depth levels deep, appended to buf */
 static void random_expr(gsl_rng *r, int depth, char *buf, size_t len) {
     static const char *const funcs[] = {"sqrt", "exp",  "log",  "sin", "cos",
                                         "tan",  "sinh", "cosh", "tanh"};

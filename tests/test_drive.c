@@ -73,7 +73,8 @@ static void test_bad_text(void) {
 
 static void test_scene(void) {
     zp_scene sc;
-    zp_scene_seed(&sc); /* CONFIG.md's example: 100 N on each of 3 sections, box [0, 500] */
+    zp_scene_seed(
+        &sc); /* docs/scene-file.md's example: 100 N on each of 3 sections, box [0, 500] */
     zp_schedule s = zp_schedule_of_scene(&sc);
     CHECK(s.kind == ZP_SCHED_SECTIONS && s.np == 3);
     for (int k = 0; k < 3; k++) {

@@ -3,7 +3,7 @@
    error of the answer up to the tighter run's own error (triangle inequality), and it shrinks
    with the tolerance; a verdict is flagged sensitive exactly when it flips: bisection finds
    the survival threshold force separately at rtol 1e-4 and 1e-6, and a force between the two
-   thresholds dies at one tolerance and finishes at the other. The energy audit is MODEL.md's
+   thresholds dies at one tolerance and finishes at the other. The energy audit is docs/model.md's
    balance, drag and friction work included: a scene with every [physics] effect is not
    flagged at its own tolerances. */
 #include <math.h>
@@ -92,7 +92,7 @@ int main(void) {
     zp_estimate_run(m, &o, &in, &r, &e);
     CHECK(e.rtol == ZP_ESTIMATE_RTOL_MIN && e.atol == o.atol / ZP_ESTIMATE_FACTOR);
 
-    /* the energy audit (MODEL.md) of the answer: small at the default tolerances, flagged at
+    /* the energy audit (docs/model.md) of the answer: small at the default tolerances, flagged at
        the loosest the scene allows (rtol 1e-2, atol 1: a drift of 1 m or 1 rad per step) */
     for (int k = 0; k < m->nsec; k++) {
         force[k] = 10;
@@ -112,7 +112,7 @@ int main(void) {
     zp_model_free(m);
 
     /* seed_real (drag, rolling, arcs) with a push that finishes: drag and friction take out
-       about 23 kJ, which the audit books (MODEL.md), so its residual is small and unflagged */
+       about 23 kJ, which the audit books (docs/model.md), so its residual is small and unflagged */
     zp_diag d;
     zp_diag_init(&d);
     m = zp_scene_load(ZP_SOURCE_DIR "/config/seed_real.ini", &sc, &d) == ZP_OK

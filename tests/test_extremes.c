@@ -1,7 +1,7 @@
 /* The parameters at their extremes (forces 1e6 N and -1e4 N, damping 0..1e5, masses
    1e-3..1e4 kg, links 0.01..50 m, 1 and 8 links, rtol 1e-3..1e-13, a near-vertical section,
    a cusp-like kink). Every case ends, in bounded time, either in a finite, physically
-   plausible result (MODEL.md: the work-energy audit closes relative to the energies
+   plausible result (docs/model.md: the work-energy audit closes relative to the energies
    involved, dampers and impulses never add energy, angles and x within their bounds) or in
    a clean ZP_ERR_NUMERIC with a message. Stiff damping: BDF needs fewer rhs evaluations
    than Adams. */

@@ -1,4 +1,4 @@
-/* Rolling resistance's stick rule (MODEL.md) in both formulations and every method, against
+/* Rolling resistance's stick rule (docs/model.md) in both formulations and every method, against
    closed forms: a trolley with negligible links on an incline is held at t = 0 iff
    tan(alpha) <= mu, and otherwise slides with a = g (sin(alpha) - mu cos(alpha)); a backward
    push uphill stronger than friction rolls the trolley back past the start at t = 0 (it

@@ -1,4 +1,4 @@
-/* The kink impulse (MODEL.md "Section boundaries"): the result is fixed uniquely by two
+/* The kink impulse (docs/model.md "Section boundaries"): the result is fixed uniquely by two
    properties checked here independently of the formula: the entered constraint holds after
    (A v+ = 0) and the change is along the constraint normal (M (v+ - v-) = Lambda A^T).
    Also: kinetic energy never rises and its drop is what is reported; positions stay; slopes

@@ -95,7 +95,7 @@ static void check_seed(void) {
     zipopt_scene_free(b);
 }
 
-/* seed_real's drag and friction take out ~23 kJ: the audit books them (MODEL.md), so its
+/* seed_real's drag and friction take out ~23 kJ: the audit books them (docs/model.md), so its
    residual is the integration error, not their sum */
 static void check_audit_with_losses(void) {
     char err[4096];

@@ -1,4 +1,4 @@
-/* The output folder as a hostile or unlucky user meets it (CLI.md "Files"): links planted
+/* The output folder as a hostile or unlucky user meets it (docs/commands.md "Files"): links planted
    where zipopt writes are neither followed nor removed through, a scene file's name never
    climbs out of out/, a full disk or a failed rename leaves nothing of the run, two runs into
    one folder each commit whole, a signal leaves no temporary folder, each command keeps its

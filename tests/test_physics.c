@@ -1,4 +1,4 @@
-/* The optional effects of MODEL.md against independent expectations: the terminal speed of a
+/* The optional effects of docs/model.md against independent expectations: the terminal speed of a
    chain with drag on an incline, a trolley with rolling resistance (its acceleration, held at
    t = 0 when tan(alpha) <= mu), energy conserved through rounded kinks, the work-energy audit
    with every effect on, both formulations and lagrange's two paths agreeing with every effect
@@ -195,7 +195,7 @@ static void check_audit_all(int formulation) {
 }
 
 /* the seed with rolling and no push comes to rest in the valley after stops that turn round,
-   then is held and pulled free in turn by its swinging chain (MODEL.md's stick rule: a hold
+   then is held and pulled free in turn by its swinging chain (docs/model.md's stick rule: a hold
    ends the run only once the chain has settled) until t_max, never leaving the stretch where
    static friction can hold it, |f'| = |x/10 - 3| / 5 <= mu: an explicit stepper (which
    restarts at each event) and CVODE agree on how and where */
@@ -330,7 +330,8 @@ static void check_radius_does_not_fit(void) {
     for (int i = 0; m && i < m->narc; i++) {
         const zp_arc *a = &m->arc[i];
         int k = m->kink[i].left;
-        zp_track l = zp_course_eval(m->course, k, a->x1), r = zp_course_eval(m->course, k + 1, a->x2);
+        zp_track l = zp_course_eval(m->course, k, a->x1),
+                 r = zp_course_eval(m->course, k + 1, a->x2);
         zp_track al = zp_model_track(m, m->course, k, a->x1 + 1e-9);
         zp_track ar = zp_model_track(m, m->course, k + 1, a->x2 - 1e-9);
         CHECK_NEAR(al.f, l.f, 1e-8);

@@ -2,7 +2,7 @@
    asks for; the data drawn are the trajectory (centres of mass from state.c at each row, link
    ends one link length apart); a missing gnuplot still leaves data and scripts, a failing one
    leaves nothing; bad options exit 2 with nothing written; the landscape's points are what
-   independent single runs give, and on the seed show MODEL.md's non-monotone survival: a
+   independent single runs give, and on the seed show docs/model.md's non-monotone survival: a
    constant push of 5 N dies, 10 finishes, 15 dies, 20 and 25 finish, 30 dies. */
 #include <math.h>
 #include <stdio.h>

@@ -1,6 +1,7 @@
-/* scene.c: every rule of CONFIG.md on inline INI text. Each bad case must give ZP_ERR_INPUT and a
-   message "t.ini:LINE: [section] key:" at the line the case put it on; defaults are CONFIG.md's;
-   config/seed.ini and zp_scene_seed both equal CONFIG.md's example. */
+/* scene.c: every rule of docs/scene-file.md on inline INI text. Each bad case must give
+   ZP_ERR_INPUT and a message "t.ini:LINE: [section] key:" at the line the case put it on; defaults
+   are docs/scene-file.md's; config/seed.ini and zp_scene_seed both equal docs/scene-file.md's
+   example. */
 #include <stdio.h>
 #include <string.h>
 
@@ -349,7 +350,7 @@ static void test_defaults(void) {
     CHECK(zp_scene_load_string(minimal, "some/dir/minimal.scene.ini", &sc, &d) == ZP_OK);
     CHECK(!strcmp(sc.name, "minimal.scene"));
     CHECK(!strcmp(sc.path, "some/dir/minimal.scene.ini"));
-    CHECK_NEAR(sc.gravity, 9.81, 0); /* exactly CONFIG.md's default */
+    CHECK_NEAR(sc.gravity, 9.81, 0); /* exactly docs/scene-file.md's default */
     CHECK(sc.nsec == 1 && sc.x_end[0] == 10 && !strcmp(sc.expr[0], "x/2"));
     CHECK(sc.line_method == 0 && sc.line_formulation == 0);
     CHECK(sc.nlink == 2);
@@ -364,7 +365,7 @@ static void test_defaults(void) {
     CHECK(!strcmp(sc.search_method, "gsl-rk8pd") && sc.search_rtol == 1e-5);
 }
 
-/* CONFIG.md's example, written out here from the spec */
+/* docs/scene-file.md's example, written out here from the spec */
 static void check_is_config_example(const zp_scene *sc) {
     CHECK(!strcmp(sc->name, "seed") && sc->gravity == 9.81 && sc->x_start == 0);
     CHECK(sc->nsec == 3 && sc->x_end[0] == 60 && sc->x_end[1] == 100 && sc->x_end[2] == 140);
@@ -610,7 +611,8 @@ static void test_expr_names(void) {
 
 /* the model's course checks: continuity states its tolerance; a NaN gap and a pole are
    refused, also a pole of residue 1e-9 or 1e-15 (which used to pass: the run "died" at it with
-   a 1443 J energy residual) and 1e-12/(x - p)^2; a smooth step whose f'' expression overflows is accepted */
+   a 1443 J energy residual) and 1e-12/(x - p)^2; a smooth step whose f'' expression overflows is
+   accepted */
 static void test_course_probing(void) {
     zp_scene sc;
     zp_diag d;

@@ -1,4 +1,4 @@
-/* Whole runs against independent expectations (MODEL.md "Checks"):
+/* Whole runs against independent expectations (docs/model.md "Checks"):
    closed forms (a chain hanging along the effective gravity on a straight incline, for both
    drive directions; the small-oscillation frequency of a rod on a free trolley), energy
    conservation and the work-energy audit shrinking with the tolerance, dampers never adding
@@ -228,9 +228,10 @@ static void check_rollback(void) {
 /* slopes -1 then 3: 1 + s1 s2 < 0, so the impulse sends a trolley back out: trapped */
 static void check_trapped(void) {
     zp_scene sc;
-    zp_model *m = tu_model("[course]\nx_start = 0\nsection = 10 : -x\nsection = 30 : 3*(x - 10) - 10\n"
-                           "[trolley]\nmass = 30\n[body]\nlengths = 0.5\nmasses = 0.1\n",
-                           &sc);
+    zp_model *m =
+        tu_model("[course]\nx_start = 0\nsection = 10 : -x\nsection = 30 : 3*(x - 10) - 10\n"
+                 "[trolley]\nmass = 30\n[body]\nlengths = 0.5\nmasses = 0.1\n",
+                 &sc);
     zp_sim_opts o = tu_opts(&sc, 1e-8);
     zp_schedule in_sched = tu_sched(m, sc.forces);
     zp_input in = {.sched = &in_sched};

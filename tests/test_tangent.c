@@ -1,4 +1,4 @@
-/* Rounded kinks (MODEL.md "Optional effects", kink_radius): f'' jumps where an arc meets its
+/* Rounded kinks (docs/model.md "Optional effects", kink_radius): f'' jumps where an arc meets its
    sections, so the simulator stops and restarts there (events.c tangent roots) and reads one
    piece of the course per integration (model.c zp_model_track_piece). Independent expectation:
    the converged finish time, where two method families (GSL's rk8pd and CVODE's BDF at rtol

@@ -1,5 +1,6 @@
-/* What the commands share (CLI.md): options by getopt_long with one message per mistake, the
-   scene operand, the output folder, number lists, the usage text with the registries. */
+/* What the commands share (docs/commands.md): options by getopt_long with one message per
+   mistake, the scene operand, the output folder, number lists, the usage text with the
+   registries. */
 #include "cli.h"
 
 #include <errno.h>

@@ -47,8 +47,8 @@ int zp_cli_whole(const char *cmd, const char *opt, const char *text, unsigned lo
 /* A time in seconds > 0 for opt (--max-time); 0, or -1 with the one message. */
 int zp_cli_seconds(const char *cmd, const char *opt, const char *text, double *out);
 /* Begins the command's one transaction (out_file.h) in --out DIR itself when out is given,
-   else in out/<scene name>/<folder> (CLI.md "Files"); says why on stderr for `zipopt <cmd>`
-   and returns -1 on failure. */
+   else in out/<scene name>/<folder> (docs/commands.md "Files"); says why on stderr for `zipopt
+   <cmd>` and returns -1 on failure. */
 int zp_cli_out_begin(zp_tx *t, const char *cmd, const char *folder, const char *out,
                      const zp_scene *sc);
 /* Commits t (then t->dir and t->written say what was written), or says why and "nothing was

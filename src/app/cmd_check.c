@@ -1,5 +1,6 @@
-/* `zipopt check SCENE.ini` (CLI.md): validates a scene (CONFIG.md) as every command would and
-   prints what it describes: course sections with exact derivatives, boundaries, body, settings. */
+/* `zipopt check SCENE.ini` (docs/commands.md): validates a scene (docs/scene-file.md) as every
+   command would and prints what it describes: course sections with exact derivatives, boundaries,
+   body, settings. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>

@@ -1,5 +1,5 @@
 /* `zipopt simulate`: one schedule through the simulator; results to stdout, files to the
-   output folder (CLI.md). */
+   output folder (docs/commands.md). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

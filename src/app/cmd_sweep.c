@@ -1,5 +1,6 @@
-/* `zipopt sweep`: a design study over a grid of scene values (CLI.md). Under mpirun the points
-   are spread over the ranks; rank 0 checkpoints each row as it comes and writes the outputs. */
+/* `zipopt sweep`: a design study over a grid of scene values (docs/commands.md). Under mpirun the
+   points are spread over the ranks; rank 0 checkpoints each row as it comes and writes the outputs.
+ */
 #include <errno.h>
 #include <limits.h>
 #include <signal.h>

@@ -1,5 +1,5 @@
-/* What a design study shows (CLI.md `zipopt sweep`): the summary sentence, the figure's gnuplot
-   script (a line for one varied key, a heat map for two) and summary.json. Writers only. */
+/* What a design study shows (docs/commands.md `zipopt sweep`): the summary sentence, the figure's
+   gnuplot script (a line for one varied key, a heat map for two) and summary.json. Writers only. */
 #ifndef ZP_SWEEP_OUT_H
 #define ZP_SWEEP_OUT_H
 

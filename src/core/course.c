@@ -1,6 +1,6 @@
-/* The course y = f(x) of MODEL.md "Course": each section's f(x) text (CONFIG.md [course])
-   checked and interpreted by libmatheval, and compiled to native code (expr.c, jit.c) for the
-   simulations, with f' and f'' as exact symbolic derivatives in both. */
+/* The course y = f(x) of docs/model.md "Course": each section's f(x) text (docs/scene-file.md
+   [course]) checked and interpreted by libmatheval, and compiled to native code (expr.c, jit.c) for
+   the simulations, with f' and f'' as exact symbolic derivatives in both. */
 #include "course.h"
 
 #include <assert.h>
@@ -52,8 +52,8 @@ struct zp_course {
     "expected an expression in x with + - * / ^ ( ) and sqrt exp log sin cos tan sinh cosh "       \
     "tanh"
 
-/* CONFIG.md's functions; libmatheval knows more (abs, step, pi, ...) that the contract does
-   not promise, so they are refused rather than silently accepted */
+/* docs/scene-file.md's functions; libmatheval knows more (abs, step, pi, ...) that the contract
+   does not promise, so they are refused rather than silently accepted */
 static const char *const allowed_names[] = {"x",   "sqrt", "exp",  "log",  "sin",
                                             "cos", "tan",  "sinh", "cosh", "tanh"};
 
@@ -113,7 +113,7 @@ static const char *skip_operand(const char *p) {
     return *q == '(' ? skip_group(q) : p;
 }
 
-/* what libmatheval's parser does not catch: names outside CONFIG.md's list, stray
+/* what libmatheval's parser does not catch: names outside docs/scene-file.md's list, stray
    characters, and a^b^c, which libmatheval reads as (a^b)^c against the usual a^(b^c) */
 static int scan_text(const char *text, char *err, size_t errlen) {
     const char *p = skip_space(text);

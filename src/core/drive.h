@@ -1,6 +1,6 @@
-/* The drive schedule (CONFIG.md [drive]): which force the trolley's drive applies at time t,
-   position x, on section sec; its parameters and bounds as the search sees them; its text.
-   A new kind of schedule is a new zp_sched_kind handled in drive.c and nowhere else. */
+/* The drive schedule (docs/scene-file.md [drive]): which force the trolley's drive applies at time
+   t, position x, on section sec; its parameters and bounds as the search sees them; its text. A new
+   kind of schedule is a new zp_sched_kind handled in drive.c and nowhere else. */
 #ifndef ZP_DRIVE_H
 #define ZP_DRIVE_H
 
@@ -8,7 +8,7 @@
 
 #include "scene.h"
 
-/* The way the force points (CONFIG.md [drive] direction). */
+/* The way the force points (docs/scene-file.md [drive] direction). */
 typedef enum { ZP_DRIVE_HORIZONTAL, ZP_DRIVE_TANGENT, ZP_DRIVE_COUNT } zp_drive_dir;
 
 typedef enum {

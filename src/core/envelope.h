@@ -1,5 +1,5 @@
-/* A g-duration envelope (CONFIG.md [limits] g_envelope): how long at a time felt g stays above
-   each level, from a run's felt-g history with every crossing of a level located. */
+/* A g-duration envelope (docs/scene-file.md [limits] g_envelope): how long at a time felt g stays
+   above each level, from a run's felt-g history with every crossing of a level located. */
 #ifndef ZP_ENVELOPE_H
 #define ZP_ENVELOPE_H
 

@@ -1,4 +1,4 @@
-/* Root functions and their meaning (MODEL.md "Outcomes", "Section boundaries"). The extrema
+/* Root functions and their meaning (docs/model.md "Outcomes", "Section boundaries"). The extrema
    roots (w_i = 0) make the largest |phi_i| exact rather than sampled at steps. */
 #include "events.h"
 

@@ -1,4 +1,4 @@
-/* The root functions of a run (MODEL.md "Outcomes"), one layout for every formulation and
+/* The root functions of a run (docs/model.md "Outcomes"), one layout for every formulation and
    method: section ends, death per joint, and the extrema of each relative joint angle. */
 #ifndef ZP_EVENTS_H
 #define ZP_EVENTS_H

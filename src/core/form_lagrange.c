@@ -1,6 +1,6 @@
 /* Formulation "lagrange": minimal coordinates q = (x, theta_1..N) with y = f(x) substituted.
  *
- * Body points (MODEL.md): trolley P0 = (x, f); link i's centre c_i = P0 + sum_{j<i} l_j e_j
+ * Body points (docs/model.md): trolley P0 = (x, f); link i's centre c_i = P0 + sum_{j<i} l_j e_j
  * + d_i e_i with e = (sin th, -cos th), n = de/dth = (cos th, sin th). With
  *   B_j  = m_j d_j + l_j sum_{i>j} m_i                          (kg m)
  *   C_jk = l_j B_k (j < k),  C_jj = m_j d_j^2 + I_j + l_j^2 sum_{i>j} m_i   (kg m^2)
@@ -14,7 +14,7 @@
  * (w_j = th_j' - th_{j-1}' the joint rates; F the drive force vector). M is symmetric
  * positive definite: Cholesky. Loads come from the accelerations: the normal force from
  * the whole system's momentum balance, the joint reactions from each link's, bottom up.
- * Optional effects (MODEL.md): drag F_b at each centre of mass adds the generalized forces
+ * Optional effects (docs/model.md): drag F_b at each centre of mass adds the generalized forces
  *   Q_x = sum_b F_b . (1, f'),  Q_j = n_j . (d_j F_j + l_j sum_{i>j} F_i);
  * rolling resistance -mu |N| sgn(s') along the tangent adds Q_x = -mu |N| sgn(x') |(1, f')| in
  * the x row only, and N is affine in q'': with u = M^-1 e_x, q'' = q''_0 + Q_x u and

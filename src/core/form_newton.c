@@ -7,7 +7,7 @@
  *   trolley   m0 a0 = F + (Nx, Ny) - R_1 + m0 g
  *   link i    m_i a_i = R_i - R_{i+1} + m_i g                        (R_{N+1} = 0)
  *             I_i th_i'' = -d_i (c R_i,x + s R_i,y) - (l_i - d_i)(c R_{i+1},x + s R_{i+1},y)
- *                          - c_i w_i + c_{i+1} w_{i+1}   (about c_i; MODEL.md dampers, w_i
+ *                          - c_i w_i + c_{i+1} w_{i+1}   (about c_i; docs/model.md dampers, w_i
  *                          the joint rates, c, s of th_i)
  *   joint i   J_i = (end of the parent: P0, or c_{i-1} + (l_{i-1} - d_{i-1}) e_{i-1})
  *                   - (c_i - d_i e_i) = 0, at acceleration level with e'' = th'' n - th'^2 e
@@ -21,7 +21,7 @@
  * BDF; the default method is Adams, so the stabilization lives in the equations and serves
  * every method. A kink restart goes through from_chain, which puts the state back exactly on
  * the constraints.
- * Optional effects (MODEL.md): drag at each centre of mass adds to that body's momentum row;
+ * Optional effects (docs/model.md): drag at each centre of mass adds to that body's momentum row;
  * rolling resistance replaces the frictionless row by (C.t) = -mu sgn(X') |C.n| for the course
  * force C = (Nx, Ny), t and n the unit tangent and normal, with the sign of C.n taken + and
  * the system solved again with - when that was wrong; held at rest, the row is a0x = 0.

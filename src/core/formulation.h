@@ -1,11 +1,11 @@
-/* The formulation interface: one way of writing the equations of motion of MODEL.md.
+/* The formulation interface: one way of writing the equations of motion of docs/model.md.
    State contract shared by all formulations (so events are written once):
      y[0]              trolley x (m); y[(n - nwork) / 2] its rate x' (m/s)
      y[0 .. npos)      positions, npos = (n - nwork) / 2; y[npos + i] is the rate of y[i]
      y[n - nwork ..]   the model's nwork work integrals (J), in zp_work order: drive work and
                        damper loss, and with drag or rolling resistance also drag and friction
                        work taken out
-   everything else is the formulation's own; to_chain/from_chain convert to MODEL.md's q.
+   everything else is the formulation's own; to_chain/from_chain convert to docs/model.md's q.
    Each formulation picks, once in create, equations holding only the terms the model names. */
 #ifndef ZP_FORMULATION_H
 #define ZP_FORMULATION_H

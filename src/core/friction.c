@@ -1,4 +1,4 @@
-/* MODEL.md "Rolling resistance": the stick test at rest (the simulator locates each stop,
+/* docs/model.md "Rolling resistance": the stick test at rest (the simulator locates each stop,
    x' = 0, as a root and applies it there); docs/friction.md. */
 #include "friction.h"
 

@@ -1,4 +1,4 @@
-/* MODEL.md's stick rule for rolling resistance ([physics] rolling): at rest the tangential
+/* docs/model.md's stick rule for rolling resistance ([physics] rolling): at rest the tangential
    force F_t that keeps the trolley still, against mu |N|; a held trolley's chain settling. */
 #ifndef ZP_FRICTION_H
 #define ZP_FRICTION_H
@@ -6,7 +6,7 @@
 #include "formulation.h"
 
 /* a held trolley ends the run once its chain's motion energy is below this share of the
-   scene's energy scale (MODEL.md) */
+   scene's energy scale (docs/model.md) */
 #define ZP_FRICTION_SETTLED 1e-9
 
 typedef struct zp_friction_hold {

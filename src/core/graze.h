@@ -1,4 +1,4 @@
-/* A grazing death (MODEL.md "Outcomes"): a joint that passes the death angle and comes back
+/* A grazing death (docs/model.md "Outcomes"): a joint that passes the death angle and comes back
    inside one integrator step leaves the death root's sign unchanged at both step ends, but its
    located extremum shows it. */
 #ifndef ZP_GRAZE_H

@@ -1,4 +1,4 @@
-/* The perfectly plastic, frictionless kink impulse of MODEL.md, in chain coordinates
+/* The perfectly plastic, frictionless kink impulse of docs/model.md, in chain coordinates
    q = (x, y, theta): the only place that changes velocities discontinuously. */
 #include "impulse.h"
 

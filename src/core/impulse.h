@@ -1,11 +1,11 @@
-/* The kink impulse of MODEL.md "Section boundaries", in chain coordinates. */
+/* The kink impulse of docs/model.md "Section boundaries", in chain coordinates. */
 #ifndef ZP_IMPULSE_H
 #define ZP_IMPULSE_H
 
 #include "state.h"
 
 typedef struct zp_impulse {
-    double lambda;      /* N s, Lambda of MODEL.md (along (-f', 1, 0..)) */
+    double lambda;      /* N s, Lambda of docs/model.md (along (-f', 1, 0..)) */
     double energy_lost; /* J, kinetic energy before minus after */
 } zp_impulse;
 

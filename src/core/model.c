@@ -1,4 +1,4 @@
-/* zp_model_build: scene (file units) -> model (SI, radians, derived constants); MODEL.md
+/* zp_model_build: scene (file units) -> model (SI, radians, derived constants); docs/model.md
    "Course" continuity and kinks, "Bodies" rods. */
 #include "model.h"
 

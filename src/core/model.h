@@ -1,4 +1,4 @@
-/* The physics of MODEL.md built once from a scene: SI units, radians, derived constants.
+/* The physics of docs/model.md built once from a scene: SI units, radians, derived constants.
    Nothing writes a model after zp_model_build; every run reads it through a const pointer. */
 #ifndef ZP_MODEL_H
 #define ZP_MODEL_H
@@ -15,7 +15,7 @@ typedef struct zp_kink {
     double slope_out; /* f' of the right section at the boundary */
 } zp_kink;
 
-/* A rounded kink (MODEL.md "Optional effects"): the circle of radius r tangent to the section
+/* A rounded kink (docs/model.md "Optional effects"): the circle of radius r tangent to the section
    on the left at x1 and to the one on the right at x2, x1 < b < x2. */
 typedef struct zp_arc {
     int kink;        /* index into zp_model.kink */
@@ -65,7 +65,7 @@ typedef struct zp_model {
     zp_arc arc[ZP_MAX_SECTIONS];
     int arc_at[ZP_MAX_SECTIONS + 1]; /* index of the arc around boundary xb[k], or -1 */
 
-    /* derived for the equations of motion (MODEL.md chain coordinates) */
+    /* derived for the equations of motion (docs/model.md chain coordinates) */
     double mtot;                                 /* kg, trolley + links */
     double B[ZP_MAX_LINKS];                      /* kg m, m_j d_j + l_j sum_{i>j} m_i */
     double C[ZP_MAX_LINKS][ZP_MAX_LINKS];        /* kg m^2, coefficient of cos(th_j - th_k) */

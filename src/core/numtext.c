@@ -1,4 +1,4 @@
-/* CONFIG.md numbers and lists: strict decimals, so that a typo is an error, not a zero. */
+/* docs/scene-file.md numbers and lists: strict decimals, so that a typo is an error, not a zero. */
 #include "numtext.h"
 
 #include <ctype.h>

@@ -1,5 +1,5 @@
-/* Numbers and number lists as CONFIG.md writes them (finite decimals, comma-separated), read
-   alike by the scene reader, the drive schedule and the command line. */
+/* Numbers and number lists as docs/scene-file.md writes them (finite decimals, comma-separated),
+   read alike by the scene reader, the drive schedule and the command line. */
 #ifndef ZP_NUMTEXT_H
 #define ZP_NUMTEXT_H
 

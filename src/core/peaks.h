@@ -1,5 +1,5 @@
-/* Exact load peaks (MODEL.md forces; CONFIG.md [limits]): every local maximum of each load
-   history (a link's felt acceleration, a joint's force) that can exceed that history's peak so
+/* Exact load peaks (docs/model.md forces; docs/scene-file.md [limits]): every local maximum of each
+   load history (a link's felt acceleration, a joint's force) that can exceed that history's peak so
    far, wherever it lies in an integrator step, located by Brent's method on the dense output. */
 #ifndef ZP_PEAKS_H
 #define ZP_PEAKS_H

@@ -1,4 +1,4 @@
-/* Uncertainty and limits (MODEL.md): a scenario is the nominal model with its forces, masses,
+/* Uncertainty and limits (docs/model.md): a scenario is the nominal model with its forces, masses,
    lengths, damping and start angles changed, derived from the built model without re-parsing
    or re-compiling the course; [limits] are judged on a run's result. */
 #ifndef ZP_SCENARIO_H
@@ -20,10 +20,10 @@ void zp_scenario_nominal(zp_scenario *s);
 /* out = nom with s's masses, lengths and damping. out shares nom's course (borrowed): it
    lives no longer than nom and is never passed to zp_model_free. */
 void zp_scenario_model(const zp_model *nom, const zp_scenario *s, zp_model *out);
-/* The start of s: nominal (the MODEL.md start, zp_state_start) with each of the nlink links
+/* The start of s: nominal (the docs/model.md start, zp_state_start) with each of the nlink links
    turned to s->theta, at rest. */
 void zp_scenario_start(const zp_chain *nominal, int nlink, const zp_scenario *s, zp_chain *c);
-/* [limits] (CONFIG.md): each 0 when off. */
+/* [limits] (docs/scene-file.md): each 0 when off. */
 typedef enum {
     ZP_LIMIT_G,
     ZP_LIMIT_JOINT,

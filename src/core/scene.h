@@ -1,5 +1,5 @@
-/* The scene description (CONFIG.md): plain data in the file's units, with the line of each key.
-   The reader (io/scene_read.h) fills it; the model is built from it. */
+/* The scene description (docs/scene-file.md): plain data in the file's units, with the line of each
+   key. The reader (io/scene_read.h) fills it; the model is built from it. */
 #ifndef ZP_SCENE_H
 #define ZP_SCENE_H
 
@@ -14,7 +14,7 @@
 #define ZP_SCENE_EVALS_PER_SECTION 5000 /* the search's default budget, per section */
 #define ZP_MAX_DRIVE_PARAMS (4 * ZP_MAX_SECTIONS) /* parameters of a drive schedule */
 
-/* Bounds the reader holds [solver] to (CONFIG.md), each also as text for its messages.
+/* Bounds the reader holds [solver] to (docs/scene-file.md), each also as text for its messages.
    Tolerances: tighter than 1e-14 (rtol) is below round-off for every method; looser than
    1e-2 answers nothing worth the name; atol in m, m/s, rad. t_max: CVODE sizes its first step
    from it (a first step of ~1e50 s fails at t = 0); a ride of 11 days is past any course.
@@ -78,10 +78,11 @@ typedef struct zp_scene {
     unsigned long seed;
     int objective_slowest;  /* [optimize] objective = slowest: the slowest finish over the held
                                scenarios is minimised, not the nominal rider's */
-    char search_method[32]; /* integrator of the search's runs (the answer is rerun with [solver]) */
+    char
+        search_method[32]; /* integrator of the search's runs (the answer is rerun with [solver]) */
     double search_rtol;     /* their rtol; atol = rtol / 100 */
 
-    /* [limits] (CONFIG.md): each 0 when absent, meaning off */
+    /* [limits] (docs/scene-file.md): each 0 when absent, meaning off */
     double max_g;             /* g, peak felt acceleration |a - g| / g at any link's centre */
     double max_joint_force;   /* N, peak joint reaction at any joint */
     double max_arrival_speed; /* km/h, trolley speed at x_end */
@@ -91,7 +92,7 @@ typedef struct zp_scene {
     double env_g[8], env_s[8]; /* g, s: felt g above env_g[l] for at most env_s[l] at a time */
     unsigned g_links;         /* bit i: link i + 1's felt g is judged (max_g, g_envelope); 0: all */
 
-    /* [robust] (CONFIG.md): ranges in % of nominal; {100, 100} and 0 when absent */
+    /* [robust] (docs/scene-file.md): ranges in % of nominal; {100, 100} and 0 when absent */
     int robust;                   /* 1 when the scene has a [robust] section */
     double force_error;           /* %, each section's force * (1 + u), |u| <= p / 100 */
     double mass_range[2];         /* % of the nominal link masses, all links together */
@@ -107,7 +108,7 @@ typedef struct zp_scene {
     double safety_factor;         /* the box held is the stated one widened this much about the
                                      nominal (default 1); reports stay against the stated box */
 
-    /* [physics] (CONFIG.md, MODEL.md "Optional effects"): all off when absent */
+    /* [physics] (docs/scene-file.md, docs/model.md "Optional effects"): all off when absent */
     int ndrag;                             /* 0: no drag; else nlink + 1 */
     double drag_area[ZP_MAX_LINKS + 1];    /* m^2, Cd*A of the trolley, then each link */
     double air_density;                    /* kg/m^3 (default 1.225) */

@@ -1,4 +1,4 @@
-/* One run of MODEL.md: advance to the next event or output time, classify the event, apply the
+/* One run of docs/model.md: advance to the next event or output time, classify the event, apply the
    kink impulse and restart the integrator; fills zp_result. Formulation- and method-agnostic. */
 #include "sim.h"
 
@@ -547,7 +547,7 @@ static zp_status fail(zp_sim *s, zp_result *r, double t, const char *why) {
         snprintf(r->message, sizeof r->message,
                  "rolling resistance has no consistent normal force at t = %.9g s, x = %.9g m "
                  "(Painleve's paradox: mu = %g is too large for this trolley and chain; the rigid "
-                 "model of MODEL.md has no motion there)",
+                 "model of docs/model.md has no motion there)",
                  s->inconsistent_t, s->inconsistent_x, s->m->mu);
         return ZP_ERR_NUMERIC;
     }
@@ -570,7 +570,7 @@ static void snap_rest(zp_sim *s) {
     s->form->from_chain(s->m, &rest, wk, s->y);
 }
 
-/* a hold that lasted: stalled, held_by_friction, at the time the hold began (MODEL.md) */
+/* a hold that lasted: stalled, held_by_friction, at the time the hold began (docs/model.md) */
 static void finish_held(zp_sim *s, zp_result *r, double t) {
     finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_HELD_BY_FRICTION);
     r->time = s->hold_t;
@@ -588,7 +588,7 @@ static int hold_now(zp_sim *s, double t, zp_friction_hold *h) {
                                h);
 }
 
-/* MODEL.md's stick rule for the trolley at rest at t (the start, a stop, a jump of the drive
+/* docs/model.md's stick rule for the trolley at rest at t (the start, a stop, a jump of the drive
    while held): held (|F_t| <= mu |N|), it stays while the chain swings on (s->stuck) and the
    run ends at once when the chain has settled; otherwise it slides off toward -F_t, *dir.
    Returns 1 when the run ended (r filled), -1 when it failed (r's message: the forces cannot

@@ -1,4 +1,4 @@
-/* One simulation: a schedule of forces in, an outcome out (MODEL.md "Outcomes").
+/* One simulation: a schedule of forces in, an outcome out (docs/model.md "Outcomes").
    zp_sim is the workspace, created once per (model, options) and reused for every run. */
 #ifndef ZP_SIM_H
 #define ZP_SIM_H
@@ -44,7 +44,7 @@ typedef struct zp_input {
     const zp_schedule *sched; /* borrowed; the drive force at (t, x, section) */
     const double *force_scale; /* borrowed, may be NULL: a factor on each section's force (a
                                   scenario's force error) */
-    const zp_chain *start; /* borrowed; NULL: the MODEL.md start. Its x must lie in section 1
+    const zp_chain *start; /* borrowed; NULL: the docs/model.md start. Its x must lie in section 1
                               and its y on the course; for tests and split runs */
     const double *sample_t; /* borrowed; s, ascending sample times (may be NULL) */
     int nsample;
@@ -60,11 +60,11 @@ typedef struct zp_crossing {
     double t;           /* s */
     double x;           /* m */
     int from, to;       /* sections, 0-based */
-    double impulse;     /* N s, Lambda of MODEL.md */
+    double impulse;     /* N s, Lambda of docs/model.md */
     double energy_lost; /* J */
 } zp_crossing;
 
-/* Extremes of the loads (MODEL.md forces) over a run, taken wherever the simulator evaluates
+/* Extremes of the loads (docs/model.md forces) over a run, taken wherever the simulator evaluates
    them: the start, every integrator step, every output row and sample, and the state just
    after each kink impulse. */
 typedef struct zp_load_peaks {
@@ -112,7 +112,7 @@ typedef struct zp_sim zp_sim;
 zp_status zp_sim_opts_from_scene(const zp_scene *sc, zp_sim_opts *o, zp_diag *d);
 zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o);
 void zp_sim_free(zp_sim *s);
-/* Runs one schedule from the MODEL.md start. m is the model s was created for, or one derived
+/* Runs one schedule from the docs/model.md start. m is the model s was created for, or one derived
    from it by zp_scenario_model (same course and links). ZP_OK with r filled (any outcome), or
    ZP_ERR_NUMERIC with r->message naming t, x and the cause. */
 zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result *r);

@@ -1,4 +1,4 @@
-/* Chain coordinates q = (x, y, theta_1..N) of MODEL.md "Bodies" and "Energy": centres of mass,
+/* Chain coordinates q = (x, y, theta_1..N) of docs/model.md "Bodies" and "Energy": centres of mass,
    the full mass matrix and the energy, shared by every formulation, event and output. */
 #include "state.h"
 
@@ -58,8 +58,9 @@ zp_energy zp_state_energy(const zp_model *m, const zp_chain *c) {
                    m->m0 * m->g * pos[0][1]};
     for (int i = 0; i < m->nlink; i++) {
         double w = c->v[2 + i];
-        e.kinetic += 0.5 * m->mass[i] * (vel[i + 1][0] * vel[i + 1][0] + vel[i + 1][1] * vel[i + 1][1]) +
-                     0.5 * m->inertia[i] * w * w;
+        e.kinetic +=
+            0.5 * m->mass[i] * (vel[i + 1][0] * vel[i + 1][0] + vel[i + 1][1] * vel[i + 1][1]) +
+            0.5 * m->inertia[i] * w * w;
         e.potential += m->mass[i] * m->g * pos[i + 1][1];
     }
     return e;

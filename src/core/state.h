@@ -1,4 +1,4 @@
-/* Chain coordinates of MODEL.md, q = (x, y, theta_1..N), and what follows from them alone:
+/* Chain coordinates of docs/model.md, q = (x, y, theta_1..N), and what follows from them alone:
    centres of mass, the full mass matrix, kinetic and potential energy. Every formulation
    converts its own state to and from a zp_chain, so events, impulses and outputs are shared. */
 #ifndef ZP_STATE_H
@@ -18,7 +18,7 @@ typedef struct zp_energy {
     double potential; /* J, m g y of every centre of mass, y = 0 the zero */
 } zp_energy;
 
-/* The MODEL.md start: x = x_start on the course, all theta = 0, at rest. course: the
+/* The docs/model.md start: x = x_start on the course, all theta = 0, at rest. course: the
    caller's own evaluators (each thread has its own). */
 void zp_state_start(const zp_model *m, const zp_course *course, zp_chain *c);
 /* Centres of mass: body 0 the trolley, body i link i; xy[b][0..1] in m. */

@@ -1,4 +1,4 @@
-/* trajectory.csv (CLI.md "Files"): one row per output time, writer only. */
+/* trajectory.csv (docs/commands.md "Files"): one row per output time, writer only. */
 #ifndef ZP_OUT_CSV_H
 #define ZP_OUT_CSV_H
 

@@ -1,5 +1,5 @@
-/* One write-aside transaction per command (CLI.md "Files"): every file of the run is made in a
-   private hidden folder inside the output folder and moved into place as a set, under a lock
+/* One write-aside transaction per command (docs/commands.md "Files"): every file of the run is made
+   in a private hidden folder inside the output folder and moved into place as a set, under a lock
    on the output folder; on a failure or a signal nothing of the run remains. */
 #ifndef ZP_OUT_FILE_H
 #define ZP_OUT_FILE_H

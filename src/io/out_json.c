@@ -1,4 +1,4 @@
-/* CLI.md's JSON object of one run; angles in degrees, everything else SI. */
+/* docs/commands.md's JSON object of one run; angles in degrees, everything else SI. */
 #include "out_json.h"
 
 #include <math.h>
@@ -68,7 +68,7 @@ void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp
     for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
         double max = lim ? lim->max[i] : 0;
         if (i == ZP_LIMIT_G_ENVELOPE) {
-            /* CLI.md: per level {g, allowed_s, longest_s} */
+            /* docs/commands.md: per level {g, allowed_s, longest_s} */
             fprintf(f, "\"%s\": [", zp_limit_name(i));
             for (int l = 0; l < m->nenv; l++) {
                 fputs(l ? ", {" : "{", f);

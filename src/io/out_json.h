@@ -1,4 +1,4 @@
-/* The JSON of one simulation (CLI.md "simulate --json"): writer only, no decisions. */
+/* The JSON of one simulation (docs/commands.md "simulate --json"): writer only, no decisions. */
 #ifndef ZP_OUT_JSON_H
 #define ZP_OUT_JSON_H
 

@@ -1,5 +1,5 @@
 /* The data files of one run's figures (plot_parts.h): the pose of a row, or between rows, from
-   the chain geometry of MODEL.md "Bodies" (state.c), the course, and the
+   the chain geometry of docs/model.md "Bodies" (state.c), the course, and the
    trajectory with its derived columns. */
 #include <math.h>
 #include <string.h>

@@ -1,6 +1,6 @@
-/* The names a section's f(x) may use beyond x (CONFIG.md): `pi`, `e` and `y0`, the previous
-   section's end height, written into the text as numbers (17 significant digits) before any
-   course evaluator compiles it, so every evaluator sees plain numbers. */
+/* The names a section's f(x) may use beyond x (docs/scene-file.md): `pi`, `e` and `y0`, the
+   previous section's end height, written into the text as numbers (17 significant digits) before
+   any course evaluator compiles it, so every evaluator sees plain numbers. */
 #include <ctype.h>
 #include <math.h>
 #include <stdio.h>

@@ -1,4 +1,4 @@
-/* The scene reader's second pass for the optional sections (CONFIG.md [limits], [robust],
+/* The scene reader's second pass for the optional sections (docs/scene-file.md [limits], [robust],
    [physics]): each key off unless given, each refusal naming the key and what it expects. */
 #include <math.h>
 #include <stdio.h>

@@ -308,7 +308,7 @@ static char *read_line(char *str, int num, void *stream) {
         header(c, str, num);
         return str;
     }
-    /* key = value; inih also splits at `:`, which CONFIG.md does not use for keys */
+    /* key = value; inih also splits at `:`, which docs/scene-file.md does not use for keys */
     size_t eq = strcspn(str, "=:");
     if (*str && (str[eq] != '=' || eq == 0)) {
         zp_scene_bad(c, c->line, NULL, NULL,

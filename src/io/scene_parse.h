@@ -75,7 +75,7 @@ enum {
     K_COUNT
 };
 
-/* the CONFIG.md contract: section, key and what a value must be (for "expected ...") */
+/* the docs/scene-file.md contract: section, key and what a value must be (for "expected ...") */
 typedef struct zp_scene_key {
     int sec;
     const char *name;

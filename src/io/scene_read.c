@@ -1,6 +1,6 @@
-/* Scene files (CONFIG.md) -> zp_scene, the reader's entry points: defaults, the file read whole
-   (capped in size), the line pass (scene_lines.c), one reader per section and the rules joining
-   them; every violation reported as FILE:LINE: [section] key: what; expected. */
+/* Scene files (docs/scene-file.md) -> zp_scene, the reader's entry points: defaults, the file read
+   whole (capped in size), the line pass (scene_lines.c), one reader per section and the rules
+   joining them; every violation reported as FILE:LINE: [section] key: what; expected. */
 #include "scene_read.h"
 
 #include <errno.h>

@@ -1,4 +1,4 @@
-/* Reading scene files (CONFIG.md): INI text -> zp_scene, every rule checked, every problem
+/* Reading scene files (docs/scene-file.md): INI text -> zp_scene, every rule checked, every problem
    reported with file, line and key. */
 #ifndef ZP_SCENE_READ_H
 #define ZP_SCENE_READ_H
@@ -7,7 +7,7 @@
 
 #include "scene.h"
 
-/* Reads and validates a scene file (every CONFIG.md rule). On error fills d and returns
+/* Reads and validates a scene file (every docs/scene-file.md rule). On error fills d and returns
    ZP_ERR_INPUT; sc then holds defaults plus whatever parsed. */
 zp_status zp_scene_load(const char *path, zp_scene *sc, zp_diag *d);
 /* The same from text in memory; path only names it in messages. */
@@ -23,11 +23,11 @@ zp_status zp_scene_load_text(const char *text, size_t len, const char *path, int
                              zp_scene *sc, zp_diag *d);
 /* zp_scene_load with the choice of need_name (zp_scene_load_text). */
 zp_status zp_scene_load_file(const char *path, int need_name, zp_scene *sc, zp_diag *d);
-/* The built-in seed scene (CONFIG.md's example). */
+/* The built-in seed scene (docs/scene-file.md's example). */
 void zp_scene_seed(zp_scene *sc);
 /* Lays a schedule file (only [drive] forces) over sc. */
 zp_status zp_scene_overlay_schedule(const char *path, zp_scene *sc, zp_diag *d);
-/* Parses "a, b, c" (finite decimal numbers, CONFIG.md lists) into at most max doubles;
+/* Parses "a, b, c" (finite decimal numbers, docs/scene-file.md lists) into at most max doubles;
    returns the count, or -1 with why on an empty or bad item or more than max items. */
 int zp_scene_parse_list(const char *text, double *out, int max, char *why, size_t whylen);
 

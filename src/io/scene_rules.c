@@ -1,4 +1,4 @@
-/* The scene reader's rules that join keys of several sections (CONFIG.md): search bounds,
+/* The scene reader's rules that join keys of several sections (docs/scene-file.md): search bounds,
    margin against the death angle, the trajectory's size, drag against the body. A rule is
    judged only when every key it reads was accepted, so one mistake gives one message. */
 #include <math.h>

@@ -1,5 +1,5 @@
-/* Expressions in x: a recursive-descent parser of CONFIG.md's grammar, exact derivatives by
-   the textbook rules, and simplification (constants folded, x+0, x*1, x^1, ... dropped, equal
+/* Expressions in x: a recursive-descent parser of docs/scene-file.md's grammar, exact derivatives
+   by the textbook rules, and simplification (constants folded, x+0, x*1, x^1, ... dropped, equal
    subtrees shared) done by the node constructors, so every tree is built simplified. */
 #include "expr.h"
 

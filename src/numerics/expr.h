@@ -1,4 +1,4 @@
-/* Expressions in x (CONFIG.md [course] grammar) as a shared tree with exact symbolic
+/* Expressions in x (docs/scene-file.md [course] grammar) as a shared tree with exact symbolic
    derivatives, simplified as they are built: the input of the course compiler. */
 #ifndef ZP_EXPR_H
 #define ZP_EXPR_H

@@ -1,4 +1,4 @@
-/* libFuzzer target: any bytes as a scene file (the INI reader and every CONFIG.md check,
+/* libFuzzer target: any bytes as a scene file (the INI reader and every docs/scene-file.md check,
    then the model build, which compiles each section's f(x) through the expression reader)
    and as a lone course expression. Bad input must end in a status, never a crash. */
 #include <stdint.h>
