@@ -10,7 +10,8 @@
 
 #define KILL_TOL 1e-4 /* relative precision of the smallest deadly change, per force */
 
-static const double levels[ZP_VERIFY_LEVELS] = {0.02, 0.05};
+/* the perturbation levels when the caller sets none */
+static const double default_levels[ZP_VERIFY_LEVELS] = {0.02, 0.05};
 
 static int died(const zp_eval *e) {
     return e->failed || e->outcome == ZP_OUTCOME_DIED;
@@ -29,10 +30,10 @@ static int kills(const zp_objective *ob, zp_sim *s, zp_result *r, const double *
 
 /* the smallest change of force k, either way, that kills (bisection), or 0 when none within
    the largest level */
-static double kill_of(const zp_objective *ob, zp_sim *s, zp_result *r, const double *force, int k) {
+static double kill_of(const zp_objective *ob, zp_sim *s, zp_result *r, const double *force, int k,
+                      double top) {
     double best = 0;
     for (int sign = -1; sign <= 1; sign += 2) {
-        double top = levels[ZP_VERIFY_LEVELS - 1];
         if (force[k] == 0 || !kills(ob, s, r, force, k, sign * top)) {
             continue;
         }
@@ -69,7 +70,7 @@ static void check_job(void *user, int i, zp_sim *s, zp_result *r) {
     check_batch *b = user;
     int nsec = b->ob->m->nsec;
     if (i < b->nkill) {
-        b->kill[i] = kill_of(b->ob, s, r, b->force, i);
+        b->kill[i] = kill_of(b->ob, s, r, b->force, i, b->v->level[ZP_VERIFY_LEVELS - 1]);
     } else if (i == b->nkill) {
         b->tight_st = zp_sim_run(b->ob->m, b->tight_sim, b->in, b->v->tight);
     } else {
@@ -85,7 +86,7 @@ static void tally(zp_verify *v, const check_batch *b, int nrobust) {
     for (int i = 0; i < b->ntot; i++) {
         const zp_eval *e = &b->pe[i];
         zp_robust *rb = &v->rob[i / nrobust];
-        rb->level = levels[i / nrobust];
+        rb->level = v->level[i / nrobust];
         rb->n++;
         rb->survived += e->outcome == ZP_OUTCOME_FINISHED && !e->failed;
         rb->kept += zp_objective_feasible(e);
@@ -115,8 +116,8 @@ static void tally(zp_verify *v, const check_batch *b, int nrobust) {
 }
 
 /* the seeded perturbations, drawn up front in one stream: ntot rows of nsec forces */
-static void perturb(const double *force, int nsec, unsigned long seed, int nrobust, double *pf,
-                    gsl_rng *g) {
+static void perturb(const double *force, int nsec, unsigned long seed, int nrobust,
+                    const double *levels, double *pf, gsl_rng *g) {
     gsl_rng_set(g, seed);
     for (int i = 0; i < ZP_VERIFY_LEVELS * nrobust; i++) {
         for (int k = 0; k < nsec; k++) {
@@ -164,6 +165,9 @@ zp_status zp_verify_finish(const zp_objective *ob, const zp_sim_opts *so, const 
                            zp_pool_done progress, void *user, char *err, size_t errlen) {
     const zp_model *m = ob->m;
     int nsec = m->nsec, ntot = ZP_VERIFY_LEVELS * nrobust;
+    if (!(v->level[0] > 0)) {
+        memcpy(v->level, default_levels, sizeof v->level);
+    }
     zp_sim_opts to = zp_estimate_tighter(so), fast = *so;
     v->rtol = to.rtol;
     v->atol = to.atol;
@@ -187,7 +191,7 @@ zp_status zp_verify_finish(const zp_objective *ob, const zp_sim_opts *so, const 
     zp_status ret =
         b.tight_sim && b.pf && b.pe && b.kill && (pool || !nrobust) && g ? ZP_OK : ZP_ERR_NOMEM;
     if (ret == ZP_OK && pool) {
-        perturb(force, nsec, seed, nrobust, b.pf, g);
+        perturb(force, nsec, seed, nrobust, v->level, b.pf, g);
         zp_pool_map(pool, b.nkill + 1 + ntot, check_job, &b, progress, user);
     } else if (ret == ZP_OK) {
         check_job(&b, 0, NULL, NULL);

@@ -9,7 +9,7 @@
 #include "estimate.h"
 #include "pool.h"
 
-#define ZP_VERIFY_LEVELS 2 /* perturbation levels: +/-2 % and +/-5 % */
+#define ZP_VERIFY_LEVELS 2 /* perturbation levels: +/-2 % and +/-5 % unless the caller sets them */
 
 typedef struct zp_robust {
     double level; /* 1: every force scaled by 1 + level * u, u uniform in [-1, 1] */
@@ -23,6 +23,8 @@ typedef struct zp_verify {
     zp_result *tight; /* owned: the same at rtol, atol (zp_estimate_tighter) */
     double rtol, atol; /* of the tighter run */
     int agree;        /* same outcome, finish times within ZP_VERIFY_DT, margin kept */
+    double level[ZP_VERIFY_LEVELS]; /* the perturbation levels (shares, increasing): set
+                                       between zp_verify_begin and _finish; 0: 2 % and 5 % */
     zp_robust rob[ZP_VERIFY_LEVELS];
     int robust_done;  /* robustness was measured (not when interrupted) */
     int kill_found;   /* some perturbation within the largest level killed */

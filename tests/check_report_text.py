@@ -2,7 +2,8 @@
 """report.md fits the scene it reports: its kink table lists exactly the crossings of the
 boundaries `zipopt check --json` calls kinks (the best run's crossings from `zipopt simulate`
 of the same schedule), section ends where the slopes agree are counted apart; the robustness
-table says it counts the limits when the scene has [limits] (the seed with max_g); the gain
+table says it counts the limits when the scene has [limits] (the seed with max_g) and is drawn
+at the scene's own force error and twice it (2 % and 5 % without one); the gain
 over the scene's own [drive] forces says what those break.
 
 usage: check_report_text.py ZIPOPT_EXE SOURCE_DIR"""
@@ -22,8 +23,13 @@ with tempfile.TemporaryDirectory() as tmp:
         with open(limited, "w") as g:
             g.write(f.read().replace("forces = 100, 100, 100", "forces = 20, 20, 20") +
                     "\n[limits]\nmax_g = 11.5\n")
-    for name, limits in (("multi6", False), ("limited", True)):
-        scene = limited if limits else os.path.join(src, "config", name + ".ini")
+        held = os.path.join(tmp, "held.ini")
+        with open(held, "w") as g:
+            f.seek(0)
+            g.write(f.read() + "\n[robust]\nforce_error = 3\nsamples = 4\nverify_samples = 20\n")
+    for name, limits in (("multi6", False), ("limited", True), ("held", False)):
+        scene = {"limited": limited, "held": held}.get(name) or \
+            os.path.join(src, "config", name + ".ini")
         out = os.path.join(tmp, name)
         p = subprocess.run([exe, scene, "--max-evals", "150", "--no-plot", "--out", out],
                            capture_output=True, text=True)
@@ -52,6 +58,11 @@ with tempfile.TemporaryDirectory() as tmp:
             check("slopes agree" not in section, "%s: %s" % (name, section))
         check(("margin and every limit kept |" in md) == limits,
               "%s: the robustness table's header" % name)
+        # the robustness table at the scene's level (and twice it), else at 2 % and 5 %
+        levels = re.findall(r"^\| (\d+) % \| \d+ \|", md, re.M)
+        want_levels = ["3", "6"] if name == "held" else ["2", "5"]
+        check(levels == want_levels, "%s: robustness levels %s, want %s" % (name, levels,
+                                                                          want_levels))
         if limits:  # the scene's own 20 N finishes over max_g: the comparison says so
             own = json.loads(subprocess.run([exe, "simulate", scene, "--json", "--out",
                                              os.path.join(tmp, "o")], capture_output=True,

@@ -35,10 +35,11 @@ static void usage(FILE *f) {
           "[drive] min, max, that brings the spy to the end alive with every relative joint\n"
           "angle at least [optimize] margin below death_angle. With no file: the built-in seed\n"
           "scene. Verifies the best schedule at a 100x tighter tolerance, measures its\n"
-          "robustness to +/-2 % and +/-5 % changes of the forces, and writes report.md,\n"
-          "schedule.ini, summary.json, trajectory.csv and the best run's figures (course,\n"
-          "energy, angles, loads: PNG with their gnuplot scripts) to out/<scene name>/search/\n"
-          "(or DIR itself), all or nothing.\n"
+          "robustness to random changes of the forces (+/-p % and 2p %, p the scene's\n"
+          "[robust] force_error; +/-2 % and 5 % without one), and writes report.md,\n"
+          "report.html, schedule.ini, summary.json, trajectory.csv and the best run's figures\n"
+          "(course, energy, angles, loads, along: PNG with their gnuplot scripts) to\n"
+          "out/<scene name>/search/ (or DIR itself), all or nothing.\n"
           "While it runs, the best so far is kept in DIR/checkpoint.ini; Ctrl-C stops the\n"
           "search and writes the best so far, marked interrupted.\n"
           "  --out DIR         output folder\n"
@@ -451,6 +452,10 @@ static int search(int argc, char **argv, const zp_spread *sp) {
         goto done;
     }
     phase_start(&pc, "verification: the best schedule with [solver] and 100x tighter");
+    if (sc->force_error > 0) { /* the level the scene holds the answer to, and twice it */
+        v.level[0] = sc->force_error / 100;
+        v.level[1] = fmin(2 * sc->force_error / 100, 0.99);
+    }
     if (!rc) {
         rc = zp_verify_finish(&ob, &solver, res.force, st.seed, res.interrupted ? 0 : NROBUST, 0,
                               &v, on_verify, &pc, err, sizeof err);
