@@ -138,7 +138,9 @@ ZIPOPT_API void zipopt_search_free(zipopt_search *r); /* NULL is fine */
    verify_survived, verify_margin_kept, verify_limits_kept, verify_all_kept, lower_95 (the 95 %
    lower bound of P(survivable)), worst_margin_deg (over everything held and verified),
    headroom and headroom_breaks (the factor on the stated box up to which the answer holds
-   along the worst direction found, and where it breaks); NaN without [robust]. A search
+   along the worst direction found, and where it breaks), fastest_s, slowest_s,
+   arrival_low_kmh, arrival_high_kmh (the population's spread over the fresh scenarios that
+   finish); NaN without [robust]. A search
    stopped before it began runs nothing: interrupted, and its forces are the scene's. */
 ZIPOPT_API double zipopt_search_get(const zipopt_search *r, const char *key);
 ZIPOPT_API const char *zipopt_search_key(int i); /* the i-th name, NULL past the last */

@@ -84,6 +84,9 @@ class Simulate(unittest.TestCase):
             self.assertEqual(n["verify_" + key] if key != "lower_95" else n[key],
                              rb["verify"][key], key)
         self.assertEqual(n["worst_margin_deg"], rb["worst_margin_deg"])
+        for key in ("fastest_s", "slowest_s", "arrival_low_kmh", "arrival_high_kmh"):
+            self.assertEqual(n[key], rb["spread"][key]["value"], key)
+        self.assertEqual(n["headroom"], rb["headroom"]["factor"])
 
     def test_loads_and_limits_equal_the_program(self):
         # every quantity [limits] judge, as `zipopt simulate --json` reports it, bit for bit

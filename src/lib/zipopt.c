@@ -39,7 +39,8 @@ static const char *const search_keys[] = {
     "reached_best",   "converged",      "budget_ran_out", "time_ran_out",    "unseen_basins",
     "budget_to_help", "islands",        "islands_polished", "scenarios",     "verify_samples",
     "verify_survived", "verify_margin_kept", "verify_limits_kept", "verify_all_kept",
-    "lower_95",       "worst_margin_deg", "headroom",     "headroom_breaks"};
+    "lower_95",       "worst_margin_deg", "headroom",     "headroom_breaks", "fastest_s",
+    "slowest_s",      "arrival_low_kmh", "arrival_high_kmh"};
 #define NSEARCH_KEYS ((int)(sizeof search_keys / sizeof *search_keys))
 
 /* libmatheval's parser keeps globals and nlopt_srand is process-wide: loads and searches take
@@ -522,7 +523,11 @@ static void search_numbers(const zp_search_result *r, const zp_robust_check *c, 
                         verified ? c->lower_95 : NAN,
                         verified ? c->worst_margin_deg : NAN,
                         headroom ? box->holds : NAN,
-                        headroom && isfinite(box->breaks) ? box->breaks : NAN};
+                        headroom && isfinite(box->breaks) ? box->breaks : NAN,
+                        verified ? c->fastest.value : NAN,
+                        verified ? c->slowest.value : NAN,
+                        verified ? c->arrival_low.value : NAN,
+                        verified ? c->arrival_high.value : NAN};
     _Static_assert(sizeof n / sizeof *n == NSEARCH_KEYS, "one number per key");
     memcpy(v, n, sizeof n);
 }
