@@ -140,7 +140,10 @@ ZIPOPT_API void zipopt_search_free(zipopt_search *r); /* NULL is fine */
    headroom and headroom_breaks (the factor on the stated box up to which the answer holds
    along the worst direction found, and where it breaks), fastest_s, slowest_s,
    arrival_low_kmh, arrival_high_kmh (the population's spread over the fresh scenarios that
-   finish); NaN without [robust]. A search
+   finish), headroom_force_error, headroom_rider_mass, headroom_rider_size,
+   headroom_trolley_mass, headroom_joint_damping, headroom_start_angle, headroom_wind (the same
+   factor along each range alone; NaN where the scene does not vary it); NaN without
+   [robust]. A search
    stopped before it began runs nothing: interrupted, and its forces are the scene's. */
 ZIPOPT_API double zipopt_search_get(const zipopt_search *r, const char *key);
 ZIPOPT_API const char *zipopt_search_key(int i); /* the i-th name, NULL past the last */

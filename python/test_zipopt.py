@@ -87,6 +87,10 @@ class Simulate(unittest.TestCase):
         for key in ("fastest_s", "slowest_s", "arrival_low_kmh", "arrival_high_kmh"):
             self.assertEqual(n[key], rb["spread"][key]["value"], key)
         self.assertEqual(n["headroom"], rb["headroom"]["factor"])
+        ranges = {r["range"]: r["factor"] for r in rb["headroom"]["ranges"]}
+        self.assertTrue(ranges)
+        for name, factor in ranges.items():
+            self.assertEqual(n["headroom_" + name.replace(" ", "_")], factor, name)
 
     def test_loads_and_limits_equal_the_program(self):
         # every quantity [limits] judge, as `zipopt simulate --json` reports it, bit for bit

@@ -40,7 +40,9 @@ static const char *const search_keys[] = {
     "budget_to_help", "islands",        "islands_polished", "scenarios",     "verify_samples",
     "verify_survived", "verify_margin_kept", "verify_limits_kept", "verify_all_kept",
     "lower_95",       "worst_margin_deg", "headroom",     "headroom_breaks", "fastest_s",
-    "slowest_s",      "arrival_low_kmh", "arrival_high_kmh"};
+    "slowest_s",      "arrival_low_kmh", "arrival_high_kmh", "headroom_force_error",
+    "headroom_rider_mass", "headroom_rider_size", "headroom_trolley_mass",
+    "headroom_joint_damping", "headroom_start_angle", "headroom_wind"};
 #define NSEARCH_KEYS ((int)(sizeof search_keys / sizeof *search_keys))
 
 /* libmatheval's parser keeps globals and nlopt_srand is process-wide: loads and searches take
@@ -484,6 +486,13 @@ static zp_status search(const zp_setup *st, const zp_search_opts *o, zp_search_r
     return rc;
 }
 
+/* the factor on range l (zp_headroom's order) up to which the answer holds; NaN unverified or
+   not varied */
+static double range_headroom(const zp_robust_check *c, int l) {
+    const zp_headroom_line *line = &c->headroom.line[l];
+    return c->samples > 0 && line->range >= 0 ? line->holds : NAN;
+}
+
 static void search_numbers(const zp_search_result *r, const zp_robust_check *c, int nscen,
                            double *v) {
     int verified = c->samples > 0;
@@ -527,7 +536,14 @@ static void search_numbers(const zp_search_result *r, const zp_robust_check *c, 
                         verified ? c->fastest.value : NAN,
                         verified ? c->slowest.value : NAN,
                         verified ? c->arrival_low.value : NAN,
-                        verified ? c->arrival_high.value : NAN};
+                        verified ? c->arrival_high.value : NAN,
+                        range_headroom(c, 0),
+                        range_headroom(c, 1),
+                        range_headroom(c, 2),
+                        range_headroom(c, 3),
+                        range_headroom(c, 4),
+                        range_headroom(c, 5),
+                        range_headroom(c, 6)};
     _Static_assert(sizeof n / sizeof *n == NSEARCH_KEYS, "one number per key");
     memcpy(v, n, sizeof n);
 }
