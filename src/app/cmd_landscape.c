@@ -175,20 +175,9 @@ static const char *binding(const zp_landscape_point *p, double limit, const zp_l
     if (p->max_rel_angle > limit) {
         return "margin";
     }
-    int worst = -1;
-    double worst_ex = 0;
-    for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
-        if (lim->max[i] > 0 && !zp_limits_kept(i, p->reached[i], lim->max[i])) {
-            /* relative excess past the limit: over a ceiling, under the one floor */
-            double ex = i == ZP_LIMIT_MIN_ARRIVAL ? 1 - p->reached[i] / lim->max[i]
-                                                  : p->reached[i] / lim->max[i] - 1;
-            if (worst < 0 || ex > worst_ex) {
-                worst = i;
-                worst_ex = ex;
-            }
-        }
-    }
-    return worst < 0 ? "" : zp_limit_name(worst);
+    int worst;
+    double excess = zp_limits_excess_of(lim, p->reached, &worst);
+    return worst >= 0 && excess > 0 ? zp_limit_name(worst) : "";
 }
 
 /* the result columns' header: the outcome, then what the run reached of each limit set */

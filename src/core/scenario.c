@@ -104,9 +104,14 @@ int zp_limits_envelope_worst(const zp_model *m, const zp_result *r) {
 }
 
 double zp_limits_excess(const zp_limits *l, const zp_model *m, const zp_result *r, int *which) {
-    double v[ZP_LIMIT_COUNT], worst = -1;
-    *which = -1;
+    double v[ZP_LIMIT_COUNT];
     zp_limits_reached(m, r, v);
+    return zp_limits_excess_of(l, v, which);
+}
+
+double zp_limits_excess_of(const zp_limits *l, const double v[ZP_LIMIT_COUNT], int *which) {
+    double worst = -1;
+    *which = -1;
     for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
         /* relative excess past the limit: over a ceiling, under the floor */
         double ex = i == ZP_LIMIT_MIN_ARRIVAL ? 1 - v[i] / l->max[i] : v[i] / l->max[i] - 1;

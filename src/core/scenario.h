@@ -57,6 +57,8 @@ void zp_limits_reached(const zp_model *m, const zp_result *r, double v[ZP_LIMIT_
 /* The worst excess over the limits set, reached / limit - 1 (<= 0: all kept; -1 with no
    limit set), and in *which the limit that gave it (-1: none set). */
 double zp_limits_excess(const zp_limits *l, const zp_model *m, const zp_result *r, int *which);
+/* The same for values v already reached (zp_limits_reached's). */
+double zp_limits_excess_of(const zp_limits *l, const double v[ZP_LIMIT_COUNT], int *which);
 /* Whether value v (zp_limits_reached's) keeps limit i at max (> 0): below a ceiling, or at or
    above min_arrival_speed, the one floor. */
 int zp_limits_kept(int i, double v, double max);

@@ -653,12 +653,19 @@ static double stop_after(const zp_sim *s, double t) {
     return s->o.t_max;
 }
 
-/* the integrator (re)started at (t, s->y), reading the course piece the trolley is on */
+/* the integrator (re)started at (t, s->y), reading the course piece the trolley is on; the
+   peak locator (o.peaks) starts a new interval there */
 static int restart(zp_sim *s, double t) {
     if (s->m->physics & ZP_PHYS_ROUNDED) {
         s->arc = zp_model_track_arc(s->m, s->sec, s->y[0]);
     }
-    return s->meth->reset(s->mwork, t, s->y, stop_after(s, t));
+    if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
+        return 1;
+    }
+    if (s->o.peaks) {
+        peaks_restart(s, t);
+    }
+    return 0;
 }
 
 /* whether the advance ended on a located death root; if not, a joint found past the death
@@ -706,15 +713,14 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
         finish_result(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_ROLLED_BACK);
         return ZP_OK;
     }
-    if (restart(s, t)) {
-        return fail(s, r, t, "the integrator could not start");
-    }
     if (s->o.peaks) {
         zp_peaks_reset(s->pk);
         if (m->nenv > 0) {
             zp_envelope_start(&s->env, m->nenv, m->env_g, t, 0);
         }
-        peaks_restart(s, t);
+    }
+    if (restart(s, t)) {
+        return fail(s, r, t, "the integrator could not start");
     }
     for (;;) {
         char err[256] = "";
@@ -789,9 +795,6 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
                 if (restart(s, t)) {
                     return fail(s, r, t, "the integrator could not restart at a break");
                 }
-                if (s->o.peaks) {
-                    peaks_restart(s, t);
-                }
                 continue;
             } else if (adv == ZP_ADV_STOP) {
                 add_stats(s, r);
@@ -829,9 +832,6 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             if (restart(s, t)) {
                 return fail(s, r, t, "the integrator could not restart at an arc's end");
             }
-            if (s->o.peaks) {
-                peaks_restart(s, t);
-            }
             continue;
         }
         if (ev == ZP_EVENT_REST) {
@@ -853,9 +853,6 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
             }
             if (restart(s, t)) {
                 return fail(s, r, t, "the integrator could not restart at rest");
-            }
-            if (s->o.peaks) {
-                peaks_restart(s, t);
             }
             continue;
         }
@@ -885,9 +882,6 @@ static zp_status run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
         s->slide = departure(s, t, s->y);
         if (restart(s, t)) {
             return fail(s, r, t, "the integrator could not restart after the kink");
-        }
-        if (s->o.peaks) {
-            peaks_restart(s, t);
         }
     }
 }
