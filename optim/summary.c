@@ -101,18 +101,27 @@ static void json_accuracy(FILE *f, const zp_accuracy *a) {
     fprintf(f, ", \"reruns\": %d}", a->reruns);
 }
 
-void zp_summary_headroom_json(FILE *f, const zp_headroom *h) {
-    const zp_headroom_line *box = &h->line[ZP_HEADROOM_LINES - 1];
-    fputs("{\"factor\": ", f);
-    zp_out_json_number(f, box->range < 0 ? NAN : box->holds);
+/* one headroom line's members: how far it holds, what breaks past it, how far the rider at
+   least finishes alive and how the ride ends past that; null where the range is not varied */
+static void headroom_members(FILE *f, const zp_headroom_line *L) {
+    int on = L->range >= 0;
+    fputs("\"factor\": ", f);
+    zp_out_json_number(f, on ? L->holds : NAN);
     fputs(", \"limited_by\": ", f);
-    zp_out_json_string(f, box->range < 0 ? "" : box->limited_by);
+    zp_out_json_string(f, on ? L->limited_by : "");
     fputs(", \"breaks_at\": ", f);
-    zp_out_json_number(f, box->range < 0 || !isfinite(box->breaks) ? NAN : box->breaks);
+    zp_out_json_number(f, on && isfinite(L->breaks) ? L->breaks : NAN);
     fputs(", \"alive_to\": ", f);
-    zp_out_json_number(f, box->range < 0 ? NAN : box->alive);
+    zp_out_json_number(f, on ? L->alive : NAN);
     fputs(", \"ends_at\": ", f);
-    zp_out_json_number(f, box->range < 0 || !isfinite(box->dies) ? NAN : box->dies);
+    zp_out_json_number(f, on && isfinite(L->dies) ? L->dies : NAN);
+    fputs(", \"ends_by\": ", f);
+    zp_out_json_string(f, on ? L->ends_by : "");
+}
+
+void zp_summary_headroom_json(FILE *f, const zp_headroom *h) {
+    fputc('{', f);
+    headroom_members(f, &h->line[ZP_HEADROOM_LINES - 1]); /* the whole box */
     fputs(", \"safety_factor\": ", f);
     zp_out_json_number(f, h->safety_factor);
     fputs(", \"ranges\": [", f);
@@ -124,19 +133,9 @@ void zp_summary_headroom_json(FILE *f, const zp_headroom *h) {
         }
         fprintf(f, "%s{\"range\": ", first ? "" : ", ");
         zp_out_json_string(f, zp_headroom_range_name(L->range));
-        fputs(", \"factor\": ", f);
-        zp_out_json_number(f, L->holds);
-        fputs(", \"breaks_at\": ", f);
-        zp_out_json_number(f, isfinite(L->breaks) ? L->breaks : NAN);
-        fputs(", \"limited_by\": ", f);
-        zp_out_json_string(f, L->limited_by);
-        fputs(", \"alive_to\": ", f);
-        zp_out_json_number(f, L->alive);
-        fputs(", \"ends_at\": ", f);
-        zp_out_json_number(f, isfinite(L->dies) ? L->dies : NAN);
-        fputs(", \"ends_by\": ", f);
-        zp_out_json_string(f, L->ends_by);
-        fputs("}", f);
+        fputs(", ", f);
+        headroom_members(f, L);
+        fputc('}', f);
         first = 0;
     }
     fputs("]}", f);
