@@ -148,17 +148,13 @@ static void md_margins(FILE *f, const zp_report *r) {
 }
 
 void zp_report_breaks(const zp_report *r, const zp_result *run, char *out, size_t cap) {
-    double angle = 0;
-    for (int i = 0; i < r->m->nlink; i++) {
-        angle = fmax(angle, run->max_rel_angle[i]);
-    }
-    int which = -1;
-    double excess = r->lim ? zp_limits_excess(r->lim, r->m, run, &which) : -1;
-    snprintf(out, cap, "%s", run->outcome == ZP_OUTCOME_DIED      ? "death"
-                             : run->outcome == ZP_OUTCOME_STALLED ? "a stall"
-                             : angle > r->m->phi_max - r->sc->margin * M_PI / 180 ? "the margin"
-                             : which >= 0 && excess > 0 ? zp_limit_name(which)
-                                                        : "");
+    static const char *const said[] = {[ZP_BREAKS_NOTHING] = "", [ZP_BREAKS_DEATH] = "death",
+                                       [ZP_BREAKS_STALL] = "a stall",
+                                       [ZP_BREAKS_MARGIN] = "the margin"};
+    int which;
+    zp_breaks b = zp_limits_broken(r->m, r->lim, r->m->phi_max - r->sc->margin * M_PI / 180, run,
+                                   &which);
+    snprintf(out, cap, "%s", b == ZP_BREAKS_LIMIT ? zp_limit_name(which) : said[b]);
 }
 
 static void md_gains(FILE *f, const zp_report *r) {

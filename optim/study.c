@@ -48,14 +48,16 @@ static void fill(const zp_scene *sc, const zp_model *m, const zp_schedule *sh, c
     zp_limits_from_scene(sc, &lim);
     zp_limits_reached(m, r, row->reached);
     if (!row->found) {
-        int which = -1;
-        double excess = zp_limits_excess(&lim, m, r, &which);
+        /* nothing broken in the nominal run: a held scenario broke it */
+        static const char *const said[] = {[ZP_BREAKS_NOTHING] = "scenarios",
+                                           [ZP_BREAKS_DEATH] = "death",
+                                           [ZP_BREAKS_STALL] = "t_max",
+                                           [ZP_BREAKS_MARGIN] = "margin"};
+        int which;
+        zp_breaks b =
+            zp_limits_broken(m, &lim, m->phi_max - sc->margin * M_PI / 180, r, &which);
         snprintf(row->limit, sizeof row->limit, "%s",
-                 r->outcome == ZP_OUTCOME_DIED             ? "death"
-                 : r->outcome == ZP_OUTCOME_STALLED        ? "t_max"
-                 : row->margin < sc->margin                ? "margin"
-                 : which >= 0 && excess > 0                ? zp_limit_name(which)
-                                           : "scenarios"); /* a held scenario broke it */
+                 b == ZP_BREAKS_LIMIT ? zp_limit_name(which) : said[b]);
         return;
     }
     int at_max = 0, at_min = 0;

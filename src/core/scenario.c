@@ -109,6 +109,19 @@ double zp_limits_excess(const zp_limits *l, const zp_model *m, const zp_result *
     return zp_limits_excess_of(l, v, which);
 }
 
+zp_breaks zp_limits_broken(const zp_model *m, const zp_limits *lim, double limit,
+                           const zp_result *r, int *which) {
+    *which = -1;
+    if (r->outcome != ZP_OUTCOME_FINISHED) {
+        return r->outcome == ZP_OUTCOME_DIED ? ZP_BREAKS_DEATH : ZP_BREAKS_STALL;
+    }
+    if (zp_model_angle_used(m, r->max_rel_angle) > limit) {
+        return ZP_BREAKS_MARGIN;
+    }
+    double excess = lim ? zp_limits_excess(lim, m, r, which) : -1;
+    return *which >= 0 && excess > 0 ? ZP_BREAKS_LIMIT : ZP_BREAKS_NOTHING;
+}
+
 double zp_limits_excess_of(const zp_limits *l, const double v[ZP_LIMIT_COUNT], int *which) {
     double worst = -1;
     *which = -1;

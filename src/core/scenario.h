@@ -57,6 +57,18 @@ void zp_limits_reached(const zp_model *m, const zp_result *r, double v[ZP_LIMIT_
 /* The worst excess over the limits set, reached / limit - 1 (<= 0: all kept; -1 with no
    limit set), and in *which the limit that gave it (-1: none set). */
 double zp_limits_excess(const zp_limits *l, const zp_model *m, const zp_result *r, int *which);
+/* What run r of model m breaks first of what survivable means, judged as the search judges
+   it (limit: rad, the largest joint angle allowed, zp_model_angle_used's scale): nothing, a
+   death, a stall, the margin, or a [limits] value (the one exceeded most, in *which). */
+typedef enum {
+    ZP_BREAKS_NOTHING,
+    ZP_BREAKS_DEATH,
+    ZP_BREAKS_STALL,
+    ZP_BREAKS_MARGIN,
+    ZP_BREAKS_LIMIT
+} zp_breaks;
+zp_breaks zp_limits_broken(const zp_model *m, const zp_limits *lim, double limit,
+                           const zp_result *r, int *which);
 /* The same for values v already reached (zp_limits_reached's). */
 double zp_limits_excess_of(const zp_limits *l, const double v[ZP_LIMIT_COUNT], int *which);
 /* Whether value v (zp_limits_reached's) keeps limit i at max (> 0): below a ceiling, or at or
