@@ -302,18 +302,19 @@ static int figures_finish(zp_tx *t, zp_gnuplot_job *job, zp_plot_info *info) {
    finishes with the margin at both, at times that agree. The search ranks with [optimize]'s
    own, possibly much looser, tolerance. 0 with why in why. */
 static int answer_holds(const zp_objective *ob, const zp_verify *v, char *why, size_t n) {
-    double angle = 0;
-    for (int i = 0; i < ob->m->nlink; i++) {
-        angle = fmax(angle, v->run->max_rel_angle[i]);
-    }
-    if (v->run->outcome != ZP_OUTCOME_FINISHED) {
+    int which;
+    zp_breaks b = zp_limits_broken(ob->m, &ob->lim, ob->limit, v->run, &which);
+    if (b == ZP_BREAKS_DEATH || b == ZP_BREAKS_STALL) {
         snprintf(why, n, "rerun with [solver] it %s at %.4f s",
                  zp_sim_outcome_name(v->run->outcome), v->run->time);
-    } else if (angle > ob->limit) {
+    } else if (b == ZP_BREAKS_MARGIN) {
         snprintf(why, n,
                  "rerun with [solver] its largest joint angle is %.2f deg, past the %.2f deg the "
                  "margin allows",
-                 angle * 180 / M_PI, ob->limit * 180 / M_PI);
+                 zp_model_angle_used(ob->m, v->run->max_rel_angle) * 180 / M_PI,
+                 ob->limit * 180 / M_PI);
+    } else if (b == ZP_BREAKS_LIMIT) {
+        snprintf(why, n, "rerun with [solver] it breaks [limits] %s", zp_limit_name(which));
     } else if (!v->agree) {
         snprintf(why, n, "it is not verified at the tighter tolerance (rtol %.0e)", v->rtol);
     } else {
