@@ -185,24 +185,21 @@ def main():
                 c_rows.append(row)
                 print(f"  C     {method} rtol {row['rtol']:g}: {row['outcome']} T {row['time']:.12f} "
                       f"|dT| {row['dT']:.2e} wall {row['wall_s'] * 1e3:.3f} ms", flush=True)
-    # 3. SciPy
-    py_rows = []
-    for rtol in py_rtols:
-        runs = [run_py(rtol, rtol / 100) for _ in range(args.py_repeat)]
-        row = {"impl": "SciPy", "rtol": rtol, "atol": rtol / 100, "runs": len(runs)}
-        row.update(summarize(runs, t_ref))
-        py_rows.append(row)
-        print(f"  SciPy rtol {rtol:g}: {row['outcome']} T {row['time']:.12f} "
-              f"|dT| {row['dT']:.2e} wall {row['wall_s'] * 1e3:.1f} ms", flush=True)
-    # 3b. the strong peer at each rtol (a few runs, to find its cheapest rtol meeting the target)
-    strong_rows = []
-    for rtol in py_rtols:
-        runs = [run_py_strong(rtol, rtol / 100) for _ in range(args.py_repeat)]
-        row = {"impl": "SciPy sympy", "rtol": rtol, "atol": rtol / 100, "runs": len(runs)}
-        row.update(summarize(runs, t_ref))
-        strong_rows.append(row)
-        print(f"  SciPy sympy rtol {rtol:g}: {row['outcome']} T {row['time']:.12f} "
-              f"|dT| {row['dT']:.2e} wall {row['wall_s'] * 1e3:.1f} ms", flush=True)
+    # 3. SciPy, the naive peer and (3b) the strong one, at each rtol (a few runs each, to find
+    # the cheapest rtol meeting the target)
+    def peer_rows(impl, runner):
+        rows = []
+        for rtol in py_rtols:
+            runs = [runner(rtol, rtol / 100) for _ in range(args.py_repeat)]
+            row = {"impl": impl, "rtol": rtol, "atol": rtol / 100, "runs": len(runs)}
+            row.update(summarize(runs, t_ref))
+            rows.append(row)
+            print(f"  {impl} rtol {rtol:g}: {row['outcome']} T {row['time']:.12f} "
+                  f"|dT| {row['dT']:.2e} wall {row['wall_s'] * 1e3:.1f} ms", flush=True)
+        return rows
+
+    py_rows = peer_rows("SciPy", run_py)
+    strong_rows = peer_rows("SciPy sympy", run_py_strong)
     # 3c. `zipopt simulate` at the cheapest C rtol of --cli-method meeting the target against
     # the strong peer at its cheapest: interleaved, one run each in turn, medians
     cli_row = None

@@ -95,14 +95,7 @@ class SympyModel(sz.Model):
         M, r = self._eom(x, th, xd, thd, fp, fpp, F)
         qdd = np.linalg.solve(np.array(M, dtype=float), np.array(r, dtype=float))
         Fx, Fy = self.drive(F, fp)
-        w = self.joint_rates(thd)
-        ds = np.empty_like(s)
-        ds[0] = xd
-        ds[1:n + 1] = thd
-        ds[n + 1:2 * n + 2] = qdd
-        ds[2 * n + 2] = Fx * xd + Fy * fp * xd
-        ds[2 * n + 3] = np.sum(self.c * w * w)
-        return ds
+        return self.rates(s, qdd, Fx, Fy, fp)
 
 
 def selftest():

@@ -185,6 +185,13 @@ class Model:
         Q -= self.velocity_terms(th, thd)
         Q -= M[:, 1] * fpp * xd * xd
         qdd = np.linalg.solve(T.T @ M @ T, T.T @ Q)
+        return self.rates(s, qdd, Fx, Fy, fp)
+
+    def rates(self, s, qdd, Fx, Fy, fp):
+        """The state's rates from the accelerations qdd: positions, velocities, then the drive's
+        power and the dampers' as the work integrals."""
+        n = self.N
+        xd, thd = s[n + 1], s[n + 2:2 * n + 2]
         w = self.joint_rates(thd)
         ds = np.empty_like(s)
         ds[0] = xd
