@@ -71,8 +71,10 @@ int zp_plot_frames(FILE *gp, FILE *dat, const zp_model *m, const zp_row *frames,
     return drawn;
 }
 
-int zp_plot_anim(FILE *gp, FILE *dat, FILE *lab, const zp_model *m, const zp_row_store *rows,
-                 const zp_result *r, const zp_plot_opts *o, zp_plot_box course, int mp4) {
+/* plot_anim.dat and plot_anim_label.dat: the pose and its label every speedup / fps s of the
+   run, and the last; returns how many */
+static int anim_data(FILE *dat, FILE *lab, const zp_model *m, const zp_row_store *rows,
+                     const zp_result *r, const zp_plot_opts *o) {
     double t0 = zp_row_store_t(rows, 0), t1 = zp_row_store_t(rows, rows->n - 1),
            dt = o->speedup / o->fps;
     int nf = (int)floor((t1 - t0) / dt) + 1;
@@ -90,6 +92,12 @@ int zp_plot_anim(FILE *gp, FILE *dat, FILE *lab, const zp_model *m, const zp_row
         }
         fprintf(lab, "%d \"%s\"\n", j, text);
     }
+    return nf;
+}
+
+int zp_plot_anim(FILE *gp, FILE *dat, FILE *lab, const zp_model *m, const zp_row_store *rows,
+                 const zp_result *r, const zp_plot_opts *o, zp_plot_box course, int mp4) {
+    int nf = anim_data(dat, lab, m, rows, r, o);
     double reach = 0;
     for (int i = 0; i < m->nlink; i++) {
         reach += m->len[i];
