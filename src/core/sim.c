@@ -329,15 +329,17 @@ static int handle(zp_sim *s, const zp_input *in, zp_result *r, double t, step_en
         }
     }
     add_stats(s, r);
-    int end = 0, dir;
-    const char *cannot; /* why the restart that follows could fail */
     if (e.kind == STEP_SETTLED || (e.kind == STEP_T_MAX && s->stuck)) {
         zp_sim_events_held(s, r, t);
         return 1;
-    } else if (e.kind == STEP_T_MAX) {
+    }
+    if (e.kind == STEP_T_MAX) {
         zp_sim_output_finish(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_T_MAX);
         return 1;
-    } else if (e.kind == STEP_BREAK) {
+    }
+    int end = 0, dir;
+    const char *cannot; /* why the restart that follows could fail */
+    if (e.kind == STEP_BREAK) {
         /* a break of the schedule: the force jumps (a held trolley is judged again), the
            integrator starts afresh */
         end = s->stuck ? zp_sim_events_stick(s, t, r, &dir) : 0;
@@ -360,6 +362,7 @@ static int handle(zp_sim *s, const zp_input *in, zp_result *r, double t, step_en
     return restart(s, t) ? failed(s, r, t, cannot) : 0;
 }
 
+/* the run: its start, then step after step until it ends or fails */
 static zp_status run(zp_sim *s, const zp_input *in, zp_result *r) {
     zp_sim_output_cursor oc = {0};
     double t = 0;
