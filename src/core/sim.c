@@ -166,7 +166,9 @@ static int restart(zp_sim *s, double t) {
     if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
         return 1;
     }
-    zp_sim_peaks_restart(s, t);
+    if (s->o.peaks) {
+        zp_sim_peaks_restart(s, t);
+    }
     return 0;
 }
 
@@ -218,7 +220,9 @@ static int start(zp_sim *s, const zp_input *in, zp_result *r, zp_sim_output_curs
         zp_sim_output_finish(s, r, t, ZP_OUTCOME_STALLED, ZP_STALL_ROLLED_BACK);
         return 1;
     }
-    zp_sim_peaks_start(s, t);
+    if (s->o.peaks) {
+        zp_sim_peaks_start(s, t);
+    }
     return restart(s, t) ? failed(s, r, t, "the integrator could not start") : 0;
 }
 
@@ -274,8 +278,12 @@ static zp_adv check(zp_sim *s, double t_before, double *t, zp_adv adv) {
 static void outputs(zp_sim *s, const zp_input *in, zp_result *r, double t, zp_adv adv,
                     zp_sim_output_cursor *oc) {
     zp_sim_peaks_extremes(s, t, s->y, r);
-    zp_sim_output_frames_in_step(s, in, t, oc);
-    zp_sim_peaks_step(s, t, adv);
+    if (in->frame_at_x) {
+        zp_sim_output_frames_in_step(s, in, t, oc);
+    }
+    if (s->o.peaks) {
+        zp_sim_peaks_step(s, t, adv);
+    }
     if (adv != ZP_ADV_ROOT) {
         zp_sim_output_emit(s, in, t, 1, oc);
     }

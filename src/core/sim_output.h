@@ -21,9 +21,9 @@ typedef struct zp_sim_output_cursor {
    event, within ZP_EVENT_TIME_EPS of it). */
 void zp_sim_output_emit(zp_sim *s, const zp_input *in, double t_upto, int dense,
                         zp_sim_output_cursor *oc);
-/* Frames at x the trolley has reached by the step that ended at (t, s->y): each where the
-   dense output first crosses it, those at or past the section's right end left to the kink
-   (shown after its impulse) or the finish. */
+/* Frames at x (in->frame_at_x) the trolley has reached by the step that ended at (t, s->y):
+   each where the dense output first crosses it, those at or past the section's right end left
+   to the kink (shown after its impulse) or the finish. */
 void zp_sim_output_frames_in_step(zp_sim *s, const zp_input *in, double t,
                                   zp_sim_output_cursor *oc);
 /* Frames at x up to `reached` (the start, a kink just crossed, the finish line; a root's x

@@ -74,18 +74,13 @@ static int dense_judged_g(double t, double *g, void *user) {
 }
 
 void zp_sim_peaks_start(zp_sim *s, double t) {
-    if (s->o.peaks) {
-        zp_peaks_reset(s->pk);
-        if (s->m->nenv > 0) {
-            zp_envelope_start(&s->env, s->m->nenv, s->m->env_g, t, 0);
-        }
+    zp_peaks_reset(s->pk);
+    if (s->m->nenv > 0) {
+        zp_envelope_start(&s->env, s->m->nenv, s->m->env_g, t, 0);
     }
 }
 
 void zp_sim_peaks_restart(zp_sim *s, double t) {
-    if (!s->o.peaks) {
-        return;
-    }
     double v[ZP_PEAKS_MAX];
     load_values(s, t, s->y, v);
     zp_peaks_restart(s->pk, t, v);
@@ -95,9 +90,6 @@ void zp_sim_peaks_restart(zp_sim *s, double t) {
 }
 
 void zp_sim_peaks_step(zp_sim *s, double t, zp_adv adv) {
-    if (!s->o.peaks) {
-        return;
-    }
     double vb[ZP_PEAKS_MAX];
     load_values(s, t, s->y, vb);
     /* a root inside a step is landed, off the step's dense output by its error: the interval

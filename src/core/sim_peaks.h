@@ -8,13 +8,14 @@
 
 /* The row at (t, y), its loads counted in the run's peaks. */
 zp_row zp_sim_peaks_row(zp_sim *s, double t, const double *y);
-/* The run starts at t (o.peaks; else nothing): no peak located yet, the envelope's clocks at 0. */
+/* Called with o.peaks only, as are the next two: the run starts at t, no peak located yet, the
+   envelope's clocks at 0. */
 void zp_sim_peaks_start(zp_sim *s, double t);
-/* The integrator (re)starts at (t, s->y) (o.peaks; else nothing): the peak locator starts a new
-   interval there, and felt g may have jumped (an impulse). */
+/* The integrator (re)starts at (t, s->y): the peak locator starts a new interval there, and
+   felt g may have jumped (an impulse). */
 void zp_sim_peaks_restart(zp_sim *s, double t);
-/* The step that ended at (t, s->y), on a root when adv says so (o.peaks; else nothing): the
-   peaks and the envelope's times inside it. */
+/* The step that ended at (t, s->y), on a root when adv says so: the peaks and the envelope's
+   times inside it. */
 void zp_sim_peaks_step(zp_sim *s, double t, zp_adv adv);
 /* The step that ended at (t, y) in r's extremes: the largest joint angles, with o.track_loads
    the loads and the trolley's speed, the largest constraint residual. */
