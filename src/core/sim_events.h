@@ -1,8 +1,8 @@
 /* Handling what a run's step ended on (sim.c classifies it): a kink crossed with its impulse, an
    arc's tangent point, the trolley at rest under rolling resistance (docs/model.md's stick rule),
-   and the events that end the run. Each handler changes the state where the equations change
-   and returns 0 for the run to go on from there (the caller restarts the integrator), 1 when the
-   run ended (r filled) or -1 when it failed (r's message). */
+   and the events that end the run. The handlers (stick, kink, rest, end) change the state where
+   the equations change and return 0 for the run to go on from there (the caller restarts the
+   integrator), 1 when the run ended (r filled) or -1 when it failed (r's message). */
 #ifndef ZP_SIM_EVENTS_H
 #define ZP_SIM_EVENTS_H
 

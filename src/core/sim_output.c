@@ -133,14 +133,14 @@ void zp_sim_output_finish(zp_sim *s, zp_result *r, double t, zp_outcome o, zp_st
     }
 }
 
-zp_status zp_sim_output_fail(zp_sim *s, zp_result *r, double t, const char *why) {
+void zp_sim_output_fail(zp_sim *s, zp_result *r, double t, const char *why) {
     if (isfinite(s->inconsistent_t)) {
         snprintf(r->message, sizeof r->message,
                  "rolling resistance has no consistent normal force at t = %.9g s, x = %.9g m "
                  "(Painleve's paradox: mu = %g is too large for this trolley and chain; the rigid "
                  "model of docs/model.md has no motion there)",
                  s->inconsistent_t, s->inconsistent_x, s->m->mu);
-        return ZP_ERR_NUMERIC;
+        return;
     }
     char where[64] = "";
     if (isfinite(s->y[0])) {
@@ -148,5 +148,4 @@ zp_status zp_sim_output_fail(zp_sim *s, zp_result *r, double t, const char *why)
     }
     snprintf(r->message, sizeof r->message, "numerical failure at t = %.9g s%s: %.180s", t, where,
              why);
-    return ZP_ERR_NUMERIC;
 }

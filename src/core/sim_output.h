@@ -32,8 +32,7 @@ void zp_sim_output_frames_here(zp_sim *s, const zp_input *in, double t, double r
                                zp_sim_output_cursor *oc);
 /* The run ended at t (outcome o, stall st): r's end state, work and peaks, the last row. */
 void zp_sim_output_finish(zp_sim *s, zp_result *r, double t, zp_outcome o, zp_stall st);
-/* The run failed at t: why, in r's message (friction's Painleve paradox where it was met).
-   Returns ZP_ERR_NUMERIC. */
-zp_status zp_sim_output_fail(zp_sim *s, zp_result *r, double t, const char *why);
+/* The run failed at t: why, in r's message (friction's Painleve paradox where it was met). */
+void zp_sim_output_fail(zp_sim *s, zp_result *r, double t, const char *why);
 
 #endif
