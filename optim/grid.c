@@ -12,6 +12,7 @@
 #include "robust.h"
 #include "scene_read.h"
 #include "search.h"
+#include "sim_opts.h"
 
 #define DEG (180.0 / M_PI)
 

@@ -9,6 +9,7 @@
 
 #include "robust.h"
 #include "search.h"
+#include "sim_opts.h"
 #include "verify.h"
 
 #define DEG (180.0 / M_PI)

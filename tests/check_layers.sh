@@ -1,9 +1,15 @@
 #!/bin/sh
 # The floors link only downward (README "Design"): no file includes a header from a floor above
 # its own. Floors, bottom up: src/numerics, src/core, src/io, optim, src/lib, src/app.
+# Within a floor, no include circle: a.c (or a.h) includes b.h while b.c (or b.h) includes a.h,
+# or a longer cycle a -> b -> c -> a. A header with no .c of its own (scene.h, a family's
+# *_int.h) is read through: what it includes counts as included by the file including it. Such
+# a header must not declare the functions of several files: their circle would not show here.
 top=${1:-.}
 cd "$top" || exit 1
 floors="src/numerics src/core src/io optim src/lib src/app"
+# floors whose circles are listed but do not fail the check yet: optim's are being taken apart
+circles_pending="optim"
 level() { # the floor index of the folder holding header $1, or -1 if none does
     i=0
     for f in $floors; do
@@ -11,6 +17,30 @@ level() { # the floor index of the folder holding header $1, or -1 if none does
         i=$((i + 1))
     done
     echo -1
+}
+includes() { # the quoted includes of the files $@ that exist
+    for file in "$@"; do
+        [ -f "$file" ] && sed -n 's/^#include "\([^"]*\)".*/\1/p' "$file"
+    done
+}
+uses() { # the files of floor $1 whose headers unit $2 (its .c and .h) includes, one a line
+    dir=$1
+    seen=" "
+    todo="$dir/$2.c $dir/$2.h"
+    while [ -n "$todo" ]; do
+        next=""
+        for h in $(includes $todo); do
+            [ -f "$dir/$h" ] || continue
+            case "$seen" in *" $h "*) continue ;; esac
+            seen="$seen$h "
+            if [ -f "$dir/${h%.h}.c" ]; then
+                [ "${h%.h}" != "$2" ] && echo "${h%.h}"
+            else
+                next="$next $dir/$h"
+            fi
+        done
+        todo=$next
+    done
 }
 status=0
 i=0
@@ -26,6 +56,29 @@ for f in $floors; do
         done
     done
     i=$((i + 1))
+    # the graph "a includes b's header"; tsort names each cycle it has to break, a line each
+    cycles=$(for c in "$f"/*.c; do
+        [ -f "$c" ] || continue
+        u=$(basename "$c" .c)
+        echo "$u $u"
+        for b in $(uses "$f" "$u"); do
+            echo "$u $b"
+        done
+    done | tsort 2>&1 >/dev/null | awk '
+        /contains a loop/ { if (l) print l " -> " first; l = ""; next }
+        { sub(/^tsort: /, ""); if (l) l = l " -> " $0; else first = l = $0 }
+        END { if (l) print l " -> " first }')
+    [ -n "$cycles" ] || continue
+    case " $circles_pending " in
+    *" $f "*) what="include circle (pending, not failed yet)" ;;
+    *)
+        what="include circle"
+        status=1
+        ;;
+    esac
+    echo "$cycles" | while read -r cycle; do
+        echo "$f: $what: $cycle"
+    done
 done
 [ $status = 0 ] && echo "1 passed, 0 failed" || echo "0 passed, 1 failed"
 exit $status

@@ -258,14 +258,14 @@ static void test_figures(void) {
     zp_plot_opts po;
     zp_plot_opts_default(&po);
     char why[256];
-    CHECK(zp_plot_parse_frames(m, "x=60,0,20,139.5,20", &po, why, sizeof why) == 0);
+    CHECK(zp_plot_opts_parse_frames(m, "x=60,0,20,139.5,20", &po, why, sizeof why) == 0);
     CHECK(po.nframe == 4 && po.frame_at[0] == 0 && po.frame_at[3] == 139.5); /* sorted, once */
-    zp_plot_frames_input(&po, &in);
+    zp_plot_opts_frames_input(&po, &in);
     CHECK(s && zp_sim_run(m, s, &in, &r) == ZP_OK);
     CHECK(r.outcome == ZP_OUTCOME_FINISHED);
     const zp_row_store *rows = zp_sim_rows(s);
 
-    CHECK(zp_plot_parse_size("480x200", &po, why, sizeof why) == 0);
+    CHECK(zp_plot_opts_parse_size("480x200", &po, why, sizeof why) == 0);
     po.animate = 1;
     po.fps = 10;
     po.speedup = 4;
@@ -351,8 +351,8 @@ static void test_figures(void) {
 
     /* frames the run never reaches are counted, not drawn */
     zp_plot_opts late = po;
-    CHECK(zp_plot_parse_frames(m, "t=1,1000", &late, why, sizeof why) == 0);
-    zp_plot_frames_input(&late, &in);
+    CHECK(zp_plot_opts_parse_frames(m, "t=1,1000", &late, why, sizeof why) == 0);
+    zp_plot_opts_frames_input(&late, &in);
     CHECK(zp_sim_run(m, s, &in, &r) == ZP_OK);
     snprintf(dir, sizeof dir, "%s/figs_late", tmp);
     CHECK(plot_into(dir, m, s, &r, &late, &info, e, sizeof e) == ZP_OK);
@@ -376,8 +376,8 @@ static void test_frame_geometry(void) {
     zp_plot_opts po;
     zp_plot_opts_default(&po);
     char why[256], dir[1024], e[2048];
-    CHECK(zp_plot_parse_frames(m, "x=20", &po, why, sizeof why) == 0);
-    zp_plot_frames_input(&po, &in);
+    CHECK(zp_plot_opts_parse_frames(m, "x=20", &po, why, sizeof why) == 0);
+    zp_plot_opts_frames_input(&po, &in);
     CHECK(s && zp_sim_run(m, s, &in, &r) == ZP_OK);
     snprintf(dir, sizeof dir, "%s/figs20", tmp);
     zp_plot_info info;

@@ -12,6 +12,7 @@
 #include "objective.h"
 #include "scene_read.h"
 #include "sim.h"
+#include "sim_opts.h"
 
 /* Builds a model from scene text; aborts the test on bad input (a broken test, not a check). */
 static inline zp_model *tu_model(const char *ini, zp_scene *sc) {

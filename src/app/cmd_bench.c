@@ -12,6 +12,7 @@
 #include "out_json.h"
 #include "setup.h"
 #include "sim.h"
+#include "sim_opts.h"
 
 #define NTOL 10          /* rtol 1e-3 .. 1e-12 */
 #define REF_RTOL 1e-13   /* the reference runs' tolerance: tighter than the sweep */

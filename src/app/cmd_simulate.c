@@ -257,10 +257,11 @@ static int plot_opts(const sim_args *a, const zp_setup *st, zp_plot_opts *po) {
         opt = "--plot";
         snprintf(why, sizeof why, "[solver] output_dt = %g gives no trajectory", st->sim.output_dt);
         snprintf(expect, sizeof expect, "output_dt > 0 in the scene");
-    } else if (a->frames_text && zp_plot_parse_frames(m, a->frames_text, po, why, sizeof why)) {
+    } else if (a->frames_text &&
+               zp_plot_opts_parse_frames(m, a->frames_text, po, why, sizeof why)) {
         opt = "--frames-at";
         snprintf(expect, sizeof expect, "x=X1,X2,.. (m, on the course) or t=T1,T2,.. (s)");
-    } else if (a->size_text && zp_plot_parse_size(a->size_text, po, why, sizeof why)) {
+    } else if (a->size_text && zp_plot_opts_parse_size(a->size_text, po, why, sizeof why)) {
         opt = "--size";
         snprintf(expect, sizeof expect, "e.g. 960x400");
     } else if (a->fps_text && (zp_cli_parse_list(a->fps_text, &po->fps, 1, why, sizeof why) != 1 ||
@@ -407,7 +408,7 @@ int zp_cmd_simulate(int argc, char **argv) {
     zp_estimate est;
     zp_accuracy acc;
     zp_input in = {.sched = &st.sched, .sample_t = samples, .nsample = nsample};
-    zp_plot_frames_input(&po, &in);
+    zp_plot_opts_frames_input(&po, &in);
     if (run_answer(m, st.sc.accuracy, &o, &in, &s, &r, &est, &acc)) {
         fprintf(stderr, "zipopt simulate: %s; nothing was written\n", r.message);
         goto done;

@@ -14,6 +14,7 @@
 #include "mpi_queue.h"
 #include "mpi_spread.h"
 #include "scene_read.h"
+#include "sim_opts.h"
 #include "sweep_csv.h"
 #include "sweep_out.h"
 

@@ -1,132 +1,27 @@
-/* Figures of one run (plot.h): the options, the scripts of the time plots and the course,
-   and the whole set written into the transaction and drawn by gnuplot (gnuplot.c); the data
-   files are plot_data.c's, the frames and the animation plot_anim.c's. */
+/* Figures of one run (plot.h): the scripts of the time plots and the course, and the whole set
+   written into the transaction and drawn by gnuplot (gnuplot.c); the options are plot_opts.c's,
+   what the scripts share plot_script.c's, the data files plot_data.c's, the frames and the
+   animation plot_anim.c's. */
 #include "plot.h"
 
 #include <math.h>
-#include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
 #include "gnuplot.h"
-#include "plot_parts.h"
-#include "scene_read.h"
+#include "plot_anim.h"
+#include "plot_data.h"
+#include "plot_script.h"
 #include "state.h"
 
 #define FIG_W 1100    /* px, width of the time plots */
 #define COURSE_W 1400 /* px, width of course.png */
 
-const char *const zp_plot_link_color[ZP_MAX_LINKS] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728",
-                                                      "#9467bd", "#8c564b", "#e377c2", "#17becf"};
-
-void zp_plot_opts_default(zp_plot_opts *o) {
-    memset(o, 0, sizeof *o);
-    o->fps = 25;
-    o->width = 960;
-    o->speedup = 1;
-}
-
-static int cmp_double(const void *a, const void *b) {
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-int zp_plot_parse_frames(const zp_model *m, const char *text, zp_plot_opts *o, char *why,
-                         size_t whylen) {
-    if ((text[0] != 'x' && text[0] != 't') || text[1] != '=') {
-        snprintf(why, whylen, "'%s' does not start with x= or t=", text);
-        return -1;
-    }
-    o->frame_kind = text[0] == 'x' ? ZP_PLOT_AT_X : ZP_PLOT_AT_T;
-    int n = zp_scene_parse_list(text + 2, o->frame_at, ZP_PLOT_MAX_FRAMES, why, whylen);
-    if (n < 0) {
-        return -1;
-    }
-    double lo = o->frame_kind == ZP_PLOT_AT_X ? m->xb[0] : 0;
-    double hi = o->frame_kind == ZP_PLOT_AT_X ? m->xb[m->nsec] : HUGE_VAL;
-    for (int i = 0; i < n; i++) {
-        if (!(o->frame_at[i] >= lo && o->frame_at[i] <= hi)) {
-            if (o->frame_kind == ZP_PLOT_AT_X) {
-                snprintf(why, whylen, "x = %g is off the course [%g, %g] m", o->frame_at[i], lo,
-                         hi);
-            } else {
-                snprintf(why, whylen, "t = %g is negative", o->frame_at[i]);
-            }
-            return -1;
-        }
-    }
-    qsort(o->frame_at, n, sizeof *o->frame_at, cmp_double);
-    o->nframe = 0;
-    for (int i = 0; i < n; i++) { /* a moment asked for twice is one frame */
-        if (!o->nframe || o->frame_at[i] != o->frame_at[o->nframe - 1]) {
-            o->frame_at[o->nframe++] = o->frame_at[i];
-        }
-    }
-    return 0;
-}
-
-void zp_plot_frames_input(const zp_plot_opts *o, zp_input *in) {
-    in->frame_at = o->frame_at;
-    in->nframe = o->nframe;
-    in->frame_at_x = o->frame_kind == ZP_PLOT_AT_X;
-}
-
-int zp_plot_parse_size(const char *text, zp_plot_opts *o, char *why, size_t whylen) {
-    int w, h, used = 0;
-    if (sscanf(text, "%dx%d%n", &w, &h, &used) != 2 || text[used] || w < 200 || w > 4000 ||
-        h < 100 || h > 4000) {
-        snprintf(why, whylen, "'%s' is not WxH with W in 200..4000 and H in 100..4000 px", text);
-        return -1;
-    }
-    o->width = w;
-    o->height = h;
-    return 0;
-}
-
-void zp_plot_outcome_text(const zp_result *r, char *buf, size_t len) {
-    if (r->outcome == ZP_OUTCOME_FINISHED) {
-        snprintf(buf, len, "finished in %.2f s", r->time);
-    } else if (r->outcome == ZP_OUTCOME_DIED) {
-        snprintf(buf, len, "died at t = %.2f s, x = %.1f m: joint %d looped", r->time, r->x,
-                 r->died_link);
-    } else {
-        snprintf(buf, len, "stalled (%s) at t = %.2f s, x = %.1f m", zp_sim_stall_name(r->stall),
-                 r->time, r->x);
-    }
-}
-
-void zp_plot_section_text(const zp_plot_opts *o, int sec, char *buf, size_t len) {
-    if (o->sched) {
-        char drive[32];
-        zp_schedule_label(o->sched, sec, drive, sizeof drive);
-        snprintf(buf, len, "section %d (%s)", sec + 1, drive);
-    } else {
-        snprintf(buf, len, "section %d", sec + 1);
-    }
-}
-
-void zp_plot_head_png(FILE *f, const zp_model *m, const char *name, const char *what, int w, int h,
-                      int several) {
-    fprintf(f,
-            "# %s%s: %s. Written by zipopt; run `gnuplot %s.gp` here to redraw.\n"
-            "set terminal pngcairo size %d,%d enhanced font 'DejaVu Sans,11' linewidth 1.3\n"
-            "set encoding utf8\n"
-            "set border lc rgb '#555555'\n"
-            "set grid lc rgb '#e6e6e6' lt 1 lw 0.8\n",
-            name, several ? "" : ".png", what, name, w, h);
-    if (!several) {
-        fprintf(f, "set output '%s.png'\n", name);
-    }
-    for (int i = 0; i < m->nlink; i++) {
-        fprintf(f, "set linetype %d lc rgb '%s' lw 2\n", i + 1, zp_plot_link_color[i]);
-    }
-}
-
 /* the sections as shaded bands with their names along the top */
 static void section_bands(FILE *f, const zp_model *m, const zp_plot_opts *o) {
     for (int k = 0; k < m->nsec; k++) {
         char name[64];
-        zp_plot_section_text(o, k, name, sizeof name);
+        zp_plot_script_section(o, k, name, sizeof name);
         fprintf(f,
                 "set object %d rect from %g, graph 0 to %g, graph 1 fc rgb '%s' "
                 "fs solid 1 noborder behind\n"
@@ -180,8 +75,9 @@ static void script_course(FILE *f, const zp_model *m, const zp_result *r, const 
     b.x1 += 2;
     int h = (int)((COURSE_W - 110) * (b.y1 - b.y0) / (b.x1 - b.x0)) + 150;
     char what[160];
-    zp_plot_outcome_text(r, what, sizeof what);
-    zp_plot_head_png(f, m, "course", "the course and every centre-of-mass path", COURSE_W, h, 0);
+    zp_plot_script_outcome(r, what, sizeof what);
+    zp_plot_script_head_png(f, m, "course", "the course and every centre-of-mass path", COURSE_W, h,
+                            0);
     fprintf(f,
             "set title 'The course and the centre-of-mass paths: %s' noenhanced\n"
             "set xlabel 'x (m)'\nset ylabel 'y (m)'\n"
@@ -228,8 +124,8 @@ static void script_course(FILE *f, const zp_model *m, const zp_result *r, const 
 }
 
 static void script_energy(FILE *f, const zp_model *m, const zp_result *r, const kinks *kk) {
-    zp_plot_head_png(f, m, "energy", "energy terms and cumulative work against time", FIG_W, 560,
-                     0);
+    zp_plot_script_head_png(f, m, "energy", "energy terms and cumulative work against time", FIG_W,
+                            560, 0);
     /* the title names every term of the balance the figure draws */
     fprintf(f,
             "set title 'Energy: kinetic + potential = E(0) + drive work − damper%s and kink "
@@ -264,7 +160,7 @@ static void script_energy(FILE *f, const zp_model *m, const zp_result *r, const 
 static void script_angles(FILE *f, const zp_model *m, const zp_result *r, const kinks *kk,
                           const zp_plot_opts *o, const zp_row *last) {
     double dmax = m->phi_max * ZP_PLOT_DEG, keep = (m->phi_max - o->margin) * ZP_PLOT_DEG;
-    zp_plot_head_png(f, m, "angles", "relative joint angles against time", FIG_W, 560, 0);
+    zp_plot_script_head_png(f, m, "angles", "relative joint angles against time", FIG_W, 560, 0);
     fprintf(f,
             "set title 'Relative joint angles φ_i = θ_i − θ_{i−1}'\n"
             "set xlabel 't (s)'\nset ylabel 'angle (deg)'\n"
@@ -307,7 +203,8 @@ static void script_angles(FILE *f, const zp_model *m, const zp_result *r, const 
 }
 
 static void script_loads(FILE *f, const zp_model *m, const zp_result *r, const kinks *kk) {
-    zp_plot_head_png(f, m, "loads", "joint reactions and normal force against time", FIG_W, 720, 0);
+    zp_plot_script_head_png(f, m, "loads", "joint reactions and normal force against time", FIG_W,
+                            720, 0);
     fputs("set multiplot layout 2, 1 title 'Loads'\n"
           "set lmargin 12\nset rmargin 4\n"
           "set key inside left top opaque box lc rgb '#cccccc'\n",
@@ -331,8 +228,8 @@ static void script_loads(FILE *f, const zp_model *m, const zp_result *r, const k
    angles, the felt g and the joint reactions over x, each kink a dotted line at its x */
 static void script_along(FILE *f, const zp_model *m, const zp_result *r, const zp_plot_opts *o) {
     double dmax = m->phi_max * ZP_PLOT_DEG, keep = (m->phi_max - o->margin) * ZP_PLOT_DEG;
-    zp_plot_head_png(f, m, "along", "joint angles, felt g and joint reactions against distance",
-                     FIG_W, 900, 0);
+    zp_plot_script_head_png(
+        f, m, "along", "joint angles, felt g and joint reactions against distance", FIG_W, 900, 0);
     fputs("set multiplot layout 3, 1 title 'The ride against distance'\n"
           "set lmargin 12\nset rmargin 4\n"
           "set key inside right top opaque box lc rgb '#cccccc'\n",
@@ -373,8 +270,8 @@ static void script_along(FILE *f, const zp_model *m, const zp_result *r, const z
 /* felt g of the judged links against time, each [limits] g_envelope level drawn with its
    allowance and the longest time the run stayed above it */
 static void script_envelope(FILE *f, const zp_model *m, const zp_result *r, const kinks *kk) {
-    zp_plot_head_png(f, m, "envelope", "felt g against time with the g-duration envelope", FIG_W,
-                     480, 0);
+    zp_plot_script_head_png(f, m, "envelope", "felt g against time with the g-duration envelope",
+                            FIG_W, 480, 0);
     fputs("set key inside right top opaque box lc rgb '#cccccc'\n"
           "set xlabel 't (s)'\nset ylabel 'felt g (g)'\n",
           f);
@@ -386,8 +283,7 @@ static void script_envelope(FILE *f, const zp_model *m, const zp_result *r, cons
                 "lc rgb '#d62728'\n"
                 "set label 'above %g g: at most %g s allowed, longest %.3g s' at graph 0.01, "
                 "first %.9g offset 0, 0.6 tc rgb '#d62728'\n",
-                m->env_g[l], m->env_g[l], m->env_g[l], m->env_s[l], r->env_longest[l],
-                m->env_g[l]);
+                m->env_g[l], m->env_g[l], m->env_g[l], m->env_s[l], r->env_longest[l], m->env_g[l]);
     }
     fputs("plot 'plot_run.dat' using 't':'felt_g' with lines lw 2 lc rgb '#1f77b4' "
           "title 'felt g (judged links)'\n",
@@ -459,7 +355,8 @@ zp_status zp_plot_start(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_r
         }
         int nf;
         const zp_row *frames = zp_sim_frames(s, &nf);
-        zp_plot_frames(fg, fd, m, frames, nf, o, info);
+        info->nframe = zp_plot_frames(fg, fd, m, frames, nf, o);
+        info->nskipped = o->nframe - nf;
     }
     if (o->animate) {
         FILE *ag = open_file(t, "run.gp", scripts, &ns, err, errlen);
@@ -469,7 +366,7 @@ zp_status zp_plot_start(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_r
             return ZP_ERR_IO;
         }
         info->mp4 = zp_gnuplot_have("ffmpeg");
-        zp_plot_anim(ag, ad, al, m, rows, r, o, cb, info->mp4, info);
+        info->anim_frames = zp_plot_anim(ag, ad, al, m, rows, r, o, cb, info->mp4);
     }
     zp_status st = zp_gnuplot_start(t, scripts, ns, o->procs, j, err, errlen);
     info->no_gnuplot = j->missing;

@@ -1,8 +1,10 @@
-/* Still frames and the animation of one run (plot_parts.h): the body drawn at chosen
+/* Still frames and the animation of one run (plot_anim.h): the body drawn at chosen
    positions or times, and followed along the course in run.gif. */
+#include "plot_anim.h"
+
 #include <math.h>
 
-#include "plot_parts.h"
+#include "plot_script.h"
 
 #define FRAME_PX 640 /* px, side of a still frame */
 
@@ -35,21 +37,20 @@ static void frame_name(const zp_plot_opts *o, int i, char *buf, size_t len) {
 }
 
 int zp_plot_frames(FILE *gp, FILE *dat, const zp_model *m, const zp_row *frames, int n,
-                   const zp_plot_opts *o, zp_plot_info *info) {
+                   const zp_plot_opts *o) {
     double reach = 0;
     for (int i = 0; i < m->nlink; i++) {
         reach += m->len[i];
     }
-    zp_plot_head_png(gp, m, "frames", "still frames of the body on the course (frame_*.png)", FRAME_PX,
-             FRAME_PX, 1);
+    zp_plot_script_head_png(gp, m, "frames", "still frames of the body on the course (frame_*.png)",
+                            FRAME_PX, FRAME_PX, 1);
     fputs("set size ratio -1\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nunset key\n", gp);
     int drawn = 0;
-    info->nskipped = o->nframe - n;
     for (int i = 0; i < n; i++) {
         zp_plot_pose ps = zp_plot_pose_of_row(m, &frames[i]);
         char name[64], sec[64];
         frame_name(o, i, name, sizeof name);
-        zp_plot_section_text(o, ps.sec, sec, sizeof sec);
+        zp_plot_script_section(o, ps.sec, sec, sizeof sec);
         zp_plot_write_pose(dat, m, &ps);
         /* one scale for every frame, centred on the body */
         zp_plot_box b = {HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL};
@@ -67,13 +68,13 @@ int zp_plot_frames(FILE *gp, FILE *dat, const zp_model *m, const zp_row *frames,
         snprintf(index, sizeof index, "%d", drawn++);
         pose_plot(gp, m, "'plot_course.dat' using 'x':'y'", "plot_frames.dat", index, NULL, 1);
     }
-    info->nframe = drawn;
     return drawn;
 }
 
-void zp_plot_anim(FILE *gp, FILE *dat, FILE *lab, const zp_model *m, const zp_row_store *rows,
-                  const zp_result *r, const zp_plot_opts *o, zp_plot_box course, int mp4,
-                  zp_plot_info *info) {
+/* plot_anim.dat and plot_anim_label.dat: the pose and its label every speedup / fps s of the
+   run, and the last; returns how many */
+static int anim_data(FILE *dat, FILE *lab, const zp_model *m, const zp_row_store *rows,
+                     const zp_result *r, const zp_plot_opts *o) {
     double t0 = zp_row_store_t(rows, 0), t1 = zp_row_store_t(rows, rows->n - 1),
            dt = o->speedup / o->fps;
     int nf = (int)floor((t1 - t0) / dt) + 1;
@@ -82,16 +83,21 @@ void zp_plot_anim(FILE *gp, FILE *dat, FILE *lab, const zp_model *m, const zp_ro
     for (int j = 0; j < nf; j++) {
         zp_plot_pose ps = zp_plot_pose_at_t(m, rows, fmin(t0 + j * dt, t1));
         zp_plot_write_pose(dat, m, &ps);
-        zp_plot_section_text(o, ps.sec, sec, sizeof sec);
+        zp_plot_script_section(o, ps.sec, sec, sizeof sec);
         if (j == nf - 1) {
-            zp_plot_outcome_text(r, text, sizeof text);
+            zp_plot_script_outcome(r, text, sizeof text);
         } else {
             snprintf(text, sizeof text, "t = %5.2f s   x = %6.2f m   speed %5.2f m/s   %s", ps.t,
                      ps.p[0][0], ps.speed, sec);
         }
         fprintf(lab, "%d \"%s\"\n", j, text);
     }
-    info->anim_frames = nf;
+    return nf;
+}
+
+int zp_plot_anim(FILE *gp, FILE *dat, FILE *lab, const zp_model *m, const zp_row_store *rows,
+                 const zp_result *r, const zp_plot_opts *o, zp_plot_box course, int mp4) {
+    int nf = anim_data(dat, lab, m, rows, r, o);
     double reach = 0;
     for (int i = 0; i < m->nlink; i++) {
         reach += m->len[i];
@@ -110,7 +116,7 @@ void zp_plot_anim(FILE *gp, FILE *dat, FILE *lab, const zp_model *m, const zp_ro
             "set encoding utf8\n",
             o->speedup, mp4, (int)lround(100 / o->fps), w, h);
     for (int i = 0; i < m->nlink; i++) {
-        fprintf(gp, "set linetype %d lc rgb '%s' lw 2\n", i + 1, zp_plot_link_color[i]);
+        fprintf(gp, "set linetype %d lc rgb '%s' lw 2\n", i + 1, zp_plot_script_link_color[i]);
     }
     fputs("unset key\nunset tics\nset margins 0, 0, 0, 0\n", gp);
     for (int k = 1; k < m->nsec; k++) {
@@ -154,4 +160,5 @@ void zp_plot_anim(FILE *gp, FILE *dat, FILE *lab, const zp_model *m, const zp_ro
             "-vf \"pad=ceil(iw/2)*2:ceil(ih/2)*2\" run.mp4')\n"
             "}\n",
             course.x0 - 1, course.x1 + 1, course.y0 - 1, course.y1 + 1);
+    return nf;
 }

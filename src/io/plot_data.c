@@ -1,10 +1,11 @@
-/* The data files of one run's figures (plot_parts.h): the pose of a row, or between rows, from
+/* The data files of one run's figures (plot_data.h): the pose of a row, or between rows, from
    the chain geometry of docs/model.md "Bodies" (state.c), the course, and the
    trajectory with its derived columns. */
+#include "plot_data.h"
+
 #include <math.h>
 #include <string.h>
 
-#include "plot_parts.h"
 #include "state.h"
 
 #define COURSE_STEP 0.2 /* m between course samples */

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "scene_read.h"
+#include "sim_opts.h"
 
 /* [optimize] method: the search's integrator, judged with the [solver] names */
 static void search_opts(zp_setup *st, zp_diag *d) {
