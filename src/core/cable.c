@@ -12,10 +12,10 @@
 /* The unloaded catenary as a Newton system: the segment from A must end at B. */
 typedef struct hang_problem {
     const zp_cable *c;
-    double h;        /* N; > 0: the horizontal tension given, unknowns (mu, s); 0: (h, mu) */
-    int homotopy;    /* what lambda scales: the compliance, the weight, or nothing */
-    double lambda;   /* the continuation parameter, 0 .. 1 */
-    double w, compl; /* the weight and compliance at lambda */
+    double h;             /* N; > 0: the horizontal tension given, unknowns (mu, s); 0: (h, mu) */
+    int homotopy;         /* what lambda scales: the compliance, the weight, or nothing */
+    double lambda;        /* the continuation parameter, 0 .. 1 */
+    double w, compliance; /* the weight and compliance at lambda */
 } hang_problem;
 
 enum { SCALE_NONE, SCALE_COMPLIANCE, SCALE_WEIGHT };
@@ -24,7 +24,7 @@ static int hang_residual(const double *z, double *r, double *jac, void *ctx) {
     hang_problem *p = ctx;
     const zp_cable *c = p->c;
     p->w = p->homotopy == SCALE_WEIGHT ? p->lambda * c->weight : c->weight;
-    p->compl = p->homotopy == SCALE_COMPLIANCE ? p->lambda * c->compliance : c->compliance;
+    p->compliance = p->homotopy == SCALE_COMPLIANCE ? p->lambda * c->compliance : c->compliance;
     double h = p->h > 0 ? p->h : z[0], mu = p->h > 0 ? z[0] : z[1];
     double s = p->h > 0 ? z[1] : c->length;
     if (!(h > 0)) {
@@ -35,7 +35,7 @@ static int hang_residual(const double *z, double *r, double *jac, void *ctx) {
         zp_cable_jet jh = {h, p->h > 0 ? 0 : j == 0, 0};
         zp_cable_jet jmu = {mu, p->h > 0 ? j == 0 : j == 1, 0};
         zp_cable_jet js = {s, p->h > 0 && j == 1, 0};
-        zp_cable_segment g = zp_cable_segment_ends(jh, jmu, js, p->w, p->compl);
+        zp_cable_segment g = zp_cable_segment_ends(jh, jmu, js, p->w, p->compliance);
         r[0] = g.dx.v - (c->xb - c->xa);
         r[1] = g.dy.v - (c->yb - c->ya);
         jac[j] = g.dx.d;
@@ -44,10 +44,14 @@ static int hang_residual(const double *z, double *r, double *jac, void *ctx) {
     return isfinite(r[0] + r[1] + jac[0] + jac[1] + jac[2] + jac[3]) ? 0 : -1;
 }
 
-static double chord(const zp_cable *c) { return hypot(c->xb - c->xa, c->yb - c->ya); }
+static double chord(const zp_cable *c) {
+    return hypot(c->xb - c->xa, c->yb - c->ya);
+}
 
 /* asinh(q) / q falls from 1 (q = 0) to 0: the q > 0 where it is rho, 0 < rho < 1 */
-static double asinhc_gap(double q, void *rho) { return asinh(q) / q - *(double *)rho; }
+static double asinhc_gap(double q, void *rho) {
+    return asinh(q) / q - *(double *)rho;
+}
 
 static double asinhc_inverse(double rho) {
     double hi = 1;
@@ -81,21 +85,49 @@ static int hang_start(const hang_problem *p, double *z) {
     return isfinite(z[0]) && isfinite(z[1]) && z[0] != 0 ? 0 : -1;
 }
 
+/* A cable of small sag hangs near the parabola, whose sag adds w^2 a^2 d / (24 h^2) to the
+   chord d (span a); that is the unstretched length's excess plus its stretch,
+   L0 (1 + c h d / a) - d. The gap between the two grows with h: one root. */
+static double parabola_gap(double h, void *ctx) {
+    const zp_cable *c = ctx;
+    double a = c->xb - c->xa, d = chord(c), w = c->weight;
+    return c->length * (1 + c->compliance * h * d / a) - d - w * w * a * a * d / (24 * h * h);
+}
+
+static double parabola_tension(const zp_cable *c) {
+    double lo = 1, hi = 1;
+    for (int i = 0; i < 2000 && parabola_gap(hi, (void *)c) <= 0; i++) {
+        hi *= 2;
+    }
+    for (int i = 0; i < 2000 && parabola_gap(lo, (void *)c) > 0; i++) {
+        lo *= 0.5;
+    }
+    return zp_cable_newton_root(parabola_gap, (void *)c, lo, hi);
+}
+
 /* The catenary from A to B with horizontal tension h (> 0; unknowns mu, s) or with length L0
-   (h = 0; unknowns h, mu), into z. Straight from the nearby exact problem first, by
-   continuation from it when that fails. */
+   (h = 0; unknowns h, mu), into z. With L0, from the parabola first; then (and with h) from
+   the nearby exact problem, straight and by continuation. */
 static zp_status hang_solve(const zp_cable *c, double h, double *z) {
-    hang_problem p = {.c = c, .h = h, .lambda = 0};
+    hang_problem p = {.c = c, .h = h, .lambda = 1};
+    double rscale[2] = {chord(c), chord(c)};
+    if (h == 0) {
+        double zscale[2] = {parabola_tension(c), 1};
+        z[0] = zscale[0];
+        z[1] = asinh(-(c->yb - c->ya) / (c->xb - c->xa));
+        if (zscale[0] > 0 && zp_cable_newton_solve(2, hang_residual, &p, z, zscale, rscale) == 0) {
+            return ZP_OK;
+        }
+    }
     /* an elastic cable shorter than the chord hangs near the weightless chord; any other near
        its inextensible catenary */
     int taut = h == 0 && c->length < chord(c);
     p.homotopy = taut || c->weight == 0 ? SCALE_WEIGHT : SCALE_COMPLIANCE;
+    p.lambda = 0;
     if (hang_start(&p, z)) {
         return ZP_ERR_NUMERIC;
     }
-    double tension = h > 0 ? h : z[0];
-    double zscale[2] = {h > 0 ? 1 : tension, h > 0 ? c->length + chord(c) : 1};
-    double rscale[2] = {chord(c), chord(c)};
+    double zscale[2] = {h > 0 ? 1 : z[0], h > 0 ? c->length + chord(c) : 1};
     double start[2] = {z[0], z[1]};
     p.lambda = 1;
     if (zp_cable_newton_solve(2, hang_residual, &p, z, zscale, rscale) == 0) {
@@ -115,8 +147,9 @@ static zp_status refuse(char *why, size_t whylen, const char *text) {
 zp_status zp_cable_build(const zp_cable_def *d, zp_cable *c, char *why, size_t whylen) {
     if (!isfinite(d->xa) || !isfinite(d->ya) || !isfinite(d->xb) || !isfinite(d->yb) ||
         !isfinite(d->length) || !isfinite(d->tension) || !isfinite(d->weight) || isnan(d->ea)) {
-        return refuse(why, whylen, "a cable number is not finite; expected finite numbers "
-                                   "(ea may be infinite: inextensible)");
+        return refuse(why, whylen,
+                      "a cable number is not finite; expected finite numbers "
+                      "(ea may be infinite: inextensible)");
     }
     if (!(d->xa < d->xb)) {
         return refuse(why, whylen, "anchor A is not left of anchor B; expected x_A < x_B");
@@ -135,12 +168,14 @@ zp_status zp_cable_build(const zp_cable_def *d, zp_cable *c, char *why, size_t w
     }
     *c = (zp_cable){d->xa, d->ya, d->xb, d->yb, d->length, d->weight, d->ea, 1 / d->ea};
     if (d->length > 0 && isinf(d->ea) && !(d->length > chord(c))) {
-        return refuse(why, whylen, "an inextensible cable not longer than |AB| cannot hang; "
-                                   "expected length > the anchors' distance");
+        return refuse(why, whylen,
+                      "an inextensible cable not longer than |AB| cannot hang; "
+                      "expected length > the anchors' distance");
     }
     if (d->tension > 0 && d->weight == 0 && isinf(d->ea)) {
-        return refuse(why, whylen, "a weightless inextensible cable is the taut chord under any "
-                                   "tension; expected a weight or an ea with tension");
+        return refuse(why, whylen,
+                      "a weightless inextensible cable is the taut chord under any "
+                      "tension; expected a weight or an ea with tension");
     }
     if (d->tension > 0) {
         double z[2];
@@ -183,8 +218,9 @@ double zp_cable_hang_distance(const zp_cable *c, const zp_cable_unloaded *u, dou
 
 zp_status zp_cable_hang(const zp_cable *c, zp_cable_unloaded *u, char *why, size_t whylen) {
     if (c->weight == 0 && !(c->compliance > 0 && c->length < chord(c))) {
-        return refuse(why, whylen, "a weightless cable not shorter than |AB| has no shape of "
-                                   "its own; expected a weight, or an elastic cable stretched");
+        return refuse(why, whylen,
+                      "a weightless cable not shorter than |AB| has no shape of "
+                      "its own; expected a weight, or an elastic cable stretched");
     }
     double z[2];
     if (hang_solve(c, 0, z) != ZP_OK) {
@@ -194,8 +230,8 @@ zp_status zp_cable_hang(const zp_cable *c, zp_cable_unloaded *u, char *why, size
     double h = z[0], w = c->weight;
     zp_cable_segment g = zp_cable_segment_ends(zp_cable_jet_const(h), zp_cable_jet_const(z[1]),
                                                zp_cable_jet_const(c->length), w, c->compliance);
-    *u = (zp_cable_unloaded){.h = h, .va = g.v0.v, .vb = -g.v1.v, .ta = g.t0.v, .tb = g.t1.v,
-                             .mu = z[1]};
+    *u = (zp_cable_unloaded){
+        .h = h, .va = g.v0.v, .vb = -g.v1.v, .ta = g.t0.v, .tb = g.t1.v, .mu = z[1]};
     /* the lowest point is where the vertical tension passes zero, if it does */
     if (g.v0.v <= 0) {
         u->x_low = c->xa, u->y_low = c->ya;

@@ -11,7 +11,9 @@ typedef struct zp_cable_jet {
     double v, d, dd;
 } zp_cable_jet;
 
-static inline zp_cable_jet zp_cable_jet_const(double v) { return (zp_cable_jet){v, 0, 0}; }
+static inline zp_cable_jet zp_cable_jet_const(double v) {
+    return (zp_cable_jet){v, 0, 0};
+}
 
 static inline zp_cable_jet zp_cable_jet_add(zp_cable_jet a, zp_cable_jet b) {
     return (zp_cable_jet){a.v + b.v, a.d + b.d, a.dd + b.dd};
@@ -26,7 +28,8 @@ static inline zp_cable_jet zp_cable_jet_scale(double k, zp_cable_jet a) {
 }
 
 static inline zp_cable_jet zp_cable_jet_mul(zp_cable_jet a, zp_cable_jet b) {
-    return (zp_cable_jet){a.v * b.v, a.d * b.v + a.v * b.d, a.dd * b.v + 2 * a.d * b.d + a.v * b.dd};
+    return (zp_cable_jet){a.v * b.v, a.d * b.v + a.v * b.d,
+                          a.dd * b.v + 2 * a.d * b.d + a.v * b.dd};
 }
 
 static inline zp_cable_jet zp_cable_jet_div(zp_cable_jet a, zp_cable_jet b) {

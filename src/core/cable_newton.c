@@ -59,8 +59,8 @@ static int newton_step(int n, const double *jac, const double *r, double *dz) {
     return zp_cable_newton_linear(n, jac, minus_r, dz);
 }
 
-int zp_cable_newton_solve(int n, zp_cable_newton_fn fn, void *ctx, double *z,
-                          const double *zscale, const double *rscale) {
+int zp_cable_newton_solve(int n, zp_cable_newton_fn fn, void *ctx, double *z, const double *zscale,
+                          const double *rscale) {
     double r[ZP_CABLE_NEWTON_MAX], jac[ZP_CABLE_NEWTON_MAX * ZP_CABLE_NEWTON_MAX];
     double dz[ZP_CABLE_NEWTON_MAX], trial[ZP_CABLE_NEWTON_MAX];
     double rt[ZP_CABLE_NEWTON_MAX], jt[ZP_CABLE_NEWTON_MAX * ZP_CABLE_NEWTON_MAX];

@@ -19,8 +19,8 @@ int zp_cable_newton_linear(int n, const double *jac, const double *b, double *x)
    decreases; zscale: the size of each unknown, for the step's size. Returns 0 once the full
    steps have shrunk to round-off, -1 when a step cannot be taken (singular Jacobian, no
    decrease, too many steps): z is then unspecified. */
-int zp_cable_newton_solve(int n, zp_cable_newton_fn fn, void *ctx, double *z,
-                          const double *zscale, const double *rscale);
+int zp_cable_newton_solve(int n, zp_cable_newton_fn fn, void *ctx, double *z, const double *zscale,
+                          const double *rscale);
 /* Follows the solution z of the problem at *lambda = 0 (given exactly) to the problem at
    *lambda = 1, the one fn describes as it reads *lambda: each step solved by
    zp_cable_newton_solve from the last two solutions' secant, a step that fails halved. Returns

@@ -10,11 +10,17 @@
 
 #include "cable_solve.h"
 
-#define NODES 24 /* Chebyshev points per piece: each series' length */
+#define NODES 32 /* Chebyshev points per piece: each series' length */
 enum { VAL_F, VAL_FP, VAL_FPP, VAL_ENERGY, VAL_HA, VAL_HB, NVAL };
-/* a piece is done when its series' last two terms are this small beside the value's size: the
-   equilibria's own round-off (about 1e-14 of Pi_c) sets the floor */
-#define TAIL_TOL 4e-14
+/* a value's series on a piece is done when its last two terms are this small beside the
+   value's size, */
+#define TAIL_TOL 2e-14
+/* or when they are no smaller than the terms before them (PLATEAU times those) and below
+   NOISE_MAX: the series has reached the equilibria's own round-off, which halving the piece
+   cannot lower (f'' and the tensions of a steep side carry round-off up to about 1e-12) */
+#define PLATEAU 0.25
+#define PLATEAU_TERMS 6
+#define NOISE_MAX 1e-11
 #define MAX_PIECES 2048 /* past this, pieces are kept whatever their tail (the tail says so) */
 
 typedef struct piece {
@@ -38,7 +44,9 @@ typedef struct builder {
     size_t whylen;
 } builder;
 
-static double node_t(int k) { return cos(M_PI * (k + 0.5) / NODES); }
+static double node_t(int k) {
+    return cos(M_PI * (k + 0.5) / NODES);
+}
 
 static void state_values(const zp_cable_state *s, double *v) {
     v[VAL_F] = s->f, v[VAL_FP] = s->fp, v[VAL_FPP] = s->fpp;
@@ -78,11 +86,20 @@ static int fit(builder *bd, double a, double b, const zp_cable_state *seed, zp_c
     return 0;
 }
 
-static double piece_tail(const builder *bd, const piece *pc) {
+/* the largest last term of the piece's series (relative to each value's size), and whether
+   every series is done */
+static double piece_tail(const builder *bd, const piece *pc, int *done) {
     double tail = 0;
+    *done = 1;
     for (int i = 0; i < NVAL; i++) {
-        double last = fmax(fabs(pc->coef[i][NODES - 1]), fabs(pc->coef[i][NODES - 2]));
-        tail = fmax(tail, last / bd->scale[i]);
+        const double *c = pc->coef[i];
+        double last = fmax(fabs(c[NODES - 1]), fabs(c[NODES - 2])) / bd->scale[i], before = 0;
+        for (int j = NODES - 2 - PLATEAU_TERMS; j < NODES - 2; j++) {
+            before = fmax(before, fabs(c[j]) / bd->scale[i]);
+        }
+        int plateau = last >= PLATEAU * before && last <= NOISE_MAX;
+        *done &= last <= TAIL_TOL || plateau;
+        tail = fmax(tail, last);
     }
     return tail;
 }
@@ -130,11 +147,11 @@ static int build_piece(builder *bd, double a, double b, const zp_cable_state *se
             bd->scale[i] = bd->scale[i] > 0 ? bd->scale[i] : 1;
         }
     }
-    double tail = piece_tail(bd, &pc), m = 0.5 * (a + b);
-    if (tail > TAIL_TOL && bd->p->n + 2 <= MAX_PIECES && a < m && m < b) {
+    int done;
+    double tail = piece_tail(bd, &pc, &done), m = 0.5 * (a + b);
+    if (!done && bd->p->n + 2 <= MAX_PIECES && a < m && m < b) {
         /* each half starts from the equilibrium nearest its left end */
-        return build_piece(bd, a, m, &st[NODES - 1], 0) ||
-               build_piece(bd, m, b, &st[NODES / 2], 0);
+        return build_piece(bd, a, m, &st[NODES - 1], 0) || build_piece(bd, m, b, &st[NODES / 2], 0);
     }
     return append(bd, b, &pc, tail);
 }
@@ -195,18 +212,18 @@ static int locate(const zp_cable_path *p, double x, double *t) {
     return lo;
 }
 
-/* the series first .. first + count - 1 of pc at t (Clenshaw, side by side) */
-static void series(const piece *pc, int first, int count, double t, double *out) {
+/* every series of pc at t (Clenshaw, side by side) */
+static void series(const piece *pc, double t, double *out) {
     double b1[NVAL] = {0}, b2[NVAL] = {0};
     for (int j = NODES - 1; j >= 1; j--) {
-        for (int i = 0; i < count; i++) {
-            double b0 = 2 * t * b1[i] - b2[i] + pc->coef[first + i][j];
+        for (int i = 0; i < NVAL; i++) {
+            double b0 = 2 * t * b1[i] + (pc->coef[i][j] - b2[i]);
             b2[i] = b1[i];
             b1[i] = b0;
         }
     }
-    for (int i = 0; i < count; i++) {
-        out[i] = t * b1[i] - b2[i] + pc->coef[first + i][0];
+    for (int i = 0; i < NVAL; i++) {
+        out[i] = t * b1[i] - b2[i] + pc->coef[i][0];
     }
 }
 
@@ -217,7 +234,19 @@ int zp_cable_path_track(const zp_cable_path *p, double x, double *f) {
         f[0] = f[1] = f[2] = NAN;
         return -1;
     }
-    series(&p->pieces[k], VAL_F, 3, t, f);
+    /* series() for f, f', f'' alone, each step's c_j - b_(j+2) apart from the chain through
+       b_(j+1), which then costs a product and a sum per term */
+    const double *c0 = p->pieces[k].coef[VAL_F], *c1 = p->pieces[k].coef[VAL_FP];
+    const double *c2 = p->pieces[k].coef[VAL_FPP];
+    double a1 = 0, a2 = 0, b1 = 0, b2 = 0, d1 = 0, d2 = 0, t2 = 2 * t;
+    for (int j = NODES - 1; j >= 1; j--) {
+        double a0 = t2 * a1 + (c0[j] - a2), b0 = t2 * b1 + (c1[j] - b2);
+        double d0 = t2 * d1 + (c2[j] - d2);
+        a2 = a1, a1 = a0, b2 = b1, b1 = b0, d2 = d1, d1 = d0;
+    }
+    f[0] = t * a1 - a2 + c0[0];
+    f[1] = t * b1 - b2 + c1[0];
+    f[2] = t * d1 - d2 + c2[0];
     return 0;
 }
 
@@ -228,7 +257,7 @@ int zp_cable_path_eval(const zp_cable_path *p, double x, zp_cable_path_value *v)
         *v = (zp_cable_path_value){NAN, NAN, NAN, NAN, NAN, NAN, NAN};
         return -1;
     }
-    series(&p->pieces[k], 0, NVAL, t, out);
+    series(&p->pieces[k], t, out);
     *v = (zp_cable_path_value){.f = out[VAL_F],
                                .fp = out[VAL_FP],
                                .fpp = out[VAL_FPP],
@@ -244,6 +273,10 @@ void zp_cable_path_interval(const zp_cable_path *p, double *lo, double *hi) {
     *hi = p->hi;
 }
 
-int zp_cable_path_pieces(const zp_cable_path *p) { return p->n; }
+int zp_cable_path_pieces(const zp_cable_path *p) {
+    return p->n;
+}
 
-double zp_cable_path_tail(const zp_cable_path *p) { return p->tail; }
+double zp_cable_path_tail(const zp_cable_path *p) {
+    return p->tail;
+}

@@ -59,14 +59,16 @@ zp_cable_segment zp_cable_segment_ends(zp_cable_jet h, zp_cable_jet mu, zp_cable
     zp_cable_jet half_ws = zp_cable_jet_scale(0.5 * w, s);
     zp_cable_jet q = zp_cable_jet_div(half_ws, zp_cable_jet_mul(h, ch));
     /* sqrt(1 + q^2) = cosh((theta0 - theta1) / 2) */
-    zp_cable_jet cq = zp_cable_jet_sqrt(zp_cable_jet_add(zp_cable_jet_const(1), zp_cable_jet_mul(q, q)));
+    zp_cable_jet cq =
+        zp_cable_jet_sqrt(zp_cable_jet_add(zp_cable_jet_const(1), zp_cable_jet_mul(q, q)));
     zp_cable_jet ch_h = zp_cable_jet_scale(c, h);
     zp_cable_segment g;
     g.dx = zp_cable_jet_mul(s, zp_cable_jet_add(ch_h, zp_cable_jet_div(asinhc(q), ch)));
     /* the vertical tension halfway along: h sinh(mu) cosh((theta0 - theta1) / 2) */
     zp_cable_jet vm = zp_cable_jet_mul(h, zp_cable_jet_mul(sh, cq));
     zp_cable_jet stretch = zp_cable_jet_mul(ch_h, zp_cable_jet_mul(sh, cq));
-    g.dy = zp_cable_jet_scale(-1, zp_cable_jet_mul(s, zp_cable_jet_add(stretch, zp_cable_jet_div(sh, ch))));
+    g.dy = zp_cable_jet_scale(
+        -1, zp_cable_jet_mul(s, zp_cable_jet_add(stretch, zp_cable_jet_div(sh, ch))));
     g.v0 = zp_cable_jet_add(vm, half_ws);
     g.v1 = zp_cable_jet_sub(vm, half_ws);
     g.t0 = zp_cable_jet_hypot(h, g.v0);

@@ -43,7 +43,8 @@ static void system_jets(const loaded_problem *p, const double *z, const double *
     const zp_cable *c = p->c;
     double w = weight_at(p);
     zp_cable_jet ha = {z[0], dir[0], 0}, mua = {z[1], dir[1], 0}, sa = {z[2], dir[2], 0};
-    zp_cable_jet hb = {z[3], dir[3], 0}, mub = {z[4], dir[4], 0}, sb = {c->length - z[2], -dir[2], 0};
+    zp_cable_jet hb = {z[3], dir[3], 0}, mub = {z[4], dir[4], 0},
+                 sb = {c->length - z[2], -dir[2], 0};
     zp_cable_segment a = zp_cable_segment_ends(ha, mua, sa, w, c->compliance);
     zp_cable_segment b = zp_cable_segment_ends(hb, mub, sb, w, c->compliance);
     r[0] = zp_cable_jet_sub(a.dx, zp_cable_jet_const(p->x - c->xa));
@@ -126,8 +127,8 @@ static double straight_tension(const straight_problem *s, double e, double *pa, 
 static double straight_gap(double e, void *ctx) {
     const straight_problem *s = ctx;
     double pa, pb, t = straight_tension(s, e, &pa, &pb);
-    double stretched = s->c->compliance > 0 ? s->c->length * (1 + s->c->compliance * t)
-                                            : s->c->length;
+    double stretched =
+        s->c->compliance > 0 ? s->c->length * (1 + s->c->compliance * t) : s->c->length;
     return pa + pb - stretched;
 }
 
@@ -206,8 +207,7 @@ static int finish(const loaded_problem *p, const double *z, zp_cable_state *st) 
     const zp_cable *c = p->c;
     double r[NZ], jac[NZ * NZ], grad_rise[NZ], dz[NZ], ddz[NZ], d2r[NZ];
     const double minus_rx[NZ] = {1, -1, 0, 0, 0}; /* dR/dx = (-1, 1, 0, 0, 0) */
-    if (system_jacobian(p, z, r, jac, grad_rise) ||
-        zp_cable_newton_linear(NZ, jac, minus_rx, dz)) {
+    if (system_jacobian(p, z, r, jac, grad_rise) || zp_cable_newton_linear(NZ, jac, minus_rx, dz)) {
         return -1;
     }
     zp_cable_jet rj[NZ], rise;
@@ -244,11 +244,10 @@ static int finish(const loaded_problem *p, const double *z, zp_cable_state *st) 
     return isfinite(st->f + st->fp + st->fpp + st->energy) ? 0 : -1;
 }
 
-static zp_status check_input(const zp_cable *c, double load, double x, char *why,
-                             size_t whylen) {
+static zp_status check_input(const zp_cable *c, double load, double x, char *why, size_t whylen) {
     if (!(x > c->xa && x < c->xb)) {
-        snprintf(why, whylen, "x = %g m is not between the anchors; expected %g < x < %g", x,
-                 c->xa, c->xb);
+        snprintf(why, whylen, "x = %g m is not between the anchors; expected %g < x < %g", x, c->xa,
+                 c->xb);
         return ZP_ERR_INPUT;
     }
     if (!(load >= 0) || !isfinite(load)) {
@@ -257,8 +256,9 @@ static zp_status check_input(const zp_cable *c, double load, double x, char *why
     }
     double chord = hypot(c->xb - c->xa, c->yb - c->ya);
     if (c->weight == 0 && load == 0 && !(c->compliance > 0 && c->length < chord)) {
-        snprintf(why, whylen, "a weightless cable with no load has no shape unless stretched; "
-                              "expected a load > 0");
+        snprintf(why, whylen,
+                 "a weightless cable with no load has no shape unless stretched; "
+                 "expected a load > 0");
         return ZP_ERR_INPUT;
     }
     return ZP_OK;
@@ -278,8 +278,8 @@ zp_status zp_cable_solve(const zp_cable *c, double load, double x, zp_cable_stat
     /* two exact problems nearby: the cable's own catenary, closer when the load is lighter
        than the cable, and the weightless cable, closer when it is heavier. Newton straight
        from each, then continuation from each. */
-    start_kind first = hangs_alone(c) && load < c->weight * c->length ? FROM_UNLOADED
-                                                                      : FROM_WEIGHTLESS;
+    start_kind first =
+        hangs_alone(c) && load < c->weight * c->length ? FROM_UNLOADED : FROM_WEIGHTLESS;
     for (int attempt = 0; attempt < 4; attempt++) {
         loaded_problem p = {c, x, load, attempt % 2 ? !first : first, 0};
         double z[NZ], zscale[NZ], rscale[NZ];
