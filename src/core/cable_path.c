@@ -17,11 +17,13 @@ enum { VAL_F, VAL_FP, VAL_FPP, VAL_ENERGY, VAL_HA, VAL_HB, NVAL };
 #define TAIL_TOL 2e-14
 /* or when they are no smaller than the terms before them (PLATEAU times those) and below
    NOISE_MAX: the series has reached the equilibria's own round-off, which halving the piece
-   cannot lower (f'' and the tensions of a steep side carry round-off up to about 1e-12) */
+   cannot lower. That round-off grows with the cable's stiffness against its tension (EA / T)
+   and with the steepness of a side: up to 1e-10 of f'' on a stiff, nearly taut line. A series
+   that falls to 1e-8 over its terms and then stops falling is not short of terms. */
 #define PLATEAU 0.25
 #define PLATEAU_TERMS 6
-#define NOISE_MAX 1e-11
-#define MAX_PIECES 2048 /* past this, pieces are kept whatever their tail (the tail says so) */
+#define NOISE_MAX 1e-8
+#define MAX_PIECES 256 /* past this, pieces are kept whatever their tail (the tail says so) */
 
 typedef struct piece {
     double coef[NVAL][NODES];

@@ -1,5 +1,7 @@
-/* The loaded equilibrium (MODEL.md "A cable that sags"). Unknowns z = (ha, mu_a, sa, hb, mu_b),
-   sb = L0 - sa; equations: side A ends at the trolley, side B at anchor B, the heights close,
+/* The loaded equilibrium (MODEL.md "A cable that sags"). Unknowns z = (ha, mu_a, s, hb, mu_b),
+   s the shorter side's unstretched length (the trolley's nearer anchor), the other L0 - s: a
+   short side given as L0 less the long one would keep only the digits L0 and it do not share.
+   Equations: side A ends at the trolley, side B at anchor B, the heights close,
    the vertical tension drops by W across the trolley, the tension is the same on both sides.
    f', f'' by implicit differentiation: J z' = -R_x, J z'' = -R_zz[z', z'] (R is linear in x). */
 #include "cable_solve.h"
@@ -24,7 +26,19 @@ typedef struct loaded_problem {
     double x, load; /* m, N */
     start_kind from;
     double lambda; /* 1: the problem itself */
+    int b_short;   /* the unknown s is side B's (the trolley nearer B), else side A's */
 } loaded_problem;
+
+/* d sa / d s and d sb / d s: one side is s, the other L0 - s */
+static double sa_sign(const loaded_problem *p) { return p->b_short ? -1 : 1; }
+
+static double side_a_length(const loaded_problem *p, double s) {
+    return p->b_short ? p->c->length - s : s;
+}
+
+static double side_b_length(const loaded_problem *p, double s) {
+    return p->b_short ? s : p->c->length - s;
+}
 
 static double weight_at(const loaded_problem *p) {
     return p->from == FROM_WEIGHTLESS ? p->lambda * p->c->weight : p->c->weight;
@@ -42,9 +56,11 @@ static void system_jets(const loaded_problem *p, const double *z, const double *
                         zp_cable_jet *r, zp_cable_jet *rise_a) {
     const zp_cable *c = p->c;
     double w = weight_at(p);
-    zp_cable_jet ha = {z[0], dir[0], 0}, mua = {z[1], dir[1], 0}, sa = {z[2], dir[2], 0};
-    zp_cable_jet hb = {z[3], dir[3], 0}, mub = {z[4], dir[4], 0},
-                 sb = {c->length - z[2], -dir[2], 0};
+    double k = sa_sign(p);
+    zp_cable_jet ha = {z[0], dir[0], 0}, mua = {z[1], dir[1], 0};
+    zp_cable_jet sa = {side_a_length(p, z[2]), k * dir[2], 0};
+    zp_cable_jet hb = {z[3], dir[3], 0}, mub = {z[4], dir[4], 0};
+    zp_cable_jet sb = {side_b_length(p, z[2]), -k * dir[2], 0};
     zp_cable_segment a = zp_cable_segment_ends(ha, mua, sa, w, c->compliance);
     zp_cable_segment b = zp_cable_segment_ends(hb, mub, sb, w, c->compliance);
     r[0] = zp_cable_jet_sub(a.dx, zp_cable_jet_const(p->x - c->xa));
@@ -64,7 +80,7 @@ static void side_partials(double h, double mu, double s, double w, double c, zp_
 }
 
 /* R and its Jacobian, and side A's rise's gradient when grad_rise is not NULL. Side A depends
-   on (ha, mu_a, sa) alone, side B on (hb, mu_b, sb = L0 - sa): three seeds each. */
+   on (ha, mu_a, sa) alone, side B on (hb, mu_b, sb), sa + sb = L0: three seeds each. */
 static int system_jacobian(const loaded_problem *p, const double *z, double *r, double *jac,
                            double *grad_rise) {
     if (!(z[0] > 0 && z[3] > 0)) {
@@ -73,29 +89,27 @@ static int system_jacobian(const loaded_problem *p, const double *z, double *r, 
     const zp_cable *c = p->c;
     double w = weight_at(p);
     zp_cable_segment a[3], b[3];
-    side_partials(z[0], z[1], z[2], w, c->compliance, a);
-    side_partials(z[3], z[4], c->length - z[2], w, c->compliance, b);
+    side_partials(z[0], z[1], side_a_length(p, z[2]), w, c->compliance, a);
+    side_partials(z[3], z[4], side_b_length(p, z[2]), w, c->compliance, b);
     r[0] = a[0].dx.v - (p->x - c->xa);
     r[1] = b[0].dx.v - (c->xb - p->x);
     r[2] = a[0].dy.v + b[0].dy.v - (c->yb - c->ya);
     r[3] = b[0].v0.v - a[0].v1.v + load_at(p);
     r[4] = a[0].t1.v - b[0].t0.v;
-    /* column j: side A's seed ja (-1: none), side B's seed jb with its sign (sb = L0 - sa) */
-    static const int ja[NZ] = {0, 1, 2, -1, -1}, jb[NZ] = {-1, -1, 2, 0, 1};
-    static const double sb_sign[NZ] = {0, 0, -1, 1, 1};
-    static const zp_cable_segment none; /* a side the unknown does not move */
+    /* column j: side A's seed ja[j] and side B's jb[j], each moved by its sign (the shared
+       length s moves the two sides oppositely) */
+    static const int ja[NZ] = {0, 1, 2, 0, 0}, jb[NZ] = {0, 0, 2, 0, 1};
+    const double ka[NZ] = {1, 1, sa_sign(p), 0, 0}, kb[NZ] = {0, 0, -sa_sign(p), 1, 1};
     double sum = r[0] + r[1] + r[2] + r[3] + r[4];
     for (int j = 0; j < NZ; j++) {
-        zp_cable_segment da = ja[j] < 0 ? none : a[ja[j]];
-        zp_cable_segment db = jb[j] < 0 ? none : b[jb[j]];
-        double k = sb_sign[j];
-        jac[0 * NZ + j] = da.dx.d;
-        jac[1 * NZ + j] = k * db.dx.d;
-        jac[2 * NZ + j] = da.dy.d + k * db.dy.d;
-        jac[3 * NZ + j] = k * db.v0.d - da.v1.d;
-        jac[4 * NZ + j] = da.t1.d - k * db.t0.d;
+        const zp_cable_segment *da = &a[ja[j]], *db = &b[jb[j]];
+        jac[0 * NZ + j] = ka[j] * da->dx.d;
+        jac[1 * NZ + j] = kb[j] * db->dx.d;
+        jac[2 * NZ + j] = ka[j] * da->dy.d + kb[j] * db->dy.d;
+        jac[3 * NZ + j] = kb[j] * db->v0.d - ka[j] * da->v1.d;
+        jac[4 * NZ + j] = ka[j] * da->t1.d - kb[j] * db->t0.d;
         if (grad_rise) {
-            grad_rise[j] = da.dy.d;
+            grad_rise[j] = ka[j] * da->dy.d;
         }
         for (int i = 0; i < NZ; i++) {
             sum += jac[i * NZ + j];
@@ -117,11 +131,20 @@ typedef struct straight_problem {
     double rise_a, rise_b; /* m, A and B above the chord's point at x: its height differences */
 } straight_problem;
 
+/* a side's sine gain from the chord to depth e below it: r / |(dx, r)| at r = rise + e less
+   at r = rise, as e (q0 - r (2 r + e) / (q0 + q1)) / (q0 q1), which does not cancel as e -> 0
+   (the sides' sines on the chord cancel each other, so their sum is the sum of the gains) */
+static double sine_gain(double dx, double rise, double e, double *length) {
+    double q0 = hypot(dx, rise), q1 = hypot(dx, rise + e);
+    *length = q1;
+    return e * (q0 - rise * (2 * rise + e) / (q0 + q1)) / (q0 * q1);
+}
+
 static double straight_tension(const straight_problem *s, double e, double *pa, double *pb) {
     const zp_cable *c = s->c;
-    *pa = hypot(s->x - c->xa, s->rise_a + e);
-    *pb = hypot(c->xb - s->x, s->rise_b + e);
-    return s->load / ((s->rise_a + e) / *pa + (s->rise_b + e) / *pb);
+    double gains = sine_gain(s->x - c->xa, s->rise_a, e, pa) +
+                   sine_gain(c->xb - s->x, s->rise_b, e, pb);
+    return s->load / gains;
 }
 
 static double straight_gap(double e, void *ctx) {
@@ -138,18 +161,19 @@ static double straight_depth(const straight_problem *s) {
     if (s->load == 0) {
         return 0; /* the stretched chord */
     }
-    /* the gap is negative on the chord (an elastic cable's tension unbounded there) and grows
-       with the depth: from a depth far below any root, up by decades to the first positive */
+    /* the gap is negative on the chord (an elastic cable's tension unbounded there, where it
+       is -infinity: the bracket stops short of it) and grows with the depth: by decades up to
+       the first positive, down to the first negative */
     double lo = 0, hi = 1e-12 * fmin(s->x - c->xa, c->xb - s->x);
-    if (c->compliance > 0) {
-        lo = hi;
-        for (int i = 0; i < 20 && !(straight_gap(lo, (void *)s) < 0); i++) {
-            lo *= 1e-3;
-        }
-    }
     for (int i = 0; i < 100 && !(straight_gap(hi, (void *)s) > 0); i++) {
         lo = hi;
         hi *= 10;
+    }
+    if (lo == 0 && c->compliance > 0) {
+        lo = hi;
+        for (int i = 0; i < 30 && !(straight_gap(lo, (void *)s) < 0); i++) {
+            lo *= 0.1;
+        }
     }
     return zp_cable_newton_root(straight_gap, (void *)s, lo, hi);
 }
@@ -171,7 +195,7 @@ static double weightless_start(const loaded_problem *p, double *z) {
     double stretch = 1 + c->compliance * t;
     z[0] = t * (p->x - c->xa) / pa;
     z[1] = asinh((s.rise_a + e) / (p->x - c->xa));
-    z[2] = pa / stretch;
+    z[2] = (p->b_short ? pb : pa) / stretch;
     z[3] = t * (c->xb - p->x) / pb;
     z[4] = asinh(-(s.rise_b + e) / (c->xb - p->x));
     return isfinite(z[0] + z[1] + z[2] + z[3] + z[4]) && t > 0 ? t : NAN;
@@ -189,7 +213,7 @@ static double unloaded_start(const loaded_problem *p, double *z) {
     double sa = zp_cable_hang_distance(c, &u, p->x), w = c->weight;
     z[0] = z[3] = u.h;
     z[1] = zp_cable_segment_mu(u.h, u.va, sa, w);
-    z[2] = sa;
+    z[2] = p->b_short ? c->length - sa : sa;
     z[4] = zp_cable_segment_mu(u.h, u.va - w * sa, c->length - sa, w);
     return isfinite(z[1] + z[2] + z[4]) ? u.h : NAN;
 }
@@ -222,9 +246,9 @@ static int finish(const loaded_problem *p, const double *z, zp_cable_state *st) 
     for (int i = 0; i < NZ; i++) {
         fpp += grad_rise[i] * ddz[i];
     }
-    double w = c->weight, sb = c->length - z[2];
+    double w = c->weight, sa = side_a_length(p, z[2]), sb = side_b_length(p, z[2]);
     zp_cable_segment a = zp_cable_segment_ends(zp_cable_jet_const(z[0]), zp_cable_jet_const(z[1]),
-                                               zp_cable_jet_const(z[2]), w, c->compliance);
+                                               zp_cable_jet_const(sa), w, c->compliance);
     zp_cable_segment b = zp_cable_segment_ends(zp_cable_jet_const(z[3]), zp_cable_jet_const(z[4]),
                                                zp_cable_jet_const(sb), w, c->compliance);
     st->x = p->x;
@@ -236,9 +260,9 @@ static int finish(const loaded_problem *p, const double *z, zp_cable_state *st) 
     st->t_trolley = 0.5 * (a.t1.v + b.t0.v);
     st->ta = a.t0.v, st->tb = b.t1.v;
     st->va = a.v0.v, st->vb = -b.v1.v;
-    st->sa = z[2], st->sb = sb;
+    st->sa = sa, st->sb = sb;
     st->mu_a = z[1], st->mu_b = z[4];
-    st->energy = zp_cable_segment_energy(z[0], z[1], z[2], w, c->compliance, c->ya) +
+    st->energy = zp_cable_segment_energy(z[0], z[1], sa, w, c->compliance, c->ya) +
                  zp_cable_segment_energy(z[3], z[4], sb, w, c->compliance, st->f);
     st->denergy = (z[0] - z[3]) - p->load * st->fp;
     return isfinite(st->f + st->fp + st->fpp + st->energy) ? 0 : -1;
@@ -264,6 +288,8 @@ static zp_status check_input(const zp_cable *c, double load, double x, char *why
     return ZP_OK;
 }
 
+static int nearer_b(const zp_cable *c, double x) { return x - c->xa > c->xb - x; }
+
 /* 1 when the cable hangs without a load: it has weight, or it is elastic and stretched */
 static int hangs_alone(const zp_cable *c) {
     return c->weight > 0 || (c->compliance > 0 && c->length < hypot(c->xb - c->xa, c->yb - c->ya));
@@ -281,7 +307,7 @@ zp_status zp_cable_solve(const zp_cable *c, double load, double x, zp_cable_stat
     start_kind first =
         hangs_alone(c) && load < c->weight * c->length ? FROM_UNLOADED : FROM_WEIGHTLESS;
     for (int attempt = 0; attempt < 4; attempt++) {
-        loaded_problem p = {c, x, load, attempt % 2 ? !first : first, 0};
+        loaded_problem p = {c, x, load, attempt % 2 ? !first : first, 0, nearer_b(c, x)};
         double z[NZ], zscale[NZ], rscale[NZ];
         if (p.from == FROM_UNLOADED && !hangs_alone(c)) {
             continue;
@@ -309,8 +335,9 @@ zp_status zp_cable_solve_near(const zp_cable *c, const zp_cable_state *near, dou
     if (rc != ZP_OK) {
         return rc;
     }
-    loaded_problem p = {c, x, near->load, FROM_WEIGHTLESS, 1};
-    double z[NZ] = {near->ha, near->mu_a, near->sa, near->hb, near->mu_b}, zscale[NZ], rscale[NZ];
+    loaded_problem p = {c, x, near->load, FROM_WEIGHTLESS, 1, nearer_b(c, x)};
+    double s = p.b_short ? near->sb : near->sa;
+    double z[NZ] = {near->ha, near->mu_a, s, near->hb, near->mu_b}, zscale[NZ], rscale[NZ];
     scales(c, near->t_trolley, zscale, rscale);
     if (zp_cable_newton_solve(NZ, newton_residual, &p, z, zscale, rscale) == 0 &&
         finish(&p, z, st) == 0) {
