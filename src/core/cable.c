@@ -12,19 +12,18 @@
 /* The unloaded catenary as a Newton system: the segment from A must end at B. */
 typedef struct hang_problem {
     const zp_cable *c;
-    double h;             /* N; > 0: the horizontal tension given, unknowns (mu, s); 0: (h, mu) */
-    int homotopy;         /* what lambda scales: the compliance, the weight, or nothing */
-    double lambda;        /* the continuation parameter, 0 .. 1 */
-    double w, compliance; /* the weight and compliance at lambda */
+    double h;      /* N; > 0: the horizontal tension given, unknowns (mu, s); 0: (h, mu) */
+    int homotopy;  /* what lambda scales: the compliance, the weight, or nothing */
+    double lambda; /* the continuation parameter, 0 .. 1 */
 } hang_problem;
 
 enum { SCALE_NONE, SCALE_COMPLIANCE, SCALE_WEIGHT };
 
 static int hang_residual(const double *z, double *r, double *jac, void *ctx) {
-    hang_problem *p = ctx;
+    const hang_problem *p = ctx;
     const zp_cable *c = p->c;
-    p->w = p->homotopy == SCALE_WEIGHT ? p->lambda * c->weight : c->weight;
-    p->compliance = p->homotopy == SCALE_COMPLIANCE ? p->lambda * c->compliance : c->compliance;
+    double w = p->homotopy == SCALE_WEIGHT ? p->lambda * c->weight : c->weight;
+    double compliance = p->homotopy == SCALE_COMPLIANCE ? p->lambda * c->compliance : c->compliance;
     double h = p->h > 0 ? p->h : z[0], mu = p->h > 0 ? z[0] : z[1];
     double s = p->h > 0 ? z[1] : c->length;
     if (!(h > 0)) {
@@ -35,7 +34,7 @@ static int hang_residual(const double *z, double *r, double *jac, void *ctx) {
         zp_cable_jet jh = {h, p->h > 0 ? 0 : j == 0, 0};
         zp_cable_jet jmu = {mu, p->h > 0 ? j == 0 : j == 1, 0};
         zp_cable_jet js = {s, p->h > 0 && j == 1, 0};
-        zp_cable_segment g = zp_cable_segment_ends(jh, jmu, js, p->w, p->compliance);
+        zp_cable_segment g = zp_cable_segment_ends(jh, jmu, js, w, compliance);
         r[0] = g.dx.v - (c->xb - c->xa);
         r[1] = g.dy.v - (c->yb - c->ya);
         jac[j] = g.dx.d;
@@ -96,10 +95,10 @@ static double parabola_gap(double h, void *ctx) {
 
 static double parabola_tension(const zp_cable *c) {
     double lo = 1, hi = 1;
-    for (int i = 0; i < 2000 && parabola_gap(hi, (void *)c) <= 0; i++) {
+    while (hi < 1e300 && parabola_gap(hi, (void *)c) <= 0) {
         hi *= 2;
     }
-    for (int i = 0; i < 2000 && parabola_gap(lo, (void *)c) > 0; i++) {
+    while (lo > 1e-300 && parabola_gap(lo, (void *)c) > 0) {
         lo *= 0.5;
     }
     return zp_cable_newton_root(parabola_gap, (void *)c, lo, hi);
@@ -166,7 +165,14 @@ zp_status zp_cable_build(const zp_cable_def *d, zp_cable *c, char *why, size_t w
     if ((d->length > 0) == (d->tension > 0)) {
         return refuse(why, whylen, "both or neither of length and tension; expected exactly one");
     }
-    *c = (zp_cable){d->xa, d->ya, d->xb, d->yb, d->length, d->weight, d->ea, 1 / d->ea};
+    *c = (zp_cable){.xa = d->xa,
+                    .ya = d->ya,
+                    .xb = d->xb,
+                    .yb = d->yb,
+                    .length = d->length,
+                    .weight = d->weight,
+                    .ea = d->ea,
+                    .compliance = 1 / d->ea};
     if (d->length > 0 && isinf(d->ea) && !(d->length > chord(c))) {
         return refuse(why, whylen,
                       "an inextensible cable not longer than |AB| cannot hang; "
@@ -230,8 +236,7 @@ zp_status zp_cable_hang(const zp_cable *c, zp_cable_unloaded *u, char *why, size
     double h = z[0], w = c->weight;
     zp_cable_segment g = zp_cable_segment_ends(zp_cable_jet_const(h), zp_cable_jet_const(z[1]),
                                                zp_cable_jet_const(c->length), w, c->compliance);
-    *u = (zp_cable_unloaded){
-        .h = h, .va = g.v0.v, .vb = -g.v1.v, .ta = g.t0.v, .tb = g.t1.v, .mu = z[1]};
+    *u = (zp_cable_unloaded){.h = h, .va = g.v0.v, .vb = -g.v1.v, .ta = g.t0.v, .tb = g.t1.v};
     /* the lowest point is where the vertical tension passes zero, if it does */
     if (g.v0.v <= 0) {
         u->x_low = c->xa, u->y_low = c->ya;

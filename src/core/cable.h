@@ -43,7 +43,6 @@ typedef struct zp_cable_unloaded {
     double ta, tb;       /* N, tension at A, at B */
     double sag_mid;      /* m, the chord's height minus the cable's at x = (xa + xb) / 2 */
     double x_low, y_low; /* m, the lowest point (an anchor when the cable only falls or rises) */
-    double mu;           /* the catenary's mu (cable_segment.h), for continuing from it */
 } zp_cable_unloaded;
 
 /* The unloaded shape of c into u. ZP_ERR_INPUT for a weightless cable not shorter than |AB|

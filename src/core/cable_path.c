@@ -3,7 +3,6 @@
    accuracy); a piece is halved until every series' last terms are at round-off. */
 #include "cable_path.h"
 
-#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

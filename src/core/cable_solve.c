@@ -1,9 +1,9 @@
-/* The loaded equilibrium (MODEL.md "A cable that sags"). Unknowns z = (ha, mu_a, s, hb, mu_b),
-   s the shorter side's unstretched length (the trolley's nearer anchor), the other L0 - s: a
-   short side given as L0 less the long one would keep only the digits L0 and it do not share.
-   Equations: side A ends at the trolley, side B at anchor B, the heights close,
-   the vertical tension drops by W across the trolley, the tension is the same on both sides.
-   f', f'' by implicit differentiation: J z' = -R_x, J z'' = -R_zz[z', z'] (R is linear in x). */
+/* The loaded equilibrium (MODEL.md "A cable that sags"). Unknowns z = (ha, mu_a, s, hb, mu_b):
+   s is the unstretched length of the side toward the trolley's nearer anchor, the other side's
+   is L0 - s (a short side computed as L0 less the long one would keep only a few digits).
+   Equations: side A ends at the trolley, side B at anchor B, the heights close, the vertical
+   tension drops by W across the trolley, the tension is the same on both sides. f', f'' by
+   implicit differentiation: J z' = -R_x, J z'' = -R_zz[z', z'] (R is linear in x). */
 #include "cable_solve.h"
 
 #include <math.h>
@@ -29,8 +29,10 @@ typedef struct loaded_problem {
     int b_short;   /* the unknown s is side B's (the trolley nearer B), else side A's */
 } loaded_problem;
 
-/* d sa / d s and d sb / d s: one side is s, the other L0 - s */
-static double sa_sign(const loaded_problem *p) { return p->b_short ? -1 : 1; }
+/* d sa / d s (d sb / d s is its negative): one side is s, the other L0 - s */
+static double sa_sign(const loaded_problem *p) {
+    return p->b_short ? -1 : 1;
+}
 
 static double side_a_length(const loaded_problem *p, double s) {
     return p->b_short ? p->c->length - s : s;
@@ -142,8 +144,8 @@ static double sine_gain(double dx, double rise, double e, double *length) {
 
 static double straight_tension(const straight_problem *s, double e, double *pa, double *pb) {
     const zp_cable *c = s->c;
-    double gains = sine_gain(s->x - c->xa, s->rise_a, e, pa) +
-                   sine_gain(c->xb - s->x, s->rise_b, e, pb);
+    double gains =
+        sine_gain(s->x - c->xa, s->rise_a, e, pa) + sine_gain(c->xb - s->x, s->rise_b, e, pb);
     return s->load / gains;
 }
 
@@ -288,7 +290,9 @@ static zp_status check_input(const zp_cable *c, double load, double x, char *why
     return ZP_OK;
 }
 
-static int nearer_b(const zp_cable *c, double x) { return x - c->xa > c->xb - x; }
+static int nearer_b(const zp_cable *c, double x) {
+    return x - c->xa > c->xb - x;
+}
 
 /* 1 when the cable hangs without a load: it has weight, or it is elastic and stretched */
 static int hangs_alone(const zp_cable *c) {
