@@ -24,8 +24,9 @@ typedef struct zp_cable_state {
     double denergy;    /* N, dPi_c/dx = (ha - hb) - W fp */
 } zp_cable_state;
 
-/* The equilibrium of c with load W (N, >= 0) at x into st, from the weightless straight-sided
-   solution by Newton (and continuation in the cable's weight where Newton alone fails).
+/* The equilibrium of c with load W (N, >= 0) at x into st, by Newton from the cable's own
+   catenary or from the weightless straight-sided solution, whichever is nearer (continuation
+   in the load, or in the cable's weight, where Newton alone fails).
    ZP_ERR_INPUT for x outside (xa, xb), a negative or non-finite load, or a weightless cable that
    is neither loaded nor stretched (it has no shape); ZP_ERR_NUMERIC when no equilibrium is
    found. why says which; st is unspecified then. Thread-safe: c is only read. */
