@@ -21,7 +21,8 @@
  * BDF; the default method is Adams, so the stabilization lives in the equations and serves
  * every method. A kink restart goes through from_chain, which puts the state back exactly on
  * the constraints.
- * Optional effects (docs/model.md): drag at each centre of mass adds to that body's momentum row;
+ * Optional effects (docs/model.md, effect.h): their force on each body adds to that body's
+ * momentum row;
  * rolling resistance replaces the frictionless row by (C.t) = -mu sgn(X') |C.n| for the course
  * force C = (Nx, Ny), t and n the unit tangent and normal, with the sign of C.n taken + and
  * the system solved again with - when that was wrong; held at rest, the row is a0x = 0.
@@ -45,7 +46,7 @@ struct newton_work {
     gsl_matrix *A, *lu; /* lu: A's factors where A must be kept (rolling resistance) */
     gsl_vector *b, *z;
     gsl_permutation *perm;
-    newton_fn fn; /* the equations with this model's effects */
+    newton_fn fn; /* the equations with this model's kinds of effects */
     int sgn_free; /* sign of det A with the frictionless course row, found on first need: it
                      never vanishes, so it is one sign for every state */
 };
@@ -167,20 +168,23 @@ static double newton_residual(const zp_model *m, const zp_track *tr, const doubl
     return r;
 }
 
-/* drag on every body at its centre of mass added to the momentum rows; returns the power it
-   takes out */
-static double newton_drag(const zp_model *m, const double *y, gsl_vector *b) {
+/* the effects' forces on every body added to its momentum rows, each effect's power into pw */
+static void newton_effects(const zp_model *m, const double *y, gsl_vector *b, double *pw) {
     int np = npos(m);
-    double pout = 0;
+    zp_effect_motion mo;
+    mo.nbody = m->nlink + 1;
     for (int bd = 0; bd <= m->nlink; bd++) {
         int k = bd ? 2 + 3 * (bd - 1) : 0;
-        double vx = y[np + k], vy = y[np + k + 1], rx = vx - m->wind;
-        double kk = m->drag_k[bd] * hypot(rx, vy), fx = -kk * rx, fy = -kk * vy;
-        gsl_vector_set(b, k, gsl_vector_get(b, k) + fx);
-        gsl_vector_set(b, k + 1, gsl_vector_get(b, k + 1) + fy);
-        pout -= fx * vx + fy * vy;
+        mo.v[bd][0] = y[np + k];
+        mo.v[bd][1] = y[np + k + 1];
     }
-    return pout;
+    double f[ZP_MAX_LINKS + 1][2];
+    zp_effect_forces(m->physics, m, &mo, f, pw);
+    for (int bd = 0; bd <= m->nlink; bd++) {
+        int k = bd ? 2 + 3 * (bd - 1) : 0;
+        gsl_vector_set(b, k, gsl_vector_get(b, k) + f[bd][0]);
+        gsl_vector_set(b, k + 1, gsl_vector_get(b, k + 1) + f[bd][1]);
+    }
 }
 
 /* the course row: frictionless (cf = 0), or the course force's tangential part cf |normal
@@ -254,12 +258,14 @@ static int newton_friction(const zp_model *m, newton_work *nw, const zp_drive_no
     return normal > 0 || -normal > normal_max ? ZP_RHS_FRICTION_INCONSISTENT : 0;
 }
 
-/* phys constant where inlined (always: a copy per set of effects) */
+/* forces: effects that give forces on the bodies, rolling: rolling resistance; constants
+   where inlined (always: a copy per kind of effects) */
 __attribute__((always_inline)) static inline int newton_rhs_with(const zp_model *m,
                                                                 newton_work *nw,
                                                                 const zp_drive_now *dn,
                                                                 const double *y, double *ydot,
-                                                                zp_loads *loads, int phys) {
+                                                                zp_loads *loads, int forces,
+                                                                int rolling) {
     const int n = m->nlink, np = npos(m), rr = np, rn = np + 2 * n; /* reaction, normal cols */
     const double a = NE_STAB_RATE, fp = dn->tr.fp;
     gsl_matrix *A = nw->A;
@@ -336,13 +342,13 @@ __attribute__((always_inline)) static inline int newton_rhs_with(const zp_model 
     gsl_vector_set(b, rn, dn->tr.fpp * xd * xd - 2 * a * Kd - a * a * K);
     gsl_matrix_set(A, rn + 1, rn, 1);
     gsl_matrix_set(A, rn + 1, rn + 1, fp);
-    double pdrag = 0;
-    if (phys & ZP_PHYS_DRAG) {
-        pdrag = newton_drag(m, y, b);
+    double pw[ZP_EFFECT_NWORK] = {0};
+    if (forces) {
+        newton_effects(m, y, b, pw);
     }
 
     int sign = 0;
-    if (phys & ZP_PHYS_ROLLING) {
+    if (rolling) {
         int rc = newton_friction(m, nw, dn, xd);
         if (rc) {
             return rc;
@@ -359,12 +365,15 @@ __attribute__((always_inline)) static inline int newton_rhs_with(const zp_model 
         ydot[j] = y[np + j];
         ydot[np + j] = z[j];
     }
-    ydot[2 * np] = dn->fx * xd + dn->fy * y[np + 1];
-    ydot[2 * np + 1] = pdamp;
-    if (phys) {
+    ydot[2 * np + ZP_W_DRIVE] = dn->fx * xd + dn->fy * y[np + 1];
+    ydot[2 * np + ZP_W_DAMP] = pdamp;
+    if (forces || rolling) {
+        /* friction's power is the course force's tangential part's (0 to round-off without it) */
         double sq = sqrt(1 + fp * fp), ft = (z[rn] + fp * z[rn + 1]) / sq; /* tangential */
-        ydot[2 * np + 2] = pdrag;
-        ydot[2 * np + 3] = -ft * (xd + fp * y[np + 1]) / sq;
+        pw[ZP_EFFECT_W_FRICTION] = -ft * (xd + fp * y[np + 1]) / sq;
+        for (int k = 0; k < ZP_EFFECT_NWORK; k++) {
+            ydot[2 * np + ZP_W_EFFECTS + k] = pw[k];
+        }
     }
     if (loads) {
         loads->hold = (z[rn] + fp * z[rn + 1]) / sqrt(1 + fp * fp);
@@ -381,21 +390,22 @@ __attribute__((always_inline)) static inline int newton_rhs_with(const zp_model 
     return 0;
 }
 
-#define NEWTON_RHS(P, NAME)                                                                        \
+#define NEWTON_RHS(F, R, NAME)                                                                     \
     static int NAME(const zp_model *m, newton_work *w, const zp_drive_now *dn, const double *y,   \
                     double *ydot, zp_loads *loads) {                                               \
-        return newton_rhs_with(m, w, dn, y, ydot, loads, P);                                       \
+        return newton_rhs_with(m, w, dn, y, ydot, loads, F, R);                                    \
     }
-NEWTON_RHS(0, newton_plain)
-NEWTON_RHS(ZP_PHYS_DRAG, newton_drag_only)
-NEWTON_RHS(ZP_PHYS_ROLLING, newton_roll)
-NEWTON_RHS(ZP_PHYS_DRAG | ZP_PHYS_ROLLING, newton_drag_roll)
+NEWTON_RHS(0, 0, newton_plain)
+NEWTON_RHS(1, 0, newton_forces)
+NEWTON_RHS(0, 1, newton_roll)
+NEWTON_RHS(1, 1, newton_forces_roll)
 
-/* the equations with exactly the model's terms, chosen once */
+/* the equations with exactly the model's kinds of terms, chosen once */
 static newton_fn newton_for(const zp_model *m) {
-    static const newton_fn by_phys[4] = {newton_plain, newton_drag_only, newton_roll,
-                                         newton_drag_roll};
-    return by_phys[m->physics & (ZP_PHYS_DRAG | ZP_PHYS_ROLLING)];
+    static const newton_fn by_kind[4] = {newton_plain, newton_forces, newton_roll,
+                                         newton_forces_roll};
+    int forces = zp_effect_with_forces(m->physics) != 0;
+    return by_kind[forces + 2 * ((m->physics & ZP_PHYS_ROLLING) != 0)];
 }
 
 static int newton_rhs(const zp_model *m, void *work, const zp_drive_now *dn, const double *y,

@@ -62,7 +62,7 @@ struct zp_sim {
     zp_envelope env;     /* felt g against [limits] g_envelope (o.peaks; env.n 0: none) */
 
     /* [physics] */
-    track_fn track; /* the course with its arcs, or the plain course (chosen at create) */
+    track_fn track; /* the course the model's course provider lays (zp_model_track) */
     int stuck;      /* rolling resistance: 1 while static friction holds the trolley */
     int slide;      /* +1, -1: the way it slides since the last stop, kink or start */
     double hold_t;  /* s, when that hold began */
@@ -71,8 +71,8 @@ struct zp_sim {
     int inconsistent_steps; /* steps in a row that met such an evaluation */
     int w0;         /* index of the first work integral in the state */
     zp_arc_peaks arc_peaks[ZP_MAX_SECTIONS]; /* load peaks on each arc */
-    int arc; /* the piece the integrator reads since its last restart: an arc, or -1 the plain
-                course (zp_model_track_piece) */
+    int arc; /* the piece the integrator reads since its last restart: an effect's (an arc),
+                or -1 the plain course (zp_model_track_piece) */
 };
 
 static zp_track plain_track(const zp_model *m, const zp_course *c, int sec, double x) {
@@ -108,7 +108,8 @@ static zp_drive_now drive_now(const zp_sim *s, double t, double x) {
     return dn;
 }
 
-/* the equations of motion as the integrator sees them: on the plain course, or with arcs */
+/* the equations of motion as the integrator sees them: on the plain course, or on the piece
+   of an effect's course */
 int zp_sim_rhs(double t, const double *y, double *ydot, void *user);
 int zp_sim_rhs(double t, const double *y, double *ydot, void *user) {
     zp_sim *s = user;
@@ -116,7 +117,7 @@ int zp_sim_rhs(double t, const double *y, double *ydot, void *user) {
     return s->form->rhs(s->m, s->fwork, &dn, y, ydot, NULL);
 }
 
-static int sim_rhs_rounded(double t, const double *y, double *ydot, void *user) {
+static int sim_rhs_provided(double t, const double *y, double *ydot, void *user) {
     zp_sim *s = user;
     zp_track tr = zp_model_track_piece(s->m, s->course, s->sec, s->arc, y[0]);
     zp_drive_now dn = drive_with(s, tr, t, y[0]);
@@ -199,7 +200,7 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
     s->course = zp_model_course(m, &ce);
     s->n = s->form->nstate(m);
     s->w0 = s->n - m->nwork;
-    s->track = m->physics & ZP_PHYS_ROUNDED ? zp_model_track : plain_track;
+    s->track = zp_model_track;
     s->nroot = zp_events_count(m);
     s->fwork = s->form->create(m);
     s->y = calloc(s->n, sizeof *s->y);
@@ -212,9 +213,9 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
     int state_only[ZP_EVENTS_MAX];
     zp_events_state_only(m, state_only);
     zp_method_opts mo = {o->rtol, o->atol, o->max_steps, state_only, s->w0 / 2};
-    zp_rhs_fn rhs = m->physics & ZP_PHYS_ROLLING   ? sim_rhs_rolling
-                    : m->physics & ZP_PHYS_ROUNDED ? sim_rhs_rounded
-                                                   : zp_sim_rhs;
+    zp_rhs_fn rhs = m->physics & ZP_PHYS_ROLLING ? sim_rhs_rolling
+                    : m->course_provider         ? sim_rhs_provided
+                                                 : zp_sim_rhs;
     s->mwork = s->meth->create(s->n, s->nroot, dir, rhs,
                                m->physics & ZP_PHYS_ROLLING ? sim_root_rolling : sim_root, s,
                                &mo);
@@ -246,9 +247,8 @@ static zp_row row_at(zp_sim *s, double t, const double *y) {
     s->form->to_chain(s->m, &dn.tr, y, &r.c);
     r.w_drive = y[s->w0 + ZP_W_DRIVE];
     r.w_damp = y[s->w0 + ZP_W_DAMP];
-    if (s->m->nwork > ZP_W_DRAG) {
-        r.w_drag = y[s->w0 + ZP_W_DRAG];
-        r.w_fric = y[s->w0 + ZP_W_FRICTION];
+    for (int k = ZP_W_EFFECTS; k < s->m->nwork; k++) {
+        r.w_effect[k - ZP_W_EFFECTS] = y[s->w0 + k];
     }
     r.e_impulse = s->e_impulse;
     s->form->rhs(s->m, s->fwork, &dn, y, s->ydot, &r.loads);
@@ -524,9 +524,8 @@ static void finish_result(zp_sim *s, zp_result *r, double t, zp_outcome o, zp_st
     r->e_final = e.kinetic + e.potential;
     r->w_drive = s->y[s->w0 + ZP_W_DRIVE];
     r->w_damp = s->y[s->w0 + ZP_W_DAMP];
-    if (s->m->nwork > ZP_W_DRAG) {
-        r->w_drag = s->y[s->w0 + ZP_W_DRAG];
-        r->w_fric = s->y[s->w0 + ZP_W_FRICTION];
+    for (int k = ZP_W_EFFECTS; k < s->m->nwork; k++) {
+        r->w_effect[k - ZP_W_EFFECTS] = s->y[s->w0 + k];
     }
     r->e_impulse = s->e_impulse;
     /* the last row shows the end state */
@@ -656,9 +655,7 @@ static double stop_after(const zp_sim *s, double t) {
 /* the integrator (re)started at (t, s->y), reading the course piece the trolley is on; the
    peak locator (o.peaks) starts a new interval there */
 static int restart(zp_sim *s, double t) {
-    if (s->m->physics & ZP_PHYS_ROUNDED) {
-        s->arc = zp_model_track_arc(s->m, s->sec, s->y[0]);
-    }
+    s->arc = zp_model_piece(s->m, s->sec, s->y[0]);
     if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
         return 1;
     }

@@ -21,8 +21,8 @@ static void header(FILE *f, const zp_model *m) {
         fprintf(f, ",com%d_x,com%d_y", i, i);
     }
     fputs(",kinetic,potential,energy,drive_work,damper_work,impulse_loss,normal_force", f);
-    if (m->physics) {
-        fputs(",drag_work,friction_work", f);
+    for (int k = 0; zp_effect_work_shown(m->physics) && k < ZP_EFFECT_NWORK; k++) {
+        fprintf(f, ",%s", zp_effect_work_names(k)->column);
     }
     for (int i = 1; i <= m->nlink; i++) {
         fprintf(f, ",joint%d_fx,joint%d_fy", i, i);
@@ -56,8 +56,8 @@ void zp_out_csv_trajectory(FILE *f, const zp_model *m, const zp_row_store *rows)
         }
         fprintf(f, ",%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g", v.e.kinetic, v.e.potential,
                 v.e.kinetic + v.e.potential, r->w_drive, r->w_damp, r->e_impulse, r->loads.normal);
-        if (m->physics) {
-            fprintf(f, ",%.10g,%.10g", r->w_drag, r->w_fric);
+        for (int k = 0; zp_effect_work_shown(m->physics) && k < ZP_EFFECT_NWORK; k++) {
+            fprintf(f, ",%.10g", r->w_effect[k]);
         }
         for (int i = 0; i < m->nlink; i++) {
             fprintf(f, ",%.10g,%.10g", r->loads.joint[i][0], r->loads.joint[i][1]);

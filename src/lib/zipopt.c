@@ -24,14 +24,18 @@ _Static_assert(_Generic((sig_atomic_t)0, int : 1, default : 0), "sig_atomic_t is
 #define NCOL_MAX (5 + 3 * ZP_MAX_LINKS + 5) /* trajectory columns of the largest chain */
 #define COL_NAME 16
 
-/* the named numbers of a run and of a search (zipopt.h), in the order *_numbers fills them */
-static const char *const run_keys[] = {
+/* the named numbers of a run and of a search (zipopt.h), in the order *_numbers fills them; a
+   run's: run_head, each effect's work (its key in effects.def's order), run_tail */
+static const char *const run_head[] = {
     "time",    "x",         "speed",  "died_link", "kinks",           "e_initial",
     "e_final", "w_drive",   "w_damp", "e_impulse", "energy_residual", "constraint_residual",
-    "steps",   "rhs_evals", "wall_s", "w_drag",    "w_fric",          "peak_g",
-    "peak_joint_force", "max_kink_dv", "arrival_kmh", "normal_min", "normal_max",
-    "rejected_steps"};
-#define NRUN_KEYS ((int)(sizeof run_keys / sizeof *run_keys))
+    "steps",   "rhs_evals", "wall_s"};
+static const char *const run_tail[] = {"peak_g",      "peak_joint_force", "max_kink_dv",
+                                       "arrival_kmh", "normal_min",       "normal_max",
+                                       "rejected_steps"};
+#define NRUN_HEAD ((int)(sizeof run_head / sizeof *run_head))
+#define NRUN_TAIL ((int)(sizeof run_tail / sizeof *run_tail))
+#define NRUN_KEYS (NRUN_HEAD + ZP_EFFECT_NWORK + NRUN_TAIL)
 static const char *const search_keys[] = {
     "found",          "time",           "angle",          "evals",           "feasible",
     "failed",         "threads",        "wall_s",         "interrupted",     "base_found",
@@ -313,32 +317,34 @@ static int copy_out(zipopt_run *u, const zp_model *m, const zp_sim *sim) {
 static void run_numbers(const zp_model *m, const zp_result *r, double *v) {
     double reached[ZP_LIMIT_COUNT];
     zp_limits_reached(m, r, reached);
-    const double n[] = {r->time,
-                        r->x,
-                        r->v,
-                        r->died_link,
-                        r->ncross,
-                        r->e_initial,
-                        r->e_final,
-                        r->w_drive,
-                        r->w_damp,
-                        r->e_impulse,
-                        zp_estimate_energy_residual(r),
-                        r->constraint_residual,
-                        (double)r->steps,
-                        (double)r->rhs_evals,
-                        r->wall_s,
-                        r->w_drag,
-                        r->w_fric,
-                        reached[ZP_LIMIT_G],
-                        reached[ZP_LIMIT_JOINT],
-                        reached[ZP_LIMIT_KINK_DV],
-                        zp_limit_reached_in(r, ZP_LIMIT_ARRIVAL) ? reached[ZP_LIMIT_ARRIVAL] : NAN,
-                        r->peaks.normal_min,
-                        r->peaks.normal_max,
-                        (double)r->rejected};
-    _Static_assert(sizeof n / sizeof *n == NRUN_KEYS, "one number per key");
-    memcpy(v, n, sizeof n);
+    const double head[] = {r->time,
+                           r->x,
+                           r->v,
+                           r->died_link,
+                           r->ncross,
+                           r->e_initial,
+                           r->e_final,
+                           r->w_drive,
+                           r->w_damp,
+                           r->e_impulse,
+                           zp_estimate_energy_residual(r),
+                           r->constraint_residual,
+                           (double)r->steps,
+                           (double)r->rhs_evals,
+                           r->wall_s};
+    const double tail[] = {reached[ZP_LIMIT_G],
+                           reached[ZP_LIMIT_JOINT],
+                           reached[ZP_LIMIT_KINK_DV],
+                           zp_limit_reached_in(r, ZP_LIMIT_ARRIVAL) ? reached[ZP_LIMIT_ARRIVAL]
+                                                                     : NAN,
+                           r->peaks.normal_min,
+                           r->peaks.normal_max,
+                           (double)r->rejected};
+    _Static_assert(sizeof head / sizeof *head == NRUN_HEAD, "one number per key");
+    _Static_assert(sizeof tail / sizeof *tail == NRUN_TAIL, "one number per key");
+    memcpy(v, head, sizeof head);
+    memcpy(v + NRUN_HEAD, r->w_effect, sizeof r->w_effect);
+    memcpy(v + NRUN_HEAD + ZP_EFFECT_NWORK, tail, sizeof tail);
 }
 
 zipopt_run *zipopt_simulate(zipopt_scene *s, char *err, size_t errlen) {
@@ -400,12 +406,24 @@ static double lookup(const char *const *keys, int n, const double *v, const char
     return NAN;
 }
 
+/* the name of a run's number i (0 <= i < NRUN_KEYS) */
+static const char *run_key(int i) {
+    return i < NRUN_HEAD                     ? run_head[i]
+           : i < NRUN_HEAD + ZP_EFFECT_NWORK ? zp_effect_work_names(i - NRUN_HEAD)->key
+                                             : run_tail[i - NRUN_HEAD - ZP_EFFECT_NWORK];
+}
+
 double zipopt_run_get(const zipopt_run *r, const char *key) {
-    return r ? lookup(run_keys, NRUN_KEYS, r->num, key) : NAN;
+    for (int i = 0; r && key && i < NRUN_KEYS; i++) {
+        if (!strcmp(run_key(i), key)) {
+            return r->num[i];
+        }
+    }
+    return NAN;
 }
 
 const char *zipopt_run_key(int i) {
-    return i >= 0 && i < NRUN_KEYS ? run_keys[i] : NULL;
+    return i >= 0 && i < NRUN_KEYS ? run_key(i) : NULL;
 }
 
 int zipopt_run_max_angles(const zipopt_run *r, double *angle, int n) {
