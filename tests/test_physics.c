@@ -98,7 +98,8 @@ static void check_rolling(int formulation) {
     for (int k = 0; k < n; k++) {
         CHECK_REL(smp[k].c.q[0], 0.5 * a * cos(al) * times[k] * times[k], 1e-8);
         /* friction mu N along the path, N = M g cos(alpha) */
-        CHECK_REL(smp[k].w_effect[ZP_EFFECT_W_FRICTION], e.mu * m->mtot * G * cos(al) * smp[k].c.q[0] / cos(al), 1e-7);
+        CHECK_REL(smp[k].w_effect[ZP_EFFECT_W_FRICTION],
+                  e.mu * m->mtot * G * cos(al) * smp[k].c.q[0] / cos(al), 1e-7);
         CHECK_REL(smp[k].loads.normal, m->mtot * G * cos(al), 1e-8);
     }
     CHECK(r->outcome == ZP_OUTCOME_FINISHED);
@@ -183,10 +184,11 @@ static void check_audit_all(int formulation) {
         zp_sim_opts o = tu_opts(&sc, rtol);
         o.formulation = formulation;
         const zp_result *r = tu_run(m, &o, &in);
-        double res = r->e_final - r->e_initial - r->w_drive + r->w_damp + r->w_effect[ZP_EFFECT_W_DRAG] + r->w_effect[ZP_EFFECT_W_FRICTION] +
-                     r->e_impulse;
+        double drag = r->w_effect[ZP_EFFECT_W_DRAG], fric = r->w_effect[ZP_EFFECT_W_FRICTION];
+        double res =
+            r->e_final - r->e_initial - r->w_drive + r->w_damp + drag + fric + r->e_impulse;
         double scale = fabs(r->e_initial) + fabs(r->w_drive);
-        CHECK(r->w_effect[ZP_EFFECT_W_DRAG] > 0 && r->w_effect[ZP_EFFECT_W_FRICTION] > 0 && r->w_damp > 0 && r->e_impulse == 0);
+        CHECK(drag > 0 && fric > 0 && r->w_damp > 0 && r->e_impulse == 0);
         CHECK_NEAR(res, 0, 1000 * rtol * scale);
         CHECK(fabs(res) < prev);
         prev = fabs(res);

@@ -67,8 +67,7 @@ typedef struct zp_course_provider {
     int (*piece)(const zp_model *m, int sec, double x);
     /* the course on piece (>= 0; continued past its ends) at x on section sec; course: the
        caller's evaluators of the plain course */
-    zp_track (*on_piece)(const zp_model *m, const zp_course *course, int sec, int piece,
-                         double x);
+    zp_track (*on_piece)(const zp_model *m, const zp_course *course, int sec, int piece, double x);
 } zp_course_provider;
 
 /* The names of an effect's work integral (J, taken out: minus its power integrated). */
