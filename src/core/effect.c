@@ -85,7 +85,7 @@ void zp_effect_forces(unsigned physics, const zp_model *m, const zp_effect_motio
     }
 }
 
-const zp_course_provider *zp_effect_course(unsigned physics) {
+const zp_effect_course *zp_effect_course_of(unsigned physics) {
     for (int e = 0; e < ZP_EFFECT_COUNT; e++) {
         if (physics >> e & 1 && registry[e]->course) {
             return registry[e]->course;

@@ -59,16 +59,17 @@ typedef struct zp_effect_motion {
     double v[ZP_MAX_LINKS + 1][2]; /* m/s */
 } zp_effect_motion;
 
-/* A course an effect lays under the trolley, read in pieces: f'' may jump where the piece
-   changes, so the simulator reads one piece between restarts, and a step that overshoots a
-   piece's end sees no jump before its root is found. */
-typedef struct zp_course_provider {
-    /* the piece under x on section sec: >= 0 one of the provider's, -1 the plain course */
+/* A course provider: the course an effect lays under the trolley, read in pieces. f'' may jump
+   where the piece changes, so the simulator reads one piece between restarts, and a step that
+   overshoots a piece's end sees no jump before its root is found; a course laid everywhere (a
+   sagging cable) is one piece. */
+typedef struct zp_effect_course {
+    /* the piece under x on section sec: >= 0 one of the provider's, -1 the scene's course */
     int (*piece)(const zp_model *m, int sec, double x);
     /* the course on piece (>= 0; continued past its ends) at x on section sec; course: the
-       caller's evaluators of the plain course */
+       caller's evaluators of the scene's course */
     zp_track (*on_piece)(const zp_model *m, const zp_course *course, int sec, int piece, double x);
-} zp_course_provider;
+} zp_effect_course;
 
 /* The names of an effect's work integral (J, taken out: minus its power integrated). */
 typedef struct zp_effect_work {
@@ -91,7 +92,7 @@ typedef struct zp_effect {
        motion; returns the power it takes out (W). NULL: none. An effect with forces has a
        work integral, so the energy audit accounts for them. */
     double (*forces)(const zp_model *m, const zp_effect_motion *mo, double (*f)[2]);
-    const zp_course_provider *course; /* NULL: the course stays the scene's */
+    const zp_effect_course *course; /* NULL: the course stays the scene's */
 } zp_effect;
 
 /* The entry of effect id (ZP_EFFECT_*), NULL out of range. */
@@ -112,8 +113,9 @@ unsigned zp_effect_with_forces(unsigned physics);
    whole), each one's power into power[ZP_EFFECT_W_*] (the other entries left). */
 void zp_effect_forces(unsigned physics, const zp_model *m, const zp_effect_motion *mo,
                       double (*f)[2], double *power);
-/* The course the effects in physics lay (the first of them that lays one), NULL for the
-   scene's own. */
-const zp_course_provider *zp_effect_course(unsigned physics);
+/* The course provider of the effects in physics (the first of them that lays a course), NULL
+   for the scene's own course. Design note: one provider at a time; two course effects on at
+   once would need a provider that lays one over the other. */
+const zp_effect_course *zp_effect_course_of(unsigned physics);
 
 #endif

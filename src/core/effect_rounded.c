@@ -132,7 +132,7 @@ static zp_track rounded_on_piece(const zp_model *m, const zp_course *course, int
     return (zp_track){a->cy - a->side * h, a->side * u / h, a->side * a->r * a->r / (h * h * h)};
 }
 
-static const zp_course_provider arcs = {rounded_piece, rounded_on_piece};
+static const zp_effect_course arcs = {rounded_piece, rounded_on_piece};
 
 const zp_effect zp_effect_rounded = {
     .name = "rounded",

@@ -288,7 +288,7 @@ zp_model *zp_model_build(const zp_scene *sc, zp_diag *d) {
         return NULL;
     }
     m->nwork = zp_effect_nwork(m->physics);
-    m->course_provider = zp_effect_course(m->physics);
+    m->course_provider = zp_effect_course_of(m->physics);
     return m;
 }
 

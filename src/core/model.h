@@ -62,8 +62,8 @@ typedef struct zp_model {
     int narc;
     zp_arc arc[ZP_MAX_SECTIONS];
     int arc_at[ZP_MAX_SECTIONS + 1]; /* index of the arc around boundary xb[k], or -1 */
-    const zp_course_provider *course_provider; /* the course an effect lays (zp_model_track),
-                                                  NULL: the scene's own */
+    const zp_effect_course *course_provider; /* the course an effect lays (zp_model_track),
+                                                NULL: the scene's own */
 
     /* derived for the equations of motion (docs/model.md chain coordinates) */
     double mtot;                                 /* kg, trolley + links */
@@ -84,7 +84,7 @@ zp_track zp_model_track(const zp_model *m, const zp_course *course, int sec, dou
 /* Which piece zp_model_track reads at x on section sec: an effect's (an arc's index), or -1
    for the scene's own course. */
 int zp_model_piece(const zp_model *m, int sec, double x);
-/* The course as read on one piece (zp_course_provider), continued past the piece's ends, or
+/* The course as read on one piece (zp_effect_course), continued past the piece's ends, or
    with piece -1 the scene's course of section sec: so a step that overshoots a piece's end
    sees no jump of f'' before its root is found. */
 zp_track zp_model_track_piece(const zp_model *m, const zp_course *course, int sec, int piece,
