@@ -70,7 +70,7 @@ static void check_terminal_speed(int formulation) {
     const zp_row *smp = zp_sim_samples(*tu_last_sim(), &n);
     CHECK(r->outcome == ZP_OUTCOME_STALLED && n == 1);
     CHECK_REL(hypot(smp[0].c.v[0], smp[0].c.v[1]), vt, 1e-6);
-    CHECK(r->w_drag > 0 && r->w_fric == 0);
+    CHECK(r->w_effect[ZP_EFFECT_W_DRAG] > 0 && r->w_effect[ZP_EFFECT_W_FRICTION] == 0);
     zp_model_free(m);
 }
 
@@ -98,7 +98,8 @@ static void check_rolling(int formulation) {
     for (int k = 0; k < n; k++) {
         CHECK_REL(smp[k].c.q[0], 0.5 * a * cos(al) * times[k] * times[k], 1e-8);
         /* friction mu N along the path, N = M g cos(alpha) */
-        CHECK_REL(smp[k].w_fric, e.mu * m->mtot * G * cos(al) * smp[k].c.q[0] / cos(al), 1e-7);
+        CHECK_REL(smp[k].w_effect[ZP_EFFECT_W_FRICTION],
+                  e.mu * m->mtot * G * cos(al) * smp[k].c.q[0] / cos(al), 1e-7);
         CHECK_REL(smp[k].loads.normal, m->mtot * G * cos(al), 1e-8);
     }
     CHECK(r->outcome == ZP_OUTCOME_FINISHED);
@@ -183,10 +184,11 @@ static void check_audit_all(int formulation) {
         zp_sim_opts o = tu_opts(&sc, rtol);
         o.formulation = formulation;
         const zp_result *r = tu_run(m, &o, &in);
-        double res = r->e_final - r->e_initial - r->w_drive + r->w_damp + r->w_drag + r->w_fric +
-                     r->e_impulse;
+        double drag = r->w_effect[ZP_EFFECT_W_DRAG], fric = r->w_effect[ZP_EFFECT_W_FRICTION];
+        double res =
+            r->e_final - r->e_initial - r->w_drive + r->w_damp + drag + fric + r->e_impulse;
         double scale = fabs(r->e_initial) + fabs(r->w_drive);
-        CHECK(r->w_drag > 0 && r->w_fric > 0 && r->w_damp > 0 && r->e_impulse == 0);
+        CHECK(drag > 0 && fric > 0 && r->w_damp > 0 && r->e_impulse == 0);
         CHECK_NEAR(res, 0, 1000 * rtol * scale);
         CHECK(fabs(res) < prev);
         prev = fabs(res);
@@ -237,8 +239,8 @@ static void check_formulations_agree(void) {
            zp_sim_stall_name(r[1].stall), r[1].time, r[0].x);
     CHECK(r[1].outcome == r[0].outcome && r[1].stall == r[0].stall);
     CHECK_NEAR(r[1].time, r[0].time, 1e-9);
-    CHECK_REL(r[1].w_drag, r[0].w_drag, 1e-8);
-    CHECK_REL(r[1].w_fric, r[0].w_fric, 1e-8);
+    CHECK_REL(r[1].w_effect[ZP_EFFECT_W_DRAG], r[0].w_effect[ZP_EFFECT_W_DRAG], 1e-8);
+    CHECK_REL(r[1].w_effect[ZP_EFFECT_W_FRICTION], r[0].w_effect[ZP_EFFECT_W_FRICTION], 1e-8);
     zp_model_free(m);
 }
 
@@ -290,7 +292,7 @@ static void check_random_states(void) {
                 CHECK_NEAR(thdd, yd[0][nq + 1 + i], 1e-9 * G);
             }
             int w0 = f == 2 ? 2 * np : 2 * nq;
-            for (int k = ZP_W_DRAG; k <= ZP_W_FRICTION; k++) {
+            for (int k = ZP_W_EFFECTS; k < ZP_W_MAX; k++) {
                 CHECK_NEAR(yd[f][w0 + k], yd[0][2 * nq + k], 1e-9 * W * 20);
             }
             CHECK_NEAR(ld[f].normal, ld[0].normal, 1e-9 * W);

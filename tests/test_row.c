@@ -24,9 +24,8 @@ static void random_row(const zp_model *m, zp_row *r) {
     }
     r->w_drive = uniform(0, 1e4);
     r->w_damp = uniform(0, 1e3);
-    if (m->nwork > ZP_W_DRAG) {
-        r->w_drag = uniform(0, 1e3);
-        r->w_fric = uniform(0, 1e3);
+    for (int k = ZP_W_EFFECTS; k < m->nwork; k++) {
+        r->w_effect[k - ZP_W_EFFECTS] = uniform(0, 1e3);
     }
     r->e_impulse = uniform(0, 1e3);
     r->loads.normal = uniform(-1e3, 1e3);
@@ -43,16 +42,17 @@ static void random_row(const zp_model *m, zp_row *r) {
 
 /* every member of two rows the same bits (their padding aside) */
 static int same_row(const zp_row *a, const zp_row *b) {
-    const double wa[] = {a->t, a->w_drive, a->w_damp, a->e_impulse, a->w_drag, a->w_fric};
-    const double wb[] = {b->t, b->w_drive, b->w_damp, b->e_impulse, b->w_drag, b->w_fric};
+    const double wa[] = {a->t, a->w_drive, a->w_damp, a->e_impulse};
+    const double wb[] = {b->t, b->w_drive, b->w_damp, b->e_impulse};
     return a->sec == b->sec && memcmp(wa, wb, sizeof wa) == 0 &&
+           memcmp(a->w_effect, b->w_effect, sizeof a->w_effect) == 0 &&
            memcmp(&a->c, &b->c, sizeof a->c) == 0 &&
            memcmp(&a->loads, &b->loads, sizeof a->loads) == 0;
 }
 
 static void test_round_trip(void) {
     for (int nlink = 1; nlink <= ZP_MAX_LINKS; nlink++) {
-        for (int nwork = ZP_W_DRAG; nwork <= ZP_W_MAX; nwork += 2) {
+        for (int nwork = ZP_W_EFFECTS; nwork <= ZP_W_MAX; nwork += ZP_EFFECT_NWORK) {
             zp_model m;
             memset(&m, 0, sizeof m);
             m.nlink = nlink;

@@ -80,18 +80,10 @@ static void print_physics(const zp_scene *sc, const zp_model *m) {
         return;
     }
     printf("physics:");
-    if (m->physics & ZP_PHYS_DRAG) {
-        printf(" drag CdA");
-        for (int b = 0; b <= m->nlink; b++) {
-            printf("%s %g", b ? "," : "", sc->drag_area[b]);
+    for (int e = 0; e < ZP_EFFECT_COUNT; e++) {
+        if (m->physics >> e & 1) {
+            zp_effect_get(e)->describe(m, sc, stdout);
         }
-        printf(" m^2 (trolley, links), air %g kg/m^3, wind %g m/s;", sc->air_density, m->wind);
-    }
-    if (m->physics & ZP_PHYS_ROLLING) {
-        printf(" rolling resistance %g;", m->mu);
-    }
-    if (m->physics & ZP_PHYS_ROUNDED) {
-        printf(" kinks rounded, radius %g m;", sc->kink_radius);
     }
     putchar('\n');
 }

@@ -183,8 +183,11 @@ static void print_text(const zp_model *m, const zp_result *r) {
         printf(" %.3f", r->max_rel_angle[i] * 180.0 / M_PI);
     }
     printf("\nkink crossings: %d\n", r->ncross);
-    if (m->physics) {
-        printf("drag work: %.6g J, friction work: %.6g J\n", r->w_drag, r->w_fric);
+    if (zp_effect_work_shown(m->physics)) {
+        for (int k = 0; k < ZP_EFFECT_NWORK; k++) {
+            printf("%s%s: %.6g J", k ? ", " : "", zp_effect_work_names(k)->words, r->w_effect[k]);
+        }
+        putchar('\n');
     }
     printf("energy audit residual: %.3g J\n", zp_estimate_energy_residual(r));
     printf("steps: %ld (and %ld rejected), rhs evaluations: %ld, wall: %.4f s\n", r->steps,

@@ -7,15 +7,22 @@
 #include <stdlib.h>
 
 double zp_estimate_energy_residual(const zp_result *r) {
-    /* drag and friction work are 0 without [physics]: the sum is then the plain audit's */
-    return r->e_final - r->e_initial - r->w_drive + r->w_damp + r->e_impulse + r->w_drag +
-           r->w_fric;
+    /* the effects' work is 0 without [physics]: the sum is then the plain audit's */
+    double res = r->e_final - r->e_initial - r->w_drive + r->w_damp + r->e_impulse;
+    for (int k = 0; k < ZP_EFFECT_NWORK; k++) {
+        res += r->w_effect[k];
+    }
+    return res;
 }
 
 /* the energies the audit adds up: a residual is judged against their size */
 static double energy_scale(const zp_result *r) {
-    return fabs(r->e_initial) + fabs(r->e_final) + fabs(r->w_drive) + fabs(r->w_damp) +
-           fabs(r->e_impulse) + fabs(r->w_drag) + fabs(r->w_fric);
+    double scale = fabs(r->e_initial) + fabs(r->e_final) + fabs(r->w_drive) + fabs(r->w_damp) +
+                   fabs(r->e_impulse);
+    for (int k = 0; k < ZP_EFFECT_NWORK; k++) {
+        scale += fabs(r->w_effect[k]);
+    }
+    return scale;
 }
 
 zp_sim_opts zp_estimate_tighter(const zp_sim_opts *o) {

@@ -27,7 +27,7 @@ typedef struct zp_estimate {
 } zp_estimate;
 
 /* The work-energy audit of docs/model.md (J): E_final - E_initial - W_drive + W_damp + E_impulse
-   + W_drag + W_friction, 0 up to the integration error. */
+   + the work each effect took out (W_drag + W_friction), 0 up to the integration error. */
 double zp_estimate_energy_residual(const zp_result *r);
 /* The options of the tighter run: o's tolerances ZP_ESTIMATE_FACTOR tighter (rtol no tighter
    than ZP_ESTIMATE_RTOL_MIN, atol by the whole factor), no trajectory, no load peaks. */

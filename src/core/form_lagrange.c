@@ -14,7 +14,8 @@
  * (w_j = th_j' - th_{j-1}' the joint rates; F the drive force vector). M is symmetric
  * positive definite: Cholesky. Loads come from the accelerations: the normal force from
  * the whole system's momentum balance, the joint reactions from each link's, bottom up.
- * Optional effects (docs/model.md): drag F_b at each centre of mass adds the generalized forces
+ * Optional effects (docs/model.md, effect.h): their forces F_b at each centre of mass add the
+ * generalized forces J^T F,
  *   Q_x = sum_b F_b . (1, f'),  Q_j = n_j . (d_j F_j + l_j sum_{i>j} F_i);
  * rolling resistance -mu |N| sgn(s') along the tangent adds Q_x = -mu |N| sgn(x') |(1, f')| in
  * the x row only, and N is affine in q'': with u = M^-1 e_x, q'' = q''_0 + Q_x u and
@@ -37,8 +38,16 @@ typedef int (*fast_fn)(const zp_model *, const zp_drive_now *, const double *, d
 typedef struct lagrange_work {
     gsl_matrix *M;
     gsl_vector *R, *acc, *u;
-    fast_fn fast; /* the fixed-size equations for this model's N and effects */
+    fast_fn fast; /* the fixed-size equations for this model's N and kinds of effects */
 } lagrange_work;
+
+/* the forces on the system besides gravity and the course, in one evaluation */
+typedef struct lagrange_forces {
+    double f[2];                    /* N, their sum: the drive's and the effects' */
+    double fd[ZP_MAX_LINKS + 1][2]; /* N, the effects' on each body (where some give forces) */
+    double pw[ZP_EFFECT_NWORK];     /* W, the power each effect takes out */
+    double hold;                    /* N, with dn->hold the force that keeps the trolley still */
+} lagrange_forces;
 
 static int lagrange_nstate(const zp_model *m) {
     return 2 * (m->nlink + 1) + m->nwork;
@@ -114,8 +123,8 @@ static void lagrange_relative(const zp_model *m, const double *y, double *phi, d
 }
 
 /* centre-of-mass accelerations, joint reactions and normal force from q''; fx, fy the force on
-   the system other than gravity and the course, fd NULL or the drag on each body; sn, cs the
-   sines and cosines of the angles, which the equations computed already */
+   the system other than gravity and the course, fd NULL or the effects' force on each body;
+   sn, cs the sines and cosines of the angles, which the equations computed already */
 static void lagrange_loads(const zp_model *m, const zp_drive_now *dn, double fx, double fy,
                            double (*fd)[2], const double *y, const double *qdd, const double *sn,
                            const double *cs, zp_loads *ld) {
@@ -151,38 +160,55 @@ static void lagrange_loads(const zp_model *m, const zp_drive_now *dn, double fx,
     }
 }
 
-/* drag on every body at its centre of mass (thd the angle rates): the force on each in fd,
-   their sum in ftot, their generalized forces in Q (x, then each angle); returns the power
-   they take out */
-static inline double drag_terms(const zp_model *m, double fp, double xd, const double *s,
-                                const double *c, const double *thd, int n, double fd[][2],
-                                double *ftot, double *Q) {
-    double px = xd, py = fp * xd, pout = 0; /* velocity of the joint above the current link */
-    for (int b = 0; b <= n; b++) {
-        double vx = px, vy = py;
-        if (b > 0) {
-            int i = b - 1;
-            vx += m->half[i] * c[i] * thd[i];
-            vy += m->half[i] * s[i] * thd[i];
-            px += m->len[i] * c[i] * thd[i];
-            py += m->len[i] * s[i] * thd[i];
-        }
-        double rx = vx - m->wind, k = m->drag_k[b] * hypot(rx, vy);
-        fd[b][0] = -k * rx;
-        fd[b][1] = -k * vy;
-        pout -= fd[b][0] * vx + fd[b][1] * vy;
+/* ef with the drive's force alone, every effect's power 0 */
+static inline void forces_start(lagrange_forces *ef, const zp_drive_now *dn) {
+    ef->f[0] = dn->fx;
+    ef->f[1] = dn->fy;
+    for (int k = 0; k < ZP_EFFECT_NWORK; k++) {
+        ef->pw[k] = 0;
     }
-    double sx = 0, sy = 0; /* drag on the links below link j */
+    ef->hold = 0;
+}
+
+/* the effects' forces on every body from the bodies' velocities (thd the angle rates): each
+   body's in ef->fd, their sum added to ef->f, each effect's power in ef->pw, and their
+   generalized forces J^T f in Q (x, then each angle) */
+static inline void effect_terms(const zp_model *m, double fp, double xd, const double *s,
+                                const double *c, const double *thd, int n, lagrange_forces *ef,
+                                double *Q) {
+    zp_effect_motion mo;
+    mo.nbody = n + 1;
+    double px = xd, py = fp * xd; /* velocity of the joint above the current link */
+    mo.v[0][0] = px;
+    mo.v[0][1] = py;
+    for (int i = 0; i < n; i++) {
+        mo.v[1 + i][0] = px + m->half[i] * c[i] * thd[i];
+        mo.v[1 + i][1] = py + m->half[i] * s[i] * thd[i];
+        px += m->len[i] * c[i] * thd[i];
+        py += m->len[i] * s[i] * thd[i];
+    }
+    zp_effect_forces(m->physics, m, &mo, ef->fd, ef->pw);
+    double (*fd)[2] = ef->fd, sx = 0, sy = 0; /* the forces on the links below link j */
     for (int j = n - 1; j >= 0; j--) {
         Q[1 + j] = c[j] * (m->half[j] * fd[j + 1][0] + m->len[j] * sx) +
                    s[j] * (m->half[j] * fd[j + 1][1] + m->len[j] * sy);
         sx += fd[j + 1][0];
         sy += fd[j + 1][1];
     }
-    ftot[0] = sx + fd[0][0];
-    ftot[1] = sy + fd[0][1];
+    double ftot[2] = {sx + fd[0][0], sy + fd[0][1]};
     Q[0] = ftot[0] + fp * ftot[1];
-    return pout;
+    ef->f[0] += ftot[0];
+    ef->f[1] += ftot[1];
+}
+
+/* 1 when every effect's power is finite */
+static inline int powers_finite(const double *pw) {
+    for (int k = 0; k < ZP_EFFECT_NWORK; k++) {
+        if (!isfinite(pw[k])) {
+            return 0;
+        }
+    }
+    return 1;
 }
 
 /* rolling resistance: its generalized force (x row only) along u = M^-1 e_x added to qdd,
@@ -227,14 +253,13 @@ static inline int friction_terms(const zp_model *m, const zp_drive_now *dn, doub
 }
 
 /* the rates both paths end with: q' and q'' (1 on a non-finite acceleration), the work
-   integrals (power of the drive, dampers, and with physics of drag and friction: p[0..2]),
-   and the loads when asked for (s, c: the angles' sines and cosines); phys is the model's
-   effects (a constant where inlined) */
+   integrals (power of the drive and dampers, and with work (a constant where inlined) the
+   effects' ef->pw), and the loads when asked for (the effects' forces on the bodies where
+   forces; s, c: the angles' sines and cosines) */
 __attribute__((always_inline)) static inline int
-store_rates(const zp_model *m, const zp_drive_now *dn, unsigned phys, const double *y,
-            const double *qdd, double xd, double fp, const double p[3], const double f[2],
-            double (*fd)[2], double hold, const double *s, const double *c, double *ydot,
-            zp_loads *loads) {
+store_rates(const zp_model *m, const zp_drive_now *dn, int work, int forces, const double *y,
+            const double *qdd, double xd, double fp, double pdamp, lagrange_forces *ef,
+            const double *s, const double *c, double *ydot, zp_loads *loads) {
     int nq = m->nlink + 1;
     for (int i = 0; i < nq; i++) {
         ydot[i] = y[nq + i];
@@ -243,15 +268,14 @@ store_rates(const zp_model *m, const zp_drive_now *dn, unsigned phys, const doub
             return 1;
         }
     }
-    ydot[2 * nq] = (dn->fx + dn->fy * fp) * xd;
-    ydot[2 * nq + 1] = p[0];
-    if (phys) {
-        ydot[2 * nq + 2] = p[1];
-        ydot[2 * nq + 3] = p[2];
+    ydot[2 * nq + ZP_W_DRIVE] = (dn->fx + dn->fy * fp) * xd;
+    ydot[2 * nq + ZP_W_DAMP] = pdamp;
+    for (int k = 0; work && k < ZP_EFFECT_NWORK; k++) {
+        ydot[2 * nq + ZP_W_EFFECTS + k] = ef->pw[k];
     }
     if (loads) {
-        lagrange_loads(m, dn, f[0], f[1], phys & ZP_PHYS_DRAG ? fd : NULL, y, qdd, s, c, loads);
-        loads->hold = hold;
+        lagrange_loads(m, dn, ef->f[0], ef->f[1], forces ? ef->fd : NULL, y, qdd, s, c, loads);
+        loads->hold = ef->hold;
     }
     return 0;
 }
@@ -288,17 +312,17 @@ static int lagrange_rhs_general(const zp_model *m, void *work, const zp_drive_no
         pdamp += m->damp[j] * wj[j] * wj[j];
     }
     gsl_vector_set(lw->R, 0, Rx);
-    double fd[ZP_MAX_LINKS + 1][2], f[2] = {dn->fx, dn->fy}, pdrag = 0, pfric = 0, hold = 0;
-    if (m->physics & ZP_PHYS_DRAG) {
-        double Q[ZP_MAX_LINKS + 1], ftot[2];
-        pdrag = drag_terms(m, fp, xd, s, c, y + nq + 1, n, fd, ftot, Q);
+    int forces = zp_effect_with_forces(m->physics) != 0, rolling = m->physics & ZP_PHYS_ROLLING;
+    lagrange_forces ef;
+    forces_start(&ef, dn);
+    if (forces) {
+        double Q[ZP_MAX_LINKS + 1];
+        effect_terms(m, fp, xd, s, c, y + nq + 1, n, &ef, Q);
         for (int i = 0; i < nq; i++) {
             gsl_vector_set(lw->R, i, gsl_vector_get(lw->R, i) + Q[i]);
         }
-        f[0] += ftot[0];
-        f[1] += ftot[1];
     }
-    if (!isfinite(Rx) || !isfinite(pdamp) || !isfinite(pdrag)) {
+    if (!isfinite(Rx) || !isfinite(pdamp) || !powers_finite(ef.pw)) {
         return 1;
     }
     /* only the lower triangle is read by the Cholesky factorization */
@@ -306,20 +330,20 @@ static int lagrange_rhs_general(const zp_model *m, void *work, const zp_drive_no
         return 1;
     }
     double *qdd = gsl_vector_ptr(lw->acc, 0);
-    if (m->physics & ZP_PHYS_ROLLING) {
+    if (rolling) {
         gsl_vector_set_basis(lw->R, 0);
         if (gsl_linalg_cholesky_solve(M, lw->R, lw->u)) {
             return 1;
         }
-        int rc = friction_terms(m, dn, xd, f[0], f[1], s, c, wd2, n,
-                                gsl_vector_const_ptr(lw->u, 0), qdd, &hold, &pfric);
+        int rc = friction_terms(m, dn, xd, ef.f[0], ef.f[1], s, c, wd2, n,
+                                gsl_vector_const_ptr(lw->u, 0), qdd, &ef.hold,
+                                &ef.pw[ZP_EFFECT_W_FRICTION]);
         if (rc) {
             return rc;
         }
     }
-    unsigned phys = m->physics & (ZP_PHYS_DRAG | ZP_PHYS_ROLLING); /* the work integrals' */
-    return store_rates(m, dn, phys, y, qdd, xd, fp, (const double[]){pdamp, pdrag, pfric}, f, fd,
-                       hold, s, c, ydot, loads);
+    return store_rates(m, dn, m->nwork > ZP_W_EFFECTS, forces, y, qdd, xd, fp, pdamp, &ef, s, c,
+                       ydot, loads);
 }
 
 /* M's Cholesky factor in its lower triangle (M SPD of size nq, lower triangle read); 0, or 1
@@ -364,12 +388,13 @@ static inline void cholesky_subst(double M[ZP_MAX_LINKS + 1][ZP_MAX_LINKS + 1], 
     }
 }
 
-/* the equations of motion for n links with the effects phys (ZP_PHYS_* flags), both constants
-   where it is inlined (always: a copy per (n, phys) with no test of phys left at run time) */
+/* the equations of motion for n links, with forces: effects that give forces on the bodies,
+   with rolling: rolling resistance; all three constants where it is inlined (always: a copy
+   per (n, forces, rolling) with no test of them left at run time) */
 __attribute__((always_inline)) static inline int fast_rhs(const zp_model *m,
                                                          const zp_drive_now *dn, const double *y,
                                                          double *ydot, zp_loads *loads, int n,
-                                                         int phys) {
+                                                         int forces, int rolling) {
     const int nq = n + 1;
     double fp = dn->tr.fp, fpp = dn->tr.fpp, xd = y[nq];
     double s[ZP_MAX_LINKS], c[ZP_MAX_LINKS], wd2[ZP_MAX_LINKS], wj[ZP_MAX_LINKS + 1];
@@ -407,42 +432,43 @@ __attribute__((always_inline)) static inline int fast_rhs(const zp_model *m,
         uc += m->len[j] * c[j] * wd2[j];
         pdamp += m->damp[j] * wj[j] * wj[j];
     }
-    double fd[ZP_MAX_LINKS + 1][2], f[2] = {dn->fx, dn->fy}, pdrag = 0, pfric = 0, hold = 0;
-    if (phys & ZP_PHYS_DRAG) {
-        double Q[ZP_MAX_LINKS + 1], ftot[2];
-        pdrag = drag_terms(m, fp, xd, s, c, y + nq + 1, n, fd, ftot, Q);
+    lagrange_forces ef;
+    forces_start(&ef, dn);
+    if (forces) {
+        double Q[ZP_MAX_LINKS + 1];
+        effect_terms(m, fp, xd, s, c, y + nq + 1, n, &ef, Q);
         for (int i = 0; i < nq; i++) {
             R[i] += Q[i];
         }
-        f[0] += ftot[0];
-        f[1] += ftot[1];
     }
-    if (!isfinite(R[0]) || !isfinite(pdamp) || !isfinite(pdrag) || cholesky_factor(M, nq)) {
+    if (!isfinite(R[0]) || !isfinite(pdamp) || (forces && !powers_finite(ef.pw)) ||
+        cholesky_factor(M, nq)) {
         return 1;
     }
     cholesky_subst(M, R, qdd, nq);
-    if (phys & ZP_PHYS_ROLLING) {
+    if (rolling) {
         double ex[ZP_MAX_LINKS + 1] = {1}, u[ZP_MAX_LINKS + 1];
         cholesky_subst(M, ex, u, nq);
-        int rc = friction_terms(m, dn, xd, f[0], f[1], s, c, wd2, n, u, qdd, &hold, &pfric);
+        int rc = friction_terms(m, dn, xd, ef.f[0], ef.f[1], s, c, wd2, n, u, qdd, &ef.hold,
+                                &ef.pw[ZP_EFFECT_W_FRICTION]);
         if (rc) {
             return rc;
         }
     }
-    return store_rates(m, dn, phys, y, qdd, xd, fp, (const double[]){pdamp, pdrag, pfric}, f, fd,
-                       hold, s, c, ydot, loads);
+    return store_rates(m, dn, forces || rolling, forces, y, qdd, xd, fp, pdamp, &ef, s, c, ydot,
+                       loads);
 }
 
-#define FAST_RHS_P(N, P, NAME)                                                                     \
+#define FAST_RHS_P(N, F, R, NAME)                                                                  \
     static int NAME(const zp_model *m, const zp_drive_now *dn, const double *y, double *ydot,     \
                     zp_loads *loads) {                                                             \
-        return fast_rhs(m, dn, y, ydot, loads, N, P);                                              \
+        return fast_rhs(m, dn, y, ydot, loads, N, F, R);                                           \
     }
 #define FAST_RHS(N)                                                                                \
-    FAST_RHS_P(N, 0, fast_rhs##N)                                                                  \
-    FAST_RHS_P(N, ZP_PHYS_DRAG, fast_rhs##N##_drag)                                                \
-    FAST_RHS_P(N, ZP_PHYS_ROLLING, fast_rhs##N##_roll)                                             \
-    FAST_RHS_P(N, ZP_PHYS_DRAG | ZP_PHYS_ROLLING, fast_rhs##N##_drag_roll)
+    FAST_RHS_P(N, 0, 0, fast_rhs##N)                                                               \
+    FAST_RHS_P(N, 1, 0, fast_rhs##N##_forces)                                                      \
+    FAST_RHS_P(N, 0, 1, fast_rhs##N##_roll)                                                        \
+    FAST_RHS_P(N, 1, 1, fast_rhs##N##_forces_roll)
 FAST_RHS(1)
 FAST_RHS(2)
 FAST_RHS(3)
@@ -451,14 +477,18 @@ FAST_RHS(5)
 FAST_RHS(6)
 FAST_RHS(7)
 FAST_RHS(8)
-#define FAST_ROW(N) {fast_rhs##N, fast_rhs##N##_drag, fast_rhs##N##_roll, fast_rhs##N##_drag_roll}
+#define FAST_ROW(N)                                                                                \
+    {fast_rhs##N, fast_rhs##N##_forces, fast_rhs##N##_roll, fast_rhs##N##_forces_roll}
 
-/* the variant with exactly the model's terms: chosen here once, never tested per evaluation */
+/* the variant with exactly the model's kinds of terms: chosen here once, never tested per
+   evaluation. Design note: a copy per kind of effect (forces on the bodies, rolling
+   resistance), not per effect, so a new effect with forces needs no copy of its own */
 static fast_fn fast_for(const zp_model *m) {
     static const fast_fn by_n[ZP_MAX_LINKS][4] = {FAST_ROW(1), FAST_ROW(2), FAST_ROW(3),
                                                   FAST_ROW(4), FAST_ROW(5), FAST_ROW(6),
                                                   FAST_ROW(7), FAST_ROW(8)};
-    return by_n[m->nlink - 1][m->physics & (ZP_PHYS_DRAG | ZP_PHYS_ROLLING)];
+    int forces = zp_effect_with_forces(m->physics) != 0;
+    return by_n[m->nlink - 1][forces + 2 * ((m->physics & ZP_PHYS_ROLLING) != 0)];
 }
 
 static int lagrange_rhs(const zp_model *m, void *work, const zp_drive_now *dn, const double *y,

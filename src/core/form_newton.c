@@ -21,7 +21,8 @@
  * BDF; the default method is Adams, so the stabilization lives in the equations and serves
  * every method. A kink restart goes through from_chain, which puts the state back exactly on
  * the constraints.
- * Optional effects (docs/model.md): drag at each centre of mass adds to that body's momentum row;
+ * Optional effects (docs/model.md, effect.h): their force on each body adds to that body's
+ * momentum row;
  * rolling resistance replaces the frictionless row by (C.t) = -mu sgn(X') |C.n| for the course
  * force C = (Nx, Ny), t and n the unit tangent and normal, with the sign of C.n taken + and
  * the system solved again with - when that was wrong; held at rest, the row is a0x = 0.
@@ -37,18 +38,15 @@
    integrator would have to follow (50/s cuts the drift 10x but costs 1.5x the steps) */
 #define NE_STAB_RATE 5.0
 
-typedef struct newton_work newton_work;
-typedef int (*newton_fn)(const zp_model *, newton_work *, const zp_drive_now *, const double *,
-                         double *, zp_loads *);
-
-struct newton_work {
+typedef struct newton_work {
     gsl_matrix *A, *lu; /* lu: A's factors where A must be kept (rolling resistance) */
     gsl_vector *b, *z;
     gsl_permutation *perm;
-    newton_fn fn; /* the equations with this model's effects */
+    int forces;   /* 1: effects give forces on the bodies */
+    int rolling;  /* 1: rolling resistance */
     int sgn_free; /* sign of det A with the frictionless course row, found on first need: it
                      never vanishes, so it is one sign for every state */
-};
+} newton_work;
 
 /* positions per body coordinate: trolley (X, Y), link i (x, y, th) at 2 + 3i */
 static int npos(const zp_model *m) { return 2 + 3 * m->nlink; }
@@ -68,8 +66,6 @@ static void newton_free(void *work) {
     free(w);
 }
 
-static newton_fn newton_for(const zp_model *m);
-
 static void *newton_create(const zp_model *m) {
     newton_work *w = calloc(1, sizeof *w);
     if (!w) {
@@ -81,7 +77,8 @@ static void *newton_create(const zp_model *m) {
     w->b = gsl_vector_alloc(nz);
     w->z = gsl_vector_alloc(nz);
     w->perm = gsl_permutation_alloc(nz);
-    w->fn = newton_for(m);
+    w->forces = zp_effect_with_forces(m->physics) != 0;
+    w->rolling = (m->physics & ZP_PHYS_ROLLING) != 0;
     if (!w->A || !w->lu || !w->b || !w->z || !w->perm) {
         newton_free(w);
         return NULL;
@@ -167,20 +164,23 @@ static double newton_residual(const zp_model *m, const zp_track *tr, const doubl
     return r;
 }
 
-/* drag on every body at its centre of mass added to the momentum rows; returns the power it
-   takes out */
-static double newton_drag(const zp_model *m, const double *y, gsl_vector *b) {
+/* the effects' forces on every body added to its momentum rows, each effect's power into pw */
+static void newton_effects(const zp_model *m, const double *y, gsl_vector *b, double *pw) {
     int np = npos(m);
-    double pout = 0;
+    zp_effect_motion mo;
+    mo.nbody = m->nlink + 1;
     for (int bd = 0; bd <= m->nlink; bd++) {
         int k = bd ? 2 + 3 * (bd - 1) : 0;
-        double vx = y[np + k], vy = y[np + k + 1], rx = vx - m->wind;
-        double kk = m->drag_k[bd] * hypot(rx, vy), fx = -kk * rx, fy = -kk * vy;
-        gsl_vector_set(b, k, gsl_vector_get(b, k) + fx);
-        gsl_vector_set(b, k + 1, gsl_vector_get(b, k + 1) + fy);
-        pout -= fx * vx + fy * vy;
+        mo.v[bd][0] = y[np + k];
+        mo.v[bd][1] = y[np + k + 1];
     }
-    return pout;
+    double f[ZP_MAX_LINKS + 1][2];
+    zp_effect_forces(m->physics, m, &mo, f, pw);
+    for (int bd = 0; bd <= m->nlink; bd++) {
+        int k = bd ? 2 + 3 * (bd - 1) : 0;
+        gsl_vector_set(b, k, gsl_vector_get(b, k) + f[bd][0]);
+        gsl_vector_set(b, k + 1, gsl_vector_get(b, k + 1) + f[bd][1]);
+    }
 }
 
 /* the course row: frictionless (cf = 0), or the course force's tangential part cf |normal
@@ -254,13 +254,66 @@ static int newton_friction(const zp_model *m, newton_work *nw, const zp_drive_no
     return normal > 0 || -normal > normal_max ? ZP_RHS_FRICTION_INCONSISTENT : 0;
 }
 
-/* phys constant where inlined (always: a copy per set of effects) */
-__attribute__((always_inline)) static inline int newton_rhs_with(const zp_model *m,
-                                                                newton_work *nw,
-                                                                const zp_drive_now *dn,
-                                                                const double *y, double *ydot,
-                                                                zp_loads *loads, int phys) {
-    const int n = m->nlink, np = npos(m), rr = np, rn = np + 2 * n; /* reaction, normal cols */
+/* link i's rows: its linear and angular momentum (with the dampers of joints i and i + 1) and
+   joint i at acceleration level; returns joint i's damper power */
+static double link_rows(const zp_model *m, const double *y, int i, gsl_matrix *A, gsl_vector *b) {
+    const int n = m->nlink, np = npos(m), rr = np; /* the reaction columns */
+    const double a = NE_STAB_RATE;
+    int k = 2 + 3 * i, ri = rr + 2 * i, rj = ri + 2; /* link i; R_i, R_{i+1} columns */
+    double s = sin(y[k + 2]), c = cos(y[k + 2]), d = m->half[i], lo = m->len[i] - d;
+    double w = y[np + k + 2];
+    double wj = w - (i ? y[np + k - 1] : 0);
+    double wj_below = i + 1 < n ? y[np + k + 5] - w : 0;
+
+    /* linear momentum: m a - R_i + R_{i+1} = m g */
+    for (int r = 0; r < 2; r++) {
+        gsl_matrix_set(A, k + r, k + r, m->mass[i]);
+        gsl_matrix_set(A, k + r, ri + r, -1);
+    }
+    gsl_vector_set(b, k + 1, -m->mass[i] * m->g);
+    /* angular momentum about the centre, with the dampers of joints i and i + 1 */
+    gsl_matrix_set(A, k + 2, k + 2, m->inertia[i]);
+    gsl_matrix_set(A, k + 2, ri, d * c);
+    gsl_matrix_set(A, k + 2, ri + 1, d * s);
+    double tau = -m->damp[i] * wj;
+    if (i + 1 < n) {
+        gsl_matrix_set(A, k, rj, 1);
+        gsl_matrix_set(A, k + 1, rj + 1, 1);
+        gsl_matrix_set(A, k + 2, rj, lo * c);
+        gsl_matrix_set(A, k + 2, rj + 1, lo * s);
+        tau += m->damp[i + 1] * wj_below;
+    }
+    gsl_vector_set(b, k + 2, tau);
+
+    /* joint i: parent end'' - link top'' = -2a J' - a^2 J */
+    double J[2], Jd[2];
+    joint_gap(m, y, i, J, Jd);
+    int p = i ? k - 3 : 0; /* the parent's x column */
+    double bx = d * w * w * s - 2 * a * Jd[0] - a * a * J[0];
+    double by = -d * w * w * c - 2 * a * Jd[1] - a * a * J[1];
+    if (i > 0) {
+        double sp = sin(y[p + 2]), cp = cos(y[p + 2]), L = m->len[i - 1] - m->half[i - 1];
+        double wp = y[np + p + 2];
+        gsl_matrix_set(A, ri, p + 2, L * cp);
+        gsl_matrix_set(A, ri + 1, p + 2, L * sp);
+        bx += L * wp * wp * sp;
+        by -= L * wp * wp * cp;
+    }
+    gsl_matrix_set(A, ri, p, 1);
+    gsl_matrix_set(A, ri + 1, p + 1, 1);
+    gsl_matrix_set(A, ri, k, -1);
+    gsl_matrix_set(A, ri + 1, k + 1, -1);
+    gsl_matrix_set(A, ri, k + 2, d * c);
+    gsl_matrix_set(A, ri + 1, k + 2, d * s);
+    gsl_vector_set(b, ri, bx);
+    gsl_vector_set(b, ri + 1, by);
+    return m->damp[i] * wj * wj;
+}
+
+/* the system A z = b at state y with the frictionless course row; returns the dampers' power */
+static double newton_assemble(const zp_model *m, newton_work *nw, const zp_drive_now *dn,
+                              const double *y) {
+    const int np = npos(m), rr = np, rn = np + 2 * m->nlink; /* reaction, normal columns */
     const double a = NE_STAB_RATE, fp = dn->tr.fp;
     gsl_matrix *A = nw->A;
     gsl_vector *b = nw->b;
@@ -277,56 +330,8 @@ __attribute__((always_inline)) static inline int newton_rhs_with(const zp_model 
     gsl_vector_set(b, 1, dn->fy - m->m0 * m->g);
 
     double pdamp = 0;
-    for (int i = 0; i < n; i++) {
-        int k = 2 + 3 * i, ri = rr + 2 * i, rj = ri + 2; /* link i; R_i, R_{i+1} columns */
-        double s = sin(y[k + 2]), c = cos(y[k + 2]), d = m->half[i], lo = m->len[i] - d;
-        double w = y[np + k + 2];
-        double wj = w - (i ? y[np + k - 1] : 0);
-        double wj_below = i + 1 < n ? y[np + k + 5] - w : 0;
-
-        /* linear momentum: m a - R_i + R_{i+1} = m g */
-        for (int r = 0; r < 2; r++) {
-            gsl_matrix_set(A, k + r, k + r, m->mass[i]);
-            gsl_matrix_set(A, k + r, ri + r, -1);
-        }
-        gsl_vector_set(b, k + 1, -m->mass[i] * m->g);
-        /* angular momentum about the centre, with the dampers of joints i and i + 1 */
-        gsl_matrix_set(A, k + 2, k + 2, m->inertia[i]);
-        gsl_matrix_set(A, k + 2, ri, d * c);
-        gsl_matrix_set(A, k + 2, ri + 1, d * s);
-        double tau = -m->damp[i] * wj;
-        if (i + 1 < n) {
-            gsl_matrix_set(A, k, rj, 1);
-            gsl_matrix_set(A, k + 1, rj + 1, 1);
-            gsl_matrix_set(A, k + 2, rj, lo * c);
-            gsl_matrix_set(A, k + 2, rj + 1, lo * s);
-            tau += m->damp[i + 1] * wj_below;
-        }
-        gsl_vector_set(b, k + 2, tau);
-        pdamp += m->damp[i] * wj * wj;
-
-        /* joint i: parent end'' - link top'' = -2a J' - a^2 J */
-        double J[2], Jd[2];
-        joint_gap(m, y, i, J, Jd);
-        int p = i ? k - 3 : 0; /* the parent's x column */
-        double bx = d * w * w * s - 2 * a * Jd[0] - a * a * J[0];
-        double by = -d * w * w * c - 2 * a * Jd[1] - a * a * J[1];
-        if (i > 0) {
-            double sp = sin(y[p + 2]), cp = cos(y[p + 2]), L = m->len[i - 1] - m->half[i - 1];
-            double wp = y[np + p + 2];
-            gsl_matrix_set(A, ri, p + 2, L * cp);
-            gsl_matrix_set(A, ri + 1, p + 2, L * sp);
-            bx += L * wp * wp * sp;
-            by -= L * wp * wp * cp;
-        }
-        gsl_matrix_set(A, ri, p, 1);
-        gsl_matrix_set(A, ri + 1, p + 1, 1);
-        gsl_matrix_set(A, ri, k, -1);
-        gsl_matrix_set(A, ri + 1, k + 1, -1);
-        gsl_matrix_set(A, ri, k + 2, d * c);
-        gsl_matrix_set(A, ri + 1, k + 2, d * s);
-        gsl_vector_set(b, ri, bx);
-        gsl_vector_set(b, ri + 1, by);
+    for (int i = 0; i < m->nlink; i++) {
+        pdamp += link_rows(m, y, i, A, b);
     }
 
     /* course: a0y - f' a0x = f'' X'^2 - 2a K' - a^2 K; frictionless: Nx + f' Ny = 0 */
@@ -336,22 +341,16 @@ __attribute__((always_inline)) static inline int newton_rhs_with(const zp_model 
     gsl_vector_set(b, rn, dn->tr.fpp * xd * xd - 2 * a * Kd - a * a * K);
     gsl_matrix_set(A, rn + 1, rn, 1);
     gsl_matrix_set(A, rn + 1, rn + 1, fp);
-    double pdrag = 0;
-    if (phys & ZP_PHYS_DRAG) {
-        pdrag = newton_drag(m, y, b);
-    }
+    return pdamp;
+}
 
-    int sign = 0;
-    if (phys & ZP_PHYS_ROLLING) {
-        int rc = newton_friction(m, nw, dn, xd);
-        if (rc) {
-            return rc;
-        }
-    } else if (gsl_linalg_LU_decomp(A, nw->perm, &sign) ||
-               gsl_linalg_LU_solve(A, nw->perm, b, nw->z)) {
-        return 1;
-    }
-    const double *z = gsl_vector_const_ptr(nw->z, 0);
+/* the rates from the solution z (1 on a non-finite acceleration): the work integrals (the
+   effects' powers pw with work, friction's from the course force), the loads when asked for */
+static int newton_store(const zp_model *m, const zp_drive_now *dn, int work, const double *y,
+                        const double *z, double pdamp, double *pw, double *ydot,
+                        zp_loads *loads) {
+    const int n = m->nlink, np = npos(m), rr = np, rn = np + 2 * n; /* reaction, normal cols */
+    const double fp = dn->tr.fp, xd = y[np];
     for (int j = 0; j < np; j++) {
         if (!isfinite(z[j])) {
             return 1;
@@ -359,12 +358,15 @@ __attribute__((always_inline)) static inline int newton_rhs_with(const zp_model 
         ydot[j] = y[np + j];
         ydot[np + j] = z[j];
     }
-    ydot[2 * np] = dn->fx * xd + dn->fy * y[np + 1];
-    ydot[2 * np + 1] = pdamp;
-    if (phys) {
+    ydot[2 * np + ZP_W_DRIVE] = dn->fx * xd + dn->fy * y[np + 1];
+    ydot[2 * np + ZP_W_DAMP] = pdamp;
+    if (work) {
+        /* friction's power is the course force's tangential part's (0 to round-off without it) */
         double sq = sqrt(1 + fp * fp), ft = (z[rn] + fp * z[rn + 1]) / sq; /* tangential */
-        ydot[2 * np + 2] = pdrag;
-        ydot[2 * np + 3] = -ft * (xd + fp * y[np + 1]) / sq;
+        pw[ZP_EFFECT_W_FRICTION] = -ft * (xd + fp * y[np + 1]) / sq;
+        for (int k = 0; k < ZP_EFFECT_NWORK; k++) {
+            ydot[2 * np + ZP_W_EFFECTS + k] = pw[k];
+        }
     }
     if (loads) {
         loads->hold = (z[rn] + fp * z[rn + 1]) / sqrt(1 + fp * fp);
@@ -381,27 +383,27 @@ __attribute__((always_inline)) static inline int newton_rhs_with(const zp_model 
     return 0;
 }
 
-#define NEWTON_RHS(P, NAME)                                                                        \
-    static int NAME(const zp_model *m, newton_work *w, const zp_drive_now *dn, const double *y,   \
-                    double *ydot, zp_loads *loads) {                                               \
-        return newton_rhs_with(m, w, dn, y, ydot, loads, P);                                       \
-    }
-NEWTON_RHS(0, newton_plain)
-NEWTON_RHS(ZP_PHYS_DRAG, newton_drag_only)
-NEWTON_RHS(ZP_PHYS_ROLLING, newton_roll)
-NEWTON_RHS(ZP_PHYS_DRAG | ZP_PHYS_ROLLING, newton_drag_roll)
-
-/* the equations with exactly the model's terms, chosen once */
-static newton_fn newton_for(const zp_model *m) {
-    static const newton_fn by_phys[4] = {newton_plain, newton_drag_only, newton_roll,
-                                         newton_drag_roll};
-    return by_phys[m->physics & (ZP_PHYS_DRAG | ZP_PHYS_ROLLING)];
-}
-
+/* Design note: one function for every set of effects, tested at run time: unlike lagrange's
+   fixed-size path, a copy per kind of effect gains nothing against the LU solve */
 static int newton_rhs(const zp_model *m, void *work, const zp_drive_now *dn, const double *y,
                       double *ydot, zp_loads *loads) {
     newton_work *nw = work;
-    return nw->fn(m, nw, dn, y, ydot, loads);
+    double pdamp = newton_assemble(m, nw, dn, y), pw[ZP_EFFECT_NWORK] = {0};
+    if (nw->forces) {
+        newton_effects(m, y, nw->b, pw);
+    }
+    int sign = 0;
+    if (nw->rolling) {
+        int rc = newton_friction(m, nw, dn, y[npos(m)]);
+        if (rc) {
+            return rc;
+        }
+    } else if (gsl_linalg_LU_decomp(nw->A, nw->perm, &sign) ||
+               gsl_linalg_LU_solve(nw->A, nw->perm, nw->b, nw->z)) {
+        return 1;
+    }
+    return newton_store(m, dn, m->nwork > ZP_W_EFFECTS, y, gsl_vector_const_ptr(nw->z, 0), pdamp,
+                        pw, ydot, loads);
 }
 
 const zp_formulation zp_form_newton = {

@@ -2,18 +2,15 @@
    State contract shared by all formulations (so events are written once):
      y[0]              trolley x (m); y[(n - nwork) / 2] its rate x' (m/s)
      y[0 .. npos)      positions, npos = (n - nwork) / 2; y[npos + i] is the rate of y[i]
-     y[n - nwork ..]   the model's nwork work integrals (J), in zp_work order: drive work and
-                       damper loss, and with drag or rolling resistance also drag and friction
-                       work taken out
+     y[n - nwork ..]   the model's nwork work integrals (J), in ZP_W_* order (effect.h): drive
+                       work and damper loss, then the effects' work taken out
    everything else is the formulation's own; to_chain/from_chain convert to docs/model.md's q.
-   Each formulation picks, once in create, equations holding only the terms the model names. */
+   Each formulation picks, once in create, equations holding only the terms the model names;
+   the effects' forces on the bodies (effect.h) it only projects onto its own equations. */
 #ifndef ZP_FORMULATION_H
 #define ZP_FORMULATION_H
 
 #include "state.h"
-
-/* The work integrals at the state's end (zp_model.nwork of them). */
-enum { ZP_W_DRIVE, ZP_W_DAMP, ZP_W_DRAG, ZP_W_FRICTION, ZP_W_MAX };
 
 /* An rhs status: sliding friction and the normal force contradict each other (Painleve's
    paradox: every sign of N gives the other sign back); see form_lagrange.c. */

@@ -6,6 +6,7 @@
 #include "course.h"
 #include "diag.h"
 #include "drive.h"
+#include "effect.h"
 #include "scene.h"
 
 typedef struct zp_kink {
@@ -24,9 +25,6 @@ typedef struct zp_arc {
     double r;        /* m */
     double side;     /* +1: centre above (the slope rises through the arc), -1: below */
 } zp_arc;
-
-/* The optional effects a model carries, each term evaluated only when its flag is set. */
-enum { ZP_PHYS_DRAG = 1, ZP_PHYS_ROLLING = 2, ZP_PHYS_ROUNDED = 4 };
 
 typedef struct zp_model {
     double g; /* m/s^2, acts in -y */
@@ -54,16 +52,18 @@ typedef struct zp_model {
     int nenv;                     /* [limits] g_envelope levels, 0: none */
     double env_g[8], env_s[8];    /* g, s: felt g above env_g[l] for at most env_s[l] at a time */
 
-    /* [physics]: physics is the ZP_PHYS_* flags of the effects present, chosen once here */
+    /* [physics]: physics is the ZP_PHYS_* bits of the effects on (effects.def), chosen once
+       here, each term evaluated only where its bit is set; below, each effect's settings */
     int physics;
     double drag_k[ZP_MAX_LINKS + 1]; /* kg/m, rho CdA / 2 of the trolley, then each link */
     double wind;                     /* m/s, +x */
     double mu;                       /* rolling-resistance coefficient */
-    int nwork;                       /* work integrals at the state's end: drive, dampers, and
-                                        with drag or rolling also drag, friction */
+    int nwork;                       /* work integrals at the state's end (ZP_W_*) */
     int narc;
     zp_arc arc[ZP_MAX_SECTIONS];
     int arc_at[ZP_MAX_SECTIONS + 1]; /* index of the arc around boundary xb[k], or -1 */
+    const zp_effect_course *course_provider; /* the course an effect lays (zp_model_track),
+                                                NULL: the scene's own */
 
     /* derived for the equations of motion (docs/model.md chain coordinates) */
     double mtot;                                 /* kg, trolley + links */
@@ -77,15 +77,17 @@ zp_model *zp_model_build(const zp_scene *sc, zp_diag *d);
 void zp_model_free(zp_model *m);
 /* 1 when the boundary after section left (0-based) is a kink: the slope jumps there. */
 int zp_model_is_kink(const zp_model *m, int left);
-/* The course under the trolley on section sec at x, arcs included (the plain course when the
-   model has none); course: the caller's evaluators. */
+/* The one course provider the simulator and the figures ask: the course under the trolley on
+   section sec at x, as the model's effects lay it (the rounded kinks' arcs), or the scene's
+   own; course: the caller's evaluators. */
 zp_track zp_model_track(const zp_model *m, const zp_course *course, int sec, double x);
-/* Which arc zp_model_track reads at x on section sec: its index, or -1 for the plain course. */
-int zp_model_track_arc(const zp_model *m, int sec, double x);
-/* The course as read on one piece: arc `arc` (its circle, continued past its tangent points)
-   or with arc -1 the plain course of section sec, so a step that overshoots a tangent point
+/* Which piece zp_model_track reads at x on section sec: an effect's (an arc's index), or -1
+   for the scene's own course. */
+int zp_model_piece(const zp_model *m, int sec, double x);
+/* The course as read on one piece (zp_effect_course), continued past the piece's ends, or
+   with piece -1 the scene's course of section sec: so a step that overshoots a piece's end
    sees no jump of f'' before its root is found. */
-zp_track zp_model_track_piece(const zp_model *m, const zp_course *course, int sec, int arc,
+zp_track zp_model_track_piece(const zp_model *m, const zp_course *course, int sec, int piece,
                               double x);
 /* The largest |relative angle| of a run (max_rel_angle, per joint) as the margin judges it:
    measured against phi_max, each joint's angle raised by how much its own death angle lies

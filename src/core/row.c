@@ -68,7 +68,8 @@ void zp_row_store_put(zp_row_store *t, const zp_row *r) {
     p[ROW_E_IMPULSE] = r->e_impulse;
     p[ROW_NORMAL] = r->loads.normal;
     p[ROW_HOLD] = r->loads.hold;
-    const double w[ZP_W_MAX] = {r->w_drive, r->w_damp, r->w_drag, r->w_fric};
+    double w[ZP_W_MAX] = {[ZP_W_DRIVE] = r->w_drive, [ZP_W_DAMP] = r->w_damp};
+    memcpy(w + ZP_W_EFFECTS, r->w_effect, sizeof r->w_effect);
     memcpy(p + ROW_WORK, w, sizeof *w * t->nwork);
     p += ROW_WORK + t->nwork;
     memcpy(p, r->c.q, sizeof *p * nq);
@@ -90,8 +91,7 @@ void zp_row_store_get(const zp_row_store *t, int k, zp_row *r) {
     memcpy(w, p + ROW_WORK, sizeof *w * t->nwork);
     r->w_drive = w[ZP_W_DRIVE];
     r->w_damp = w[ZP_W_DAMP];
-    r->w_drag = w[ZP_W_DRAG];
-    r->w_fric = w[ZP_W_FRICTION];
+    memcpy(r->w_effect, w + ZP_W_EFFECTS, sizeof r->w_effect);
     p += ROW_WORK + t->nwork;
     memcpy(r->c.q, p, sizeof *p * nq);
     memcpy(r->c.v, p + nq, sizeof *p * nq);

@@ -12,7 +12,8 @@ typedef struct zp_row {
     int sec;  /* 0-based */
     zp_chain c;
     double w_drive, w_damp, e_impulse; /* J, cumulative */
-    double w_drag, w_fric;             /* J, cumulative, taken out (0 without [physics]) */
+    double w_effect[ZP_EFFECT_NWORK];  /* J, cumulative, taken out by each effect with a work
+                                          integral (ZP_EFFECT_W_*; 0 without them) */
     zp_loads loads;
 } zp_row;
 

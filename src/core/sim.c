@@ -160,9 +160,7 @@ static double stop_after(const zp_sim *s, double t) {
 /* the integrator (re)started at (t, s->y), reading the course piece the trolley is on; the
    peak locator (o.peaks) starts a new interval there */
 static int restart(zp_sim *s, double t) {
-    if (s->m->physics & ZP_PHYS_ROUNDED) {
-        s->arc = zp_model_track_arc(s->m, s->sec, s->y[0]);
-    }
+    s->arc = zp_model_piece(s->m, s->sec, s->y[0]);
     if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
         return 1;
     }

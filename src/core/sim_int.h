@@ -42,7 +42,7 @@ struct zp_sim {
     zp_envelope env;     /* felt g against [limits] g_envelope (o.peaks; env.n 0: none) */
 
     /* [physics] */
-    track_fn track; /* the course with its arcs, or the plain course (chosen at create) */
+    track_fn track; /* the course the model's course provider lays (zp_model_track) */
     int stuck;      /* rolling resistance: 1 while static friction holds the trolley */
     int slide;      /* +1, -1: the way it slides since the last stop, kink or start */
     double hold_t;  /* s, when that hold began */
@@ -51,8 +51,8 @@ struct zp_sim {
     int inconsistent_steps; /* steps in a row that met such an evaluation */
     int w0;         /* index of the first work integral in the state */
     zp_arc_peaks arc_peaks[ZP_MAX_SECTIONS]; /* load peaks on each arc */
-    int arc; /* the piece the integrator reads since its last restart: an arc, or -1 the plain
-                course (zp_model_track_piece) */
+    int arc; /* the piece the integrator reads since its last restart: an effect's (an arc),
+                or -1 the plain course (zp_model_track_piece) */
 };
 
 #endif

@@ -115,9 +115,8 @@ void zp_sim_output_finish(zp_sim *s, zp_result *r, double t, zp_outcome o, zp_st
     r->e_final = e.kinetic + e.potential;
     r->w_drive = s->y[s->w0 + ZP_W_DRIVE];
     r->w_damp = s->y[s->w0 + ZP_W_DAMP];
-    if (s->m->nwork > ZP_W_DRAG) {
-        r->w_drag = s->y[s->w0 + ZP_W_DRAG];
-        r->w_fric = s->y[s->w0 + ZP_W_FRICTION];
+    for (int k = ZP_W_EFFECTS; k < s->m->nwork; k++) {
+        r->w_effect[k - ZP_W_EFFECTS] = s->y[s->w0 + k];
     }
     r->e_impulse = s->e_impulse;
     /* the last row shows the end state */

@@ -39,14 +39,15 @@ zp_drive_now zp_sim_rhs_drive_now(const zp_sim *s, double t, double x) {
     return dn;
 }
 
-/* the equations of motion as the integrator sees them: on the plain course, or with arcs */
+/* the equations of motion as the integrator sees them: on the plain course, or on the piece
+   of an effect's course */
 int zp_sim_rhs(double t, const double *y, double *ydot, void *user) {
     zp_sim *s = user;
     zp_drive_now dn = drive_at(s, plain_track, t, y[0]);
     return s->form->rhs(s->m, s->fwork, &dn, y, ydot, NULL);
 }
 
-static int sim_rhs_rounded(double t, const double *y, double *ydot, void *user) {
+static int sim_rhs_provided(double t, const double *y, double *ydot, void *user) {
     zp_sim *s = user;
     zp_track tr = zp_model_track_piece(s->m, s->course, s->sec, s->arc, y[0]);
     zp_drive_now dn = drive_with(s, tr, t, y[0]);
@@ -101,9 +102,8 @@ zp_row zp_sim_rhs_row(zp_sim *s, double t, const double *y) {
     s->form->to_chain(s->m, &dn.tr, y, &r.c);
     r.w_drive = y[s->w0 + ZP_W_DRIVE];
     r.w_damp = y[s->w0 + ZP_W_DAMP];
-    if (s->m->nwork > ZP_W_DRAG) {
-        r.w_drag = y[s->w0 + ZP_W_DRAG];
-        r.w_fric = y[s->w0 + ZP_W_FRICTION];
+    for (int k = ZP_W_EFFECTS; k < s->m->nwork; k++) {
+        r.w_effect[k - ZP_W_EFFECTS] = y[s->w0 + k];
     }
     r.e_impulse = s->e_impulse;
     s->form->rhs(s->m, s->fwork, &dn, y, s->ydot, &r.loads);
@@ -111,9 +111,9 @@ zp_row zp_sim_rhs_row(zp_sim *s, double t, const double *y) {
 }
 
 void zp_sim_rhs_pick(zp_sim *s, const zp_model *m, zp_rhs_fn *rhs, zp_root_fn *root) {
-    s->track = m->physics & ZP_PHYS_ROUNDED ? zp_model_track : plain_track;
-    *rhs = m->physics & ZP_PHYS_ROLLING   ? zp_sim_rhs_rolling
-           : m->physics & ZP_PHYS_ROUNDED ? sim_rhs_rounded
-                                          : zp_sim_rhs;
+    s->track = zp_model_track;
+    *rhs = m->physics & ZP_PHYS_ROLLING ? zp_sim_rhs_rolling
+           : m->course_provider         ? sim_rhs_provided
+                                        : zp_sim_rhs;
     *root = m->physics & ZP_PHYS_ROLLING ? sim_root_rolling : sim_root;
 }

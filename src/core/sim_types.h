@@ -95,7 +95,8 @@ typedef struct zp_result {
                                            ZP_MAX_CROSSINGS are in zp_sim_crossings) */
     double e_initial, e_final;          /* J */
     double w_drive, w_damp, e_impulse;  /* J: drive work, damper loss, impulse loss */
-    double w_drag, w_fric;              /* J: drag and friction work taken out ([physics]) */
+    double w_effect[ZP_EFFECT_NWORK];   /* J: work taken out by each effect with a work
+                                           integral (ZP_EFFECT_W_*; [physics]) */
     double constraint_residual;         /* m */
     zp_load_peaks peaks;                /* the kink impulses are in zp_sim_crossings */
     double env_longest[8]; /* s, per [limits] g_envelope level: the longest time felt g (of

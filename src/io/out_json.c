@@ -161,9 +161,8 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
     key_num(f, "drive_work", r->w_drive, ", ");
     key_num(f, "damper_work", r->w_damp, ", ");
     key_num(f, "impulse_loss", r->e_impulse, ", ");
-    if (m->physics) {
-        key_num(f, "drag_work", r->w_drag, ", ");
-        key_num(f, "friction_work", r->w_fric, ", ");
+    for (int k = 0; zp_effect_work_shown(m->physics) && k < ZP_EFFECT_NWORK; k++) {
+        key_num(f, zp_effect_work_names(k)->column, r->w_effect[k], ", ");
     }
     key_num(f, "residual", zp_estimate_energy_residual(r), "},\n  ");
     key_num(f, "constraint_residual", r->constraint_residual, ",\n");

@@ -127,11 +127,14 @@ static void script_energy(FILE *f, const zp_model *m, const zp_result *r, const 
     zp_plot_script_head_png(f, m, "energy", "energy terms and cumulative work against time", FIG_W,
                             560, 0);
     /* the title names every term of the balance the figure draws */
-    fprintf(f,
-            "set title 'Energy: kinetic + potential = E(0) + drive work − damper%s and kink "
-            "losses'\nset xlabel 't (s)'\nset ylabel 'energy (J)'\n"
-            "set key outside right top box lc rgb '#cccccc'\n",
-            m->physics ? ", drag, friction" : "");
+    int shown = zp_effect_work_shown(m->physics);
+    fputs("set title 'Energy: kinetic + potential = E(0) + drive work − damper", f);
+    for (int k = 0; shown && k < ZP_EFFECT_NWORK; k++) {
+        fprintf(f, ", %s", zp_effect_work_names(k)->brief);
+    }
+    fputs(" and kink losses'\nset xlabel 't (s)'\nset ylabel 'energy (J)'\n"
+          "set key outside right top box lc rgb '#cccccc'\n",
+          f);
     kink_lines(f, kk);
     death_line(f, r);
     fputs("plot 'plot_run.dat' using 't':'kinetic' with lines lw 2 lc rgb '#1f77b4' "
@@ -147,12 +150,12 @@ static void script_energy(FILE *f, const zp_model *m, const zp_result *r, const 
           "     '' using 't':'kink_loss' with lines lw 2 lc rgb '#d62728' "
           "title 'kink losses'",
           f);
-    if (m->physics) {
-        fputs(", \\\n     '' using 't':'drag_loss' with lines lw 2 lc rgb '#17becf' "
-              "title 'drag work', \\\n"
-              "     '' using 't':'friction_loss' with lines lw 2 lc rgb '#8c564b' "
-              "title 'friction work'",
-              f);
+    /* a colour per effect's work, in effects.def order */
+    static const char *const colour[] = {"#17becf", "#8c564b", "#bcbd22", "#e377c2"};
+    for (int k = 0; shown && k < ZP_EFFECT_NWORK; k++) {
+        const zp_effect_work *w = zp_effect_work_names(k);
+        fprintf(f, ", \\\n     '' using 't':'%s' with lines lw 2 lc rgb '%s' title '%s'",
+                w->plot, colour[k % (int)(sizeof colour / sizeof *colour)], w->words);
     }
     fputc('\n', f);
 }

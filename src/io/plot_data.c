@@ -75,6 +75,15 @@ zp_plot_box zp_plot_write_course(FILE *f, const zp_model *m) {
     return b;
 }
 
+/* E(0) plus the work done on the system minus the losses so far: the energy row r should have */
+static double balance(double e0, const zp_row *r) {
+    double b = e0 + r->w_drive - r->w_damp - r->e_impulse;
+    for (int w = 0; w < ZP_EFFECT_NWORK; w++) {
+        b -= r->w_effect[w];
+    }
+    return b;
+}
+
 /* plot_run.dat: one line per trajectory row, named columns; returns the extent of the
    centres-of-mass paths */
 zp_plot_box zp_plot_write_run(FILE *f, const zp_model *m, const zp_row_store *rows) {
@@ -90,8 +99,8 @@ zp_plot_box zp_plot_write_run(FILE *f, const zp_model *m, const zp_row_store *ro
     for (int i = 1; i <= m->nlink; i++) {
         fprintf(f, " joint%d", i);
     }
-    if (m->physics) {
-        fputs(" drag_loss friction_loss", f);
+    for (int k = 0; zp_effect_work_shown(m->physics) && k < ZP_EFFECT_NWORK; k++) {
+        fprintf(f, " %s", zp_effect_work_names(k)->plot);
     }
     fputs(" felt_g", f); /* the largest felt g over the judged links ([limits] g_links) */
     fputc('\n', f);
@@ -104,7 +113,10 @@ zp_plot_box zp_plot_write_run(FILE *f, const zp_model *m, const zp_row_store *ro
         zp_row_derive(m, r, &v);
         double total = v.e.kinetic + v.e.potential;
         if (k == 0) {
-            e0 = total - r->w_drive + r->w_damp + r->e_impulse + r->w_drag + r->w_fric;
+            e0 = total - r->w_drive + r->w_damp + r->e_impulse;
+            for (int w = 0; w < ZP_EFFECT_NWORK; w++) {
+                e0 += r->w_effect[w];
+            }
         }
         fprintf(f, "%.9g %d %.9g %.9g %.9g", r->t, r->sec + 1, r->c.q[0], r->c.q[1], v.speed);
         for (int i = 0; i <= m->nlink; i++) {
@@ -116,13 +128,13 @@ zp_plot_box zp_plot_write_run(FILE *f, const zp_model *m, const zp_row_store *ro
         }
         fprintf(f, " %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g", v.e.kinetic, v.e.potential, total,
                 r->w_drive, r->w_damp, r->e_impulse,
-                e0 + r->w_drive - r->w_damp - r->e_impulse - r->w_drag - r->w_fric,
+                balance(e0, r),
                 r->loads.normal);
         for (int i = 0; i < m->nlink; i++) {
             fprintf(f, " %.9g", v.joint[i]);
         }
-        if (m->physics) {
-            fprintf(f, " %.9g %.9g", r->w_drag, r->w_fric);
+        for (int w = 0; zp_effect_work_shown(m->physics) && w < ZP_EFFECT_NWORK; w++) {
+            fprintf(f, " %.9g", r->w_effect[w]);
         }
         double g = 0;
         for (int i = 0; i < m->nlink; i++) {

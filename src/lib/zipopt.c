@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "estimate.h"
+#include "out_columns.h"
 #include "prep.h"
 #include "robust.h"
 #include "scene_read.h"
@@ -21,17 +22,19 @@
 /* the stop flag is handed to the search as its sig_atomic_t flag */
 _Static_assert(_Generic((sig_atomic_t)0, int : 1, default : 0), "sig_atomic_t is int");
 
-#define NCOL_MAX (5 + 3 * ZP_MAX_LINKS + 5) /* trajectory columns of the largest chain */
-#define COL_NAME 16
 
-/* the named numbers of a run and of a search (zipopt.h), in the order *_numbers fills them */
-static const char *const run_keys[] = {
+/* the named numbers of a run and of a search (zipopt.h), in the order *_numbers fills them; a
+   run's: run_head, each effect's work (its key in effects.def's order), run_tail */
+static const char *const run_head[] = {
     "time",    "x",         "speed",  "died_link", "kinks",           "e_initial",
     "e_final", "w_drive",   "w_damp", "e_impulse", "energy_residual", "constraint_residual",
-    "steps",   "rhs_evals", "wall_s", "w_drag",    "w_fric",          "peak_g",
-    "peak_joint_force", "max_kink_dv", "arrival_kmh", "normal_min", "normal_max",
-    "rejected_steps"};
-#define NRUN_KEYS ((int)(sizeof run_keys / sizeof *run_keys))
+    "steps",   "rhs_evals", "wall_s"};
+static const char *const run_tail[] = {"peak_g",      "peak_joint_force", "max_kink_dv",
+                                       "arrival_kmh", "normal_min",       "normal_max",
+                                       "rejected_steps"};
+#define NRUN_HEAD ((int)(sizeof run_head / sizeof *run_head))
+#define NRUN_TAIL ((int)(sizeof run_tail / sizeof *run_tail))
+#define NRUN_KEYS (NRUN_HEAD + ZP_EFFECT_NWORK + NRUN_TAIL)
 static const char *const search_keys[] = {
     "found",          "time",           "angle",          "evals",           "feasible",
     "failed",         "threads",        "wall_s",         "interrupted",     "base_found",
@@ -60,7 +63,7 @@ struct zipopt_run {
     int nlink;
     int nrow, ncol;
     double *traj; /* owned, nrow x ncol */
-    char col[NCOL_MAX][COL_NAME];
+    char col[ZP_OUT_COLUMNS_MAX][ZP_OUT_COLUMN_NAME];
     int nkink;
     double *kinks; /* owned, nkink x 6 */
 };
@@ -232,50 +235,18 @@ int zipopt_scene_load_schedule(zipopt_scene *s, const char *path, char *err, siz
     return rc;
 }
 
-/* the trajectory columns (zipopt.h): names, then one row's values */
-static int columns(zipopt_run *u) {
-    static const char *const head[] = {"t", "section", "x", "y", "speed"};
-    static const char *const per_link[] = {"theta", "omega", "phi"};
-    static const char *const tail[] = {"kinetic", "potential", "drive_work", "damper_work",
-                                       "impulse_loss"};
-    int j = 0;
-    for (size_t i = 0; i < sizeof head / sizeof *head; i++) {
-        snprintf(u->col[j++], COL_NAME, "%s", head[i]);
-    }
-    for (size_t i = 0; i < sizeof per_link / sizeof *per_link; i++) {
-        for (int l = 1; l <= u->nlink; l++) {
-            snprintf(u->col[j++], COL_NAME, "%s%d", per_link[i], l);
+/* the trajectory columns the library hands out (zipopt.h): those of the trajectory's table
+   with a library name, into u's names and each one's index in the table into which */
+static int columns(zipopt_run *u, const zp_model *m, int *which) {
+    zp_out_column all[ZP_OUT_COLUMNS_MAX];
+    int n = zp_out_columns(m, all), j = 0;
+    for (int i = 0; i < n; i++) {
+        if (all[i].lib[0]) {
+            snprintf(u->col[j], ZP_OUT_COLUMN_NAME, "%s", all[i].lib);
+            which[j++] = i;
         }
     }
-    for (size_t i = 0; i < sizeof tail / sizeof *tail; i++) {
-        snprintf(u->col[j++], COL_NAME, "%s", tail[i]);
-    }
     return j;
-}
-
-static void row_values(const zp_model *m, const zp_row *r, double *out) {
-    zp_row_view v;
-    zp_row_derive(m, r, &v);
-    int j = 0;
-    out[j++] = r->t;
-    out[j++] = r->sec + 1;
-    out[j++] = r->c.q[0];
-    out[j++] = r->c.q[1];
-    out[j++] = v.speed;
-    for (int i = 0; i < m->nlink; i++) {
-        out[j++] = r->c.q[2 + i];
-    }
-    for (int i = 0; i < m->nlink; i++) {
-        out[j++] = r->c.v[2 + i];
-    }
-    for (int i = 0; i < m->nlink; i++) {
-        out[j++] = v.phi[i];
-    }
-    out[j++] = v.e.kinetic;
-    out[j++] = v.e.potential;
-    out[j++] = r->w_drive;
-    out[j++] = r->w_damp;
-    out[j++] = r->e_impulse;
 }
 
 /* the run's rows and kink crossings copied out of the workspace, which the next run reuses */
@@ -284,8 +255,9 @@ static int copy_out(zipopt_run *u, const zp_model *m, const zp_sim *sim) {
     const zp_row_store *rows = zp_sim_rows(sim);
     int nrow = rows->n;
     const zp_crossing *cr = zp_sim_crossings(sim, &nk);
+    int which[ZP_OUT_COLUMNS_MAX];
     u->nlink = m->nlink;
-    u->ncol = columns(u);
+    u->ncol = columns(u, m, which);
     u->traj = malloc(sizeof *u->traj * (size_t)(nrow > 0 ? nrow : 1) * (size_t)u->ncol);
     u->kinks = malloc(sizeof *u->kinks * (size_t)(nk > 0 ? nk : 1) * 6);
     if (!u->traj || !u->kinks) {
@@ -294,8 +266,12 @@ static int copy_out(zipopt_run *u, const zp_model *m, const zp_sim *sim) {
     u->nrow = nrow;
     for (int i = 0; i < nrow; i++) {
         zp_row row;
+        double v[ZP_OUT_COLUMNS_MAX];
         zp_row_store_get(rows, i, &row);
-        row_values(m, &row, u->traj + (size_t)i * (size_t)u->ncol);
+        zp_out_columns_values(m, &row, v);
+        for (int j = 0; j < u->ncol; j++) {
+            u->traj[(size_t)i * (size_t)u->ncol + j] = v[which[j]];
+        }
     }
     u->nkink = nk;
     for (int i = 0; i < nk; i++) {
@@ -313,32 +289,34 @@ static int copy_out(zipopt_run *u, const zp_model *m, const zp_sim *sim) {
 static void run_numbers(const zp_model *m, const zp_result *r, double *v) {
     double reached[ZP_LIMIT_COUNT];
     zp_limits_reached(m, r, reached);
-    const double n[] = {r->time,
-                        r->x,
-                        r->v,
-                        r->died_link,
-                        r->ncross,
-                        r->e_initial,
-                        r->e_final,
-                        r->w_drive,
-                        r->w_damp,
-                        r->e_impulse,
-                        zp_estimate_energy_residual(r),
-                        r->constraint_residual,
-                        (double)r->steps,
-                        (double)r->rhs_evals,
-                        r->wall_s,
-                        r->w_drag,
-                        r->w_fric,
-                        reached[ZP_LIMIT_G],
-                        reached[ZP_LIMIT_JOINT],
-                        reached[ZP_LIMIT_KINK_DV],
-                        zp_limit_reached_in(r, ZP_LIMIT_ARRIVAL) ? reached[ZP_LIMIT_ARRIVAL] : NAN,
-                        r->peaks.normal_min,
-                        r->peaks.normal_max,
-                        (double)r->rejected};
-    _Static_assert(sizeof n / sizeof *n == NRUN_KEYS, "one number per key");
-    memcpy(v, n, sizeof n);
+    const double head[] = {r->time,
+                           r->x,
+                           r->v,
+                           r->died_link,
+                           r->ncross,
+                           r->e_initial,
+                           r->e_final,
+                           r->w_drive,
+                           r->w_damp,
+                           r->e_impulse,
+                           zp_estimate_energy_residual(r),
+                           r->constraint_residual,
+                           (double)r->steps,
+                           (double)r->rhs_evals,
+                           r->wall_s};
+    const double tail[] = {reached[ZP_LIMIT_G],
+                           reached[ZP_LIMIT_JOINT],
+                           reached[ZP_LIMIT_KINK_DV],
+                           zp_limit_reached_in(r, ZP_LIMIT_ARRIVAL) ? reached[ZP_LIMIT_ARRIVAL]
+                                                                     : NAN,
+                           r->peaks.normal_min,
+                           r->peaks.normal_max,
+                           (double)r->rejected};
+    _Static_assert(sizeof head / sizeof *head == NRUN_HEAD, "one number per key");
+    _Static_assert(sizeof tail / sizeof *tail == NRUN_TAIL, "one number per key");
+    memcpy(v, head, sizeof head);
+    memcpy(v + NRUN_HEAD, r->w_effect, sizeof r->w_effect);
+    memcpy(v + NRUN_HEAD + ZP_EFFECT_NWORK, tail, sizeof tail);
 }
 
 zipopt_run *zipopt_simulate(zipopt_scene *s, char *err, size_t errlen) {
@@ -400,12 +378,24 @@ static double lookup(const char *const *keys, int n, const double *v, const char
     return NAN;
 }
 
+/* the name of a run's number i (0 <= i < NRUN_KEYS) */
+static const char *run_key(int i) {
+    return i < NRUN_HEAD                     ? run_head[i]
+           : i < NRUN_HEAD + ZP_EFFECT_NWORK ? zp_effect_work_names(i - NRUN_HEAD)->key
+                                             : run_tail[i - NRUN_HEAD - ZP_EFFECT_NWORK];
+}
+
 double zipopt_run_get(const zipopt_run *r, const char *key) {
-    return r ? lookup(run_keys, NRUN_KEYS, r->num, key) : NAN;
+    for (int i = 0; r && key && i < NRUN_KEYS; i++) {
+        if (!strcmp(run_key(i), key)) {
+            return r->num[i];
+        }
+    }
+    return NAN;
 }
 
 const char *zipopt_run_key(int i) {
-    return i >= 0 && i < NRUN_KEYS ? run_keys[i] : NULL;
+    return i >= 0 && i < NRUN_KEYS ? run_key(i) : NULL;
 }
 
 int zipopt_run_max_angles(const zipopt_run *r, double *angle, int n) {
