@@ -17,7 +17,7 @@ static void test_sections(void) {
     for (int k = 0; k < 3; k++) {
         CHECK(s.lo[k] == -10 && s.hi[k] == 20);
         for (int i = 0; i < 4; i++) {
-            CHECK(zp_schedule_force(&s, ts[i], xs[i], k) == f[k]);
+            CHECK(zp_drive_force(&s, &(zp_drive_state){ts[i], xs[i], 0, k}) == f[k]);
         }
     }
     double br[4];
@@ -25,7 +25,7 @@ static void test_sections(void) {
     /* the same shape with other parameters keeps kind, sections and bounds */
     const double g[3] = {1, 2, 3};
     zp_schedule w = zp_schedule_with(&s, g);
-    CHECK(w.np == 3 && w.lo[2] == -10 && w.hi[0] == 20 && zp_schedule_force(&w, 5, 5, 1) == 2);
+    CHECK(w.np == 3 && w.lo[2] == -10 && w.hi[0] == 20 && zp_drive_force(&w, &(zp_drive_state){5, 5, 0, 1}) == 2);
 }
 
 static void test_round_trip(void) {
@@ -104,7 +104,7 @@ static void test_scaled(void) {
     zp_schedule s = zp_schedule_sections(3, f, -10, 500);
     zp_schedule sc = zp_schedule_scaled(&s, k);
     for (int sec = 0; sec < 3; sec++) {
-        CHECK(zp_schedule_force(&sc, 1.5, 42, sec) == f[sec] * k[sec]);
+        CHECK(zp_drive_force(&sc, &(zp_drive_state){1.5, 42, 0, sec}) == f[sec] * k[sec]);
         CHECK(sc.lo[sec] == s.lo[sec] && sc.hi[sec] == s.hi[sec]);
     }
 }
