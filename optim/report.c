@@ -101,7 +101,9 @@ static void md_schedule(FILE *f, const zp_report *r) {
     const zp_model *m = r->m;
     const zp_schedule *sh = r->shape;
     const char *unit = zp_drive_unit(sh);
-    fprintf(f, "## Schedule\n\n| section | x from (m) | x to (m) | force (%s) |\n|---|---|---|---|\n",
+    fprintf(f,
+            "## Schedule\n\n| section | x from (m) | x to (m) | force (%s) |\n"
+            "|---|---|---|---|\n",
             unit);
     for (int k = 0; k < sh->np; k++) {
         double from, to;

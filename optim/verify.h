@@ -26,10 +26,10 @@ typedef struct zp_verify {
     double level[ZP_VERIFY_LEVELS]; /* the perturbation levels (shares, increasing): set
                                        between zp_verify_begin and _finish; 0: 2 % and 5 % */
     zp_robust rob[ZP_VERIFY_LEVELS];
-    int robust_done;  /* robustness was measured (not when interrupted) */
-    int kill_found;   /* some perturbation within the largest level killed */
-    double kill;      /* 1: the smallest relative change of the parameters found to kill */
-    int kill_param;   /* 1-based parameter whose change alone kills at `kill`, 0: a random mix */
+    int robust_done; /* robustness was measured (not when interrupted) */
+    int kill_found;  /* some perturbation within the largest level killed */
+    double kill;     /* 1: the smallest relative change of the parameters found to kill */
+    int kill_param;  /* 1-based parameter whose change alone kills at `kill`, 0: a random mix */
 } zp_verify;
 
 /* The verification in two steps, so the caller can draw the best run while the checks go:

@@ -29,7 +29,8 @@ static void test_sections(void) {
     /* the same shape with other parameters keeps kind, sections and bounds */
     const double g[3] = {1, 2, 3};
     zp_schedule w = zp_schedule_with(&s, g);
-    CHECK(w.np == 3 && w.lo[2] == -10 && w.hi[0] == 20 && zp_drive_force(&w, &(zp_drive_state){5, 5, 0, 1}) == 2);
+    CHECK(w.np == 3 && w.lo[2] == -10 && w.hi[0] == 20 &&
+          zp_drive_force(&w, &(zp_drive_state){5, 5, 0, 1}) == 2);
 }
 
 /* the force reads the state it needs: for per-section constants not t, x or the speed */

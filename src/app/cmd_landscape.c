@@ -419,9 +419,8 @@ static int landscape(int argc, char **argv, const zp_spread *sp) {
     progress pr = {.ranks = sp->size};
     clock_gettime(CLOCK_MONOTONIC, &pr.start);
     pr.last = pr.start;
-    zp_status rc =
-        zp_landscape_sweep(m, &o, sh, force, n1 + n2, pt, isatty(STDERR_FILENO) ? show : NULL, &pr,
-                           sp);
+    zp_status rc = zp_landscape_sweep(m, &o, sh, force, n1 + n2, pt,
+                                      isatty(STDERR_FILENO) ? show : NULL, &pr, sp);
     if (rc) {
         fprintf(stderr, "zipopt landscape: %s; nothing was written\n",
                 rc == ZP_ERR_IO ? "the MPI ranks could not exchange their runs"

@@ -14,13 +14,18 @@
 typedef struct kind {
     const char *noun, *nouns; /* one parameter, several: labels are noun + 1-based index */
     const char *unit;         /* of every parameter */
-    int (*nparam)(const zp_schedule *s);                          /* for s's sections */
-    int (*section)(const zp_schedule *s, int k);                  /* where parameter k acts */
+    /* how many parameters s's sections take */
+    int (*nparam)(const zp_schedule *s);
+    /* the section parameter k acts on (0-based), and the stretch [from, to] (m) where */
+    int (*section)(const zp_schedule *s, int k);
     void (*span)(const zp_schedule *s, int k, const double *xb, double *from, double *to);
-    double (*force)(const zp_schedule *s, const zp_drive_state *st); /* N, before any cap */
+    /* N, the schedule's force at st, before any cap; where it jumps in time */
+    double (*force)(const zp_schedule *s, const zp_drive_state *st);
     int (*breaks)(const zp_schedule *s, double *t, int max);
-    void (*constant)(const zp_schedule *s, double F, double *p);   /* F everywhere: s's p */
-    void (*label)(const zp_schedule *s, int sec, char *buf, size_t cap); /* section sec */
+    /* s's parameters p pushing F everywhere */
+    void (*constant)(const zp_schedule *s, double F, double *p);
+    /* section sec's drive in words */
+    void (*label)(const zp_schedule *s, int sec, char *buf, size_t cap);
 } kind;
 
 /* kind constant (ZP_SCHED_SECTIONS): parameter k is section k's force, at every t, x, v */
@@ -110,8 +115,7 @@ zp_schedule zp_schedule_with(const zp_schedule *sh, const double *p) {
 }
 
 zp_schedule zp_schedule_of_scene(const zp_scene *sc) {
-    zp_schedule s = shape_of((zp_sched_kind)sc->drive_kind, sc->nsec, sc->force_min,
-                             sc->force_max);
+    zp_schedule s = shape_of((zp_sched_kind)sc->drive_kind, sc->nsec, sc->force_min, sc->force_max);
     if (sc->nforce > 0) {
         s.np = sc->nforce;
         memcpy(s.p, sc->forces, sizeof *s.p * (size_t)s.np);
@@ -158,8 +162,7 @@ void zp_drive_param_label(const zp_schedule *s, int k, char *buf, size_t cap) {
     snprintf(buf, cap, "%s %d", kind_of(s)->noun, k + 1);
 }
 
-void zp_drive_param_span(const zp_schedule *s, int k, const double *xb, double *from,
-                         double *to) {
+void zp_drive_param_span(const zp_schedule *s, int k, const double *xb, double *from, double *to) {
     kind_of(s)->span(s, k, xb, from, to);
 }
 

@@ -89,8 +89,8 @@ void zp_fig_landscape_2d(FILE *f, const char *scene, const zp_schedule *base, in
             "set key outside below horizontal\n"
             "set bmargin 6\n"
             "unset grid\n",
-            gp_safe(scene, name, sizeof name), zp_drive_param_noun(base, 1), si + 1, sj + 1,
-            si + 1, li, unit, sj + 1, lj, unit, r1->a - dx / 2, r1->b + dx / 2, r2->a - dy / 2,
+            gp_safe(scene, name, sizeof name), zp_drive_param_noun(base, 1), si + 1, sj + 1, si + 1,
+            li, unit, sj + 1, lj, unit, r1->a - dx / 2, r1->b + dx / 2, r2->a - dy / 2,
             r2->b + dy / 2);
     /* the base schedule's label on the side with more room */
     const double *p = base->p;
