@@ -55,11 +55,8 @@ int main(int argc, char **argv) {
     if (!m || !wall) {
         return 1;
     }
-    double f[ZP_MAX_SECTIONS];
-    for (int k = 0; k < m->nsec; k++) {
-        f[k] = force;
-    }
-    zp_schedule sched = zp_schedule_sections(m->nsec, f, 0, 0);
+    zp_schedule shape = zp_schedule_of_scene(&sc);
+    zp_schedule sched = zp_drive_constant(&shape, force);
     zp_input in = {.sched = &sched};
     zp_result r;
     for (int a = first_rtol; a < argc; a++) {

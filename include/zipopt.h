@@ -61,11 +61,20 @@ ZIPOPT_API void zipopt_scene_free(zipopt_scene *s); /* NULL is fine */
 ZIPOPT_API const char *zipopt_scene_name(const zipopt_scene *s);
 ZIPOPT_API int zipopt_scene_sections(const zipopt_scene *s);     /* course sections */
 ZIPOPT_API int zipopt_scene_links(const zipopt_scene *s);        /* chain links */
-/* Copies the drive forces (N, one per section) into force (room for n); returns how many the
-   scene has (copying at most n). */
+/* The drive schedule's parameters, as its kind counts them ([drive] forces: one force per
+   section, N): how many; the label of parameter k, 0-based ("section 2"), into buf (room for
+   cap; returns its length as snprintf does, -1 when k is out of range); their unit ("N"); their
+   search bounds ([drive] min, max) into lo and hi (room for n each; either may be NULL),
+   returning how many the scene has. */
+ZIPOPT_API int zipopt_scene_params(const zipopt_scene *s);
+ZIPOPT_API int zipopt_scene_param_label(const zipopt_scene *s, int k, char *buf, size_t cap);
+ZIPOPT_API const char *zipopt_scene_param_unit(const zipopt_scene *s);
+ZIPOPT_API int zipopt_scene_param_bounds(const zipopt_scene *s, double *lo, double *hi, int n);
+/* Copies the drive forces (the schedule's parameters, zipopt_scene_params of them) into force
+   (room for n); returns how many the scene has (copying at most n). */
 ZIPOPT_API int zipopt_scene_forces(const zipopt_scene *s, double *force, int n);
-/* Replaces the drive forces (N, one per section, the [drive] forces override). 0, or -1 with
-   why in err (a wrong count, a value that is not finite); the scene is unchanged then. */
+/* Replaces the drive forces (the schedule's parameters, the [drive] forces override). 0, or -1
+   with why in err (a wrong count, a value that is not finite); the scene is unchanged then. */
 ZIPOPT_API int zipopt_scene_set_forces(zipopt_scene *s, const double *force, int n, char *err,
                                        size_t errlen);
 /* Lays a schedule file (a scene file with only [drive] forces, as the search writes
@@ -113,10 +122,11 @@ ZIPOPT_API const double *zipopt_run_trajectory(const zipopt_run *r);
 
 /* Called, one call at a time, when the best improves (improved = 1) and now and then (0):
    simulations so far, seconds since the start, whether a survivable schedule is known, its
-   finish time (s) and forces (N, nsec of them, valid during the call). A nonzero return stops
-   the search, which then answers with the best so far, marked interrupted. */
+   finish time (s) and forces (the schedule's nparam parameters, valid during the call). A
+   nonzero return stops the search, which then answers with the best so far, marked
+   interrupted. */
 typedef int (*zipopt_progress_fn)(void *user, long evals, double wall_s, int found, double time,
-                                  const double *force, int nsec, int improved);
+                                  const double *force, int nparam, int improved);
 
 /* Searches the scene's [drive] min..max box for the fastest schedule that finishes with every
    relative joint angle [optimize] margin below death_angle. max_evals <= 0 and seed < 0 take
@@ -147,8 +157,9 @@ ZIPOPT_API void zipopt_search_free(zipopt_search *r); /* NULL is fine */
    stopped before it began runs nothing: interrupted, and its forces are the scene's. */
 ZIPOPT_API double zipopt_search_get(const zipopt_search *r, const char *key);
 ZIPOPT_API const char *zipopt_search_key(int i); /* the i-th name, NULL past the last */
-/* The best schedule (N per section) into force (room for n); returns the number of sections.
-   zipopt_scene_set_forces then zipopt_simulate reruns it. */
+/* The best schedule's parameters (N per section for per-section forces) into force (room for
+   n); returns how many there are (zipopt_scene_params). zipopt_scene_set_forces then
+   zipopt_simulate reruns it. */
 ZIPOPT_API int zipopt_search_forces(const zipopt_search *r, double *force, int n);
 
 #ifdef __cplusplus

@@ -22,14 +22,15 @@ typedef struct zp_landscape_point {
 /* Called after each finished run, serialised; done counts runs finished so far. */
 typedef void (*zp_landscape_progress)(void *user, int done, int total);
 
-/* Runs n schedules (force: n rows of m->nsec values, N) with options o, on every OpenMP thread:
-   one workspace per thread, created one after another before any run (libmatheval is not
-   thread-safe). Fills out[n]; each point is what a single zp_sim_run of that schedule gives.
-   With sp (may be NULL) every rank calls it alike: each runs its share (zp_spread_map; progress
-   counts that share) and every rank ends with all n points, the same bits as alone. ZP_OK,
-   ZP_ERR_NOMEM with nothing run, or ZP_ERR_IO when the ranks' exchange failed. */
-zp_status zp_landscape_sweep(const zp_model *m, const zp_sim_opts *o, const double *force, int n,
-                             zp_landscape_point *out, zp_landscape_progress progress, void *user,
-                             const zp_spread *sp);
+/* Runs n schedules of shape's kind (param: n rows of shape->np parameters) with options o, on
+   every OpenMP thread: one workspace per thread, created one after another before any run
+   (libmatheval is not thread-safe). Fills out[n]; each point is what a single zp_sim_run of
+   that schedule gives. With sp (may be NULL) every rank calls it alike: each runs its share
+   (zp_spread_map; progress counts that share) and every rank ends with all n points, the same
+   bits as alone. ZP_OK, ZP_ERR_NOMEM with nothing run, or ZP_ERR_IO when the ranks' exchange
+   failed. */
+zp_status zp_landscape_sweep(const zp_model *m, const zp_sim_opts *o, const zp_schedule *shape,
+                             const double *param, int n, zp_landscape_point *out,
+                             zp_landscape_progress progress, void *user, const zp_spread *sp);
 
 #endif

@@ -59,7 +59,7 @@ void zp_report_convergence(char *buf, size_t n, const zp_search_result *s) {
     }
 }
 
-static void md_islands(FILE *f, const zp_search_result *s, int nparam) {
+static void md_islands(FILE *f, const zp_search_result *s, const zp_schedule *shape) {
     fprintf(f, "- the map: %d island%s of near-survivable schedules, %d of them polished",
             s->nislands, s->nislands == 1 ? "" : "s", s->npolished);
     if (s->nshown > 0) {
@@ -68,10 +68,10 @@ static void md_islands(FILE *f, const zp_search_result *s, int nparam) {
     fputs("\n", f);
     for (int i = 0; i < s->nshown; i++) {
         fprintf(f, "  %d. %.4f s at", i + 1, s->island_time[i]);
-        for (int k = 0; k < nparam; k++) {
+        for (int k = 0; k < shape->np; k++) {
             fprintf(f, "%s %.2f", k ? "," : "", s->island_force[i][k]);
         }
-        fprintf(f, " N (%d survivable point%s mapped)\n", s->island_pts[i],
+        fprintf(f, " %s (%d survivable point%s mapped)\n", zp_drive_unit(shape), s->island_pts[i],
                 s->island_pts[i] == 1 ? "" : "s");
     }
 }
@@ -96,14 +96,24 @@ static void md_head(FILE *f, const zp_report *r) {
     }
 }
 
+/* one row per parameter: the section it acts on, where on the course, its value */
 static void md_schedule(FILE *f, const zp_report *r) {
     const zp_model *m = r->m;
-    fputs("## Schedule\n\n| section | x from (m) | x to (m) | force (N) |\n|---|---|---|---|\n", f);
-    for (int k = 0; k < m->nsec; k++) {
-        fprintf(f, "| %d | %g | %g | %.4f |\n", k + 1, m->xb[k], m->xb[k + 1], r->res->force[k]);
+    const zp_schedule *sh = r->shape;
+    const char *unit = zp_drive_unit(sh);
+    fprintf(f,
+            "## Schedule\n\n| section | x from (m) | x to (m) | force (%s) |\n"
+            "|---|---|---|---|\n",
+            unit);
+    for (int k = 0; k < sh->np; k++) {
+        double from, to;
+        zp_drive_param_span(sh, k, m->xb, &from, &to);
+        fprintf(f, "| %d | %g | %g | %.4f |\n", zp_drive_param_section(sh, k) + 1, from, to,
+                r->res->force[k]);
     }
-    fprintf(f, "\nDrive: %s; bounds [%g, %g] N.\n\n", zp_drive_dir_name(m->drive),
-            r->shape->lo[0], r->shape->hi[0]);
+    double lo, hi;
+    zp_drive_constant_bounds(sh, &lo, &hi);
+    fprintf(f, "\nDrive: %s; bounds [%g, %g] %s.\n\n", zp_drive_dir_name(m->drive), lo, hi, unit);
 }
 
 static void md_result(FILE *f, const zp_report *r) {
@@ -501,7 +511,7 @@ static void md_search(FILE *f, const zp_report *r) {
         }
         fprintf(f, " %ld: %.4f s\n", s->hist[s->nhist - 1].evals, s->hist[s->nhist - 1].time);
     }
-    md_islands(f, s, r->shape->np);
+    md_islands(f, s, r->shape);
     char sentence[768];
     zp_report_convergence(sentence, sizeof sentence, s);
     fprintf(f, "\n### Convergence\n\n%c%s.\n",
@@ -509,7 +519,8 @@ static void md_search(FILE *f, const zp_report *r) {
             sentence + 1);
 }
 
-static void md_robustness(FILE *f, const zp_verify *v, const zp_limits *lim) {
+static void md_robustness(FILE *f, const zp_verify *v, const zp_limits *lim,
+                          const zp_schedule *shape) {
     fputs("\n## Robustness\n\n", f);
     if (!v->robust_done) {
         fputs("Not measured (the search was interrupted).\n", f);
@@ -528,11 +539,11 @@ static void md_robustness(FILE *f, const zp_verify *v, const zp_limits *lim) {
     if (!v->kill_found) {
         fprintf(f, "\nNo change of up to %g %% killed the spy.\n",
                 100 * v->rob[ZP_VERIFY_LEVELS - 1].level);
-    } else if (v->kill_section) {
-        fprintf(f,
-                "\nSmallest change found that kills: %.3f %% of the force in section "
-                "%d alone.\n",
-                100 * v->kill, v->kill_section);
+    } else if (v->kill_param) {
+        char label[64];
+        zp_drive_param_label(shape, v->kill_param - 1, label, sizeof label);
+        fprintf(f, "\nSmallest change found that kills: %.3f %% of the force in %s alone.\n",
+                100 * v->kill, label);
     } else {
         fprintf(f,
                 "\nSmallest change found that kills: %.3f %% (largest part of a random "
@@ -579,6 +590,6 @@ void zp_report_write_md(FILE *f, const zp_report *r) {
         md_survivable(f, r);
     }
     md_search(f, r);
-    md_robustness(f, r->v, r->lim);
+    md_robustness(f, r->v, r->lim, r->shape);
     md_figures_rerun(f, r);
 }

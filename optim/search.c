@@ -529,10 +529,10 @@ static zp_status start(zp_search *S, const zp_sim_opts *so, char *err, size_t er
 static zp_search begin(const zp_objective *ob, const double *lo, const double *hi,
                        const zp_search_opts *o, zp_search_result *res) {
     memset(res, 0, sizeof *res);
-    /* the parameters: today one force per section */
+    /* the parameters: the schedule's, as its kind counts them */
     zp_search S = {.ob = ob,
                    .o = o,
-                   .n = ob->m->nsec,
+                   .n = zp_objective_nparams(ob),
                    .lo = lo,
                    .hi = hi,
                    .res = res,

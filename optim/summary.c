@@ -64,7 +64,8 @@ static void json_islands(FILE *f, const zp_search_result *s, int nparam) {
     fputs("]}", f);
 }
 
-static void json_robust(FILE *f, const zp_verify *v) {
+/* the smallest kill names the parameter as the kind calls it ("section": 2) */
+static void json_robust(FILE *f, const zp_verify *v, const zp_schedule *shape) {
     if (!v->robust_done) {
         fputs("null", f);
         return;
@@ -77,9 +78,9 @@ static void json_robust(FILE *f, const zp_verify *v) {
     }
     fputs("], \"smallest_kill\": ", f);
     if (v->kill_found) {
-        fprintf(f, "{\"relative\": %.6g, \"section\": ", v->kill);
-        if (v->kill_section) {
-            fprintf(f, "%d}", v->kill_section);
+        fprintf(f, "{\"relative\": %.6g, \"%s\": ", v->kill, zp_drive_param_noun(shape, 0));
+        if (v->kill_param) {
+            fprintf(f, "%d}", v->kill_param);
         } else {
             fputs("null}", f);
         }
@@ -185,9 +186,9 @@ void zp_report_write_json(FILE *f, const zp_report *r) {
     fputs("{\n  \"scene\": ", f);
     zp_out_json_string(f, r->sc->name);
     fputs(",\n  \"forces\": [", f);
-    for (int k = 0; k < m->nsec; k++) {
+    for (int k = 0; k < r->shape->np; k++) {
         zp_out_json_number(f, s->force[k]);
-        fputs(k + 1 < m->nsec ? ", " : "]", f);
+        fputs(k + 1 < r->shape->np ? ", " : "]", f);
     }
     fprintf(f, ",\n  \"found\": %s,\n  \"outcome\": \"%s\",\n  \"time\": ",
             s->found ? "true" : "false", zp_sim_outcome_name(run->outcome));
@@ -240,7 +241,7 @@ void zp_report_write_json(FILE *f, const zp_report *r) {
         fputs("null", f);
     }
     fputs(",\n  \"robustness\": ", f);
-    json_robust(f, r->v);
+    json_robust(f, r->v, r->shape);
     fputs(",\n  \"limits\": ", f);
     zp_out_json_limits(f, m, run, r->lim);
     if (r->box) {

@@ -219,7 +219,7 @@ void zp_sweep_format(double x, char *out, size_t cap) {
    blanks stripped) in val; *hdr_end is where the first [sec] header's line ends (or SIZE_MAX) */
 static int find_line(const char *t, const char *sec, const char *key, size_t *ls, size_t *le,
                      size_t *hdr_end, char *val, size_t cap) {
-    char cur[64] = "", line[4096];
+    char cur[64] = "", line[ZP_SWEEP_LINE_MAX];
     *hdr_end = SIZE_MAX;
     for (size_t pos = 0; t[pos];) {
         size_t len = strcspn(t + pos, "\n"), next = pos + len + (t[pos + len] == '\n');
@@ -327,14 +327,14 @@ char *zp_sweep_set_text(const char *t, const char *sec, const char *key, const c
 
 /* one varied key set in t (a new text, or NULL with why) */
 static char *set_key(const char *t, const zp_sweep_vary *v, double x, char *why, size_t whylen) {
-    char val[4096], line[4200], num[32];
+    char val[ZP_SWEEP_LINE_MAX], line[ZP_SWEEP_LINE_MAX], num[32];
     size_t ls, le, hdr;
     int found = find_line(t, v->section, v->key, &ls, &le, &hdr, val, sizeof val);
     int len = snprintf(line, sizeof line, "%s = ", v->key);
     if (v->kind == ZP_VARY_SCALE) {
-        double item[ZP_MAX_SECTIONS];
+        double item[ZP_MAX_DRIVE_PARAMS]; /* the longest list a key holds: [drive] forces */
         char bad[200];
-        int n = found ? zp_scene_parse_list(val, item, ZP_MAX_SECTIONS, bad, sizeof bad) : -1;
+        int n = found ? zp_scene_parse_list(val, item, ZP_MAX_DRIVE_PARAMS, bad, sizeof bad) : -1;
         if (n < 0) {
             snprintf(why, whylen, "[%s] %s: %s; a list key is varied by scaling its values",
                      v->section, v->key, found ? bad : "not in the scene, so nothing to scale");

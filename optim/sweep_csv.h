@@ -10,7 +10,7 @@
 
 /* The sweep.csv column of each [limits] quantity a row reports (peak_g, arrival_kmh, ...). */
 const char *zp_sweep_csv_limit_column(int i);
-/* The header line: point, the varied columns, then the result columns (F1..Fnsec last but
+/* The header line: point, the varied columns, then the result columns (F1..Fnp last but
    one, message last). */
 void zp_sweep_csv_header(FILE *f, const zp_sweep *s, int np);
 /* Point p's line. */

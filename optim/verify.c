@@ -1,6 +1,6 @@
 /* Verification of the best schedule: the same run at a 100x tighter tolerance, seeded random
-   perturbations of every force and, force by force, the smallest change that kills, all in one
-   parallel batch; and the answer rerun tighter when [solver] accuracy asks for more. */
+   perturbations of every parameter and, parameter by parameter, the smallest change that kills,
+   all in one parallel batch; and the answer rerun tighter when [solver] accuracy asks for more. */
 #include "verify.h"
 
 #include <gsl/gsl_rng.h>
@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define KILL_TOL 1e-4 /* relative precision of the smallest deadly change, per force */
+#define KILL_TOL 1e-4 /* relative precision of the smallest deadly change, per parameter */
 
 /* the perturbation levels when the caller sets none */
 static const double default_levels[ZP_VERIFY_LEVELS] = {0.02, 0.05};
@@ -17,18 +17,18 @@ static int died(const zp_eval *e) {
     return e->failed || e->outcome == ZP_OUTCOME_DIED;
 }
 
-/* one force changed by the relative amount s: does the spy die? */
+/* one parameter changed by the relative amount s: does the spy die? */
 static int kills(const zp_objective *ob, zp_sim *s, zp_result *r, const double *force, int k,
                  double rel) {
-    double f[ZP_MAX_SECTIONS];
-    memcpy(f, force, sizeof *f * ob->m->nsec);
+    double f[ZP_SCHED_MAX_PARAMS];
+    memcpy(f, force, sizeof *f * zp_objective_nparams(ob));
     f[k] *= 1 + rel;
     zp_eval e;
     zp_objective_eval(ob, s, f, &e, r);
     return died(&e);
 }
 
-/* the smallest change of force k, either way, that kills (bisection), or 0 when none within
+/* the smallest change of parameter k, either way, that kills (bisection), or 0 when none within
    the largest level */
 static double kill_of(const zp_objective *ob, zp_sim *s, zp_result *r, const double *force, int k,
                       double top) {
@@ -61,27 +61,27 @@ typedef struct check_batch {
     const zp_input *in;
     zp_verify *v;
     zp_status tight_st;
-    double *pf;   /* owned, ntot x nsec: the perturbed forces */
+    double *pf;   /* owned, ntot x np: the perturbed parameters */
     zp_eval *pe;  /* owned, ntot */
     double *kill; /* owned, nkill */
 } check_batch;
 
 static void check_job(void *user, int i, zp_sim *s, zp_result *r) {
     check_batch *b = user;
-    int nsec = b->ob->m->nsec;
+    int np = zp_objective_nparams(b->ob);
     if (i < b->nkill) {
         b->kill[i] = kill_of(b->ob, s, r, b->force, i, b->v->level[ZP_VERIFY_LEVELS - 1]);
     } else if (i == b->nkill) {
         b->tight_st = zp_sim_run(b->ob->m, b->tight_sim, b->in, b->v->tight);
     } else {
         int k = i - b->nkill - 1;
-        zp_objective_eval(b->ob, s, b->pf + (size_t)k * nsec, &b->pe[k], r);
+        zp_objective_eval(b->ob, s, b->pf + (size_t)k * np, &b->pe[k], r);
     }
 }
 
 /* the tally of the robustness runs, in order: survivors per level and the smallest kill */
 static void tally(zp_verify *v, const check_batch *b, int nrobust) {
-    int nsec = b->ob->m->nsec;
+    int np = zp_objective_nparams(b->ob);
     const double *force = b->force;
     for (int i = 0; i < b->ntot; i++) {
         const zp_eval *e = &b->pe[i];
@@ -93,36 +93,36 @@ static void tally(zp_verify *v, const check_batch *b, int nrobust) {
         if (died(e)) {
             /* the size of this mixed change: its largest relative part */
             double size = 0;
-            for (int k = 0; k < nsec; k++) {
+            for (int k = 0; k < np; k++) {
                 if (force[k] != 0) {
-                    size = fmax(size, fabs(b->pf[(size_t)i * nsec + k] / force[k] - 1));
+                    size = fmax(size, fabs(b->pf[(size_t)i * np + k] / force[k] - 1));
                 }
             }
             if (!v->kill_found || size < v->kill) {
                 v->kill_found = 1;
                 v->kill = size;
-                v->kill_section = 0;
+                v->kill_param = 0;
             }
         }
     }
-    for (int k = 0; k < nsec; k++) {
+    for (int k = 0; k < np; k++) {
         if (b->kill[k] > 0 && (!v->kill_found || b->kill[k] < v->kill)) {
             v->kill_found = 1;
             v->kill = b->kill[k];
-            v->kill_section = k + 1;
+            v->kill_param = k + 1;
         }
     }
     v->robust_done = 1;
 }
 
-/* the seeded perturbations, drawn up front in one stream: ntot rows of nsec forces */
-static void perturb(const double *force, int nsec, unsigned long seed, int nrobust,
+/* the seeded perturbations, drawn up front in one stream: ntot rows of np parameters */
+static void perturb(const double *force, int np, unsigned long seed, int nrobust,
                     const double *levels, double *pf, gsl_rng *g) {
     gsl_rng_set(g, seed);
     for (int i = 0; i < ZP_VERIFY_LEVELS * nrobust; i++) {
-        for (int k = 0; k < nsec; k++) {
+        for (int k = 0; k < np; k++) {
             double u = 2 * gsl_rng_uniform(g) - 1;
-            pf[(size_t)i * nsec + k] = force[k] * (1 + levels[i / nrobust] * u);
+            pf[(size_t)i * np + k] = force[k] * (1 + levels[i / nrobust] * u);
         }
     }
 }
@@ -164,7 +164,7 @@ zp_status zp_verify_finish(const zp_objective *ob, const zp_sim_opts *so, const 
                            unsigned long seed, int nrobust, int nthreads, zp_verify *v,
                            zp_pool_done progress, void *user, char *err, size_t errlen) {
     const zp_model *m = ob->m;
-    int nsec = m->nsec, ntot = ZP_VERIFY_LEVELS * nrobust;
+    int np = zp_objective_nparams(ob), ntot = ZP_VERIFY_LEVELS * nrobust;
     if (!(v->level[0] > 0)) {
         memcpy(v->level, default_levels, sizeof v->level);
     }
@@ -177,21 +177,21 @@ zp_status zp_verify_finish(const zp_objective *ob, const zp_sim_opts *so, const 
     zp_input in = {.sched = &sched};
     check_batch b = {.ob = ob,
                      .force = force,
-                     .nkill = nrobust > 0 ? nsec : 0,
+                     .nkill = nrobust > 0 ? np : 0,
                      .ntot = ntot,
                      .tight_sim = zp_sim_create(m, &to),
                      .in = &in,
                      .v = v};
-    b.pf = malloc(sizeof *b.pf * (ntot + 1) * nsec);
+    b.pf = malloc(sizeof *b.pf * (ntot + 1) * np);
     b.pe = malloc(sizeof *b.pe * (ntot + 1));
-    b.kill = calloc(nsec, sizeof *b.kill);
+    b.kill = calloc(np, sizeof *b.kill);
     /* without robustness the tighter run alone: no pool of workspaces for one job */
     zp_pool *pool = nrobust > 0 ? zp_pool_create(m, &fast, nthreads) : NULL;
     gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
     zp_status ret =
         b.tight_sim && b.pf && b.pe && b.kill && (pool || !nrobust) && g ? ZP_OK : ZP_ERR_NOMEM;
     if (ret == ZP_OK && pool) {
-        perturb(force, nsec, seed, nrobust, v->level, b.pf, g);
+        perturb(force, np, seed, nrobust, v->level, b.pf, g);
         zp_pool_map(pool, b.nkill + 1 + ntot, check_job, &b, progress, user);
     } else if (ret == ZP_OK) {
         check_job(&b, 0, NULL, NULL);

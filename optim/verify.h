@@ -1,5 +1,5 @@
 /* The answer checked: the best schedule re-simulated at a 100x tighter
-   tolerance, and its robustness to perturbed forces. */
+   tolerance, and its robustness to perturbed parameters. */
 #ifndef ZP_VERIFY_H
 #define ZP_VERIFY_H
 
@@ -12,7 +12,7 @@
 #define ZP_VERIFY_LEVELS 2 /* perturbation levels: +/-2 % and +/-5 % unless the caller sets them */
 
 typedef struct zp_robust {
-    double level; /* 1: every force scaled by 1 + level * u, u uniform in [-1, 1] */
+    double level; /* 1: every parameter scaled by 1 + level * u, u uniform in [-1, 1] */
     int n;        /* runs */
     int survived; /* runs that finished alive */
     int kept;     /* runs that finished with the margin kept */
@@ -26,27 +26,28 @@ typedef struct zp_verify {
     double level[ZP_VERIFY_LEVELS]; /* the perturbation levels (shares, increasing): set
                                        between zp_verify_begin and _finish; 0: 2 % and 5 % */
     zp_robust rob[ZP_VERIFY_LEVELS];
-    int robust_done;  /* robustness was measured (not when interrupted) */
-    int kill_found;   /* some perturbation within the largest level killed */
-    double kill;      /* 1: the smallest relative change of the forces found to kill */
-    int kill_section; /* 1-based section whose change alone kills at `kill`, 0: a random mix */
+    int robust_done; /* robustness was measured (not when interrupted) */
+    int kill_found;  /* some perturbation within the largest level killed */
+    double kill;     /* 1: the smallest relative change of the parameters found to kill */
+    int kill_param;  /* 1-based parameter whose change alone kills at `kill`, 0: a random mix */
 } zp_verify;
 
 /* The verification in two steps, so the caller can draw the best run while the checks go:
-   begin re-runs force (N per section) at so, its trajectory rows in *sim_out (owned by the
-   caller, freed with zp_sim_free, also on error) and its result in v->run; finish runs the
-   tighter run and the robustness runs (nrobust per level, 0: none) in one parallel batch over
-   nthreads (0: OpenMP's default), progress(user, done, total) after each job (may be NULL).
-   Each returns ZP_OK, or ZP_ERR_NUMERIC / ZP_ERR_NOMEM with why in err. */
+   begin re-runs the schedule of parameters force (ob->shape's) at so, its trajectory rows in
+   *sim_out (owned by the caller, freed with zp_sim_free, also on error) and its result in
+   v->run; finish runs the tighter run and the robustness runs (nrobust per level, 0: none) in
+   one parallel batch over nthreads (0: OpenMP's default), progress(user, done, total) after
+   each job (may be NULL). Each returns ZP_OK, or ZP_ERR_NUMERIC / ZP_ERR_NOMEM with why in
+   err. */
 zp_status zp_verify_begin(const zp_objective *ob, const zp_sim_opts *so, const double *force,
                           zp_sim **sim_out, zp_verify *v, char *err, size_t errlen);
 zp_status zp_verify_finish(const zp_objective *ob, const zp_sim_opts *so, const double *force,
                            unsigned long seed, int nrobust, int nthreads, zp_verify *v,
                            zp_pool_done progress, void *user, char *err, size_t errlen);
-/* Both steps: checks force (N per section) with fresh workspaces from so; trajectory rows of v->run
-   stay in *sim_out (owned by the caller, freed with zp_sim_free). nrobust = 0 skips robustness;
-   progress(user, done, total) after each robustness job (may be NULL). Returns ZP_OK, or
-   ZP_ERR_NUMERIC / ZP_ERR_NOMEM with why in err. */
+/* Both steps: checks the parameters force with fresh workspaces from so; trajectory rows of
+   v->run stay in *sim_out (owned by the caller, freed with zp_sim_free). nrobust = 0 skips
+   robustness; progress(user, done, total) after each robustness job (may be NULL). Returns
+   ZP_OK, or ZP_ERR_NUMERIC / ZP_ERR_NOMEM with why in err. */
 zp_status zp_verify_run(const zp_objective *ob, const zp_sim_opts *so, const double *force,
                         unsigned long seed, int nrobust, int nthreads, zp_sim **sim_out,
                         zp_verify *v, zp_pool_done progress, void *user, char *err, size_t errlen);

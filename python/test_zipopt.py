@@ -2,7 +2,9 @@
 `zipopt simulate --json` prints (bit for bit: the same library code), the energy audit closes,
 the trajectory's columns keep their definitions, the audit books drag and friction work, a
 schedule file gives the program's bits, a bad scene raises with its file and line,
-and a search keeps its budget and stops when its progress function asks. Misuse raises
+and a search keeps its budget and stops when its progress function asks; the schedule's
+parameters are what `zipopt check --json` says of [drive] forces (one per section, labelled by
+section, N, within min and max), and a search answers with that many. Misuse raises
 ValueError instead of crashing, hanging or being misread (each case in a child interpreter,
 so a crash or a hang fails that case alone): a closed Scene, one closed inside a progress
 function, a scene loaded or searched from inside one, NUL bytes in text, names and paths,
@@ -152,6 +154,22 @@ class Simulate(unittest.TestCase):
         self.assertNotEqual(a.time, b.time)
         self.assertEqual(a.time, c.time)
         np.testing.assert_array_equal(a.trajectory["y"], c.trajectory["y"])
+
+
+class Params(unittest.TestCase):
+    def test_params_are_the_scene_drive(self):
+        js = subprocess.run([os.environ["ZIPOPT_EXE"], "check", SEED, "--json"],
+                            check=True, capture_output=True, text=True).stdout
+        prog = json.loads(js)
+        with zipopt.Scene(SEED) as s:
+            self.assertEqual(s.params, len(prog["forces"]))
+            self.assertEqual(s.params, s.sections)
+            self.assertEqual(s.param_labels, [f"section {k + 1}" for k in range(s.sections)])
+            self.assertEqual(s.param_unit, "N")
+            lo, hi = s.bounds
+            self.assertEqual(list(lo), [prog["force_min"]] * s.params)
+            self.assertEqual(list(hi), [prog["force_max"]] * s.params)
+            self.assertEqual(len(s.search(max_evals=30, seed=1).forces), s.params)
 
 
 class Errors(unittest.TestCase):

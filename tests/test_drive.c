@@ -1,6 +1,10 @@
-/* The drive schedule (drive.h): per-section constants give p[sec] at every t and x and have no
-   breaks; the [drive] forces text reads back bit for bit; bad text is refused with why; the
-   scene's [drive] becomes the schedule with its bounds; direction names round-trip. */
+/* The drive schedule (drive.h): per-section constants give p[sec] at every t, x and speed and
+   have no breaks; the force points along x (horizontal) or along the course's tangent (f' the
+   slope: (F, F f') / sqrt(1 + f'^2)); the [drive] forces text reads back bit for bit; bad text
+   is refused with why, the count named by the kind's noun; the scene's [drive] becomes the
+   schedule with its bounds; each parameter is its section's force, labelled "section k", in N,
+   acting over its section; the constant push sets every parameter, within the bounds every
+   parameter allows; direction names round-trip. */
 #include <float.h>
 #include <math.h>
 #include <string.h>
@@ -17,7 +21,7 @@ static void test_sections(void) {
     for (int k = 0; k < 3; k++) {
         CHECK(s.lo[k] == -10 && s.hi[k] == 20);
         for (int i = 0; i < 4; i++) {
-            CHECK(zp_schedule_force(&s, ts[i], xs[i], k) == f[k]);
+            CHECK(zp_drive_force(&s, &(zp_drive_state){ts[i], xs[i], 0, k}) == f[k]);
         }
     }
     double br[4];
@@ -25,7 +29,86 @@ static void test_sections(void) {
     /* the same shape with other parameters keeps kind, sections and bounds */
     const double g[3] = {1, 2, 3};
     zp_schedule w = zp_schedule_with(&s, g);
-    CHECK(w.np == 3 && w.lo[2] == -10 && w.hi[0] == 20 && zp_schedule_force(&w, 5, 5, 1) == 2);
+    CHECK(w.np == 3 && w.lo[2] == -10 && w.hi[0] == 20 &&
+          zp_drive_force(&w, &(zp_drive_state){5, 5, 0, 1}) == 2);
+}
+
+/* the force reads the state it needs: for per-section constants not t, x or the speed */
+static void test_state(void) {
+    const double f[2] = {40, -7.5};
+    zp_schedule s = zp_schedule_sections(2, f, 0, 100);
+    const double vs[] = {0, -3, 12.5, 1e3};
+    for (int sec = 0; sec < 2; sec++) {
+        for (int i = 0; i < 4; i++) {
+            CHECK(zp_drive_force(&s, &(zp_drive_state){3.5, 70, vs[i], sec}) == f[sec]);
+        }
+    }
+}
+
+/* horizontal: all of F along x; tangent: F along (1, f') / |(1, f')|, so |(fx, fy)| = |F| and
+   fy / fx = f' */
+static void test_push(void) {
+    const double f[1] = {120};
+    zp_schedule s = zp_schedule_sections(1, f, 0, 500);
+    double fx, fy;
+    zp_drive_push(&s, ZP_DRIVE_HORIZONTAL, 1, 2, 3, 0, 0.75, &fx, &fy);
+    CHECK(fx == 120 && fy == 0);
+    /* |(1, 0.75)| = 1.25 exactly in binary: the components are exact too */
+    zp_drive_push(&s, ZP_DRIVE_TANGENT, 1, 2, 3, 0, 0.75, &fx, &fy);
+    CHECK(fx == 96 && fy == 72);
+    zp_drive_push(&s, ZP_DRIVE_TANGENT, 1, 2, 3, 0, 0, &fx, &fy);
+    CHECK(fx == 120 && fy == 0);
+}
+
+/* per-section constants: parameter k is section k's force, over [xb[k], xb[k + 1]] */
+static void test_params(void) {
+    const double f[3] = {10, 20, 30}, xb[4] = {0, 60, 100, 140};
+    zp_schedule s = zp_schedule_sections(3, f, 0, 500);
+    CHECK(!strcmp(zp_drive_unit(&s), "N"));
+    CHECK(!strcmp(zp_drive_param_noun(&s, 0), "section"));
+    CHECK(!strcmp(zp_drive_param_noun(&s, 1), "sections"));
+    for (int k = 0; k < 3; k++) {
+        char label[32], want[32];
+        zp_drive_param_label(&s, k, label, sizeof label);
+        snprintf(want, sizeof want, "section %d", k + 1);
+        CHECK(!strcmp(label, want));
+        CHECK(zp_drive_param_section(&s, k) == k);
+        double from, to;
+        zp_drive_param_span(&s, k, xb, &from, &to);
+        CHECK(from == xb[k] && to == xb[k + 1]);
+    }
+}
+
+/* the constant push: every parameter F, the shape's kind and bounds kept; its range is the
+   pushes every parameter's bounds allow */
+static void test_constant(void) {
+    const double f[3] = {10, 20, 30};
+    zp_schedule s = zp_schedule_sections(3, f, -5, 500);
+    zp_schedule c = zp_drive_constant(&s, 42.5);
+    CHECK(c.kind == s.kind && c.np == 3 && c.lo[1] == -5 && c.hi[2] == 500);
+    for (int k = 0; k < 3; k++) {
+        CHECK(c.p[k] == 42.5);
+        CHECK(zp_drive_force(&c, &(zp_drive_state){0, 0, 0, k}) == 42.5);
+    }
+    double lo, hi;
+    zp_drive_constant_bounds(&s, &lo, &hi);
+    CHECK(lo == -5 && hi == 500);
+    s.lo[1] = 10;
+    s.hi[2] = 300;
+    zp_drive_constant_bounds(&s, &lo, &hi);
+    CHECK(lo == 10 && hi == 300);
+}
+
+/* forces text read as a shape's parameters keeps the shape's bounds, and a wrong count is named
+   with the kind's noun */
+static void test_parse_shape(void) {
+    zp_schedule shape = zp_schedule_sections(2, NULL, 5, 50), s;
+    char why[128] = "";
+    CHECK(zp_drive_parse(&shape, "7, 8.5", &s, why, sizeof why) == 0);
+    CHECK(s.np == 2 && s.p[0] == 7 && s.p[1] == 8.5 && s.lo[1] == 5 && s.hi[0] == 50);
+    CHECK(zp_drive_parse(&shape, "7", &s, why, sizeof why) == -2);
+    CHECK(!strcmp(why, "1 value, expected 2 (one per section)"));
+    CHECK(s.p[0] == 7 && s.p[1] == 8.5); /* refused: left as it was */
 }
 
 static void test_round_trip(void) {
@@ -104,13 +187,18 @@ static void test_scaled(void) {
     zp_schedule s = zp_schedule_sections(3, f, -10, 500);
     zp_schedule sc = zp_schedule_scaled(&s, k);
     for (int sec = 0; sec < 3; sec++) {
-        CHECK(zp_schedule_force(&sc, 1.5, 42, sec) == f[sec] * k[sec]);
+        CHECK(zp_drive_force(&sc, &(zp_drive_state){1.5, 42, 0, sec}) == f[sec] * k[sec]);
         CHECK(sc.lo[sec] == s.lo[sec] && sc.hi[sec] == s.hi[sec]);
     }
 }
 
 int main(void) {
     test_sections();
+    test_state();
+    test_push();
+    test_params();
+    test_constant();
+    test_parse_shape();
     test_scaled();
     test_round_trip();
     test_bad_text();

@@ -6,7 +6,8 @@
    sequential bits; bad input and a stopped search come back as values, with nothing printed
    (not even the interpreted-course notice); NULL handles and output arrays are refused as
    zipopt.h says; scene text without a name loads; a schedule file gives the bits of the same
-   forces set by hand. */
+   forces set by hand; the schedule's parameters are [drive] forces' own: one per section,
+   labelled by section, in N, bounded by [drive] min and max. */
 #include <math.h>
 #include <pthread.h>
 #include <stdio.h>
@@ -242,6 +243,30 @@ static void check_null(void) {
     zipopt_scene_free(s);
 }
 
+/* the seed's schedule: one parameter per section, "section k", N, in [min, max] = [0, 500] */
+static void check_params(void) {
+    char err[512], label[16];
+    double lo[4] = {-1, -1, -1, -1}, hi[4] = {-1, -1, -1, -1};
+    zipopt_scene *s = zipopt_scene_load(SEED, err, sizeof err);
+    CHECK(s && zipopt_scene_params(s) == 3 && zipopt_scene_forces(s, NULL, 0) == 3);
+    for (int k = 0; k < 3; k++) {
+        char want[16];
+        snprintf(want, sizeof want, "section %d", k + 1);
+        CHECK(zipopt_scene_param_label(s, k, label, sizeof label) == (int)strlen(want));
+        CHECK(!strcmp(label, want));
+    }
+    CHECK(zipopt_scene_param_label(s, 3, label, sizeof label) == -1);
+    CHECK(zipopt_scene_param_label(s, -1, label, sizeof label) == -1);
+    CHECK(zipopt_scene_param_label(s, 0, NULL, 0) == (int)strlen("section 1"));
+    CHECK(!strcmp(zipopt_scene_param_unit(s), "N"));
+    CHECK(zipopt_scene_param_bounds(s, lo, hi, 4) == 3 && lo[2] == 0 && hi[2] == 500);
+    CHECK(lo[3] == -1 && hi[3] == -1 && zipopt_scene_param_bounds(s, NULL, NULL, 3) == 3);
+    CHECK(zipopt_scene_params(NULL) == -1 && !zipopt_scene_param_unit(NULL) &&
+          zipopt_scene_param_label(NULL, 0, label, sizeof label) == -1 &&
+          zipopt_scene_param_bounds(NULL, lo, hi, 3) == -1);
+    zipopt_scene_free(s);
+}
+
 /* the folder rule is the commands': scene text without [scene] name loads, named "" */
 static void check_unnamed(void) {
     char text[1 << 16], err[1024] = "";
@@ -373,6 +398,7 @@ int main(void) {
     check_threads();
     check_quiet_errors();
     check_null();
+    check_params();
     check_unnamed();
     check_no_notice();
     check_search();

@@ -461,7 +461,8 @@ static void test_landscape(void) {
         force[3 * k] = force[3 * k + 1] = force[3 * k + 2] = seed_pattern_force[k];
     }
     zp_landscape_point pt[NP];
-    CHECK(zp_landscape_sweep(m, &o, force, NP, pt, NULL, NULL, NULL) == ZP_OK);
+    zp_schedule shape = tu_sched(m, force);
+    CHECK(zp_landscape_sweep(m, &o, &shape, force, NP, pt, NULL, NULL, NULL) == ZP_OK);
     for (int k = 0; k < NP; k++) {
         zp_schedule in_sched = tu_sched(m, force + 3 * k);
         zp_input in = {.sched = &in_sched};

@@ -72,10 +72,10 @@ static void test_batch(void) {
     /* one thread or two: the same answer to the bit */
     CHECK(v[0].run->time == v[1].run->time && v[0].tight->time == v[1].tight->time);
     CHECK(v[0].kill_found == v[1].kill_found && v[0].kill == v[1].kill &&
-          v[0].kill_section == v[1].kill_section && v[0].agree == v[1].agree);
+          v[0].kill_param == v[1].kill_param && v[0].agree == v[1].agree);
     /* a smallest kill of one force does kill, changed that much one way or the other */
-    if (v[0].kill_found && v[0].kill_section) {
-        int k = v[0].kill_section - 1, deadly = 0;
+    if (v[0].kill_found && v[0].kill_param) {
+        int k = v[0].kill_param - 1, deadly = 0;
         for (int sign = -1; sign <= 1; sign += 2) {
             double f[3] = {answer[0], answer[1], answer[2]};
             f[k] *= 1 + sign * v[0].kill;

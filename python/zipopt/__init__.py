@@ -91,6 +91,10 @@ for _name, _res, _args in [
     ("zipopt_scene_name", _S, [_P]),
     ("zipopt_scene_sections", _I, [_P]),
     ("zipopt_scene_links", _I, [_P]),
+    ("zipopt_scene_params", _I, [_P]),
+    ("zipopt_scene_param_label", _I, [_P, _I, _S, _Z]),
+    ("zipopt_scene_param_unit", _S, [_P]),
+    ("zipopt_scene_param_bounds", _I, [_P, _DP, _DP, _I]),
     ("zipopt_scene_forces", _I, [_P, _DP, _I]),
     ("zipopt_scene_set_forces", _I, [_P, _DP, _I, _S, _Z]),
     ("zipopt_scene_load_schedule", _I, [_P, _S, _S, _Z]),
@@ -232,9 +236,38 @@ class Scene:
         return _lib.zipopt_scene_links(self._handle())
 
     @property
+    def params(self):
+        """How many parameters the drive schedule has (one force per section, N, for the
+        per-section constants of [drive] forces)."""
+        return _lib.zipopt_scene_params(self._handle())
+
+    @property
+    def param_labels(self):
+        """Each parameter's name: "section 1", "section 2", ..."""
+        h, out = self._handle(), []
+        for k in range(self.params):
+            buf = ctypes.create_string_buffer(_lib.zipopt_scene_param_label(h, k, None, 0) + 1)
+            _lib.zipopt_scene_param_label(h, k, buf, len(buf))
+            out.append(buf.value.decode())
+        return out
+
+    @property
+    def param_unit(self):
+        """The unit of the parameters ("N")."""
+        return _lib.zipopt_scene_param_unit(self._handle()).decode()
+
+    @property
+    def bounds(self):
+        """The search's bounds of each parameter ([drive] min, max): (lo, hi) arrays."""
+        n = self.params
+        lo, hi = (ctypes.c_double * max(n, 1))(), (ctypes.c_double * max(n, 1))()
+        _lib.zipopt_scene_param_bounds(self._handle(), lo, hi, n)
+        return np.array(lo[:n], dtype=float), np.array(hi[:n], dtype=float)
+
+    @property
     def forces(self):
-        """N, one per section."""
-        return _doubles(_lib.zipopt_scene_forces, self._handle(), self.sections)
+        """The schedule's parameters (params of them): N, one per section, for [drive] forces."""
+        return _doubles(_lib.zipopt_scene_forces, self._handle(), self.params)
 
     @forces.setter
     def forces(self, values):
@@ -301,7 +334,7 @@ class Scene:
         if not h:
             raise ZipoptError(err.value.decode(errors="replace"))
         try:
-            return Search(h, self.sections)
+            return Search(h, self.params)
         finally:
             _lib.zipopt_search_free(h)
 
@@ -344,10 +377,10 @@ class Run:
 
 
 class Search:
-    """A search's answer: forces (N per section), found, time (s), evals, interrupted, ... (every
-    number of zipopt_search_get as an attribute)."""
+    """A search's answer: forces (the schedule's parameters: N per section), found, time (s),
+    evals, interrupted, ... (every number of zipopt_search_get as an attribute)."""
 
-    def __init__(self, h, nsec):
+    def __init__(self, h, nparam):
         self.numbers = {k: _lib.zipopt_search_get(h, k.encode())
                         for k in _keys(_lib.zipopt_search_key)}
         for k, v in self.numbers.items():
@@ -355,7 +388,7 @@ class Search:
         for k in ("found", "interrupted", "base_found"):
             setattr(self, k, bool(self.numbers[k]))
         self.evals = int(self.evals)
-        self.forces = _doubles(_lib.zipopt_search_forces, h, nsec)
+        self.forces = _doubles(_lib.zipopt_search_forces, h, nparam)
 
     def __repr__(self):
         t = f"{self.time:.6f} s" if self.found and not math.isnan(self.time) else "none survives"

@@ -250,11 +250,8 @@ static void print_error(const char *label, double e) {
 static zp_model *case_model(const zp_scene *base, int c, zp_sim_opts *o, zp_schedule *sched) {
     const trade_case *tc = &cases[c];
     zp_scene sc = *base;
-    double push[ZP_MAX_SECTIONS];
-    for (int k = 0; k < sc.nsec; k++) {
-        push[k] = tc->force;
-    }
-    *sched = zp_schedule_sections(sc.nsec, push, 0, 0);
+    zp_schedule shape = zp_schedule_of_scene(&sc);
+    *sched = zp_drive_constant(&shape, tc->force);
     if (tc->damping >= 0) {
         sc.ndamping = 1;
         sc.damping[0] = tc->damping;

@@ -125,7 +125,7 @@ static void print_scene(const zp_setup *st) {
                sc->accuracy);
     }
     printf("optimize: margin %g deg, max_evals %ld%s, seed %lu\n", sc->margin,
-           sc->line_max_evals ? sc->max_evals : zp_search_default_budget(sc->nsec),
+           sc->line_max_evals ? sc->max_evals : zp_search_default_budget(st->sched.np),
            sc->line_max_evals ? "" : " (the search's default)", sc->seed);
     zp_scene_print_optional(sc, stdout, 0);
     print_physics(sc, m);
@@ -207,7 +207,7 @@ static void print_json(const zp_setup *st) {
     json_list("inertias", m->inertia, m->nlink, ", ");
     json_list("damping", m->damp, m->nlink, ", ");
     json_str("drive", zp_drive_dir_name(m->drive), ", ");
-    json_list("forces", sc->forces, sc->nforce ? sc->nsec : 0, ", ");
+    json_list("forces", sc->forces, sc->nforce, ", ");
     json_num("force_min", sc->force_min, ", ");
     json_num("force_max", sc->force_max, ", ");
     json_str("method", zp_method_get(st->sim.method)->name, ", ");

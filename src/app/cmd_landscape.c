@@ -1,5 +1,6 @@
 /* `zipopt landscape`: the survival landscape: finish time or death over a
-   constant push, and over a 2D slice of two sections' forces through a base schedule. */
+   constant push, and over a 2D slice of two parameters (sections' forces) through a base
+   schedule. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -277,9 +278,9 @@ static void print_windows(const range *r, const zp_landscape_point *p, double li
 }
 
 /* --json: the run as one object on stdout (README "landscape --json") */
-static void print_json(const zp_scene *sc, const range *r, const zp_landscape_point *p, int si,
-                       int sj, int n2, double wall, const char *dir, int figures, double limit,
-                       const zp_limits *lim) {
+static void print_json(const zp_scene *sc, const zp_schedule *sh, const range *r,
+                       const zp_landscape_point *p, int si, int sj, int n2, double wall,
+                       const char *dir, int figures, double limit, const zp_limits *lim) {
     printf("{\"scene\": ");
     zp_out_json_string(stdout, sc->name);
     printf(", \"force_from\": %.17g, \"force_to\": %.17g, \"points\": %d, \"windows\": [", r->a,
@@ -310,7 +311,8 @@ static void print_json(const zp_scene *sc, const range *r, const zp_landscape_po
         printf("}");
     }
     if (n2) {
-        printf(", \"slice\": {\"sections\": [%d, %d], \"points\": %d}", si + 1, sj + 1, n2);
+        printf(", \"slice\": {\"%s\": [%d, %d], \"points\": %d}", zp_drive_param_noun(sh, 1),
+               si + 1, sj + 1, n2);
     } else {
         printf(", \"slice\": null");
     }
@@ -333,12 +335,15 @@ static int landscape(int argc, char **argv, const zp_spread *sp) {
     }
     const zp_model *m = st.m;
     const zp_scene *sc = &st.sc;
-    const double *base = st.sched.p; /* N per section: the base schedule */
-    int status = ZP_EXIT_USAGE;
+    const zp_schedule *sh = &st.sched;
+    const double *base = sh->p; /* the base schedule's parameters */
+    int np = sh->np, status = ZP_EXIT_USAGE;
     double *force = NULL;
     zp_landscape_point *pt = NULL;
     /* every option checked before any run */
-    range r1 = {st.sched.lo[0], st.sched.hi[0], 201};
+    double lo, hi;
+    zp_drive_constant_bounds(sh, &lo, &hi);
+    range r1 = {lo, hi, 201};
     if (a.range1_text && parse_range(a.range1_text, &r1, MAX_1D) != (int)strlen(a.range1_text)) {
         zp_cli_error("landscape",
                      "--force-range: '%s' is not A:B:N; expected forces A < B (N, within "
@@ -347,18 +352,20 @@ static int landscape(int argc, char **argv, const zp_spread *sp) {
         goto done;
     }
     int si = -1, sj = -1;
-    range rx = {st.sched.lo[0], st.sched.hi[0], 41}, ry = rx;
+    range rx = {lo, hi, 41}, ry = rx;
     if (a.slice_text) {
         int used = 0;
         if (sscanf(a.slice_text, "%d,%d%n", &si, &sj, &used) != 2 || a.slice_text[used] || si < 1 ||
-            sj < 1 || si > sc->nsec || sj > sc->nsec || si == sj) {
+            sj < 1 || si > np || sj > np || si == sj) {
             zp_cli_error("landscape",
-                         "--slice: '%s' is not I,J; expected two different sections from 1 to %d",
-                         a.slice_text, sc->nsec);
+                         "--slice: '%s' is not I,J; expected two different %s from 1 to %d",
+                         a.slice_text, zp_drive_param_noun(sh, 1), np);
             goto done;
         }
         si--;
         sj--;
+        rx = (range){sh->lo[si], sh->hi[si], 41};
+        ry = (range){sh->lo[sj], sh->hi[sj], 41};
     }
     if (a.range2_text) {
         const char *t = a.range2_text;
@@ -392,29 +399,28 @@ static int landscape(int argc, char **argv, const zp_spread *sp) {
 
     /* the schedules: the constant pushes, then the slice */
     status = ZP_EXIT_FAIL;
-    int n1 = r1.n, n2 = si >= 0 ? rx.n * ry.n : 0, ns = sc->nsec;
-    force = malloc(sizeof *force * (size_t)(n1 + n2) * (size_t)ns);
+    int n1 = r1.n, n2 = si >= 0 ? rx.n * ry.n : 0;
+    force = malloc(sizeof *force * (size_t)(n1 + n2) * (size_t)np);
     pt = malloc(sizeof *pt * (size_t)(n1 + n2));
     if (!force || !pt) {
         fputs("zipopt landscape: out of memory; nothing was written\n", stderr);
         goto done;
     }
     for (int k = 0; k < n1; k++) {
-        for (int s = 0; s < ns; s++) {
-            force[(size_t)k * ns + s] = at(&r1, k);
-        }
+        zp_schedule push = zp_drive_constant(sh, at(&r1, k));
+        memcpy(force + (size_t)k * np, push.p, sizeof *force * (size_t)np);
     }
     for (int k = 0; k < n2; k++) {
-        double *f = force + (size_t)(n1 + k) * ns;
-        memcpy(f, base, sizeof *f * (size_t)ns);
+        double *f = force + (size_t)(n1 + k) * np;
+        memcpy(f, base, sizeof *f * (size_t)np);
         f[si] = at(&rx, k % rx.n);
         f[sj] = at(&ry, k / rx.n);
     }
     progress pr = {.ranks = sp->size};
     clock_gettime(CLOCK_MONOTONIC, &pr.start);
     pr.last = pr.start;
-    zp_status rc =
-        zp_landscape_sweep(m, &o, force, n1 + n2, pt, isatty(STDERR_FILENO) ? show : NULL, &pr, sp);
+    zp_status rc = zp_landscape_sweep(m, &o, sh, force, n1 + n2, pt,
+                                      isatty(STDERR_FILENO) ? show : NULL, &pr, sp);
     if (rc) {
         fprintf(stderr, "zipopt landscape: %s; nothing was written\n",
                 rc == ZP_ERR_IO ? "the MPI ranks could not exchange their runs"
@@ -453,11 +459,11 @@ static int landscape(int argc, char **argv, const zp_spread *sp) {
         fprintf(csv2, "f%d,f%d,", si + 1, sj + 1);
         write_header(csv2, &lim);
         for (int k = 0; k < n2; k++) {
-            const double *f = force + (size_t)(n1 + k) * ns;
+            const double *f = force + (size_t)(n1 + k) * np;
             fprintf(csv2, "%.9g,%.9g", f[si], f[sj]);
             write_point(csv2, &pt[n1 + k], st.limit, &lim);
         }
-        zp_fig_landscape_2d(gp2, sc->name, sc->nsec, si, sj, &rx, &ry, base,
+        zp_fig_landscape_2d(gp2, sc->name, sh, si, sj, &rx, &ry,
                             a.schedule     ? a.schedule
                             : a.force_text ? "--force"
                                            : "[drive] forces");
@@ -468,7 +474,7 @@ static int landscape(int argc, char **argv, const zp_spread *sp) {
         goto done;
     }
     if (a.json) {
-        print_json(sc, &r1, pt, si, sj, n2, wall, t.dir, !missing, st.limit, &lim);
+        print_json(sc, sh, &r1, pt, si, sj, n2, wall, t.dir, !missing, st.limit, &lim);
     } else {
         print_windows(&r1, pt, st.limit, &lim);
         printf("%d runs in %.2f s", n1 + n2, wall);
@@ -489,9 +495,9 @@ static int landscape(int argc, char **argv, const zp_spread *sp) {
     fprintf(say, "figures: landscape.png%s\n", n2 ? ", landscape_slice.png" : "");
     if (n2 && (base[si] < rx.a || base[si] > rx.b || base[sj] < ry.a || base[sj] > ry.b)) {
         fprintf(say,
-                "note: the base schedule (F%d = %g, F%d = %g N) lies outside the slice and is not "
-                "marked\n",
-                si + 1, base[si], sj + 1, base[sj]);
+                "note: the base schedule (F%d = %g, F%d = %g %s) lies outside the slice and is "
+                "not marked\n",
+                si + 1, base[si], sj + 1, base[sj], zp_drive_unit(sh));
     }
     status = ZP_EXIT_OK;
 done:

@@ -336,8 +336,8 @@ static void print_summary(const zp_report *r, const char *unheld) {
                r->box || zp_limits_any(r->lim) ? ", the [limits] and the [robust] scenarios" : "",
                s->evals);
     }
-    printf("%sbest schedule (N):", s->interrupted ? "interrupted; " : "");
-    for (int k = 0; k < r->m->nsec; k++) {
+    printf("%sbest schedule (%s):", s->interrupted ? "interrupted; " : "", zp_drive_unit(r->shape));
+    for (int k = 0; k < r->shape->np; k++) {
         printf(" %.4f", s->force[k]);
     }
     double angle = zp_model_angle_used(r->m, run->max_rel_angle);

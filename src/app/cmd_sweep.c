@@ -367,8 +367,8 @@ static int overlay(const sweep_args *a, study *st, char **base) {
         zp_schedule_format(&sh, value, sizeof value);
     }
     if (a->force) {
-        zp_schedule sh;
-        if (zp_schedule_parse(a->force, st->sc->nsec, &sh, why, sizeof why)) {
+        zp_schedule sh = zp_schedule_of_scene(st->sc);
+        if (zp_drive_parse(&sh, a->force, &sh, why, sizeof why)) {
             zp_diag_add(&d, NULL, 0, NULL, NULL, "zipopt sweep: --force: %s", why);
         } else {
             zp_schedule_format(&sh, value, sizeof value);

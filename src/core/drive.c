@@ -1,11 +1,78 @@
-/* The drive schedule: its kinds, the force at (t, x, section), its break times and its
-   [drive] forces text. Everything that depends on the kind lives here. */
+/* The drive schedule: its kinds (one table), the force at a state of the trolley and the way it
+   points, its break times, its parameters (labels, unit, sections, bounds), its constant pushes
+   and its [drive] forces text. Everything that depends on the kind lives here. */
 #include "drive.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "numtext.h"
+
+/* What a kind of schedule is: every question the rest of zipopt asks about a schedule that
+   depends on its kind is one entry here. */
+typedef struct kind {
+    const char *noun, *nouns; /* one parameter, several: labels are noun + 1-based index */
+    const char *unit;         /* of every parameter */
+    /* how many parameters s's sections take */
+    int (*nparam)(const zp_schedule *s);
+    /* the section parameter k acts on (0-based), and the stretch [from, to] (m) where */
+    int (*section)(const zp_schedule *s, int k);
+    void (*span)(const zp_schedule *s, int k, const double *xb, double *from, double *to);
+    /* N, the schedule's force at st, before any cap; where it jumps in time */
+    double (*force)(const zp_schedule *s, const zp_drive_state *st);
+    int (*breaks)(const zp_schedule *s, double *t, int max);
+    /* s's parameters p pushing F everywhere */
+    void (*constant)(const zp_schedule *s, double F, double *p);
+    /* section sec's drive in words */
+    void (*label)(const zp_schedule *s, int sec, char *buf, size_t cap);
+} kind;
+
+/* kind constant (ZP_SCHED_SECTIONS): parameter k is section k's force, at every t, x, v */
+static int const_nparam(const zp_schedule *s) {
+    return s->nsec;
+}
+
+static int const_section(const zp_schedule *s, int k) {
+    (void)s;
+    return k;
+}
+
+static void const_span(const zp_schedule *s, int k, const double *xb, double *from, double *to) {
+    (void)s;
+    *from = xb[k];
+    *to = xb[k + 1];
+}
+
+static double const_force(const zp_schedule *s, const zp_drive_state *st) {
+    return s->p[st->sec];
+}
+
+static int const_breaks(const zp_schedule *s, double *t, int max) {
+    (void)s;
+    (void)t;
+    (void)max;
+    return 0;
+}
+
+static void const_constant(const zp_schedule *s, double F, double *p) {
+    for (int k = 0; k < s->np; k++) {
+        p[k] = F;
+    }
+}
+
+static void const_label(const zp_schedule *s, int sec, char *buf, size_t cap) {
+    snprintf(buf, cap, "%g N", s->p[sec]);
+}
+
+static const kind kinds[ZP_SCHED_KIND_COUNT] = {
+    [ZP_SCHED_SECTIONS] = {"section", "sections", "N", const_nparam, const_section, const_span,
+                           const_force, const_breaks, const_constant, const_label},
+};
+
+static const kind *kind_of(const zp_schedule *s) {
+    return &kinds[s->kind];
+}
 
 static const char *const dir_names[ZP_DRIVE_COUNT] = {"horizontal", "tangent"};
 
@@ -22,12 +89,21 @@ int zp_drive_dir_find(const char *name) {
     return -1;
 }
 
-zp_schedule zp_schedule_sections(int nsec, const double *force, double lo, double hi) {
-    zp_schedule s = {.kind = ZP_SCHED_SECTIONS, .nsec = nsec, .np = nsec};
-    for (int k = 0; k < nsec; k++) {
-        s.p[k] = force ? force[k] : 0;
+/* kind's shape on nsec sections, every parameter in [lo, hi] and 0 */
+static zp_schedule shape_of(zp_sched_kind kind, int nsec, double lo, double hi) {
+    zp_schedule s = {.kind = kind, .nsec = nsec};
+    s.np = kind_of(&s)->nparam(&s);
+    for (int k = 0; k < s.np; k++) {
         s.lo[k] = lo;
         s.hi[k] = hi;
+    }
+    return s;
+}
+
+zp_schedule zp_schedule_sections(int nsec, const double *force, double lo, double hi) {
+    zp_schedule s = shape_of(ZP_SCHED_SECTIONS, nsec, lo, hi);
+    for (int k = 0; force && k < s.np; k++) {
+        s.p[k] = force[k];
     }
     return s;
 }
@@ -39,8 +115,7 @@ zp_schedule zp_schedule_with(const zp_schedule *sh, const double *p) {
 }
 
 zp_schedule zp_schedule_of_scene(const zp_scene *sc) {
-    zp_schedule s = zp_schedule_sections(sc->nsec, NULL, sc->force_min, sc->force_max);
-    s.kind = (zp_sched_kind)sc->drive_kind;
+    zp_schedule s = shape_of((zp_sched_kind)sc->drive_kind, sc->nsec, sc->force_min, sc->force_max);
     if (sc->nforce > 0) {
         s.np = sc->nforce;
         memcpy(s.p, sc->forces, sizeof *s.p * (size_t)s.np);
@@ -48,40 +123,76 @@ zp_schedule zp_schedule_of_scene(const zp_scene *sc) {
     return s;
 }
 
+zp_schedule zp_drive_constant(const zp_schedule *shape, double F) {
+    zp_schedule s = *shape;
+    kind_of(shape)->constant(shape, F, s.p);
+    return s;
+}
+
+void zp_drive_constant_bounds(const zp_schedule *shape, double *lo, double *hi) {
+    *lo = shape->lo[0];
+    *hi = shape->hi[0];
+    for (int k = 1; k < shape->np; k++) {
+        *lo = fmax(*lo, shape->lo[k]);
+        *hi = fmin(*hi, shape->hi[k]);
+    }
+}
+
 zp_schedule zp_schedule_scaled(const zp_schedule *s, const double *scale) {
     zp_schedule out = *s;
-    for (int k = 0; k < s->nsec; k++) { /* per-section constants: one parameter a section */
-        out.p[k] = s->p[k] * scale[k];
+    for (int k = 0; k < s->np; k++) {
+        out.p[k] = s->p[k] * scale[kind_of(s)->section(s, k)];
     }
     return out;
 }
 
-double zp_schedule_force(const zp_schedule *s, double t, double x, int sec) {
-    (void)t;
-    (void)x;
-    return s->p[sec];
+double zp_drive_force(const zp_schedule *s, const zp_drive_state *st) {
+    return kind_of(s)->force(s, st);
 }
 
 int zp_schedule_breaks(const zp_schedule *s, double *t, int max) {
-    (void)s;
-    (void)t;
-    (void)max;
-    return 0;
+    return kind_of(s)->breaks(s, t, max);
 }
 
-int zp_schedule_parse(const char *text, int nsec, zp_schedule *s, char *why, size_t whylen) {
+int zp_drive_param_section(const zp_schedule *s, int k) {
+    return kind_of(s)->section(s, k);
+}
+
+void zp_drive_param_label(const zp_schedule *s, int k, char *buf, size_t cap) {
+    snprintf(buf, cap, "%s %d", kind_of(s)->noun, k + 1);
+}
+
+void zp_drive_param_span(const zp_schedule *s, int k, const double *xb, double *from, double *to) {
+    kind_of(s)->span(s, k, xb, from, to);
+}
+
+const char *zp_drive_param_noun(const zp_schedule *s, int plural) {
+    return plural ? kind_of(s)->nouns : kind_of(s)->noun;
+}
+
+const char *zp_drive_unit(const zp_schedule *s) {
+    return kind_of(s)->unit;
+}
+
+int zp_drive_parse(const zp_schedule *shape, const char *text, zp_schedule *s, char *why,
+                   size_t whylen) {
     double p[ZP_SCHED_MAX_PARAMS];
     int n = zp_text_items(text, p, ZP_SCHED_MAX_PARAMS, why, whylen);
     if (n < 0) {
         return -1;
     }
-    if (n != nsec) {
-        snprintf(why, whylen, "%d value%s, expected %d (one per section)", n, n == 1 ? "" : "s",
-                 nsec);
+    if (n != shape->np) {
+        snprintf(why, whylen, "%d value%s, expected %d (one per %s)", n, n == 1 ? "" : "s",
+                 shape->np, kind_of(shape)->noun);
         return -2;
     }
-    *s = zp_schedule_sections(nsec, p, 0, 0);
+    *s = zp_schedule_with(shape, p);
     return 0;
+}
+
+int zp_schedule_parse(const char *text, int nsec, zp_schedule *s, char *why, size_t whylen) {
+    zp_schedule shape = zp_schedule_sections(nsec, NULL, 0, 0);
+    return zp_drive_parse(&shape, text, s, why, whylen);
 }
 
 int zp_schedule_format(const zp_schedule *s, char *buf, size_t cap) {
@@ -100,5 +211,5 @@ int zp_schedule_format(const zp_schedule *s, char *buf, size_t cap) {
 }
 
 void zp_schedule_label(const zp_schedule *s, int sec, char *buf, size_t cap) {
-    snprintf(buf, cap, "%g N", s->p[sec]);
+    kind_of(s)->label(s, sec, buf, cap);
 }

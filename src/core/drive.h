@@ -1,9 +1,14 @@
-/* The drive schedule (docs/scene-file.md [drive]): which force the trolley's drive applies at time
-   t, position x, on section sec; its parameters and bounds as the search sees them; its text. A new
-   kind of schedule is a new zp_sched_kind handled in drive.c and nowhere else. */
+/* The drive schedule (docs/scene-file.md [drive]): the force the trolley's drive applies at an
+   instant, from the state it needs (time, position, speed, section), and the way it points; its
+   parameters as the search, the verification, the reports and the library see them (count,
+   unit, labels, bounds, the section whose force error scales each); its family of "the same
+   push everywhere"; its text. A new kind of schedule is a zp_sched_kind and an entry of
+   drive.c's kind table; a cap on the applied force (a drive's power) is written in
+   zp_drive_force. Nothing outside drive.c depends on the kind. */
 #ifndef ZP_DRIVE_H
 #define ZP_DRIVE_H
 
+#include <math.h>
 #include <stddef.h>
 
 #include "scene.h"
@@ -12,7 +17,7 @@
 typedef enum { ZP_DRIVE_HORIZONTAL, ZP_DRIVE_TANGENT, ZP_DRIVE_COUNT } zp_drive_dir;
 
 typedef enum {
-    ZP_SCHED_SECTIONS, /* one constant force per section (N): p[sec] */
+    ZP_SCHED_SECTIONS, /* kind constant: one constant force per section (N): p[sec] */
     ZP_SCHED_KIND_COUNT
 } zp_sched_kind;
 
@@ -25,29 +30,79 @@ typedef struct zp_schedule {
     zp_sched_kind kind;
     int nsec;                       /* sections of the course it drives */
     int np;                         /* parameters */
-    double p[ZP_SCHED_MAX_PARAMS];  /* the parameters, in the kind's units */
+    double p[ZP_SCHED_MAX_PARAMS];  /* the parameters, in the kind's unit */
     double lo[ZP_SCHED_MAX_PARAMS]; /* search bounds of each parameter */
     double hi[ZP_SCHED_MAX_PARAMS];
 } zp_schedule;
 
-/* Per-section constant forces (N), every one bounded by [lo, hi]. */
+/* What the drive's force may depend on at one instant. A kind whose applied force is a state
+   of its own (a response lag, F_a' = (F_s - F_a) / tau) would extend the kind table with the
+   entries it adds to the simulator's state and their rates, kept beside the work integrals;
+   no kind has one today. */
+typedef struct zp_drive_state {
+    double t; /* s */
+    double x; /* m, the trolley's x */
+    double v; /* m/s, the trolley's velocity along the drive's direction: x' (horizontal) or
+                 along the course, x' sqrt(1 + f'^2) (tangent); what a power P caps the force
+                 by, |F| <= P / |v| */
+    int sec;  /* 0-based section under the trolley */
+} zp_drive_state;
+
+/* Per-section constant forces (N), every one bounded by [lo, hi]; force NULL: all 0. */
 zp_schedule zp_schedule_sections(int nsec, const double *force, double lo, double hi);
 /* The same shape (kind, sections, bounds) with the parameters p (sh->np of them). */
 zp_schedule zp_schedule_with(const zp_schedule *sh, const double *p);
 /* The schedule the scene's [drive] describes (forces, min, max; all 0 when no forces). */
 zp_schedule zp_schedule_of_scene(const zp_scene *sc);
+/* The schedule of shape pushing F (N) everywhere: the one-parameter family of constant pushes
+   the search's baseline, the landscape and the benchmarks run. */
+zp_schedule zp_drive_constant(const zp_schedule *shape, double F);
+/* N, the constant pushes every parameter's bounds allow: the largest lo, the smallest hi. */
+void zp_drive_constant_bounds(const zp_schedule *shape, double *lo, double *hi);
 
-/* The schedule whose force on each section sec is s's times scale[sec] (a drive off by a
-   known factor per section: a scenario's force error). */
+/* The schedule whose parameters are s's, each times the scale of the section it acts on
+   (scale: one factor per section, a drive off by a known factor: a scenario's force error). */
 zp_schedule zp_schedule_scaled(const zp_schedule *s, const double *scale);
-/* N, the drive force at time t (s) with the trolley at x (m) on section sec (0-based). */
-double zp_schedule_force(const zp_schedule *s, double t, double x, int sec);
+/* N, the force the drive applies at st, along its direction. */
+double zp_drive_force(const zp_schedule *s, const zp_drive_state *st);
+/* N, that force on the trolley (fx, fy) at time t (s), the trolley at x (m) moving at xdot = x'
+   (m/s) on section sec, the course's slope there fp, pointing as d says. Inline: every
+   evaluation of the equations of motion asks for it. */
+static inline void zp_drive_push(const zp_schedule *s, zp_drive_dir d, double t, double x,
+                                 double xdot, int sec, double fp, double *fx, double *fy) {
+    if (d == ZP_DRIVE_TANGENT) {
+        double norm = sqrt(1 + fp * fp);
+        double F = zp_drive_force(s, &(zp_drive_state){t, x, xdot * norm, sec});
+        *fx = F / norm;
+        *fy = F * fp / norm;
+    } else {
+        *fx = zp_drive_force(s, &(zp_drive_state){t, x, xdot, sec});
+        *fy = 0;
+    }
+}
+
 /* The instants (s, ascending, at most max) where the force jumps in time; returns how many.
    The simulator stops its integrator there. 0 for per-section constants. */
 int zp_schedule_breaks(const zp_schedule *s, double *t, int max);
 
-/* Reads the text of [drive] forces for a course of nsec sections into s (bounds left 0).
-   0, or -1 with why ("2 values, expected 3 (one per section)", "item 2 is empty", ..). */
+/* Parameter k (0-based) of s: the section it acts on, whose force error scales it (0-based);
+   its label ("section 2"); the stretch of course [*from, *to] (m) where it acts, xb the
+   sections' boundaries (nsec + 1 of them). */
+int zp_drive_param_section(const zp_schedule *s, int k);
+void zp_drive_param_label(const zp_schedule *s, int k, char *buf, size_t cap);
+void zp_drive_param_span(const zp_schedule *s, int k, const double *xb, double *from, double *to);
+/* What one parameter of s is called, plural 0 or 1 ("section", "sections"): labels are it and
+   the 1-based index. */
+const char *zp_drive_param_noun(const zp_schedule *s, int plural);
+/* The unit of s's parameters ("N"). */
+const char *zp_drive_unit(const zp_schedule *s);
+
+/* Reads the text of [drive] forces as shape's parameters into s (shape with them): 0, or -1
+   with why ("item 2 is empty", ..), -2 for the wrong count ("2 values, expected 3 (one per
+   section)"). */
+int zp_drive_parse(const zp_schedule *shape, const char *text, zp_schedule *s, char *why,
+                   size_t whylen);
+/* The same for per-section constants on a course of nsec sections (bounds left 0). */
 int zp_schedule_parse(const char *text, int nsec, zp_schedule *s, char *why, size_t whylen);
 /* Writes the text zp_schedule_parse reads back bit for bit; returns snprintf's count. */
 int zp_schedule_format(const zp_schedule *s, char *buf, size_t cap);

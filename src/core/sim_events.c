@@ -82,7 +82,7 @@ int zp_sim_events_settled(zp_sim *s) {
 
 /* the hold at the current state, at rest at t; 0, or the rhs's nonzero status */
 static int hold_now(zp_sim *s, double t, zp_friction_hold *h) {
-    return zp_friction_hold_at(s->m, s->form, s->fwork, zp_sim_rhs_drive_now(s, t, s->y[0]), s->y,
+    return zp_friction_hold_at(s->m, s->form, s->fwork, zp_sim_rhs_drive_now(s, t, s->y), s->y,
                                s->ydot, h);
 }
 

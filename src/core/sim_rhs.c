@@ -12,28 +12,22 @@ static zp_track plain_track(const zp_model *m, const zp_course *c, int sec, doub
     return zp_course_eval(c, sec, x);
 }
 
-/* the drive at time t and the trolley's x on the current section, the course there being tr */
-static inline zp_drive_now drive_with(const zp_sim *s, zp_track tr, double t, double x) {
+/* the drive at time t and state y (the trolley's x and x') on the current section, the course
+   there being tr */
+static inline zp_drive_now drive_with(const zp_sim *s, zp_track tr, double t, const double *y) {
     zp_drive_now dn = {tr, 0, 0, 0, 0};
-    double F = zp_schedule_force(s->sched, t, x, s->sec);
-    if (s->m->drive == ZP_DRIVE_TANGENT) {
-        double norm = sqrt(1 + dn.tr.fp * dn.tr.fp);
-        dn.fx = F / norm;
-        dn.fy = F * dn.tr.fp / norm;
-    } else {
-        dn.fx = F;
-    }
+    zp_drive_push(s->sched, s->m->drive, t, y[0], y[s->w0 / 2], s->sec, tr.fp, &dn.fx, &dn.fy);
     return dn;
 }
 
-/* course and drive at time t and the trolley's x on the current section; track a constant
-   where inlined */
-static inline zp_drive_now drive_at(const zp_sim *s, track_fn track, double t, double x) {
-    return drive_with(s, track(s->m, s->course, s->sec, x), t, x);
+/* course and drive at time t and state y on the current section; track a constant where
+   inlined */
+static inline zp_drive_now drive_at(const zp_sim *s, track_fn track, double t, const double *y) {
+    return drive_with(s, track(s->m, s->course, s->sec, y[0]), t, y);
 }
 
-zp_drive_now zp_sim_rhs_drive_now(const zp_sim *s, double t, double x) {
-    zp_drive_now dn = drive_at(s, s->track, t, x);
+zp_drive_now zp_sim_rhs_drive_now(const zp_sim *s, double t, const double *y) {
+    zp_drive_now dn = drive_at(s, s->track, t, y);
     dn.hold = s->stuck;
     dn.slide = s->slide;
     return dn;
@@ -43,14 +37,14 @@ zp_drive_now zp_sim_rhs_drive_now(const zp_sim *s, double t, double x) {
    of an effect's course */
 int zp_sim_rhs(double t, const double *y, double *ydot, void *user) {
     zp_sim *s = user;
-    zp_drive_now dn = drive_at(s, plain_track, t, y[0]);
+    zp_drive_now dn = drive_at(s, plain_track, t, y);
     return s->form->rhs(s->m, s->fwork, &dn, y, ydot, NULL);
 }
 
 static int sim_rhs_provided(double t, const double *y, double *ydot, void *user) {
     zp_sim *s = user;
     zp_track tr = zp_model_track_piece(s->m, s->course, s->sec, s->arc, y[0]);
-    zp_drive_now dn = drive_with(s, tr, t, y[0]);
+    zp_drive_now dn = drive_with(s, tr, t, y);
     return s->form->rhs(s->m, s->fwork, &dn, y, ydot, NULL);
 }
 
@@ -65,7 +59,7 @@ static int sim_root(double t, const double *y, double *g, void *user) {
 
 int zp_sim_rhs_rolling(double t, const double *y, double *ydot, void *user) {
     zp_sim *s = user;
-    zp_drive_now dn = zp_sim_rhs_drive_now(s, t, y[0]);
+    zp_drive_now dn = zp_sim_rhs_drive_now(s, t, y);
     int rc = s->form->rhs(s->m, s->fwork, &dn, y, ydot, NULL);
     if (rc == ZP_RHS_FRICTION_INCONSISTENT) {
         s->inconsistent_t = t;
@@ -82,7 +76,7 @@ static int sim_root_rolling(double t, const double *y, double *g, void *user) {
     double *rest = &g[zp_events_rest(s->m)];
     zp_friction_hold h = {.margin = 1}; /* where it cannot be computed the rates fail too */
     if (s->stuck) {
-        zp_friction_hold_at(s->m, s->form, s->fwork, zp_sim_rhs_drive_now(s, t, y[0]), y, s->ydot,
+        zp_friction_hold_at(s->m, s->form, s->fwork, zp_sim_rhs_drive_now(s, t, y), y, s->ydot,
                             &h);
     }
     *rest = s->stuck ? h.margin : y[s->w0 / 2];
@@ -97,7 +91,7 @@ zp_chain zp_sim_rhs_chain(const zp_sim *s, const double *y) {
 }
 
 zp_row zp_sim_rhs_row(zp_sim *s, double t, const double *y) {
-    zp_drive_now dn = zp_sim_rhs_drive_now(s, t, y[0]); /* its course point serves the chain too */
+    zp_drive_now dn = zp_sim_rhs_drive_now(s, t, y); /* its course point serves the chain too */
     zp_row r = {.t = t, .sec = s->sec};
     s->form->to_chain(s->m, &dn.tr, y, &r.c);
     r.w_drive = y[s->w0 + ZP_W_DRIVE];

@@ -14,7 +14,7 @@ int zp_sim_rhs(double t, const double *y, double *ydot, void *user);
    friction has no consistent solution, that t and x noted in s for the failure's message. */
 int zp_sim_rhs_rolling(double t, const double *y, double *ydot, void *user);
 /* The drive now, for outputs and decisions: held, the trolley's rates and loads at rest. */
-zp_drive_now zp_sim_rhs_drive_now(const zp_sim *s, double t, double x);
+zp_drive_now zp_sim_rhs_drive_now(const zp_sim *s, double t, const double *y);
 /* The chain of state y on the current section. */
 zp_chain zp_sim_rhs_chain(const zp_sim *s, const double *y);
 /* The row at (t, y), touching nothing of the run (its loads count in no peak). */

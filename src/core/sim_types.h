@@ -42,7 +42,7 @@ typedef struct zp_sim_opts {
 } zp_sim_opts;
 
 typedef struct zp_input {
-    const zp_schedule *sched; /* borrowed; the drive force at (t, x, section) */
+    const zp_schedule *sched; /* borrowed; the drive force at (t, x, x', section) */
     const double *force_scale; /* borrowed, may be NULL: a factor on each section's force (a
                                   scenario's force error) */
     const zp_chain *start; /* borrowed; NULL: the docs/model.md start. Its x must lie in section 1

@@ -2,8 +2,6 @@
    are, so a user can restyle them. */
 #include "fig_landscape.h"
 
-#include "scene.h"
-
 /* user text (scene name, file name) for a gnuplot string: quotes and backslashes become
    backquotes, so no name can end the string early */
 static const char *gp_safe(const char *in, char *out, size_t n) {
@@ -70,16 +68,18 @@ void zp_fig_landscape_1d(FILE *f, const char *scene, const zp_fig_axis *r) {
             1.05 * step, 1.05 * step, 1.05 * step, 1.05 * step);
 }
 
-void zp_fig_landscape_2d(FILE *f, const char *scene, int nsec, int si, int sj,
-                         const zp_fig_axis *r1, const zp_fig_axis *r2, const double *base,
-                         const char *base_name) {
+void zp_fig_landscape_2d(FILE *f, const char *scene, const zp_schedule *base, int si, int sj,
+                         const zp_fig_axis *r1, const zp_fig_axis *r2, const char *base_name) {
     double dx = (r1->b - r1->a) / (r1->n - 1), dy = (r2->b - r2->a) / (r2->n - 1);
-    char name[1024];
+    char name[1024], li[64], lj[64];
+    const char *unit = zp_drive_unit(base);
+    zp_drive_param_label(base, si, li, sizeof li);
+    zp_drive_param_label(base, sj, lj, sizeof lj);
     head(f, "landscape_slice", 900, 760);
     fprintf(f,
-            "set title 'Survival landscape of %s: forces of sections %d and %d, the others at "
+            "set title 'Survival landscape of %s: forces of %s %d and %d, the others at "
             "the base schedule'\n"
-            "set xlabel 'F%d, section %d (N)'\nset ylabel 'F%d, section %d (N)'\n"
+            "set xlabel 'F%d, %s (%s)'\nset ylabel 'F%d, %s (%s)'\n"
             "set xrange [%g:%g]\nset yrange [%g:%g]\n"
             "set size square\n"
             "set cblabel 'finish time (s)'\n"
@@ -89,18 +89,20 @@ void zp_fig_landscape_2d(FILE *f, const char *scene, int nsec, int si, int sj,
             "set key outside below horizontal\n"
             "set bmargin 6\n"
             "unset grid\n",
-            gp_safe(scene, name, sizeof name), si + 1, sj + 1, si + 1, si + 1, sj + 1, sj + 1,
-            r1->a - dx / 2, r1->b + dx / 2, r2->a - dy / 2, r2->b + dy / 2);
+            gp_safe(scene, name, sizeof name), zp_drive_param_noun(base, 1), si + 1, sj + 1, si + 1,
+            li, unit, sj + 1, lj, unit, r1->a - dx / 2, r1->b + dx / 2, r2->a - dy / 2,
+            r2->b + dy / 2);
     /* the base schedule's label on the side with more room */
-    int right = base[si] > 0.5 * (r1->a + r1->b), upper = base[sj] > 0.5 * (r2->a + r2->b);
+    const double *p = base->p;
+    int right = p[si] > 0.5 * (r1->a + r1->b), upper = p[sj] > 0.5 * (r2->a + r2->b);
     fputs("set style textbox opaque\n", f);
-    fprintf(f, "$base << EOD\n%.9g,%.9g,\"%s (", base[si], base[sj],
+    fprintf(f, "$base << EOD\n%.9g,%.9g,\"%s (", p[si], p[sj],
             gp_safe(base_name, name, sizeof name));
-    for (int k = 0; k < nsec; k++) {
-        fprintf(f, "%s%g", k ? ", " : "", base[k]);
+    for (int k = 0; k < base->np; k++) {
+        fprintf(f, "%s%g", k ? ", " : "", p[k]);
     }
     fprintf(f,
-            ") N\"\nEOD\n"
+            ") %s\"\nEOD\n"
             "plot 'landscape_slice.csv' using 'f%d':'f%d':(column('kept') == 1 ? "
             "column('time') : NaN) with image notitle, \\\n"
             "     '' using 'f%d':'f%d':(%g):(strcol('outcome') eq 'finished' && "
@@ -117,7 +119,7 @@ void zp_fig_landscape_2d(FILE *f, const char *scene, int nsec, int si, int sj,
             "title 'base schedule', \\\n"
             "     $base using 1:2:3 with labels %s offset %g, %g tc rgb 'black' boxed "
             "font ',10' notitle\n",
-            si + 1, sj + 1, si + 1, sj + 1, 0.51 * dx, 0.51 * dy, si + 1, sj + 1, 0.51 * dx,
+            unit, si + 1, sj + 1, si + 1, sj + 1, 0.51 * dx, 0.51 * dy, si + 1, sj + 1, 0.51 * dx,
             0.51 * dy, si + 1, sj + 1, 0.51 * dx, 0.51 * dy, si + 1, sj + 1, 0.51 * dx, 0.51 * dy,
             right ? "right" : "left", right ? -1.5 : 1.5, upper ? -1.2 : 1.2);
 }

@@ -1,10 +1,12 @@
 /* The survival landscape's figures: gnuplot scripts for landscape.png (outcome over one
-   constant push) and landscape_slice.png (outcome over two sections' forces), reading
+   constant push) and landscape_slice.png (outcome over two parameters of a schedule), reading
    landscape.csv and landscape_slice.csv beside them. */
 #ifndef ZP_FIG_LANDSCAPE_H
 #define ZP_FIG_LANDSCAPE_H
 
 #include <stdio.h>
+
+#include "drive.h"
 
 typedef struct zp_fig_axis {
     double a, b; /* N */
@@ -13,10 +15,9 @@ typedef struct zp_fig_axis {
 
 /* landscape.gp, for scene (its name, in the title) over the constant pushes r */
 void zp_fig_landscape_1d(FILE *f, const char *scene, const zp_fig_axis *r);
-/* landscape_slice.gp: sections si and sj (0-based) of nsec over r1 and r2, the others at base
-   (named base_name in the label) */
-void zp_fig_landscape_2d(FILE *f, const char *scene, int nsec, int si, int sj,
-                         const zp_fig_axis *r1, const zp_fig_axis *r2, const double *base,
-                         const char *base_name);
+/* landscape_slice.gp: parameters si and sj (0-based) of the schedule base over r1 and r2, the
+   others at base's (named base_name in the label) */
+void zp_fig_landscape_2d(FILE *f, const char *scene, const zp_schedule *base, int si, int sj,
+                         const zp_fig_axis *r1, const zp_fig_axis *r2, const char *base_name);
 
 #endif

@@ -34,19 +34,14 @@ static void overrides(const char *cmd, zp_setup *st, const zp_overrides *ov, zp_
         zp_scene_overlay_schedule(ov->schedule, sc, d);
     }
     st->sched = zp_schedule_of_scene(sc);
-    if (ov->force) {
-        zp_schedule s;
-        char why[256];
-        if (zp_schedule_parse(ov->force, sc->nsec, &s, why, sizeof why)) {
-            zp_diag_add(d, NULL, 0, NULL, NULL, "zipopt %s: --force: %s", cmd, why);
-        } else {
-            st->sched = zp_schedule_with(&st->sched, s.p);
-        }
+    char why[256];
+    if (ov->force && zp_drive_parse(&st->sched, ov->force, &st->sched, why, sizeof why)) {
+        zp_diag_add(d, NULL, 0, NULL, NULL, "zipopt %s: --force: %s", cmd, why);
     }
     st->seed = ov->has_seed ? ov->seed : sc->seed;
     st->max_evals = ov->max_evals > 0   ? ov->max_evals
                     : sc->line_max_evals ? sc->max_evals
-                                         : zp_search_default_budget(sc->nsec);
+                                         : zp_search_default_budget(st->sched.np);
 }
 
 int zp_prep_load(const char *cmd, const char *path, const char *text, const zp_overrides *ov,

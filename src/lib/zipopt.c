@@ -73,7 +73,7 @@ struct zipopt_search {
     zp_robust_check check; /* the robust verification (samples 0: none) */
     int nscen;             /* scenarios held */
     double num[NSEARCH_KEYS];
-    int np; /* parameters of the schedule: one force per section */
+    int np; /* parameters of the schedule */
 };
 
 __attribute__((format(printf, 3, 4))) static void say(char *err, size_t errlen, const char *fmt,
@@ -179,6 +179,39 @@ int zipopt_scene_links(const zipopt_scene *s) {
     return s ? s->st.m->nlink : -1;
 }
 
+int zipopt_scene_params(const zipopt_scene *s) {
+    return s ? s->st.sched.np : -1;
+}
+
+int zipopt_scene_param_label(const zipopt_scene *s, int k, char *buf, size_t cap) {
+    if (!s || k < 0 || k >= s->st.sched.np) {
+        return -1;
+    }
+    char label[64];
+    zp_drive_param_label(&s->st.sched, k, label, sizeof label);
+    return snprintf(buf, buf ? cap : 0, "%s", label);
+}
+
+const char *zipopt_scene_param_unit(const zipopt_scene *s) {
+    return s ? zp_drive_unit(&s->st.sched) : NULL;
+}
+
+int zipopt_scene_param_bounds(const zipopt_scene *s, double *lo, double *hi, int n) {
+    if (!s) {
+        return -1;
+    }
+    const zp_schedule *sh = &s->st.sched;
+    for (int k = 0; k < sh->np && k < n; k++) {
+        if (lo) {
+            lo[k] = sh->lo[k];
+        }
+        if (hi) {
+            hi[k] = sh->hi[k];
+        }
+    }
+    return sh->np;
+}
+
 int zipopt_scene_forces(const zipopt_scene *s, double *force, int n) {
     if (!s) {
         return -1;
@@ -197,7 +230,8 @@ int zipopt_scene_set_forces(zipopt_scene *s, const double *force, int n, char *e
     }
     const zp_schedule *sh = &s->st.sched;
     if (n != sh->np) {
-        say(err, errlen, "forces: %d values, expected %d (one per section, N)", n, sh->np);
+        say(err, errlen, "forces: %d values, expected %d (one per %s, %s)", n, sh->np,
+            zp_drive_param_noun(sh, 0), zp_drive_unit(sh));
         return -1;
     }
     for (int k = 0; k < n; k++) {
