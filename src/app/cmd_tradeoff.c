@@ -436,6 +436,25 @@ static int write_files(zp_tx *t, const tradeoff *T, int complete) {
     return 0;
 }
 
+/* the levels in order until one is stopped (Ctrl-C), those finished counted in T->ndone; 0, or
+   -1 (said) */
+static int solve_levels(tradeoff *T) {
+    char err[1200] = "";
+    for (int i = 0; i < T->n && !interrupted; i++) {
+        if (solve_level(T, i, err, sizeof err)) {
+            zp_cli_error("tradeoff", "level %g %%: %s; nothing was written", T->L[i].p, err);
+            return -1;
+        }
+        if (!T->L[i].done) {
+            break; /* stopped inside this level: it is not reported */
+        }
+        T->ndone = i + 1;
+        fprintf(stderr, "tradeoff: +/-%g %%: %s%.4f s\n", T->L[i].p,
+                T->L[i].found ? "" : "(none) ", T->L[i].time);
+    }
+    return 0;
+}
+
 int zp_cmd_tradeoff(int argc, char **argv) {
     tradeoff_args a;
     int pa = parse_args(argc, argv, &a);
@@ -467,18 +486,8 @@ int zp_cmd_tradeoff(int argc, char **argv) {
     begun = 1;
     interrupted = 0;
     zp_tx_soft_interrupt(&t, &interrupted);
-    for (int i = 0; i < n && !interrupted; i++) {
-        zp_status st = solve_level(&T, i, err, sizeof err);
-        if (st) {
-            zp_cli_error("tradeoff", "level %g %%: %s; nothing was written", lv[i], err);
-            goto done;
-        }
-        if (!T.L[i].done) {
-            break; /* stopped inside this level: it is not reported */
-        }
-        T.ndone = i + 1;
-        fprintf(stderr, "tradeoff: +/-%g %%: %s%.4f s\n", lv[i], T.L[i].found ? "" : "(none) ",
-                T.L[i].time);
+    if (solve_levels(&T)) {
+        goto done;
     }
     int complete = T.ndone == n;
     if (T.ndone == 0) {
