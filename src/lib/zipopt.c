@@ -523,7 +523,7 @@ static zp_status solve(const zp_problem *st, const zp_answer_opts *o, zipopt_sea
                        size_t errlen) {
     zp_answer *a = malloc(sizeof *a); /* large: kept off the stack */
     if (!a) {
-        snprintf(err, errlen, "out of memory building the scenarios");
+        snprintf(err, errlen, "out of memory");
         return ZP_ERR_NOMEM;
     }
     pthread_mutex_lock(&turn);
@@ -555,8 +555,12 @@ zipopt_search *zipopt_search_run(zipopt_scene *s, long max_evals, long seed,
     /* the search as the command runs it: held to the scene's [limits] and [robust] scenarios
        when it has them, the answer checked on fresh scenarios */
     zp_answer_opts o = zp_answer_opts_of(st, ZP_ANSWER_SEARCHED);
-    o.search.max_evals = max_evals > 0 ? max_evals : st->max_evals;
-    o.search.seed = seed >= 0 ? (unsigned long)seed : st->seed;
+    if (max_evals > 0) {
+        o.search.max_evals = max_evals;
+    }
+    if (seed >= 0) {
+        o.search.seed = (unsigned long)seed;
+    }
     o.search.stop = pc.flag;
     o.search.progress = progress ? on_progress : NULL;
     o.search.user = &pc;
