@@ -68,7 +68,7 @@ static zp_status verify(const zp_problem *p, const zp_answer_opts *o, zp_answer 
     int reported = o->depth == ZP_ANSWER_REPORTED;
     zp_objective ob = a->rp.ob;
     ob.set = NULL;
-    a->answer = p->answer;
+    a->run_opts = p->answer;
     zp_status rc = zp_verify_begin(&ob, &p->answer, a->res.force, &a->best, &a->v, err, errlen);
     if ((!rc && stage(o, ZP_ANSWER_RERUN, a)) || stage(o, ZP_ANSWER_CHECKING, a)) {
         return ZP_ERR_IO;
@@ -84,7 +84,7 @@ static zp_status verify(const zp_problem *p, const zp_answer_opts *o, zp_answer 
     }
     if (!rc && reported && p->sc.accuracy > 0) {
         rc = zp_verify_accuracy(&ob, &p->answer, a->res.force, p->sc.accuracy, &a->best, &a->v,
-                                &a->answer, &a->acc, err, errlen);
+                                &a->run_opts, &a->acc, err, errlen);
     }
     if (stage(o, ZP_ANSWER_CHECKED, a)) {
         return ZP_ERR_IO;

@@ -42,7 +42,7 @@ typedef struct zp_answer_opts {
 
 struct zp_answer {
     const zp_problem *pb;  /* borrowed: what was solved */
-    const char *algo;      /* the strategy's name */
+    const char *algo;      /* the strategy's name (static) */
     zp_robust_problem rp;  /* the objective, the [robust] box and set, the adversary's info
                               and the fresh-scenario check (rp.check) */
     long max_evals;        /* the search's budget and seed, as they ran */
@@ -51,10 +51,10 @@ struct zp_answer {
     int found;             /* res.found, and from ZP_ANSWER_VERIFIED on (not interrupted):
                               the answer holds with [solver] */
     char unheld[256];      /* why res.found is not found, "" */
-    int verified;          /* 1: v, best and answer are filled (rank 0, ZP_ANSWER_VERIFIED on) */
+    int verified;          /* 1: v, best and run_opts are filled (rank 0, ZP_ANSWER_VERIFIED on) */
     zp_verify v;           /* v.run: the answer at the answer profile; v.tight 100x tighter */
     zp_sim *best;          /* owned: v.run's workspace (its rows and kink crossings) */
-    zp_sim_opts answer;    /* v.run's options: p->answer, or what [solver] accuracy picked */
+    zp_sim_opts run_opts;  /* v.run's options: p->answer, or what [solver] accuracy picked */
     zp_accuracy acc;       /* with [solver] accuracy: what v.run met */
     zp_result *given;      /* owned, NULL: none; the scene's own [drive] forces (p->sched)
                               judged at the search's options, ZP_ANSWER_REPORTED */

@@ -492,7 +492,7 @@ static void md_search(FILE *f, const zp_answer *a) {
             "- integrators: the search's runs %s at rtol %g, atol %g ([optimize]); the best\n"
             "  schedule rerun with %s at rtol %g, atol %g ([solver]) and verified %gx tighter\n",
             zp_method_get(search->method)->name, search->rtol, search->atol,
-            zp_method_get(a->pb->sim.method)->name, a->answer.rtol, a->answer.atol,
+            zp_method_get(a->pb->sim.method)->name, a->run_opts.rtol, a->run_opts.atol,
             ZP_ESTIMATE_FACTOR);
     if (a->pb->sc.accuracy > 0) {
         const zp_accuracy *acc = &a->acc;
