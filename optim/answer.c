@@ -11,8 +11,7 @@
 #define NROBUST 200 /* robustness runs per perturbation level (ZP_ANSWER_REPORTED) */
 
 zp_answer_opts zp_answer_opts_of(const zp_problem *p, zp_answer_depth depth) {
-    return (zp_answer_opts){.depth = depth,
-                            .search = {.max_evals = p->max_evals, .seed = p->seed}};
+    return (zp_answer_opts){.depth = depth, .search = {.max_evals = p->max_evals, .seed = p->seed}};
 }
 
 static int stage(const zp_answer_opts *o, zp_answer_stage s, const zp_answer *a) {
@@ -79,8 +78,8 @@ static zp_status verify(const zp_problem *p, const zp_answer_opts *o, zp_answer 
     }
     int nrobust = reported && !a->res.interrupted ? NROBUST : 0;
     if (!rc) {
-        rc = zp_verify_finish(&ob, &p->answer, a->res.force, a->seed, nrobust, 0, &a->v,
-                              o->checked, o->user, err, errlen);
+        rc = zp_verify_finish(&ob, &p->answer, a->res.force, a->seed, nrobust, 0, &a->v, o->checked,
+                              o->user, err, errlen);
     }
     if (!rc && reported && p->sc.accuracy > 0) {
         rc = zp_verify_accuracy(&ob, &p->answer, a->res.force, p->sc.accuracy, &a->best, &a->v,

@@ -19,11 +19,11 @@ typedef enum zp_answer_depth {
 
 /* The stages zp_answer_solve tells its caller of, in this order (for progress and figures). */
 typedef enum zp_answer_stage {
-    ZP_ANSWER_RERUN,      /* the answer's run is made (v.run and best): it may be drawn */
-    ZP_ANSWER_CHECKING,   /* its checks begin (tried even when the rerun failed) */
-    ZP_ANSWER_CHECKED,    /* the checks and the accuracy ended, well or not */
-    ZP_ANSWER_COMPARED,   /* the scene's own forces ran: what is drawn may be finished */
-    ZP_ANSWER_DIAGNOSING  /* the fresh scenarios the answer fails are told apart (only then) */
+    ZP_ANSWER_RERUN,     /* the answer's run is made (v.run and best): it may be drawn */
+    ZP_ANSWER_CHECKING,  /* its checks begin (tried even when the rerun failed) */
+    ZP_ANSWER_CHECKED,   /* the checks and the accuracy ended, well or not */
+    ZP_ANSWER_COMPARED,  /* the scene's own forces ran: what is drawn may be finished */
+    ZP_ANSWER_DIAGNOSING /* the fresh scenarios the answer fails are told apart (only then) */
 } zp_answer_stage;
 
 typedef struct zp_answer zp_answer;
@@ -41,25 +41,25 @@ typedef struct zp_answer_opts {
 } zp_answer_opts;
 
 struct zp_answer {
-    const zp_problem *pb;  /* borrowed: what was solved */
-    const char *algo;      /* the strategy's name (static) */
-    zp_robust_problem rp;  /* the objective, the [robust] box and set, the adversary's info
-                              and the fresh-scenario check (rp.check) */
-    long max_evals;        /* the search's budget and seed, as they ran */
+    const zp_problem *pb; /* borrowed: what was solved */
+    const char *algo;     /* the strategy's name (static) */
+    zp_robust_problem rp; /* the objective, the [robust] box and set, the adversary's info
+                             and the fresh-scenario check (rp.check) */
+    long max_evals;       /* the search's budget and seed, as they ran */
     unsigned long seed;
-    zp_search_result res;  /* the search's, res.found its own verdict */
-    int found;             /* res.found, and from ZP_ANSWER_VERIFIED on (not interrupted):
-                              the answer holds with [solver] */
-    char unheld[256];      /* why res.found is not found, "" */
-    int verified;          /* 1: v, best and run_opts are filled (rank 0, ZP_ANSWER_VERIFIED on) */
-    zp_verify v;           /* v.run: the answer at the answer profile; v.tight 100x tighter */
-    zp_sim *best;          /* owned: v.run's workspace (its rows and kink crossings) */
-    zp_sim_opts run_opts;  /* v.run's options: p->answer, or what [solver] accuracy picked */
-    zp_accuracy acc;       /* with [solver] accuracy: what v.run met */
-    zp_result *given;      /* owned, NULL: none; the scene's own [drive] forces (p->sched)
-                              judged at the search's options, ZP_ANSWER_REPORTED */
-    zp_diagnosis *diag;    /* owned, NULL: the answer keeps every fresh scenario (or the
-                              depth is lower) */
+    zp_search_result res; /* the search's, res.found its own verdict */
+    int found;            /* res.found, and from ZP_ANSWER_VERIFIED on (not interrupted):
+                             the answer holds with [solver] */
+    char unheld[256];     /* why res.found is not found, "" */
+    int verified;         /* 1: v, best and run_opts are filled (rank 0, ZP_ANSWER_VERIFIED on) */
+    zp_verify v;          /* v.run: the answer at the answer profile; v.tight 100x tighter */
+    zp_sim *best;         /* owned: v.run's workspace (its rows and kink crossings) */
+    zp_sim_opts run_opts; /* v.run's options: p->answer, or what [solver] accuracy picked */
+    zp_accuracy acc;      /* with [solver] accuracy: what v.run met */
+    zp_result *given;     /* owned, NULL: none; the scene's own [drive] forces (p->sched)
+                             judged at the search's options, ZP_ANSWER_REPORTED */
+    zp_diagnosis *diag;   /* owned, NULL: the answer keeps every fresh scenario (or the
+                             depth is lower) */
 };
 
 /* The options of a solve of p to depth: the first strategy, p's budget and seed, no stop, no
