@@ -23,7 +23,7 @@ int main(int argc, char **argv) {
     gsl_set_error_handler_off();
     double seconds = atof(argv[2]);
     unsigned long seed = argc > 3 ? strtoul(argv[3], NULL, 10) : 1;
-    static zp_setup st; /* large: kept off the stack */
+    static zp_problem st; /* large: kept off the stack */
     zp_overrides none = ZP_OVERRIDES_NONE;
     if (zp_setup_load("brute_force", argv[1], &none, &st)) {
         return 2;

@@ -15,7 +15,7 @@
 static zp_search_result res;
 
 /* the search as `zipopt SCENE.ini` runs it, at budget evals: its best time, INFINITY if none */
-static double search_at(const zp_setup *st, long evals, long *spent, int *converged) {
+static double search_at(const zp_problem *st, long evals, long *spent, int *converged) {
     zp_objective ob = {
         .m = st->m, .limit = st->limit, .t_max = st->search.t_max, .shape = &st->sched};
     zp_search_opts o = {.max_evals = evals, .seed = st->seed};
@@ -40,7 +40,7 @@ int main(int argc, char **argv) {
            "(sims) | T(default) | T(10x) (sims) | default vs 10x |\n"
            "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (int a = 2; a < argc; a++) {
-        static zp_setup st; /* large: kept off the stack */
+        static zp_problem st; /* large: kept off the stack */
         zp_overrides none = ZP_OVERRIDES_NONE;
         if (zp_setup_load("search_budget", argv[a], &none, &st)) {
             return 2;

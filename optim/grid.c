@@ -9,31 +9,21 @@
 #include <string.h>
 
 #include "events.h"
+#include "problem.h"
 #include "robust.h"
 #include "scene_read.h"
 #include "search.h"
-#include "sim_opts.h"
 
 #define DEG (180.0 / M_PI)
 
 /* one grid point as the search and the check see it */
 typedef struct gpoint {
-    int p;             /* its index in the grid */
-    zp_model *m;       /* owned */
-    zp_sim_opts so;    /* [solver], outcomes only */
-    zp_schedule sched; /* the point's [drive]: its kind and bounds */
-    zp_objective ob;   /* the point's criteria: margin, [limits]; no set */
-    double death_angle;
+    int p;           /* its index in the grid */
+    zp_problem *pb;  /* owned: the point's scene, model, [drive] schedule (its kind and bounds)
+                        and run profiles, outcomes only */
+    zp_objective ob; /* the point's criteria: margin, [limits]; no set */
     zp_scen_set set; /* its [robust] scenarios (n = 0 without) */
 } gpoint;
-
-/* the nominal's search settings */
-typedef struct search_cfg {
-    int method;
-    double rtol;
-    long max_evals;
-    unsigned long seed;
-} search_cfg;
 
 int zp_grid_nominal(const zp_sweep *s) {
     int p = 0, stride = 1;
@@ -70,39 +60,37 @@ static int corners(const zp_sweep *s, int skip, int *out) {
     return n;
 }
 
-/* point g->p: its scene into sc (scratch), its model, options, schedule and criteria, and with
-   robust its [robust] scenarios; 0, or -1 with why */
-static int load_point(const zp_sweep *s, const char *base, const char *path, zp_scene *sc,
-                      int robust, gpoint *g, char *why, size_t whylen) {
+/* point g->p: its problem (scene, model, options, schedule), its criteria as the search
+   command sets them, and with robust its [robust] scenarios; 0, or -1 with why */
+static int load_point(const zp_sweep *s, const char *base, const char *path, int robust,
+                      gpoint *g, char *why, size_t whylen) {
     zp_diag d;
     zp_diag_init(&d);
     char *text = zp_sweep_point_text(s, base, g->p, why, whylen);
     if (!text) {
         return -1;
     }
+    g->pb = malloc(sizeof *g->pb); /* large: off the stack */
+    if (!g->pb) {
+        snprintf(why, whylen, "out of memory for the point's model");
+        free(text);
+        return -1;
+    }
+    g->pb->m = NULL;
+    zp_scene *sc = &g->pb->sc;
     zp_status rc = zp_scene_load_string(text, path, sc, &d);
     free(text);
-    if (rc == ZP_OK) {
-        g->m = zp_model_build(sc, &d);
-    }
-    if (!g->m || zp_sim_opts_from_scene(sc, &g->so, &d)) {
+    /* outcomes only: output requests never change the integrator's steps */
+    if (rc != ZP_OK || zp_problem_build(g->pb, ZP_PROBLEM_OUTCOMES, &d)) {
         snprintf(why, whylen, "%.*s", (int)whylen - 1,
                  d.n ? d.text[0] : "the scene does not build");
         return -1;
     }
-    g->so.output_dt = 0; /* outcomes only: output requests never change the integrator's steps */
-    g->sched = zp_schedule_of_scene(sc);
-    /* the limit exactly as the search command sets it */
-    g->ob = (zp_objective){.m = g->m,
-                           .limit = g->m->phi_max - sc->margin * M_PI / 180,
-                           .t_max = g->so.t_max,
-                           .shape = &g->sched};
-    zp_limits_from_scene(sc, &g->ob.lim);
-    g->death_angle = sc->death_angle;
+    g->ob = zp_problem_objective(g->pb);
     zp_box box;
-    zp_box_from_scene(sc, g->m, &box);
+    zp_box_from_scene(sc, g->pb->m, &box);
     if (robust && sc->robust && box.d > 0 &&
-        zp_scen_set_build(&g->set, &box, g->m, sc->robust_samples, sc->seed)) {
+        zp_scen_set_build(&g->set, &box, g->pb->m, sc->robust_samples, sc->seed)) {
         snprintf(why, whylen, "out of memory for the scenarios");
         return -1;
     }
@@ -111,8 +99,11 @@ static int load_point(const zp_sweep *s, const char *base, const char *path, zp_
 
 static void free_point(gpoint *g) {
     zp_scen_set_free(&g->set);
-    zp_model_free(g->m);
-    g->m = NULL;
+    if (g->pb) {
+        zp_problem_free(g->pb);
+    }
+    free(g->pb);
+    g->pb = NULL;
 }
 
 /* the corner's model runs on the nominal's workspaces: the same state and events */
@@ -126,11 +117,9 @@ static int same_kind(const zp_model *a, const zp_model *b) {
 typedef struct grid_run {
     const zp_sweep *s;
     const char *base, *path; /* the scene text and its file name */
-    zp_scene *sc;            /* scratch */
     gpoint *pt; /* npoint: [0] the nominal, then the corners, then the points added; the set
                    borrows their models and criteria, so they never move */
     int n;      /* points held to */
-    search_cfg cfg;
     zp_scen_set set;
     double lo[ZP_SCHED_MAX_PARAMS], hi[ZP_SCHED_MAX_PARAMS]; /* the bounds all keep */
     zp_search_result *res;                                   /* the last search's */
@@ -143,25 +132,22 @@ typedef struct grid_run {
 static int hold(grid_run *r) {
     int i = r->n++; /* freed with the others from here on, loaded or not */
     gpoint *q = &r->pt[i], *nom = &r->pt[0];
-    if (load_point(r->s, r->base, r->path, r->sc, 1, q, r->why, sizeof r->why)) {
+    if (load_point(r->s, r->base, r->path, 1, q, r->why, sizeof r->why)) {
         return -1;
     }
-    if (i == 0) {
-        r->cfg = (search_cfg){zp_method_find(r->sc->search_method), r->sc->search_rtol,
-                              r->sc->max_evals, r->sc->seed};
-    }
+    const zp_schedule *sched = &q->pb->sched;
     char at[256];
     zp_sweep_describe(r->s, q->p, at, sizeof at);
-    if (!same_kind(q->m, nom->m) || q->sched.np != nom->sched.np) {
+    if (!same_kind(q->pb->m, nom->pb->m) || sched->np != nom->pb->sched.np) {
         snprintf(r->why, sizeof r->why,
                  "the point at %s is another kind of model than the middle point's "
                  "([physics] effects or kinks differ)",
                  at);
         return -1;
     }
-    for (int k = 0; k < nom->sched.np; k++) {
-        r->lo[k] = i ? fmax(r->lo[k], q->sched.lo[k]) : q->sched.lo[k];
-        r->hi[k] = i ? fmin(r->hi[k], q->sched.hi[k]) : q->sched.hi[k];
+    for (int k = 0; k < sched->np; k++) {
+        r->lo[k] = i ? fmax(r->lo[k], sched->lo[k]) : sched->lo[k];
+        r->hi[k] = i ? fmin(r->hi[k], sched->hi[k]) : sched->hi[k];
         if (r->lo[k] > r->hi[k]) {
             snprintf(r->why, sizeof r->why, "the drive bounds at %s do not overlap the others'",
                      at);
@@ -170,7 +156,7 @@ static int hold(grid_run *r) {
     }
     zp_scenario nominal;
     zp_scenario_nominal(&nominal);
-    zp_status st = i ? zp_scen_set_add_model(&r->set, q->m, &nominal, NULL, &q->ob) : ZP_OK;
+    zp_status st = i ? zp_scen_set_add_model(&r->set, q->pb->m, &nominal, NULL, &q->ob) : ZP_OK;
     for (int j = 0; j < q->set.n && !st; j++) {
         st = zp_scen_set_add_model(&r->set, &q->set.m[j], &q->set.sc[j], &q->set.start[j], &q->ob);
     }
@@ -184,20 +170,16 @@ static int hold(grid_run *r) {
 /* one more search held to the set: the first from scratch, the later ones warm from the last
    answer (afresh when none of its starts survives the grown set); 0, or -1 with why */
 static int search(grid_run *r, zp_grid_result *g) {
-    /* the search's runs as a point's: no trajectory, no load peaks unless a limit needs them,
-       the [optimize] integrator and tolerance */
-    zp_sim_opts fast = r->pt[0].so;
-    fast.track_loads = 0;
-    fast.method = r->cfg.method;
-    fast.rtol = r->cfg.rtol;
-    fast.atol = r->cfg.rtol / 100;
-    fast.peaks = 0;
+    /* the nominal's search profile, with the load peaks located where any point's limit needs
+       them; its budget as the scene holds it */
+    const zp_problem *nom = r->pt[0].pb;
+    zp_sim_opts fast = nom->search;
     for (int i = 0; i < r->n; i++) {
         fast.peaks |= zp_limits_need_peaks(&r->pt[i].ob.lim);
     }
     zp_objective ob = r->pt[0].ob;
     ob.set = &r->set;
-    zp_search_opts o = {.max_evals = r->cfg.max_evals, .seed = r->cfg.seed};
+    zp_search_opts o = {.max_evals = nom->sc.max_evals, .seed = nom->seed};
     zp_status st = ZP_OK;
     long before = g->rounds ? r->res->evals : 0; /* the warm restart adds to the counts */
     if (g->rounds) {
@@ -215,9 +197,9 @@ static int search(grid_run *r, zp_grid_result *g) {
 
 /* docs/model.md's survivable: finished with the margin and every [limits] value kept (without the
    search's slack: this is the answer's judgement, not the search's) */
-static int survives(const gpoint *q, const zp_eval *e, const zp_result *r, int *which) {
-    return !e->failed && e->outcome == ZP_OUTCOME_FINISHED && e->angle <= q->ob.limit &&
-           (!zp_limits_any(&q->ob.lim) || zp_limits_excess(&q->ob.lim, q->m, r, which) <= 0);
+static int survives(const gpoint *q, const zp_eval *e, const zp_result *r) {
+    int which;
+    return !e->failed && zp_problem_breaks(q->pb, r, &which) == ZP_BREAKS_NOTHING;
 }
 
 /* g's answer simulated at every point with the point's [solver]; the corners are
@@ -234,15 +216,15 @@ static void check(grid_run *r, int ncorner, zp_grid_result *g, double *cons) {
         char why[256];
         zp_sim *sim = NULL;
         cons[p] = INFINITY; /* a point that cannot run breaks it most */
-        if (!load_point(r->s, r->base, r->path, r->sc, 0, &q, why, sizeof why) &&
-            (sim = zp_sim_create(q.m, &q.so)) != NULL) {
+        if (!load_point(r->s, r->base, r->path, 0, &q, why, sizeof why) &&
+            (sim = zp_sim_create(q.pb->m, &q.pb->sim)) != NULL) {
             zp_eval e;
             zp_objective_eval(&q.ob, sim, g->force, &e, res);
-            int which, ok = survives(&q, &e, res, &which);
+            int ok = survives(&q, &e, res);
             g->survived += ok;
             g->ok[p / 8] |= (unsigned char)(ok << (p % 8));
             cons[p] = e.cons;
-            double margin = q.death_angle - e.angle * DEG;
+            double margin = q.pb->sc.death_angle - e.angle * DEG;
             if (p == g->nominal) {
                 g->time = e.time;
                 g->margin = margin;
@@ -339,15 +321,14 @@ void zp_grid_run(const zp_sweep *s, const char *base, const char *path, zp_grid_
     g->ncorner = nc;
     grid_run r = {.s = s, .base = base, .path = path, .why = "out of memory"};
     r.pt = calloc((size_t)s->npoint, sizeof *r.pt); /* each point held to at most once */
-    r.sc = malloc(sizeof *r.sc);                    /* large: off the stack */
-    r.res = malloc(sizeof *r.res);
-    int rc = r.pt && r.sc && r.res ? 0 : -1;
+    r.res = malloc(sizeof *r.res);                  /* large: off the stack */
+    int rc = r.pt && r.res ? 0 : -1;
     for (int i = 0; !rc && i <= nc; i++) {
         r.pt[r.n].p = i ? corner[i - 1] : g->nominal;
         rc = hold(&r);
     }
     if (!rc) {
-        g->np = r.pt[0].sched.np;
+        g->np = r.pt[0].pb->sched.np;
         rc = rounds(&r, nc, g);
     }
     zp_scen_set_free(&r.set); /* before the points: it borrows their models */
@@ -355,7 +336,6 @@ void zp_grid_run(const zp_sweep *s, const char *base, const char *path, zp_grid_
         free_point(&r.pt[i]);
     }
     free(r.pt);
-    free(r.sc);
     free(r.res);
     if (rc) {
         g->failed = 1;

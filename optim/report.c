@@ -11,13 +11,14 @@
 #define BRAKE_KMH 10  /* zip-line practice: arriving faster than this needs a brake */
 #define ACTIVE_KMH 24 /* ... and active brakes stop riders up to about this */
 
-static const char *rerun_scene(const zp_report *r) {
-    return r->scene_arg ? r->scene_arg : "config/seed.ini";
+static const char *rerun_scene(const zp_report_place *w) {
+    return w->scene_arg ? w->scene_arg : "config/seed.ini";
 }
 
-void zp_report_convergence(char *buf, size_t n, const zp_search_result *s) {
+void zp_report_convergence(char *buf, size_t n, const zp_answer *a) {
+    const zp_search_result *s = &a->res;
     int k = 0;
-    if (!s->found) {
+    if (!a->found) {
         k = snprintf(buf, n, "no survivable schedule was found in %d rounds", s->nrounds);
     } else if (s->nstarts == 0) {
         k = snprintf(buf, n, "the scan found this schedule; no local polish ran");
@@ -81,15 +82,14 @@ static void md_gain(FILE *f, const char *what, double t_best, double t_other) {
             100 * (t_other - t_best) / t_other);
 }
 
-static void md_head(FILE *f, const zp_report *r) {
-    const zp_search_result *s = r->res;
-    fprintf(f, "# Best forcing: %s\n\n", r->sc->name);
-    if (s->interrupted) {
+static void md_head(FILE *f, const zp_answer *a) {
+    fprintf(f, "# Best forcing: %s\n\n", a->pb->sc.name);
+    if (a->res.interrupted) {
         fputs("**Interrupted**: the search was stopped before its end; this is the best found "
               "so far.\n\n",
               f);
     }
-    if (!s->found) {
+    if (!a->found) {
         fputs("**No survivable schedule was found** within the budget: below is the schedule "
               "that came closest.\n\n",
               f);
@@ -97,9 +97,9 @@ static void md_head(FILE *f, const zp_report *r) {
 }
 
 /* one row per parameter: the section it acts on, where on the course, its value */
-static void md_schedule(FILE *f, const zp_report *r) {
-    const zp_model *m = r->m;
-    const zp_schedule *sh = r->shape;
+static void md_schedule(FILE *f, const zp_answer *a) {
+    const zp_model *m = a->pb->m;
+    const zp_schedule *sh = &a->pb->sched;
     const char *unit = zp_drive_unit(sh);
     fprintf(f,
             "## Schedule\n\n| section | x from (m) | x to (m) | force (%s) |\n"
@@ -109,15 +109,15 @@ static void md_schedule(FILE *f, const zp_report *r) {
         double from, to;
         zp_drive_param_span(sh, k, m->xb, &from, &to);
         fprintf(f, "| %d | %g | %g | %.4f |\n", zp_drive_param_section(sh, k) + 1, from, to,
-                r->res->force[k]);
+                a->res.force[k]);
     }
     double lo, hi;
     zp_drive_constant_bounds(sh, &lo, &hi);
     fprintf(f, "\nDrive: %s; bounds [%g, %g] %s.\n\n", zp_drive_dir_name(m->drive), lo, hi, unit);
 }
 
-static void md_result(FILE *f, const zp_report *r) {
-    const zp_verify *v = r->v;
+static void md_result(FILE *f, const zp_answer *a) {
+    const zp_verify *v = &a->v;
     const zp_result *run = v->run;
     fputs("## Result\n\n", f);
     double err = fabs(run->time - v->tight->time);
@@ -130,11 +130,11 @@ static void md_result(FILE *f, const zp_report *r) {
         fprintf(f, "Outcome: **%s** at t = %.4f s, x = %.2f m.\n",
                 zp_sim_outcome_name(run->outcome), run->time, run->x);
     }
-    if (r->sc->objective_slowest && r->set) {
+    if (a->pb->sc.objective_slowest && a->rp.robust) {
         fprintf(f, "\nThe search minimised the slowest finish over the nominal scene and the %d "
                    "scenarios held ([optimize] objective = slowest): %.4f s for this schedule "
                    "(at the search's tolerance); the nominal rider's is above.\n",
-                r->set->n, r->res->best.obj);
+                a->rp.set.n, a->res.best.obj);
     }
     fprintf(f, "Verification at rtol %.0e, atol %.0e: ", v->rtol, v->atol);
     if (v->agree) {
@@ -144,32 +144,33 @@ static void md_result(FILE *f, const zp_report *r) {
     }
 }
 
-static void md_margins(FILE *f, const zp_report *r) {
-    const zp_scene *sc = r->sc;
+static void md_margins(FILE *f, const zp_answer *a) {
+    const zp_scene *sc = &a->pb->sc;
+    const zp_model *m = a->pb->m;
     fprintf(f,
             "## Margin per joint\n\nDeath at %g deg; the search keeps %g deg below it "
             "(limit %g deg).\n\n| joint | largest relative angle (deg) | margin (deg) |\n"
             "|---|---|---|\n",
             sc->death_angle, sc->margin, sc->death_angle - sc->margin);
-    for (int i = 0; i < r->m->nlink; i++) {
-        double a = r->v->run->max_rel_angle[i] * DEG;
-        fprintf(f, "| %d | %.3f | %.3f |\n", i + 1, a, r->m->phi_max_j[i] * DEG - a);
+    for (int i = 0; i < m->nlink; i++) {
+        double angle = a->v.run->max_rel_angle[i] * DEG;
+        fprintf(f, "| %d | %.3f | %.3f |\n", i + 1, angle, m->phi_max_j[i] * DEG - angle);
     }
 }
 
-void zp_report_breaks(const zp_report *r, const zp_result *run, char *out, size_t cap) {
+void zp_report_breaks(const zp_problem *p, const zp_result *run, char *out, size_t cap) {
     static const char *const said[] = {[ZP_BREAKS_NOTHING] = "", [ZP_BREAKS_DEATH] = "death",
                                        [ZP_BREAKS_STALL] = "a stall",
                                        [ZP_BREAKS_MARGIN] = "the margin"};
     int which;
-    zp_breaks b = zp_limits_broken(r->m, r->lim, r->m->phi_max - r->sc->margin * M_PI / 180, run,
-                                   &which);
+    zp_breaks b = zp_problem_breaks(p, run, &which);
     snprintf(out, cap, "%s", b == ZP_BREAKS_LIMIT ? zp_limit_name(which) : said[b]);
 }
 
-static void md_gains(FILE *f, const zp_report *r) {
-    const zp_search_result *s = r->res;
-    const zp_result *run = r->v->run, *study = r->study;
+static void md_gains(FILE *f, const zp_answer *a) {
+    const zp_search_result *s = &a->res;
+    const zp_schedule *shape = &a->pb->sched;
+    const zp_result *run = a->v.run, *study = a->given;
     int fin = run->outcome == ZP_OUTCOME_FINISHED;
     fputs("\n## Gain\n\n", f);
     if (fin && s->base_found) {
@@ -186,11 +187,11 @@ static void md_gains(FILE *f, const zp_report *r) {
         return;
     }
     char forces[256] = "", breaks[64];
-    for (int k = 0, len = 0; k < r->shape->np && len < (int)sizeof forces; k++) {
+    for (int k = 0, len = 0; k < shape->np && len < (int)sizeof forces; k++) {
         len += snprintf(forces + len, sizeof forces - (size_t)len, "%s%g", k ? ", " : "",
-                        r->shape->p[k]);
+                        shape->p[k]);
     }
-    zp_report_breaks(r, study, breaks, sizeof breaks);
+    zp_report_breaks(a->pb, study, breaks, sizeof breaks);
     if (fin && study->outcome == ZP_OUTCOME_FINISHED) {
         char what[400];
         snprintf(what, sizeof what, "the scene's own [drive] forces (%s N: %.4f s%s%s)", forces,
@@ -229,15 +230,16 @@ static void md_speeds(FILE *f, const zp_result *run) {
 }
 
 /* the rounded kinks: each arc's peak normal force and felt acceleration in the best run */
-static void md_arcs(FILE *f, const zp_report *r) {
+static void md_arcs(FILE *f, const zp_answer *a) {
+    const zp_model *m = a->pb->m;
     int n;
-    const zp_arc_peaks *ap = zp_sim_arc_peaks(r->best, &n);
+    const zp_arc_peaks *ap = zp_sim_arc_peaks(a->best, &n);
     fputs("## Arcs (rounded kinks: no impulse)\n\n| kink at x (m) | arc x (m) | radius (m) | "
           "normal force (N) | peak felt acceleration (g) |\n|---|---|---|---|---|\n",
           f);
     for (int i = 0; i < n; i++) {
-        const zp_arc *a = &r->m->arc[i];
-        fprintf(f, "| %g | %.2f to %.2f | %g |", r->m->kink[a->kink].x, a->x1, a->x2, a->r);
+        const zp_arc *arc = &m->arc[i];
+        fprintf(f, "| %g | %.2f to %.2f | %g |", m->kink[arc->kink].x, arc->x1, arc->x2, arc->r);
         if (ap[i].visited) {
             fprintf(f, " %.1f to %.1f | %.2f |\n", ap[i].normal_min, ap[i].normal_max, ap[i].acc_g);
         } else {
@@ -247,13 +249,13 @@ static void md_arcs(FILE *f, const zp_report *r) {
 }
 
 /* the kinks crossed; section ends where the slopes agree knock nothing and are no kinks */
-static void md_kinks(FILE *f, const zp_report *r) {
+static void md_kinks(FILE *f, const zp_answer *a) {
     fputs("## Kink impulses\n\n", f);
     int n, nkink = 0;
-    const zp_crossing *cross = zp_sim_crossings(r->best, &n);
+    const zp_crossing *cross = zp_sim_crossings(a->best, &n);
     for (int i = 0; i < n; i++) {
         const zp_crossing *c = &cross[i];
-        if (!zp_model_is_kink(r->m, c->from < c->to ? c->from : c->to)) {
+        if (!zp_model_is_kink(a->pb->m, c->from < c->to ? c->from : c->to)) {
             continue;
         }
         if (!nkink++) {
@@ -274,12 +276,12 @@ static void md_kinks(FILE *f, const zp_report *r) {
 }
 
 /* design loads of the best run, sampled at every step (docs/model.md sign conventions) */
-static void md_loads(FILE *f, const zp_report *r) {
-    const zp_load_peaks *pk = &r->v->run->peaks;
+static void md_loads(FILE *f, const zp_answer *a) {
+    const zp_load_peaks *pk = &a->v.run->peaks;
     fputs("\n## Loads\n\n| joint | peak reaction (N) | link | peak felt acceleration (g) |\n"
           "|---|---|---|---|\n",
           f);
-    for (int i = 0; i < r->m->nlink; i++) {
+    for (int i = 0; i < a->pb->m->nlink; i++) {
         fprintf(f, "| %d | %.1f | %d | %.2f |\n", i + 1, pk->joint[i], i + 1, pk->acc_g[i]);
     }
     fprintf(f,
@@ -292,21 +294,23 @@ static void md_loads(FILE *f, const zp_report *r) {
 }
 
 /* each [limits] value of the best run against its limit */
-static void md_limits(FILE *f, const zp_report *r) {
-    if (!r->lim || !zp_limits_any(r->lim)) {
+static void md_limits(FILE *f, const zp_answer *a) {
+    const zp_limits *lim = &a->pb->lim;
+    const zp_result *run = a->v.run;
+    if (!zp_limits_any(lim)) {
         return;
     }
     double v[ZP_LIMIT_COUNT];
-    zp_limits_reached(r->m, r->v->run, v);
+    zp_limits_reached(a->pb->m, run, v);
     fputs("\n## Limits\n\n| limit | reached | allowed | |\n|---|---|---|---|\n", f);
     for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
-        if (r->lim->max[i] > 0 && !zp_limit_reached_in(r->v->run, i)) {
+        if (lim->max[i] > 0 && !zp_limit_reached_in(run, i)) {
             fprintf(f, "| %s | not reached (did not arrive) | %g %s | |\n", zp_limit_name(i),
-                    r->lim->max[i], zp_limit_unit(i));
-        } else if (r->lim->max[i] > 0) {
+                    lim->max[i], zp_limit_unit(i));
+        } else if (lim->max[i] > 0) {
             fprintf(f, "| %s | %.4g %s | %g %s | %s |\n", zp_limit_name(i), v[i],
-                    zp_limit_unit(i), r->lim->max[i], zp_limit_unit(i),
-                    zp_limits_kept(i, v[i], r->lim->max[i]) ? "kept" : "**broken**");
+                    zp_limit_unit(i), lim->max[i], zp_limit_unit(i),
+                    zp_limits_kept(i, v[i], lim->max[i]) ? "kept" : "**broken**");
         }
     }
 }
@@ -319,11 +323,11 @@ static void md_range(FILE *f, const char *what, const double range[2]) {
 }
 
 /* the scenario at u of the stated box, in words */
-static void scenario_text(const zp_report *r, const double *u, char *buf, size_t n) {
+static void scenario_text(const zp_answer *a, const double *u, char *buf, size_t n) {
     zp_scenario s;
-    zp_box_scenario(r->box, u, &s);
+    zp_box_scenario(&a->rp.box, u, &s);
     int used = snprintf(buf, n, "forces x");
-    for (int k = 0; k < r->m->nsec && used < (int)n; k++) {
+    for (int k = 0; k < a->pb->m->nsec && used < (int)n; k++) {
         used += snprintf(buf + used, n - used, " %.4f", s.force[k]);
     }
     if (used < (int)n) {
@@ -334,8 +338,8 @@ static void scenario_text(const zp_report *r, const double *u, char *buf, size_t
 }
 
 /* the population's spread over the fresh scenarios, with the scenario at each end */
-static void md_spread(FILE *f, const zp_report *r) {
-    const zp_robust_check *c = r->check;
+static void md_spread(FILE *f, const zp_answer *a) {
+    const zp_robust_check *c = &a->rp.check;
     if (c->samples == 0 || c->fastest.sample < 0) {
         return;
     }
@@ -348,7 +352,7 @@ static void md_spread(FILE *f, const zp_report *r) {
             c->samples);
     for (int k = 0; k < 4; k++) {
         char sc[512];
-        scenario_text(r, ends[k]->u, sc, sizeof sc);
+        scenario_text(a, ends[k]->u, sc, sizeof sc);
         fprintf(f, "- %s: ", what[k]);
         fprintf(f, fmt[k], ends[k]->value);
         fprintf(f, " (fresh scenario %d: %s)\n", ends[k]->sample + 1, sc);
@@ -356,9 +360,10 @@ static void md_spread(FILE *f, const zp_report *r) {
 }
 
 /* how far past the stated box the answer holds (headroom.c) */
-static void md_headroom(FILE *f, const zp_report *r) {
-    const zp_headroom *h = &r->check->headroom;
-    if (r->check->samples == 0) {
+static void md_headroom(FILE *f, const zp_answer *a) {
+    const zp_headroom *h = &a->rp.check.headroom;
+    double force_error = a->pb->sc.force_error;
+    if (a->rp.check.samples == 0) {
         return;
     }
     if (h->safety_factor != 1) {
@@ -378,12 +383,12 @@ static void md_headroom(FILE *f, const zp_report *r) {
         }
         fprintf(f, "| %s | %.4fx", zp_headroom_range_name(L->range), L->holds);
         if (L->range == 0) {
-            fprintf(f, " (+/-%.4g %%)", L->holds * r->sc->force_error);
+            fprintf(f, " (+/-%.4g %%)", L->holds * force_error);
         }
         if (isfinite(L->breaks)) {
             fprintf(f, " | %.4fx", L->breaks);
             if (L->range == 0) {
-                fprintf(f, " (+/-%.4g %%)", L->breaks * r->sc->force_error);
+                fprintf(f, " (+/-%.4g %%)", L->breaks * force_error);
             }
             fprintf(f, " | %s", L->limited_by);
         } else {
@@ -391,7 +396,7 @@ static void md_headroom(FILE *f, const zp_report *r) {
         }
         fprintf(f, " | %.4fx", L->alive);
         if (L->range == 0) {
-            fprintf(f, " (+/-%.4g %%)", L->alive * r->sc->force_error);
+            fprintf(f, " (+/-%.4g %%)", L->alive * force_error);
         }
         if (isfinite(L->dies)) {
             fprintf(f, " | %s at %.4fx |\n", L->ends_by, L->dies);
@@ -402,24 +407,26 @@ static void md_headroom(FILE *f, const zp_report *r) {
 }
 
 /* where zp_held.worst lies, in words */
-static const char *held_where(const zp_report *r, int worst) {
+static const char *held_where(const zp_scen_set *set, int worst) {
     static _Thread_local char buf[64];
     if (worst < 0) {
         return "the nominal scene";
     }
-    if (worst >= r->set->n) {
+    if (worst >= set->n) {
         return "the adversary's worst";
     }
-    snprintf(buf, sizeof buf, "%s %d of the set", worst < r->set->ncorner ? "corner" : "scenario",
+    snprintf(buf, sizeof buf, "%s %d of the set", worst < set->ncorner ? "corner" : "scenario",
              worst + 1);
     return buf;
 }
 
 /* the ranges held, the verification on fresh scenarios, the worst scenario found */
-static void md_survivable(FILE *f, const zp_report *r) {
-    const zp_scene *sc = r->sc;
-    const zp_robust_check *c = r->check;
-    const zp_robust_worst *w = &r->rinfo->worst;
+static void md_survivable(FILE *f, const zp_answer *a) {
+    const zp_scene *sc = &a->pb->sc;
+    const zp_robust_check *c = &a->rp.check;
+    const zp_scen_set *set = &a->rp.set;
+    const zp_robust_info *info = &a->rp.info;
+    const zp_robust_worst *w = &info->worst;
     fputs("\n## Survivable for\n\n", f);
     if (sc->force_error > 0) {
         fprintf(f, "- every section's force off by up to +/-%g %%, independently\n",
@@ -439,8 +446,8 @@ static void md_survivable(FILE *f, const zp_report *r) {
     fprintf(f, "\nHeld during the search to %d scenarios (%d corners of the ranges, %d "
                "quasi-random, %d added where the answer broke) besides the nominal scene: %ld "
                "scenario runs in %d rounds, and %ld runs of the adversary.\n",
-            r->set->n, r->set->ncorner, r->set->n - r->set->ncorner - r->rinfo->added,
-            r->rinfo->added, r->set->runs, r->rinfo->rounds, r->rinfo->sims);
+            set->n, set->ncorner, set->n - set->ncorner - info->added, info->added, set->runs,
+            info->rounds, info->sims);
     if (c->samples > 0) {
         fprintf(f, "\nChecked on %d fresh random scenarios at rtol %.0e: %d finished alive, %d "
                    "kept the margin, %d kept every limit; survivable (both) in %d, so the "
@@ -448,19 +455,19 @@ static void md_survivable(FILE *f, const zp_report *r) {
                    "Clopper-Pearson). Smallest margin over everything held and checked: "
                    "%.2f deg (over the nominal scene, the scenarios held and the adversary's "
                    "worst, rerun at the same tolerance: %.2f deg, %s).\n",
-                c->samples, r->v->rtol, c->survived, c->margin_kept,
+                c->samples, a->v.rtol, c->survived, c->margin_kept,
                 c->limits_kept, c->all_kept, 100 * c->lower_95, c->worst_margin_deg,
-                c->held_margin_deg, held_where(r, c->held_worst));
+                c->held_margin_deg, held_where(set, c->held_worst));
     }
-    md_spread(f, r);
-    md_headroom(f, r);
-    if (r->rinfo->rounds > 0 && isfinite(w->cons)) {
+    md_spread(f, a);
+    md_headroom(f, a);
+    if (info->rounds > 0 && isfinite(w->cons)) {
         zp_scenario s;
         zp_box hold; /* the adversary searched the box held */
-        zp_box_widen(r->box, r->sc->safety_factor, &hold);
+        zp_box_widen(&a->rp.box, sc->safety_factor, &hold);
         zp_box_scenario(&hold, w->u, &s);
         fprintf(f, "\nWorst scenario found (the adversary's search of the ranges): forces x");
-        for (int k = 0; k < r->m->nsec; k++) {
+        for (int k = 0; k < a->pb->m->nsec; k++) {
             fprintf(f, " %.4f", s.force[k]);
         }
         fprintf(f, ", masses x %.3f, lengths x %.3f, trolley x %.3f, damping x %.3f: %s, "
@@ -474,16 +481,17 @@ static void md_survivable(FILE *f, const zp_report *r) {
         fprintf(f, " (%s).\n", w->cons > 0 ? "**broken**: the search ran out of rounds"
                                              : "kept");
     }
-    if (r->diag) {
-        zp_report_diagnosis_md(f, r->diag);
+    if (a->diag) {
+        zp_report_diagnosis_md(f, a->diag);
     }
 }
 
-static void md_search(FILE *f, const zp_report *r) {
-    const zp_search_result *s = r->res;
+static void md_search(FILE *f, const zp_answer *a) {
+    const zp_search_result *s = &a->res;
+    const zp_sim_opts *search = &a->pb->search;
     fputs("\n## Search\n\n", f);
-    fprintf(f, "- algorithm: %s, seed %lu, budget %ld simulations\n", r->algo, r->seed,
-            r->max_evals);
+    fprintf(f, "- algorithm: %s, seed %lu, budget %ld simulations\n", a->algo, a->seed,
+            a->max_evals);
     fprintf(f,
             "- simulations: %ld (%ld survived with the margin, %ld gave the integrator up) "
             "in %d rounds of scan and polish, %d local polishes\n",
@@ -493,15 +501,17 @@ static void md_search(FILE *f, const zp_report *r) {
     fprintf(f,
             "- integrators: the search's runs %s at rtol %g, atol %g ([optimize]); the best\n"
             "  schedule rerun with %s at rtol %g, atol %g ([solver]) and verified %gx tighter\n",
-            zp_method_get(r->search->method)->name, r->search->rtol, r->search->atol, r->method,
-            r->solver->rtol, r->solver->atol, ZP_ESTIMATE_FACTOR);
-    if (r->acc) {
-        const zp_accuracy *a = r->acc;
+            zp_method_get(search->method)->name, search->rtol, search->atol,
+            zp_method_get(a->pb->sim.method)->name, a->run_opts.rtol, a->run_opts.atol,
+            ZP_ESTIMATE_FACTOR);
+    if (a->pb->sc.accuracy > 0) {
+        const zp_accuracy *acc = &a->acc;
         fprintf(f,
                 "- accuracy: %.2g s requested ([solver] accuracy: method and rtol from the "
                 "work-precision table), %.2g s met%s, by %s at rtol %g after %d rerun%s\n",
-                a->requested, a->met, a->ok ? "" : " - NOT MET", zp_method_get(a->method)->name,
-                a->rtol, a->reruns, a->reruns == 1 ? "" : "s");
+                acc->requested, acc->met, acc->ok ? "" : " - NOT MET",
+                zp_method_get(acc->method)->name, acc->rtol, acc->reruns,
+                acc->reruns == 1 ? "" : "s");
     }
     if (s->nhist > 0) {
         fputs("- best finish time against simulations spent:", f);
@@ -511,9 +521,9 @@ static void md_search(FILE *f, const zp_report *r) {
         }
         fprintf(f, " %ld: %.4f s\n", s->hist[s->nhist - 1].evals, s->hist[s->nhist - 1].time);
     }
-    md_islands(f, s, r->shape);
+    md_islands(f, s, &a->pb->sched);
     char sentence[768];
-    zp_report_convergence(sentence, sizeof sentence, s);
+    zp_report_convergence(sentence, sizeof sentence, a);
     fprintf(f, "\n### Convergence\n\n%c%s.\n",
             sentence[0] >= 'a' && sentence[0] <= 'z' ? sentence[0] - 'a' + 'A' : sentence[0],
             sentence + 1);
@@ -530,7 +540,7 @@ static void md_robustness(FILE *f, const zp_verify *v, const zp_limits *lim,
     fprintf(f,
             "Every force scaled by 1 + p u, u uniform in [-1, 1] (seeded):\n\n"
             "| p | runs | finished alive | margin%s kept |\n|---|---|---|---|\n",
-            lim && zp_limits_any(lim) ? " and every limit" : "");
+            zp_limits_any(lim) ? " and every limit" : "");
     for (int i = 0; i < ZP_VERIFY_LEVELS; i++) {
         const zp_robust *rb = &v->rob[i];
         fprintf(f, "| %g %% | %d | %.1f %% | %.1f %% |\n", 100 * rb->level, rb->n,
@@ -552,8 +562,8 @@ static void md_robustness(FILE *f, const zp_verify *v, const zp_limits *lim,
     }
 }
 
-static void md_figures_rerun(FILE *f, const zp_report *r) {
-    if (r->figures) {
+static void md_figures_rerun(FILE *f, const zp_answer *a, const zp_report_place *w) {
+    if (w->figures) {
         fputs("\n## Figures\n\n"
               "The best run: the course with every centre-of-mass path, the energy account, the\n"
               "relative joint angles against the death angle and the margin, and the loads;\n"
@@ -562,34 +572,34 @@ static void md_figures_rerun(FILE *f, const zp_report *r) {
               "![joint angles](angles.png)\n\n![loads](loads.png)\n\n"
               "![the ride against distance](along.png)\n",
               f);
-        if (r->m->nenv > 0) {
+        if (a->pb->m->nenv > 0) {
             fputs("\n![felt g against the g-duration envelope](envelope.png)\n", f);
         }
     }
     fprintf(f,
             "\n## Rerun\n\n```\nzipopt %s --out %s          # this search\n"
             "zipopt simulate %s --schedule %s/schedule.ini   # this schedule\n```\n",
-            rerun_scene(r), r->out_dir, rerun_scene(r), r->out_dir);
+            rerun_scene(w), w->out_dir, rerun_scene(w), w->out_dir);
 }
 
-void zp_report_write_md(FILE *f, const zp_report *r) {
-    md_head(f, r);
-    md_schedule(f, r);
-    md_result(f, r);
-    md_margins(f, r);
-    md_gains(f, r);
-    md_speeds(f, r->v->run);
-    if (r->m->narc) {
-        md_arcs(f, r);
+void zp_report_write_md(FILE *f, const zp_answer *a, const zp_report_place *w) {
+    md_head(f, a);
+    md_schedule(f, a);
+    md_result(f, a);
+    md_margins(f, a);
+    md_gains(f, a);
+    md_speeds(f, a->v.run);
+    if (a->pb->m->narc) {
+        md_arcs(f, a);
     } else {
-        md_kinks(f, r);
+        md_kinks(f, a);
     }
-    md_loads(f, r);
-    md_limits(f, r);
-    if (r->box) {
-        md_survivable(f, r);
+    md_loads(f, a);
+    md_limits(f, a);
+    if (a->rp.robust) {
+        md_survivable(f, a);
     }
-    md_search(f, r);
-    md_robustness(f, r->v, r->lim, r->shape);
-    md_figures_rerun(f, r);
+    md_search(f, a);
+    md_robustness(f, &a->v, &a->pb->lim, &a->pb->sched);
+    md_figures_rerun(f, a, w);
 }

@@ -7,10 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "robust.h"
-#include "search.h"
-#include "sim_opts.h"
-#include "verify.h"
+#include "answer.h"
 
 #define DEG (180.0 / M_PI)
 #define ACTIVE_DEG 0.01 /* deg: a margin this close to [optimize] margin is the binding limit */
@@ -39,15 +36,14 @@ static void fail(zp_study_row *row, const char *why) {
 
 /* outcome, time, margin and the limited quantities of the answer's run r; the limit that
    decides the row: the scene's margin and [limits] judge every row, searched or simulated */
-static void fill(const zp_scene *sc, const zp_model *m, const zp_schedule *sh, const zp_result *r,
-                 zp_study_row *row) {
-    double angle = zp_model_angle_used(m, r->max_rel_angle);
+static void fill(const zp_problem *p, const zp_result *r, zp_study_row *row) {
+    const zp_scene *sc = &p->sc;
+    const zp_schedule *sh = &p->sched;
+    double angle = zp_model_angle_used(p->m, r->max_rel_angle);
     row->outcome = r->outcome;
     row->time = r->time;
     row->margin = sc->death_angle - angle * DEG;
-    zp_limits lim;
-    zp_limits_from_scene(sc, &lim);
-    zp_limits_reached(m, r, row->reached);
+    zp_limits_reached(p->m, r, row->reached);
     if (!row->found) {
         /* nothing broken in the nominal run: a held scenario broke it */
         static const char *const said[] = {[ZP_BREAKS_NOTHING] = "scenarios",
@@ -55,8 +51,7 @@ static void fill(const zp_scene *sc, const zp_model *m, const zp_schedule *sh, c
                                            [ZP_BREAKS_STALL] = "t_max",
                                            [ZP_BREAKS_MARGIN] = "margin"};
         int which;
-        zp_breaks b =
-            zp_limits_broken(m, &lim, m->phi_max - sc->margin * M_PI / 180, r, &which);
+        zp_breaks b = zp_problem_breaks(p, r, &which);
         snprintf(row->limit, sizeof row->limit, "%s",
                  b == ZP_BREAKS_LIMIT ? zp_limit_name(which) : said[b]);
         return;
@@ -73,7 +68,7 @@ static void fill(const zp_scene *sc, const zp_model *m, const zp_schedule *sh, c
              (row->margin - sc->margin < ACTIVE_DEG || at_max) && at_min ? "+" : "",
              at_min ? "drive.min" : "");
     for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
-        if (lim.max[i] > 0 && row->reached[i] >= (1 - ACTIVE_REL_LIMIT) * lim.max[i]) {
+        if (p->lim.max[i] > 0 && row->reached[i] >= (1 - ACTIVE_REL_LIMIT) * p->lim.max[i]) {
             size_t n = strlen(row->limit);
             snprintf(row->limit + n, sizeof row->limit - n, "%s%s", n ? "+" : "",
                      zp_limit_name(i));
@@ -84,71 +79,50 @@ static void fill(const zp_scene *sc, const zp_model *m, const zp_schedule *sh, c
     }
 }
 
-static void run_search(const zp_scene *sc, const zp_model *m, const zp_schedule *sched,
-                       const zp_sim_opts *so, double max_time, zp_study_row *row) {
-    /* the search's runs as `zipopt SCENE.ini` makes them: no trajectory, no load peaks, the
-       [optimize] integrator and tolerance */
-    zp_sim_opts search = *so, fast;
-    search.track_loads = 0;
-    search.output_dt = 0;
-    search.method = zp_method_find(sc->search_method);
-    search.rtol = sc->search_rtol;
-    search.atol = sc->search_rtol / 100;
-    zp_search_opts o = {.max_evals = sc->max_evals, .seed = sc->seed, .max_time = max_time};
-    zp_search_result *res = malloc(sizeof *res);
-    zp_robust_problem *pb = malloc(sizeof *pb); /* large: off the stack */
+/* the search as `zipopt SCENE.ini` runs it (with [robust] ranges, the robust search), its
+   answer rerun with the point's [solver] and checked tighter */
+static void run_search(const zp_problem *p, double max_time, zp_study_row *row) {
+    zp_answer_opts o = zp_answer_opts_of(p, ZP_ANSWER_VERIFIED);
+    /* [optimize] max_evals as the scene holds it: 5000 when not given, where the command
+       (p->max_evals) spends 5000 per section */
+    o.search.max_evals = p->sc.max_evals;
+    o.search.max_time = max_time;
+    zp_answer *a = malloc(sizeof *a); /* large: off the stack */
     char err[512] = "";
-    /* the limit exactly as the search command sets it, so a point equals `zipopt SCENE`; with
-       [robust] ranges, the robust search as that command runs it */
-    double limit = m->phi_max - sc->margin * M_PI / 180;
-    if (!res || !pb || zp_robust_setup(pb, sc, m, limit, sched, so, &search, &fast)) {
+    if (!a) {
         fail(row, "out of memory for the search");
-    } else if (zp_robust_solve(pb, sc, &fast, sched->lo, sched->hi, &o, res, err,
-                               sizeof err)) {
+        return;
+    }
+    if (zp_answer_solve(p, &o, a, err, sizeof err)) {
         fail(row, err);
     } else {
-        row->found = res->found;
-        row->evals = res->evals;
-        memcpy(row->force, res->force, sizeof *row->force * (size_t)row->np);
-        zp_objective ob = pb->ob; /* the nominal scene: the scenarios were checked above */
-        ob.set = NULL;
-        zp_sim_opts solver = *so;
-        solver.peaks = 1; /* the row's limited quantities, exact whether a limit is set or not */
-        zp_verify v;
-        zp_sim *best = NULL;
-        if (zp_verify_run(&ob, &solver, res->force, sc->seed, 0, 0, &best, &v, NULL, NULL, err,
-                          sizeof err)) {
-            fail(row, err);
-        } else {
-            row->verified = v.agree;
-            fill(sc, m, sched, v.run, row);
-        }
-        zp_verify_free(&v);
-        zp_sim_free(best);
+        row->found = a->res.found; /* the search's own verdict; verified: [solver] agrees */
+        row->evals = a->res.evals;
+        memcpy(row->force, a->res.force, sizeof *row->force * (size_t)row->np);
+        row->verified = a->v.agree;
+        fill(p, a->v.run, row);
     }
-    if (pb) {
-        zp_robust_problem_free(pb);
-    }
-    free(pb);
-    free(res);
+    zp_answer_free(a);
+    free(a);
 }
 
-static void run_simulate(const zp_scene *sc, const zp_model *m, const zp_objective *ob,
-                         const zp_sim_opts *so, zp_study_row *row) {
+/* the scene's [drive] forces, judged as the search judges a candidate */
+static void run_simulate(const zp_problem *p, zp_study_row *row) {
     zp_result *r = malloc(sizeof *r); /* large: off the stack */
-    zp_sim *s = zp_sim_create(m, so);
+    zp_sim *s = zp_sim_create(p->m, &p->answer);
+    zp_objective ob = zp_problem_objective(p);
     if (!s || !r) {
         fail(row, "out of memory for the simulator");
     } else {
-        memcpy(row->force, ob->shape->p, sizeof *row->force * (size_t)row->np);
+        memcpy(row->force, p->sched.p, sizeof *row->force * (size_t)row->np);
         zp_eval e;
-        zp_objective_eval(ob, s, ob->shape->p, &e, r);
+        zp_objective_eval(&ob, s, p->sched.p, &e, r);
         row->evals = 1;
         if (e.failed) {
             fail(row, r->message);
         } else {
             row->found = zp_objective_feasible(&e);
-            fill(sc, m, ob->shape, r, row);
+            fill(p, r, row);
         }
     }
     zp_sim_free(s);
@@ -157,27 +131,26 @@ static void run_simulate(const zp_scene *sc, const zp_model *m, const zp_objecti
 
 void zp_study_run(const zp_scene *sc, zp_study_kind kind, double max_time, zp_study_row *row) {
     memset(row, 0, sizeof *row);
-    zp_schedule sched = zp_schedule_of_scene(sc);
-    row->np = sched.np;
+    row->np = zp_schedule_of_scene(sc).np;
+    zp_problem *p = malloc(sizeof *p); /* large: off the stack */
     zp_diag d;
     zp_diag_init(&d);
-    zp_model *m = zp_model_build(sc, &d);
-    zp_sim_opts so;
-    if (!m || zp_sim_opts_from_scene(sc, &so, &d)) {
-        fail(row, d.n ? d.text[0] : "the scene does not build");
-        zp_model_free(m);
+    if (!p) {
+        fail(row, "out of memory for the model");
         return;
     }
-    so.output_dt = 0; /* outcomes only: output requests never change the integrator's steps */
-    if (kind == ZP_STUDY_SEARCH) {
-        run_search(sc, m, &sched, &so, max_time, row);
+    p->sc = *sc;
+    /* outcomes only: output requests never change the integrator's steps */
+    if (zp_problem_build(p, ZP_PROBLEM_OUTCOMES, &d)) {
+        fail(row, d.n ? d.text[0] : "the scene does not build");
     } else {
-        /* the limit exactly as the search command sets it */
-        zp_objective ob = {.m = m, .limit = m->phi_max - sc->margin * M_PI / 180,
-                           .t_max = so.t_max, .shape = &sched};
-        zp_limits_from_scene(sc, &ob.lim); /* judged as the search judges a candidate */
-        so.peaks = 1;                      /* the row's limited quantities, exact */
-        run_simulate(sc, m, &ob, &so, row);
+        p->answer.peaks = 1; /* the row's limited quantities, exact whether a limit is set or not */
+        if (kind == ZP_STUDY_SEARCH) {
+            run_search(p, max_time, row);
+        } else {
+            run_simulate(p, row);
+        }
     }
-    zp_model_free(m);
+    zp_problem_free(p);
+    free(p);
 }

@@ -21,16 +21,17 @@ static void json_number_or_null(FILE *f, double v) {
     }
 }
 
-static void json_convergence(FILE *f, const zp_search_result *s) {
+static void json_convergence(FILE *f, const zp_answer *a) {
+    const zp_search_result *s = &a->res;
     char sentence[768];
-    zp_report_convergence(sentence, sizeof sentence, s);
+    zp_report_convergence(sentence, sizeof sentence, a);
     fprintf(f,
             "{\"rounds\": %d, \"polishes\": %d, \"basins\": %d, \"reached_best\": %d, "
             "\"converged\": %s, \"budget_ran_out\": %s, \"time_ran_out\": %s, "
             "\"search_time\": ",
             s->nrounds, s->nstarts, s->nbasins, s->nreached, s->converged ? "true" : "false",
             s->budget_out ? "true" : "false", s->timed_out ? "true" : "false");
-    if (s->found) {
+    if (a->found) {
         zp_out_json_number(f, s->best.time);
     } else {
         fputs("null", f);
@@ -38,7 +39,7 @@ static void json_convergence(FILE *f, const zp_search_result *s) {
     fprintf(f, ", \"minima\": %d, \"unseen_basins\": ", s->nminima);
     json_number_or_null(f, s->nstarts > 0 ? s->unseen : NAN);
     fputs(", \"budget_to_help\": ", f);
-    if (!s->converged && s->found && (s->budget_out || s->timed_out)) {
+    if (!s->converged && a->found && (s->budget_out || s->timed_out)) {
         fprintf(f, "%ld", s->help_evals);
     } else {
         fputs("null", f);
@@ -143,16 +144,17 @@ void zp_summary_headroom_json(FILE *f, const zp_headroom *h) {
 }
 
 /* the robust search's key (docs/commands.md): its scenarios, and the answer on fresh ones */
-static void json_scenarios(FILE *f, const zp_report *r) {
-    const zp_robust_check *c = r->check;
+static void json_scenarios(FILE *f, const zp_answer *a) {
+    const zp_robust_check *c = &a->rp.check;
+    const zp_scen_set *set = &a->rp.set;
     fprintf(f, ",\n  \"robust\": {\"scenarios\": %d, \"corners\": %d, \"added\": %d, "
                "\"rounds\": %d, \"worst_margin_deg\": ",
-            r->set->n, r->set->ncorner, r->rinfo->added, r->rinfo->rounds);
+            set->n, set->ncorner, a->rp.info.added, a->rp.info.rounds);
     /* the smallest margin over everything held and verified (the adversary's worst included) */
     zp_out_json_number(f, c->worst_margin_deg);
     fprintf(f, ", \"scenario_runs\": %ld, \"verify\": {\"samples\": %d, \"survived\": %d, "
                "\"margin_kept\": %d, \"limits_kept\": %d, \"all_kept\": %d, \"lower_95\": ",
-            r->set->runs, c->samples, c->survived, c->margin_kept, c->limits_kept, c->all_kept);
+            set->runs, c->samples, c->survived, c->margin_kept, c->limits_kept, c->all_kept);
     zp_out_json_number(f, c->lower_95);
     fputs("}, \"headroom\": ", f);
     zp_summary_headroom_json(f, &c->headroom);
@@ -165,43 +167,43 @@ static void json_scenarios(FILE *f, const zp_report *r) {
         fprintf(f, "%s\"%s\": {\"value\": ", k ? ", " : "", keys[k]);
         zp_out_json_number(f, ends[k]->value);
         fprintf(f, ", \"sample\": %d, \"u\": [", ends[k]->sample);
-        for (int d = 0; ends[k]->sample >= 0 && d < r->box->d; d++) {
+        for (int d = 0; ends[k]->sample >= 0 && d < a->rp.box.d; d++) {
             fputs(d ? ", " : "", f);
             zp_out_json_number(f, ends[k]->u[d]);
         }
         fputs("]}", f);
     }
     fputs("}", f);
-    if (r->diag) {
+    if (a->diag) {
         fputs(", \"diagnosis\": ", f);
-        zp_report_diagnosis_json(f, r->diag);
+        zp_report_diagnosis_json(f, a->diag);
     }
     fputs("}", f);
 }
 
-void zp_report_write_json(FILE *f, const zp_report *r) {
-    const zp_search_result *s = r->res;
-    const zp_result *run = r->v->run;
-    const zp_model *m = r->m;
+void zp_report_write_json(FILE *f, const zp_answer *a) {
+    const zp_search_result *s = &a->res;
+    const zp_result *run = a->v.run;
+    const zp_model *m = a->pb->m;
     fputs("{\n  \"scene\": ", f);
-    zp_out_json_string(f, r->sc->name);
+    zp_out_json_string(f, a->pb->sc.name);
     fputs(",\n  \"forces\": [", f);
-    for (int k = 0; k < r->shape->np; k++) {
+    for (int k = 0; k < a->pb->sched.np; k++) {
         zp_out_json_number(f, s->force[k]);
-        fputs(k + 1 < r->shape->np ? ", " : "]", f);
+        fputs(k + 1 < a->pb->sched.np ? ", " : "]", f);
     }
     fprintf(f, ",\n  \"found\": %s,\n  \"outcome\": \"%s\",\n  \"time\": ",
-            s->found ? "true" : "false", zp_sim_outcome_name(run->outcome));
+            a->found ? "true" : "false", zp_sim_outcome_name(run->outcome));
     zp_out_json_number(f, run->time);
     fputs(",\n  \"time_error\": ", f);
-    zp_out_json_number(f, fabs(run->time - r->v->tight->time));
+    zp_out_json_number(f, fabs(run->time - a->v.tight->time));
     /* what the search minimised: the nominal rider's finish, or the slowest held finish (at
        the search's own tolerance) */
     fprintf(f, ",\n  \"objective\": \"%s\", \"objective_s\": ",
-            r->sc->objective_slowest ? "slowest" : "nominal");
+            a->pb->sc.objective_slowest ? "slowest" : "nominal");
     zp_out_json_number(f, s->best.obj);
-    if (r->acc) {
-        json_accuracy(f, r->acc);
+    if (a->pb->sc.accuracy > 0) {
+        json_accuracy(f, &a->acc);
     }
     fputs(",\n  \"margin_deg\": ", f);
     zp_out_json_number(f, (m->phi_max - largest_angle(m, run)) * DEG);
@@ -210,14 +212,14 @@ void zp_report_write_json(FILE *f, const zp_report *r) {
         zp_out_json_number(f, run->max_rel_angle[i] * DEG);
         fputs(i + 1 < m->nlink ? ", " : "]", f);
     }
-    fprintf(f, ",\n  \"verified\": %s,\n  \"arrival_speed\": ", r->v->agree ? "true" : "false");
+    fprintf(f, ",\n  \"verified\": %s,\n  \"arrival_speed\": ", a->v.agree ? "true" : "false");
     zp_out_json_number(f, run->v);
     fputs(",\n  \"peak_speed\": ", f);
     zp_out_json_number(f, run->max_speed);
     fprintf(f, ",\n  \"evaluations\": %ld,\n  \"wall_s\": ", s->evals);
     zp_out_json_number(f, s->wall_s);
-    fprintf(f, ",\n  \"algorithm\": \"%s\",\n  \"seed\": %lu,\n  \"interrupted\": %s", r->algo,
-            r->seed, s->interrupted ? "true" : "false");
+    fprintf(f, ",\n  \"algorithm\": \"%s\",\n  \"seed\": %lu,\n  \"interrupted\": %s", a->algo,
+            a->seed, s->interrupted ? "true" : "false");
     fputs(",\n  \"baseline\": ", f);
     if (s->base_found) {
         fputs("{\"force\": ", f);
@@ -229,11 +231,11 @@ void zp_report_write_json(FILE *f, const zp_report *r) {
         fputs("null", f);
     }
     fputs(",\n  \"scene_forces\": ", f);
-    if (r->study) {
+    if (a->given) {
         char breaks[64];
-        zp_report_breaks(r, r->study, breaks, sizeof breaks);
-        fprintf(f, "{\"outcome\": \"%s\", \"time\": ", zp_sim_outcome_name(r->study->outcome));
-        zp_out_json_number(f, r->study->time);
+        zp_report_breaks(a->pb, a->given, breaks, sizeof breaks);
+        fprintf(f, "{\"outcome\": \"%s\", \"time\": ", zp_sim_outcome_name(a->given->outcome));
+        zp_out_json_number(f, a->given->time);
         fputs(", \"breaks\": ", f);
         zp_out_json_string(f, breaks);
         fputc('}', f);
@@ -241,16 +243,16 @@ void zp_report_write_json(FILE *f, const zp_report *r) {
         fputs("null", f);
     }
     fputs(",\n  \"robustness\": ", f);
-    json_robust(f, r->v, r->shape);
+    json_robust(f, &a->v, &a->pb->sched);
     fputs(",\n  \"limits\": ", f);
-    zp_out_json_limits(f, m, run, r->lim);
-    if (r->box) {
-        json_scenarios(f, r);
+    zp_out_json_limits(f, m, run, &a->pb->lim);
+    if (a->rp.robust) {
+        json_scenarios(f, a);
     }
     fputs(",\n  \"convergence\": ", f);
-    json_convergence(f, s);
+    json_convergence(f, a);
     fputs(",\n  \"islands\": ", f);
-    json_islands(f, s, r->shape->np);
+    json_islands(f, s, a->pb->sched.np);
     fputs(",\n  \"history\": [", f);
     for (int i = 0; i < s->nhist; i++) {
         fprintf(f, "[%ld, ", s->hist[i].evals);

@@ -8,6 +8,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "problem.h"
+
 #define KILL_TOL 1e-4 /* relative precision of the smallest deadly change, per parameter */
 
 /* the perturbation levels when the caller sets none */
@@ -168,11 +170,9 @@ zp_status zp_verify_finish(const zp_objective *ob, const zp_sim_opts *so, const 
     if (!(v->level[0] > 0)) {
         memcpy(v->level, default_levels, sizeof v->level);
     }
-    zp_sim_opts to = zp_estimate_tighter(so), fast = *so;
+    zp_sim_opts to = zp_estimate_tighter(so), fast = zp_problem_verdict(so);
     v->rtol = to.rtol;
     v->atol = to.atol;
-    fast.output_dt = 0;
-    fast.track_loads = 0;
     zp_schedule sched = zp_objective_schedule(ob, force);
     zp_input in = {.sched = &sched};
     check_batch b = {.ob = ob,

@@ -470,7 +470,7 @@ int zp_cmd_bench(int argc, char **argv) {
     if (pa) {
         return pa > 0 ? ZP_EXIT_OK : ZP_EXIT_USAGE;
     }
-    static zp_setup base; /* large: kept off the stack */
+    static zp_problem base; /* large: kept off the stack */
     zp_overrides none = ZP_OVERRIDES_NONE;
     if (zp_setup_load("bench trade", a.scene, &none, &base)) {
         return ZP_EXIT_USAGE;

@@ -88,7 +88,7 @@ static void print_physics(const zp_scene *sc, const zp_model *m) {
     putchar('\n');
 }
 
-static void print_scene(const zp_setup *st) {
+static void print_scene(const zp_problem *st) {
     const zp_scene *sc = &st->sc;
     const zp_model *m = st->m;
     printf("scene: %s (%s)\n", sc->name, sc->path);
@@ -134,7 +134,7 @@ static void print_scene(const zp_setup *st) {
 }
 
 /* forces the search could never pick: legal for `simulate`, but worth a word */
-static void warn_forces(const zp_setup *st) {
+static void warn_forces(const zp_problem *st) {
     const zp_schedule *sh = &st->sched;
     for (int i = 0; i < st->sc.nforce && i < sh->np; i++) {
         if (sh->p[i] < sh->lo[i] || sh->p[i] > sh->hi[i]) {
@@ -174,7 +174,7 @@ static void json_str(const char *key, const char *v, const char *sep) {
 }
 
 /* --json: the scene as read (README "check --json"), one object on stdout */
-static void print_json(const zp_setup *st) {
+static void print_json(const zp_problem *st) {
     const zp_scene *sc = &st->sc;
     const zp_model *m = st->m;
     printf("{");
@@ -245,7 +245,7 @@ int zp_cmd_check(int argc, char **argv) {
         return ZP_EXIT_USAGE;
     }
     /* judged exactly as every command judges it, registry names included */
-    static zp_setup st; /* large: kept off the stack */
+    static zp_problem st; /* large: kept off the stack */
     zp_overrides none = ZP_OVERRIDES_NONE;
     if (zp_setup_load("check", path, &none, &st)) {
         return ZP_EXIT_USAGE;

@@ -328,7 +328,7 @@ static int landscape(int argc, char **argv, const zp_spread *sp) {
     if (pa) {
         return pa > 0 ? ZP_EXIT_OK : ZP_EXIT_USAGE;
     }
-    static zp_setup st; /* large: kept off the stack */
+    static zp_problem st; /* large: kept off the stack */
     zp_overrides ov = {.schedule = a.schedule, .force = a.force_text};
     if (zp_setup_load("landscape", a.scene, &ov, &st)) {
         return ZP_EXIT_USAGE;

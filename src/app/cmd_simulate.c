@@ -247,7 +247,7 @@ static void print_samples(const zp_model *m, const zp_row *smp, int nsmp, const 
 }
 
 /* the --plot options, checked before the run; 0, or -1 with the message printed */
-static int plot_opts(const sim_args *a, const zp_setup *st, zp_plot_opts *po) {
+static int plot_opts(const sim_args *a, const zp_problem *st, zp_plot_opts *po) {
     const zp_model *m = st->m;
     const zp_scene *sc = &st->sc;
     zp_plot_opts_default(po);
@@ -371,7 +371,7 @@ int zp_cmd_simulate(int argc, char **argv) {
     if (pa) {
         return pa > 0 ? ZP_EXIT_OK : ZP_EXIT_USAGE;
     }
-    static zp_setup st; /* large: kept off the stack */
+    static zp_problem st; /* large: kept off the stack */
     zp_overrides ov = {.schedule = a.schedule, .force = a.force_text};
     if (zp_setup_load("simulate", a.scene, &ov, &st)) {
         return ZP_EXIT_USAGE;

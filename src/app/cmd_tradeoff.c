@@ -10,11 +10,10 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "answer.h"
 #include "cli.h"
-#include "estimate.h"
 #include "out_json.h"
 #include "report.h"
-#include "robust.h"
 #include "setup.h"
 
 #define MAX_LEVELS 16
@@ -58,11 +57,11 @@ typedef struct level_out {
     zp_robust_check check;
 } level_out;
 
-/* what every level shares, and each level's problem kept for the exchange of answers */
+/* what every level shares, and each level's problem and answer kept for the exchange */
 typedef struct tradeoff {
-    const zp_setup *su;
-    zp_robust_problem pb[MAX_LEVELS];
-    zp_sim_opts fast[MAX_LEVELS];
+    const zp_problem *su;
+    zp_problem pb[MAX_LEVELS]; /* su with the level's force error, its model su's (borrowed) */
+    zp_answer ans[MAX_LEVELS];
     level_out L[MAX_LEVELS];
     int n;     /* levels asked for */
     int ndone; /* levels whose search ran to its end */
@@ -144,8 +143,8 @@ static void on_progress(void *user, const zp_search_progress *p, int improved) {
 
 /* the answer's arrival speed: one nominal run at the search's tolerance */
 static int arrival_of(const tradeoff *T, int i, double *kmh, char *err, size_t errlen) {
-    const zp_setup *su = T->su;
-    zp_sim *s = zp_sim_create(su->m, &T->fast[i]);
+    const zp_problem *su = T->su;
+    zp_sim *s = zp_sim_create(su->m, &T->pb[i].search);
     zp_schedule sched = zp_schedule_with(&su->sched, T->L[i].force);
     zp_input in = {.sched = &sched};
     static zp_result run;
@@ -159,41 +158,34 @@ static int arrival_of(const tradeoff *T, int i, double *kmh, char *err, size_t e
     return bad ? -1 : 0;
 }
 
-/* the robust answer at force error L[i].p, its problem kept in T->pb[i] */
+/* the robust answer at force error L[i].p, its problem and answer kept in T */
 static zp_status solve_level(tradeoff *T, int i, char *err, size_t errlen) {
-    const zp_setup *su = T->su;
     level_out *out = &T->L[i];
-    zp_scene sc = su->sc;
-    sc.force_error = out->p;
-    sc.robust = sc.robust || out->p > 0;
-    zp_robust_problem *pb = &T->pb[i];
-    static zp_search_result res;
-    zp_status st =
-        zp_robust_setup(pb, &sc, su->m, su->limit, &su->sched, &su->sim, &su->search, &T->fast[i]);
+    zp_problem *pb = &T->pb[i];
+    *pb = *T->su;
+    pb->sc.force_error = out->p;
+    pb->sc.robust = pb->sc.robust || out->p > 0;
     level_progress lp = {T, i};
-    zp_search_opts o = {.max_evals = su->max_evals,
-                        .seed = su->seed,
-                        .max_time = T->max_time,
-                        .stop = &interrupted,
-                        .progress = on_progress,
-                        .user = &lp};
-    if (!st) {
-        st = zp_robust_solve(pb, &sc, &T->fast[i], su->sched.lo, su->sched.hi, &o, &res, err,
-                             errlen);
-    }
+    zp_answer_opts o = zp_answer_opts_of(pb, ZP_ANSWER_SEARCHED);
+    o.search.max_time = T->max_time;
+    o.search.stop = &interrupted;
+    o.search.progress = on_progress;
+    o.search.user = &lp;
+    zp_status st = zp_answer_solve(pb, &o, &T->ans[i], err, errlen);
     if (T->tty) {
         fputs("\r\033[K", stderr);
     }
     if (st) {
         return st;
     }
-    out->found = res.found;
-    out->done = !res.interrupted;
+    const zp_search_result *res = &T->ans[i].res;
+    out->found = res->found;
+    out->done = !res->interrupted;
     out->from = i;
-    out->time = res.best.time;
-    out->scenarios = pb->robust ? pb->set.n : 0;
-    out->check = pb->check;
-    memcpy(out->force, res.force, sizeof out->force);
+    out->time = res->best.time;
+    out->scenarios = zp_answer_scenarios(&T->ans[i]);
+    out->check = T->ans[i].rp.check;
+    memcpy(out->force, res->force, sizeof out->force);
     return arrival_of(T, i, &out->arrival, err, errlen) ? ZP_ERR_NUMERIC : ZP_OK;
 }
 
@@ -202,10 +194,11 @@ static zp_status solve_level(tradeoff *T, int i, char *err, size_t errlen) {
    +/-2 % as the +/-2 % search's, which may have stopped in a slower island. An adopted answer
    is checked again on the level's fresh scenarios. */
 static int exchange_answers(tradeoff *T, char *err, size_t errlen) {
-    const zp_setup *su = T->su;
+    const zp_problem *su = T->su;
     for (int i = 0; i < T->ndone; i++) {
         level_out *L = &T->L[i];
-        zp_sim *s = zp_sim_create(su->m, &T->fast[i]);
+        zp_robust_problem *rp = &T->ans[i].rp;
+        zp_sim *s = zp_sim_create(su->m, &T->pb[i].search);
         if (!s) {
             snprintf(err, errlen, "out of memory");
             return -1;
@@ -219,7 +212,7 @@ static int exchange_answers(tradeoff *T, char *err, size_t errlen) {
             const double *p = j < 0 ? su->sched.p : T->L[j].force;
             zp_eval e;
             static zp_result r;
-            zp_objective_eval(&T->pb[i].ob, s, p, &e, &r);
+            zp_objective_eval(&rp->ob, s, p, &e, &r);
             if (zp_objective_feasible(&e) && (!L->found || e.time < L->time)) {
                 memcpy(L->force, p, sizeof *p * (size_t)su->sched.np);
                 L->time = e.time;
@@ -231,10 +224,9 @@ static int exchange_answers(tradeoff *T, char *err, size_t errlen) {
         if (!adopted) {
             continue;
         }
-        if (T->pb[i].robust) {
-            zp_sim_opts to = zp_estimate_tighter(&T->fast[i]);
-            if (zp_robust_verify(&T->pb[i].ob, &T->pb[i].box, &to, L->force, su->sc.verify_samples,
-                                 su->seed, 0, NULL, &L->check)) {
+        if (rp->robust) {
+            if (zp_robust_verify(&rp->ob, &rp->box, &T->pb[i].verify, L->force,
+                                 su->sc.verify_samples, su->seed, 0, NULL, &L->check)) {
                 snprintf(err, errlen, "out of memory verifying the scenarios");
                 return -1;
             }
@@ -444,6 +436,25 @@ static int write_files(zp_tx *t, const tradeoff *T, int complete) {
     return 0;
 }
 
+/* the levels in order until one is stopped (Ctrl-C), those finished counted in T->ndone; 0, or
+   -1 (said) */
+static int solve_levels(tradeoff *T) {
+    char err[1200] = "";
+    for (int i = 0; i < T->n && !interrupted; i++) {
+        if (solve_level(T, i, err, sizeof err)) {
+            zp_cli_error("tradeoff", "level %g %%: %s; nothing was written", T->L[i].p, err);
+            return -1;
+        }
+        if (!T->L[i].done) {
+            break; /* stopped inside this level: it is not reported */
+        }
+        T->ndone = i + 1;
+        fprintf(stderr, "tradeoff: +/-%g %%: %s%.4f s\n", T->L[i].p,
+                T->L[i].found ? "" : "(none) ", T->L[i].time);
+    }
+    return 0;
+}
+
 int zp_cmd_tradeoff(int argc, char **argv) {
     tradeoff_args a;
     int pa = parse_args(argc, argv, &a);
@@ -452,7 +463,7 @@ int zp_cmd_tradeoff(int argc, char **argv) {
     }
     double lv[MAX_LEVELS];
     int n = parse_levels(a.levels, lv);
-    static zp_setup su; /* large: kept off the stack */
+    static zp_problem su; /* large: kept off the stack */
     if (n < 1 || zp_setup_load("tradeoff", a.scene, &a.ov, &su)) {
         return ZP_EXIT_USAGE;
     }
@@ -475,18 +486,8 @@ int zp_cmd_tradeoff(int argc, char **argv) {
     begun = 1;
     interrupted = 0;
     zp_tx_soft_interrupt(&t, &interrupted);
-    for (int i = 0; i < n && !interrupted; i++) {
-        zp_status st = solve_level(&T, i, err, sizeof err);
-        if (st) {
-            zp_cli_error("tradeoff", "level %g %%: %s; nothing was written", lv[i], err);
-            goto done;
-        }
-        if (!T.L[i].done) {
-            break; /* stopped inside this level: it is not reported */
-        }
-        T.ndone = i + 1;
-        fprintf(stderr, "tradeoff: +/-%g %%: %s%.4f s\n", lv[i], T.L[i].found ? "" : "(none) ",
-                T.L[i].time);
+    if (solve_levels(&T)) {
+        goto done;
     }
     int complete = T.ndone == n;
     if (T.ndone == 0) {
@@ -528,7 +529,7 @@ done:
         zp_tx_abort(&t);
     }
     for (int i = 0; i < n; i++) {
-        zp_robust_problem_free(&T.pb[i]);
+        zp_answer_free(&T.ans[i]);
     }
     zp_setup_free(&su);
     return status;

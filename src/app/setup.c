@@ -6,18 +6,18 @@
 
 #include "cli.h"
 
-int zp_setup_load(const char *cmd, const char *path, const zp_overrides *ov, zp_setup *st) {
+int zp_setup_load(const char *cmd, const char *path, const zp_overrides *ov, zp_problem *p) {
     zp_diag d;
     zp_diag_init(&d);
-    if (zp_prep_load(cmd, path, NULL, ov, st, &d) == 0) {
+    if (zp_prep_load(cmd, path, NULL, ov, p, &d) == 0) {
         return 0;
     }
     zp_diag_print(&d, stderr);
     int n = d.n + d.dropped;
-    zp_cli_error("", "%s: %d error%s; nothing was written", st->sc.path, n, n == 1 ? "" : "s");
+    zp_cli_error("", "%s: %d error%s; nothing was written", p->sc.path, n, n == 1 ? "" : "s");
     return -1;
 }
 
-void zp_setup_free(zp_setup *st) {
-    zp_prep_free(st);
+void zp_setup_free(zp_problem *p) {
+    zp_problem_free(p);
 }

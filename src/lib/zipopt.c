@@ -12,12 +12,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "answer.h"
 #include "estimate.h"
 #include "out_columns.h"
 #include "prep.h"
-#include "robust.h"
 #include "scene_read.h"
-#include "search.h"
 
 /* the stop flag is handed to the search as its sig_atomic_t flag */
 _Static_assert(_Generic((sig_atomic_t)0, int : 1, default : 0), "sig_atomic_t is int");
@@ -53,7 +52,7 @@ static const char *const search_keys[] = {
 static pthread_mutex_t turn = PTHREAD_MUTEX_INITIALIZER;
 
 struct zipopt_scene {
-    zp_setup st;
+    zp_problem st;
     zp_sim *sim; /* owned: the workspace every zipopt_simulate of this scene reuses */
 };
 
@@ -120,10 +119,7 @@ static zipopt_scene *load(const char *path, const char *text, char *err, size_t 
     int rc = zp_prep_load("library", path, text, &ov, &s->st, &d);
     if (rc == 0) {
         /* the peaks [limits] judge located exactly, as `zipopt simulate` locates them */
-        zp_limits lim;
-        zp_limits_from_scene(&s->st.sc, &lim);
-        s->st.sim.peaks = zp_limits_need_peaks(&lim);
-        s->sim = zp_sim_create(s->st.m, &s->st.sim);
+        s->sim = zp_sim_create(s->st.m, &s->st.answer);
     }
     pthread_mutex_unlock(&turn);
     if (rc) {
@@ -159,7 +155,7 @@ zipopt_scene *zipopt_scene_load_string(const char *text, const char *name, char 
 void zipopt_scene_free(zipopt_scene *s) {
     if (s) {
         zp_sim_free(s->sim);
-        zp_prep_free(&s->st);
+        zp_problem_free(&s->st);
         free(s);
     }
 }
@@ -484,32 +480,6 @@ static void on_progress(void *user, const zp_search_progress *p, int improved) {
     }
 }
 
-/* the search over the scene's bounds, as the command runs it: held to the scene's [limits]
-   and [robust] scenarios when it has them, the answer verified on fresh scenarios */
-/* the search as the command runs it; *check and *nscen: the robust verification and the
-   scenarios held (0 and samples 0 for a nominal scene) */
-static zp_status search(const zp_setup *st, const zp_search_opts *o, zp_search_result *res,
-                        zp_robust_check *check, int *nscen, char *err, size_t errlen) {
-    zp_robust_problem *pb = calloc(1, sizeof *pb); /* large: kept off the stack */
-    zp_sim_opts fast;
-    if (!pb ||
-        zp_robust_setup(pb, &st->sc, st->m, st->limit, &st->sched, &st->sim, &st->search, &fast)) {
-        snprintf(err, errlen, "out of memory building the scenarios");
-        if (pb) {
-            zp_robust_problem_free(pb);
-        }
-        free(pb);
-        return ZP_ERR_NOMEM;
-    }
-    zp_status rc =
-        zp_robust_solve(pb, &st->sc, &fast, st->sched.lo, st->sched.hi, o, res, err, errlen);
-    *check = pb->check;
-    *nscen = pb->robust ? pb->set.n : 0;
-    zp_robust_problem_free(pb);
-    free(pb);
-    return rc;
-}
-
 /* the factor on range l (zp_headroom's order) up to which the answer holds; NaN unverified or
    not varied */
 static double range_headroom(const zp_robust_check *c, int l) {
@@ -572,6 +542,25 @@ static void search_numbers(const zp_search_result *r, const zp_robust_check *c, 
     memcpy(v, n, sizeof n);
 }
 
+/* the answer's search and fresh-scenario check into u; the libraries' globals take turns */
+static zp_status solve(const zp_problem *st, const zp_answer_opts *o, zipopt_search *u, char *err,
+                       size_t errlen) {
+    zp_answer *a = malloc(sizeof *a); /* large: kept off the stack */
+    if (!a) {
+        snprintf(err, errlen, "out of memory");
+        return ZP_ERR_NOMEM;
+    }
+    pthread_mutex_lock(&turn);
+    zp_status rc = zp_answer_solve(st, o, a, err, errlen);
+    pthread_mutex_unlock(&turn);
+    u->res = a->res;
+    u->check = a->rp.check;
+    u->nscen = zp_answer_scenarios(a);
+    zp_answer_free(a);
+    free(a);
+    return rc;
+}
+
 zipopt_search *zipopt_search_run(zipopt_scene *s, long max_evals, long seed,
                                  zipopt_progress_fn progress, void *user, volatile int *stop,
                                  char *err, size_t errlen) {
@@ -584,15 +573,21 @@ zipopt_search *zipopt_search_run(zipopt_scene *s, long max_evals, long seed,
         say(err, errlen, "out of memory");
         return NULL;
     }
-    const zp_setup *st = &s->st;
+    const zp_problem *st = &s->st;
     volatile sig_atomic_t own = 0;
     progress_ctx pc = {progress, user, st->sched.np, stop ? stop : &own};
-    zp_search_opts o = {.algo = 0,
-                        .max_evals = max_evals > 0 ? max_evals : st->max_evals,
-                        .seed = seed >= 0 ? (unsigned long)seed : st->seed,
-                        .stop = pc.flag,
-                        .progress = progress ? on_progress : NULL,
-                        .user = &pc};
+    /* the search as the command runs it: held to the scene's [limits] and [robust] scenarios
+       when it has them, the answer checked on fresh scenarios */
+    zp_answer_opts o = zp_answer_opts_of(st, ZP_ANSWER_SEARCHED);
+    if (max_evals > 0) {
+        o.search.max_evals = max_evals;
+    }
+    if (seed >= 0) {
+        o.search.seed = (unsigned long)seed;
+    }
+    o.search.stop = pc.flag;
+    o.search.progress = progress ? on_progress : NULL;
+    o.search.user = &pc;
     char why[512] = "";
     zp_status rc = ZP_OK;
     if (*pc.flag) {
@@ -600,9 +595,7 @@ zipopt_search *zipopt_search_run(zipopt_scene *s, long max_evals, long seed,
         u->res.interrupted = 1;
         memcpy(u->res.force, st->sched.p, sizeof *u->res.force * (size_t)st->sched.np);
     } else {
-        pthread_mutex_lock(&turn);
-        rc = search(st, &o, &u->res, &u->check, &u->nscen, why, sizeof why);
-        pthread_mutex_unlock(&turn);
+        rc = solve(st, &o, u, why, sizeof why);
     }
     if (rc) {
         say(err, errlen, "%s", why);

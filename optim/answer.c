@@ -1,0 +1,183 @@
+/* Problem -> answer (answer.h): the robust search with its fresh-scenario check, then the
+   answer rerun and verified, [solver] accuracy, the held verdict, the scene's own forces and
+   the diagnosis, each step at most once, in this order, for every caller. */
+#include "answer.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define NROBUST 200 /* robustness runs per perturbation level (ZP_ANSWER_REPORTED) */
+
+zp_answer_opts zp_answer_opts_of(const zp_problem *p, zp_answer_depth depth) {
+    return (zp_answer_opts){.depth = depth, .search = {.max_evals = p->max_evals, .seed = p->seed}};
+}
+
+static int stage(const zp_answer_opts *o, zp_answer_stage s, const zp_answer *a) {
+    return o->stage ? o->stage(o->user, s, a) : 0;
+}
+
+/* the (robust) search over p's bounds and, with [robust], its answer on fresh scenarios */
+static zp_status search(const zp_problem *p, const zp_answer_opts *o, zp_answer *a, char *err,
+                        size_t errlen) {
+    zp_sim_opts fast;
+    if (zp_robust_setup(&a->rp, &p->sc, p->m, p->limit, &p->sched, &p->sim, &p->search, &fast)) {
+        snprintf(err, errlen, "out of memory building the scenarios");
+        if (!o->spread || o->spread->rank == 0) {
+            zp_robust_release(o->spread); /* the other ranks wait for rank 0's answer */
+        }
+        return ZP_ERR_NOMEM;
+    }
+    a->rp.spread = o->spread;
+    return zp_robust_solve(&a->rp, &p->sc, &fast, p->sched.lo, p->sched.hi, &o->search, &a->res,
+                           err, errlen);
+}
+
+/* whether the answer holds when rerun with [solver] (v->run) and 100x tighter (v->tight): it
+   finishes with the margin at both, at times that agree. The search ranks with [optimize]'s
+   own, possibly much looser, tolerance. 0 with why in why. */
+static int holds(const zp_problem *p, const zp_verify *v, char *why, size_t n) {
+    int which;
+    zp_breaks b = zp_problem_breaks(p, v->run, &which);
+    if (b == ZP_BREAKS_DEATH || b == ZP_BREAKS_STALL) {
+        snprintf(why, n, "rerun with [solver] it %s at %.4f s",
+                 zp_sim_outcome_name(v->run->outcome), v->run->time);
+    } else if (b == ZP_BREAKS_MARGIN) {
+        snprintf(why, n,
+                 "rerun with [solver] its largest joint angle is %.2f deg, past the %.2f deg the "
+                 "margin allows",
+                 zp_model_angle_used(p->m, v->run->max_rel_angle) * 180 / M_PI,
+                 p->limit * 180 / M_PI);
+    } else if (b == ZP_BREAKS_LIMIT) {
+        snprintf(why, n, "rerun with [solver] it breaks [limits] %s", zp_limit_name(which));
+    } else if (!v->agree) {
+        snprintf(why, n, "it is not verified at the tighter tolerance (rtol %.0e)", v->rtol);
+    } else {
+        return 1;
+    }
+    return 0;
+}
+
+/* the answer rerun with p->answer on the nominal scene (the scenarios were checked above),
+   100x tighter and, reported, perturbed at the scene's force error and twice it and rerun to
+   [solver] accuracy; then whether it holds */
+static zp_status verify(const zp_problem *p, const zp_answer_opts *o, zp_answer *a, char *err,
+                        size_t errlen) {
+    int reported = o->depth == ZP_ANSWER_REPORTED;
+    zp_objective ob = a->rp.ob;
+    ob.set = NULL;
+    a->run_opts = p->answer;
+    zp_status rc = zp_verify_begin(&ob, &p->answer, a->res.force, &a->best, &a->v, err, errlen);
+    if ((!rc && stage(o, ZP_ANSWER_RERUN, a)) || stage(o, ZP_ANSWER_CHECKING, a)) {
+        return ZP_ERR_IO;
+    }
+    if (p->sc.force_error > 0) { /* the level the scene holds the answer to, and twice it */
+        a->v.level[0] = p->sc.force_error / 100;
+        a->v.level[1] = fmin(2 * p->sc.force_error / 100, 0.99);
+    }
+    int nrobust = reported && !a->res.interrupted ? NROBUST : 0;
+    if (!rc) {
+        rc = zp_verify_finish(&ob, &p->answer, a->res.force, a->seed, nrobust, 0, &a->v, o->checked,
+                              o->user, err, errlen);
+    }
+    if (!rc && reported && p->sc.accuracy > 0) {
+        rc = zp_verify_accuracy(&ob, &p->answer, a->res.force, p->sc.accuracy, &a->best, &a->v,
+                                &a->run_opts, &a->acc, err, errlen);
+    }
+    if (stage(o, ZP_ANSWER_CHECKED, a)) {
+        return ZP_ERR_IO;
+    }
+    if (rc) {
+        return rc;
+    }
+    a->verified = 1;
+    /* not found unless it holds with [solver] */
+    if (a->found && !a->res.interrupted && !holds(p, &a->v, a->unheld, sizeof a->unheld)) {
+        a->found = 0;
+    }
+    return ZP_OK;
+}
+
+/* the scene's own [drive] forces, judged as the search judges (peaks where limits need them),
+   for the report's comparison */
+static zp_status run_given(const zp_problem *p, zp_answer *a, char *err, size_t errlen) {
+    if (p->sc.nforce <= 0) {
+        return ZP_OK;
+    }
+    zp_sim *s = zp_sim_create(p->m, &p->search);
+    a->given = malloc(sizeof *a->given);
+    zp_input in = {.sched = &p->sched};
+    zp_status st = s && a->given ? zp_sim_run(p->m, s, &in, a->given) : ZP_ERR_NOMEM;
+    if (st) {
+        snprintf(err, errlen, "the run of the scene's [drive] forces failed: %s",
+                 s && a->given ? a->given->message : "out of memory");
+    }
+    zp_sim_free(s);
+    return st;
+}
+
+/* the fresh scenarios the answer fails, told apart by what breaks and where: the
+   verification's scenarios run again with its options, each verdict kept; without memory no
+   diagnosis */
+static void diagnose(const zp_problem *p, zp_answer *a) {
+    int n = a->rp.check.samples;
+    zp_robust_worst *each = malloc(sizeof *each * (size_t)n);
+    a->diag = malloc(sizeof *a->diag);
+    zp_robust_check c;
+    if (!each || !a->diag ||
+        zp_robust_verify_each(&a->rp.ob, &a->rp.box, &p->verify, a->res.force, n, p->sc.seed, 0,
+                              NULL, &c, each)) {
+        free(a->diag);
+        a->diag = NULL;
+    } else {
+        zp_diagnose(&a->rp.box, &a->rp.ob, each, n, a->diag);
+    }
+    free(each);
+}
+
+zp_status zp_answer_solve(const zp_problem *p, const zp_answer_opts *o, zp_answer *a, char *err,
+                          size_t errlen) {
+    memset(a, 0, sizeof *a);
+    a->pb = p;
+    a->algo = zp_search_algo_get(o->search.algo)->name;
+    a->max_evals = o->search.max_evals;
+    a->seed = o->search.seed;
+    zp_status st = search(p, o, a, err, errlen);
+    a->found = a->res.found;
+    if (st || o->depth == ZP_ANSWER_SEARCHED || (o->spread && o->spread->rank != 0)) {
+        return st; /* another rank's share of the fresh scenarios is rank 0's too */
+    }
+    if ((st = verify(p, o, a, err, errlen)) || o->depth == ZP_ANSWER_VERIFIED) {
+        return st;
+    }
+    if ((st = run_given(p, a, err, errlen))) {
+        return st;
+    }
+    if (stage(o, ZP_ANSWER_COMPARED, a)) {
+        return ZP_ERR_IO;
+    }
+    const zp_robust_check *c = &a->rp.check;
+    if (a->rp.robust && c->samples > 0 && c->all_kept < c->samples) {
+        if (stage(o, ZP_ANSWER_DIAGNOSING, a)) {
+            return ZP_ERR_IO;
+        }
+        diagnose(p, a);
+    }
+    return ZP_OK;
+}
+
+void zp_answer_free(zp_answer *a) {
+    zp_verify_free(&a->v);
+    zp_sim_free(a->best);
+    a->best = NULL;
+    free(a->given);
+    free(a->diag);
+    a->given = NULL;
+    a->diag = NULL;
+    zp_robust_problem_free(&a->rp);
+}
+
+int zp_answer_scenarios(const zp_answer *a) {
+    return a->rp.robust ? a->rp.set.n : 0;
+}
