@@ -117,6 +117,9 @@ static void polish(const void *how, zp_leg *leg) {
 
 static void global_leg(const void *how, zp_leg *leg) {
     const zp_strategy *self = how;
+    /* NLopt's random numbers are per thread (an unseeded one seeds itself from the clock):
+       seeded on the thread that runs the leg */
+    nlopt_srand(leg->S->o->seed);
     run(self->variant, leg);
 }
 
@@ -157,7 +160,6 @@ static zp_status global_explore(void *state, zp_search_state *S, int round, char
         mid[k] = 0.5 * (S->lo[k] + S->hi[k]);
     }
     zp_leg_job job = {.x0 = mid, .archive = 1, .cap = GLOBAL_PER_PARAM * (long)S->n};
-    nlopt_srand(S->o->seed);
     return zp_leg_batch(S, global_leg, g->self, &job, 1, err, errlen);
 }
 
