@@ -116,19 +116,10 @@ int main(void) {
         /* the answer survives with the margin */
         CHECK(res.found && res.best.outcome == ZP_OUTCOME_FINISHED);
         CHECK(res.best.angle <= ob.limit);
-        zp_model_free(m);
-    }
-    /* every --algorithm: a global strategy then a local one, and the same bits on one thread
-       and two (the random NLopt global algorithms too: seeded on the thread that runs them) */
-    {
-        zp_scene_seed(&sc);
+        /* every --algorithm: a global strategy then a local one, and the same bits on one
+           thread and two (the random NLopt global algorithms too: seeded on the thread that
+           runs them) */
         sc.max_evals = 150;
-        zp_diag d;
-        zp_diag_init(&d);
-        zp_model *m = zp_model_build(&sc, &d);
-        zp_sim_opts o = tu_opts(&sc, sc.rtol);
-        o.atol = sc.atol;
-        zp_objective ob = tu_objective(m, &sc, &o);
         for (int a = 0; a < zp_search_algo_count(); a++) {
             const zp_search_algo *alg = zp_search_algo_get(a);
             CHECK(alg->global->phase == ZP_STRATEGY_GLOBAL);
