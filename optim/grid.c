@@ -315,7 +315,7 @@ static zp_status grid_grow(void *user, const zp_search_result *res, int searches
     zp_scen_set_reorder(&r->set);
     int added = hold_broken(r, g, t->cons);
     if (added < 0) {
-        return ZP_ERR_NOMEM;
+        return ZP_ERR_INPUT; /* why in r->why */
     }
     /* none added: it breaks only points held to (the search's slack, their [solver]) */
     *grown = added > 0;

@@ -31,8 +31,8 @@ typedef struct zp_search_state {
     long spent;        /* simulations in the serial order: what the budget counts */
     int exhausted;     /* some unit of work was cut short by the budget */
     double running;    /* s, the best time in the serial history */
-    int round;         /* reported with the progress */
-    const char *phase; /* ... */
+    int round;         /* 0-based, reported with the progress */
+    const char *phase; /* "scan" or "polish", reported with the progress */
     struct timespec t0;
     double last_report; /* s */
 } zp_search_state;

@@ -11,7 +11,7 @@
 typedef enum { ZP_STRATEGY_GLOBAL, ZP_STRATEGY_LOCAL, ZP_STRATEGY_PHASE_COUNT } zp_strategy_phase;
 
 typedef struct zp_strategy {
-    const char *name; /* as its messages name it */
+    const char *name; /* as messages name it */
     zp_strategy_phase phase;
     int variant; /* its file's choice among the algorithms it adapts (NLopt's: nlopt_algorithm) */
     /* global: its own state for the search S (NULL: out of memory), created once the state

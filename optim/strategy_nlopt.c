@@ -86,8 +86,10 @@ static nlopt_result setup(nl_run *c, nlopt_opt opt) {
     return st;
 }
 
-/* algorithm alg over the leg from its start; a refusal into the leg */
-static void run(int alg, zp_leg *leg) {
+/* the algorithm of the strategy `how` over the leg from its start; a refusal into the leg */
+static void polish(const void *how, zp_leg *leg) {
+    const zp_strategy *self = how;
+    int alg = self->variant;
     nl_run c = {.leg = leg, .alg = alg, .penalty = !takes_constraint(alg)};
     nlopt_opt opt = nlopt_create((nlopt_algorithm)alg, leg->nx);
     nlopt_result st = NLOPT_OUT_OF_MEMORY;
@@ -105,22 +107,16 @@ static void run(int alg, zp_leg *leg) {
     }
     if (st == NLOPT_INVALID_ARGS || st == NLOPT_OUT_OF_MEMORY) {
         leg->refused = 1;
-        snprintf(leg->why, sizeof leg->why, "NLopt %s refused the search: %s",
-                 nlopt_algorithm_name((nlopt_algorithm)alg), nlopt_result_to_string(st));
+        snprintf(leg->why, sizeof leg->why, "NLopt's %s refused the search: %s", self->name,
+                 nlopt_result_to_string(st));
     }
 }
 
-static void polish(const void *how, zp_leg *leg) {
-    const zp_strategy *self = how;
-    run(self->variant, leg);
-}
-
 static void global_leg(const void *how, zp_leg *leg) {
-    const zp_strategy *self = how;
     /* NLopt's random numbers are per thread (an unseeded one seeds itself from the clock):
        seeded on the thread that runs the leg */
     nlopt_srand(leg->S->o->seed);
-    run(self->variant, leg);
+    polish(how, leg);
 }
 
 /* a global algorithm's state: which one, and the scan's sequence for the later rounds */

@@ -72,7 +72,7 @@ static zp_status sequence_explore(void *state, zp_search_state *S, int round, ch
     return ZP_OK;
 }
 
-const zp_strategy zp_strategy_scan = {.name = "the scan",
+const zp_strategy zp_strategy_scan = {.name = "scan",
                                       .phase = ZP_STRATEGY_GLOBAL,
                                       .create = sequence_create,
                                       .free = sequence_free,
