@@ -68,10 +68,6 @@ zp_schedule zp_objective_schedule(const zp_objective *ob, const double *p) {
     return zp_schedule_sections(ob->m->nsec, p, -INFINITY, INFINITY);
 }
 
-int zp_objective_nscenarios(const zp_objective *ob) {
-    return ob->set ? ob->set->n : 0;
-}
-
 int zp_objective_eval_nominal(const zp_objective *ob, zp_sim *s, const zp_schedule *sched,
                               zp_eval *e, zp_result *r) {
     zp_input in = {.sched = sched};
@@ -120,6 +116,10 @@ void zp_objective_eval(const zp_objective *ob, zp_sim *s, const double *p, zp_ev
         broke = cons > 0;
     }
     zp_objective_eval_close(ob, i, broke, e);
+}
+
+int zp_objective_nscenarios(const zp_objective *ob) {
+    return ob->set ? ob->set->n : 0;
 }
 
 int zp_objective_feasible(const zp_eval *e) {
