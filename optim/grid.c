@@ -167,32 +167,13 @@ static int hold(grid_run *r) {
     return 0;
 }
 
-/* one more search held to the set: the first from scratch, the later ones warm from the last
-   answer (afresh when none of its starts survives the grown set); 0, or -1 with why */
-static int search(grid_run *r, zp_grid_result *g) {
-    /* the nominal's search profile, with the load peaks located where any point's limit needs
-       them; its budget as the scene holds it */
-    const zp_problem *nom = r->pt[0].pb;
-    zp_sim_opts fast = nom->search;
+/* the search's runs: the nominal's search profile, with the load peaks located where any
+   point held to needs them for its [limits] */
+static void search_opts(const grid_run *r, zp_sim_opts *fast) {
+    *fast = r->pt[0].pb->search;
     for (int i = 0; i < r->n; i++) {
-        fast.peaks |= zp_limits_need_peaks(&r->pt[i].ob.lim);
+        fast->peaks |= zp_limits_need_peaks(&r->pt[i].ob.lim);
     }
-    zp_objective ob = r->pt[0].ob;
-    ob.set = &r->set;
-    zp_search_opts o = {.max_evals = nom->sc.max_evals, .seed = nom->seed};
-    zp_status st = ZP_OK;
-    long before = g->rounds ? r->res->evals : 0; /* the warm restart adds to the counts */
-    if (g->rounds) {
-        st = zp_search_warm(&ob, &fast, r->lo, r->hi, &o, r->res, r->why, sizeof r->why);
-        g->evals += r->res->evals - before;
-    }
-    if (!st && (!g->rounds || !r->res->found)) {
-        st = zp_search_run(&ob, &fast, r->lo, r->hi, &o, r->res, r->why, sizeof r->why);
-        g->evals += r->res->evals;
-    }
-    g->rounds++;
-    g->last_found = r->res->found;
-    return st ? -1 : 0;
 }
 
 /* docs/model.md's survivable: finished with the margin and every [limits] value kept (without the
@@ -281,34 +262,71 @@ static int hold_broken(grid_run *r, zp_grid_result *g, const double *cons) {
     return npick;
 }
 
+/* between the searches: the answer kept and checked at every point; while some point breaks
+   it and searches are left, the broken points not held to yet are held to from the next search
+   on (grid_turn is the user of zp_search_grow) */
+typedef struct grid_turn {
+    grid_run *r;
+    int ncorner;
+    zp_grid_result *g;
+    double *cons;    /* per grid point, the constraint of the answer checked */
+    zp_sim_opts *so; /* the search's runs, as the points held to need them */
+} grid_turn;
+
+static zp_status grid_grow(void *user, const zp_search_result *res, int searches, int *grown,
+                           char *err, size_t errlen) {
+    (void)err; /* r->why is err */
+    (void)errlen;
+    grid_turn *t = user;
+    grid_run *r = t->r;
+    zp_grid_result *g = t->g;
+    g->rounds = searches;
+    if (!res->found && g->kept) {
+        return ZP_OK; /* held to more points, none survives all: the answer before stands */
+    }
+    g->found = res->found;
+    memcpy(g->force, res->force, sizeof *g->force * (size_t)g->np);
+    g->kept = g->rounds;
+    g->nheld = g->nadded;
+    g->nscen = r->set.n;
+    check(r, t->ncorner, g, t->cons);
+    if (!g->found || g->survived == r->s->npoint || g->rounds >= ZP_GRID_SEARCHES) {
+        return ZP_OK;
+    }
+    /* worst first, as the robust search orders its set between rounds */
+    zp_scen_set_reorder(&r->set);
+    int added = hold_broken(r, g, t->cons);
+    if (added < 0) {
+        return ZP_ERR_INPUT; /* why in r->why */
+    }
+    /* none added: it breaks only points held to (the search's slack, their [solver]) */
+    *grown = added > 0;
+    search_opts(r, t->so);
+    return ZP_OK;
+}
+
 /* the searches and checks, round after round; 0, or -1 with r->why */
 static int rounds(grid_run *r, int ncorner, zp_grid_result *g) {
     double *cons = malloc(sizeof *cons * (size_t)r->s->npoint);
-    int rc = cons ? 0 : -1;
-    while (!rc && !(rc = search(r, g))) {
-        if (!r->res->found && g->kept) {
-            break; /* held to more points, none survives all: the answer before stands */
-        }
-        g->found = r->res->found;
-        memcpy(g->force, r->res->force, sizeof *g->force * (size_t)g->np);
-        g->kept = g->rounds;
-        g->nheld = g->nadded;
-        g->nscen = r->set.n;
-        check(r, ncorner, g, cons);
-        if (!g->found || g->survived == r->s->npoint || g->rounds >= ZP_GRID_SEARCHES) {
-            break;
-        }
-        /* worst first, as the robust search orders its set between rounds */
-        zp_scen_set_reorder(&r->set);
-        int added = hold_broken(r, g, cons);
-        if (added <= 0) {
-            rc = added; /* none: it breaks only points held to (the search's slack, their
-                           [solver]) */
-            break;
-        }
+    if (!cons) {
+        return -1;
     }
+    const zp_problem *nom = r->pt[0].pb;
+    zp_objective ob = r->pt[0].ob;
+    ob.set = &r->set;
+    zp_sim_opts fast;
+    search_opts(r, &fast);
+    /* the budget as the scene holds it */
+    zp_search_opts o = {.max_evals = nom->sc.max_evals, .seed = nom->seed};
+    grid_turn turn = {r, ncorner, g, cons, &fast};
+    zp_search_grown grown;
+    zp_status st = zp_search_grow(&ob, &fast, r->lo, r->hi, &o, r->res, grid_grow, &turn, &grown,
+                                  r->why, sizeof r->why);
+    g->rounds = grown.searches;
+    g->evals = grown.evals;
+    g->last_found = r->res->found;
     free(cons);
-    return rc;
+    return st ? -1 : 0;
 }
 
 void zp_grid_run(const zp_sweep *s, const char *base, const char *path, zp_grid_result *g) {

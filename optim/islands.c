@@ -1,10 +1,10 @@
-/* The map's islands (search_int.h): the scanned points that survive or nearly survive, grouped
+/* The map's islands (islands.h): the scanned points that survive or nearly survive, grouped
    into the islands of the thin survivable set by nearest-better linking, best island first. */
+#include "islands.h"
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-
-#include "search_int.h"
 
 #define NEAR_DEG 5   /* deg: a finished run this far past the margin still maps its island */
 #define NEAR_MAX 256 /* near points mapped, best first: the fast islands are among them */
@@ -15,27 +15,9 @@ static int is_near(const zp_eval *e) {
     return !e->failed && e->outcome == ZP_OUTCOME_FINISHED && e->cons <= NEAR_DEG;
 }
 
-typedef struct ranked {
-    const zp_search *S;
-    int i;
-} ranked;
-
-static int by_rank(const void *pa, const void *pb) {
-    const ranked *a = pa, *b = pb;
-    const zp_search *S = a->S;
-    const double *fa = zp_archive_f(S, a->i), *fb = zp_archive_f(S, b->i);
-    if (zp_search_ahead(&S->a.e[a->i], fa, &S->a.e[b->i], fb, S->n)) {
-        return -1;
-    }
-    if (zp_search_ahead(&S->a.e[b->i], fb, &S->a.e[a->i], fa, S->n)) {
-        return 1;
-    }
-    return (a->i > b->i) - (a->i < b->i);
-}
-
 /* archive point i in shares of the box */
-static void unit(const zp_search *S, int i, double *u) {
-    const double *f = zp_archive_f(S, i);
+static void unit(const zp_search_state *S, int i, double *u) {
+    const double *f = zp_search_state_point(S, i);
     for (int k = 0; k < S->n; k++) {
         double w = S->hi[k] - S->lo[k];
         u[k] = w > 0 ? (f[k] - S->lo[k]) / w : 0;
@@ -80,67 +62,75 @@ void zp_islands_free(zp_islands *m) {
     memset(m, 0, sizeof *m);
 }
 
-int zp_islands_map(const zp_search *S, zp_islands *m) {
+/* the island point j of the map links to (u: the mapped points in shares of the box, rc2 the
+   squared critical distance): the island of the nearest better point within it that no
+   blocker separates from j, of the LINK_TRIES nearest; -1: none */
+static int link_of(const zp_islands *m, const double *u, int j, int n, double rc2,
+                   const double *blk, int nblk) {
+    int best[LINK_TRIES], nb = 0;
+    double bd[LINK_TRIES];
+    for (int i = 0; i < j; i++) {
+        double d = dist2(u + (size_t)i * n, u + (size_t)j * n, n);
+        if (d >= rc2 || (nb == LINK_TRIES && d >= bd[nb - 1])) {
+            continue;
+        }
+        int at = nb < LINK_TRIES ? nb++ : LINK_TRIES - 1;
+        for (; at > 0 && bd[at - 1] > d; at--) {
+            best[at] = best[at - 1];
+            bd[at] = bd[at - 1];
+        }
+        best[at] = i;
+        bd[at] = d;
+    }
+    for (int t = 0; t < nb; t++) {
+        if (!blocked(blk, nblk, n, u + (size_t)best[t] * n, u + (size_t)j * n)) {
+            return m->of[best[t]];
+        }
+    }
+    return -1;
+}
+
+int zp_islands_map(const zp_search_state *S, zp_islands *m) {
     memset(m, 0, sizeof *m);
     int n = S->n, na = S->a.n, nnear = 0, nblk = 0;
-    ranked *r = malloc(sizeof *r * (na ? na : 1));
+    int *near = malloc(sizeof *near * (na ? na : 1));
     double *blk = malloc(sizeof *blk * (size_t)(na ? na : 1) * n);
     double *u = malloc(sizeof *u * NEAR_MAX * n);
     m->pt = malloc(sizeof *m->pt * NEAR_MAX);
     m->of = malloc(sizeof *m->of * NEAR_MAX);
     m->isl = malloc(sizeof *m->isl * NEAR_MAX);
-    if (!r || !blk || !u || !m->pt || !m->of || !m->isl) {
-        free(r);
+    /* the near points, best first; every other point can break a link */
+    for (int i = 0; near && blk && i < na; i++) {
+        if (is_near(&S->a.e[i])) {
+            near[nnear++] = i;
+        } else {
+            unit(S, i, blk + (size_t)nblk++ * n);
+        }
+    }
+    if (!near || !blk || !u || !m->pt || !m->of || !m->isl ||
+        zp_search_state_rank(S, near, nnear)) {
+        free(near);
         free(blk);
         free(u);
         zp_islands_free(m);
         return -1;
     }
-    /* the near points, best first; every other point can break a link */
-    for (int i = 0; i < na; i++) {
-        if (is_near(&S->a.e[i])) {
-            r[nnear++] = (ranked){S, i};
-        } else {
-            unit(S, i, blk + (size_t)nblk++ * n);
-        }
-    }
-    qsort(r, nnear, sizeof *r, by_rank);
     m->nnear = nnear < NEAR_MAX ? nnear : NEAR_MAX;
     double rc2 = pow(critical(n, na), 2);
     for (int j = 0; j < m->nnear; j++) {
-        m->pt[j] = r[j].i;
-        unit(S, r[j].i, u + (size_t)j * n);
+        m->pt[j] = near[j];
+        unit(S, near[j], u + (size_t)j * n);
         /* joins the island of the nearest better point it links to, else heads a new one */
-        int best[LINK_TRIES], nb = 0;
-        double bd[LINK_TRIES];
-        for (int i = 0; i < j; i++) {
-            double d = dist2(u + (size_t)i * n, u + (size_t)j * n, n);
-            if (d >= rc2 || (nb == LINK_TRIES && d >= bd[nb - 1])) {
-                continue;
-            }
-            int at = nb < LINK_TRIES ? nb++ : LINK_TRIES - 1;
-            for (; at > 0 && bd[at - 1] > d; at--) {
-                best[at] = best[at - 1];
-                bd[at] = bd[at - 1];
-            }
-            best[at] = i;
-            bd[at] = d;
-        }
-        m->of[j] = -1;
-        for (int t = 0; t < nb && m->of[j] < 0; t++) {
-            if (!blocked(blk, nblk, n, u + (size_t)best[t] * n, u + (size_t)j * n)) {
-                m->of[j] = m->of[best[t]];
-            }
-        }
+        m->of[j] = link_of(m, u, j, n, rc2, blk, nblk);
         if (m->of[j] < 0) {
             m->of[j] = m->n;
-            m->isl[m->n++] = (zp_island){.head = r[j].i};
+            m->isl[m->n++] = (zp_island){.head = near[j]};
         }
         zp_island *is = &m->isl[m->of[j]];
         is->npts++;
-        is->nfeas += zp_objective_feasible(&S->a.e[r[j].i]);
+        is->nfeas += zp_objective_feasible(&S->a.e[near[j]]);
     }
-    free(r);
+    free(near);
     free(blk);
     free(u);
     return 0;

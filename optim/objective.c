@@ -118,6 +118,10 @@ void zp_objective_eval(const zp_objective *ob, zp_sim *s, const double *p, zp_ev
     zp_objective_eval_close(ob, i, broke, e);
 }
 
+int zp_objective_nscenarios(const zp_objective *ob) {
+    return ob->set ? ob->set->n : 0;
+}
+
 int zp_objective_feasible(const zp_eval *e) {
     return !e->failed && e->outcome == ZP_OUTCOME_FINISHED && e->cons <= 0;
 }

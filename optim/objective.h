@@ -46,6 +46,8 @@ zp_schedule zp_objective_schedule(const zp_objective *ob, const double *p);
    that breaks the margin or a limit; cons is the worst over the runs. r receives the last run. */
 void zp_objective_eval(const zp_objective *ob, zp_sim *s, const double *p, zp_eval *e,
                        zp_result *r);
+/* The scenarios a survivor is held to: ob->set's, 0 without a set. */
+int zp_objective_nscenarios(const zp_objective *ob);
 /* The parts of zp_objective_eval, for a caller that shares a survivor's scenarios out: the
    nominal run of sched scored into e (1: a survivor with a set, the scenarios follow); the
    constraint of the scenario at position i of the set's order (and in *obj, may be NULL, its

@@ -8,8 +8,6 @@
 #include <stdatomic.h>
 #include <stdlib.h>
 
-#include "robust.h"
-
 struct zp_pool {
     int nw;
     zp_sim **sim;  /* owned, nw */
@@ -138,7 +136,7 @@ void zp_pool_objective_eval(zp_pool *p, const zp_objective *ob, zp_sim *s, zp_re
     if (!zp_objective_eval_nominal(ob, s, &sched, e, r)) {
         return;
     }
-    int n = ob->set->n;
+    int n = zp_objective_nscenarios(ob);
     scen_share sh = {ob, &sched, n, 0, n, malloc(sizeof *sh.cons * 2 * n)};
     if (!sh.cons) {
         zp_objective_eval(ob, s, f, e, r);

@@ -426,6 +426,40 @@ out:
     gsl_rng_free(rng);
 }
 
+/* the adversary between searches: the answer's worst scenario found joins the set when it
+   breaks the answer, while rounds are left */
+typedef struct adversary_turn {
+    zp_objective *ob;
+    const zp_box *b;
+    zp_pool *w;
+    unsigned long seed;
+    int max_rounds;
+    zp_robust_info *info;
+} adversary_turn;
+
+static zp_status adversary_grow(void *user, const zp_search_result *res, int searches, int *grown,
+                                char *err, size_t errlen) {
+    adversary_turn *a = user;
+    zp_robust_info *info = a->info;
+    info->rounds = searches;
+    if (!res->found || res->interrupted || a->b->d == 0) {
+        return ZP_OK;
+    }
+    adversary(a->ob, a->b, a->w, res->force, a->seed, info->rounds, &info->worst, &info->sims);
+    if (info->worst.cons <= 0 || info->rounds >= a->max_rounds) {
+        return ZP_OK;
+    }
+    /* worst first: what broke candidates most often, then the adversary's find */
+    zp_scen_set_reorder(a->ob->set);
+    if (zp_scen_set_add(a->ob->set, a->b, a->ob->m, info->worst.u)) {
+        snprintf(err, errlen, "out of memory growing the scenario set");
+        return ZP_ERR_NOMEM;
+    }
+    info->added++;
+    *grown = 1;
+    return ZP_OK;
+}
+
 zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts *so,
                            const double *lo, const double *hi, const zp_search_opts *o,
                            int max_rounds, zp_search_result *res, zp_robust_info *info, char *err,
@@ -437,32 +471,11 @@ zp_status zp_robust_search(zp_objective *ob, const zp_box *b, const zp_sim_opts 
         snprintf(err, errlen, "out of memory for the adversary's workspaces");
         return ZP_ERR_NOMEM;
     }
-    zp_status st = ZP_OK;
-    zp_search_opts ro = *o; /* the progress says which restart it reports */
-    for (;;) {
-        ro.restart = info->rounds;
-        /* after the first round, a warm restart from what the last one found; a full search
-           only when none of its starts can be made to survive the grown set */
-        st = info->rounds ? zp_search_warm(ob, so, lo, hi, &ro, res, err, errlen) : ZP_OK;
-        if (!st && (!info->rounds || (!res->found && !res->interrupted))) {
-            st = zp_search_run(ob, so, lo, hi, &ro, res, err, errlen);
-        }
-        info->rounds++;
-        if (st || !res->found || res->interrupted || b->d == 0) {
-            break;
-        }
-        adversary(ob, b, w, res->force, o->seed, info->rounds, &info->worst, &info->sims);
-        if (info->worst.cons <= 0 || info->rounds >= max_rounds) {
-            break;
-        }
-        /* worst first: what broke candidates most often, then the adversary's find */
-        zp_scen_set_reorder(ob->set);
-        if ((st = zp_scen_set_add(ob->set, b, ob->m, info->worst.u))) {
-            snprintf(err, errlen, "out of memory growing the scenario set");
-            break;
-        }
-        info->added++;
-    }
+    adversary_turn turn = {ob, b, w, o->seed, max_rounds, info};
+    zp_search_grown grown;
+    zp_status st =
+        zp_search_grow(ob, so, lo, hi, o, res, adversary_grow, &turn, &grown, err, errlen);
+    info->rounds = grown.searches;
     zp_pool_free(w);
     return st;
 }

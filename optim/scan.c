@@ -1,11 +1,9 @@
-/* The search's scan (search_int.h): batches of points run in parallel and cut at the budget in
-   their serial order; the constant pushes and per-parameter lines, each with zooms, and a
-   seeded low-discrepancy sequence extended in order. */
+/* The search's scans (scan.h): the constant pushes and per-parameter lines, each with zooms. */
+#include "scan.h"
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-
-#include "search_int.h"
 
 #define LINE_PTS 49     /* points of a line over a whole range */
 #define STEP_SHARE 0.25 /* first polish step, share of the survivable width along a line */
@@ -13,99 +11,17 @@
 #define ZOOM_PTS 12     /* points of each refinement */
 #define LINE_PASSES 2   /* passes of lines through the best, while they improve */
 
-const double *zp_archive_f(const zp_search *S, int i) {
-    return S->a.f + (size_t)i * S->n;
-}
-
-/* doubles the capacity of two parallel arrays of rows of sa and sb bytes; 0: out of memory,
-   both arrays still valid */
-static int grow(void **a, size_t sa, void **b, size_t sb, int *cap, int first) {
-    int nc = *cap ? 2 * *cap : first;
-    void *na = realloc(*a, sa * nc);
-    *a = na ? na : *a;
-    void *nb = na ? realloc(*b, sb * nc) : NULL;
-    *b = nb ? nb : *b;
-    *cap = nb ? nc : *cap;
-    return nb != NULL;
-}
-
-int zp_archive_add(zp_search *S, const double *f, const zp_eval *e) {
-    zp_archive *a = &S->a;
-    void *pf = a->f, *pe = a->e;
-    int ok = a->n < a->cap || grow(&pf, sizeof *f * S->n, &pe, sizeof *e, &a->cap, 1024);
-    a->f = pf;
-    a->e = pe;
-    if (!ok) {
-        return -1;
-    }
-    memcpy(a->f + (size_t)a->n * S->n, f, sizeof *f * S->n);
-    a->e[a->n] = *e;
-    return a->n++;
-}
-
-typedef struct batch {
-    zp_search *S;
-    const double *pts;
-    zp_eval *e;
-    char *done;
-    long left;
-} batch;
-
-static void batch_job(void *user, int i, zp_sim *s, zp_result *r) {
-    batch *b = user;
-    if (i < b->left && !zp_search_stopped(b->S)) {
-        zp_search_eval(b->S, s, r, b->pts + (size_t)i * b->S->n, &b->e[i]);
-        b->done[i] = 1;
-    }
-}
-
-int zp_scan_batch(zp_search *S, const double *pts, int npt) {
-    batch b = {S, pts, malloc(sizeof *b.e * (npt ? npt : 1)), calloc(npt ? npt : 1, 1),
-               S->o->max_evals - S->spent};
-    int ndone = 0;
-    if (b.e && b.done && !zp_search_halted(S)) {
-        S->exhausted |= npt >= b.left;
-        zp_pool_map(S->pool, npt, batch_job, &b, NULL, NULL);
-        for (int i = 0; i < npt; i++) {
-            if (b.done[i] && zp_archive_add(S, pts + (size_t)i * S->n, &b.e[i]) >= 0) {
-                zp_search_record(S, ++S->spent, &b.e[i]);
-                ndone++;
-            }
-        }
-    }
-    free(b.e);
-    free(b.done);
-    return ndone;
-}
-
-static double at_share(const zp_search *S, int k, double u) {
+static double at_share(const zp_search_state *S, int k, double u) {
     return fmin(S->lo[k] + (S->hi[k] - S->lo[k]) * u, S->hi[k]);
 }
 
-int zp_scan_lds(zp_search *S, int count) {
-    double *pts = malloc(sizeof *pts * count * S->n);
-    if (!pts) {
-        return 0;
-    }
-    double v[ZP_SCHED_MAX_PARAMS];
-    for (int i = 0; i < count; i++) {
-        gsl_qrng_get(S->q, v);
-        for (int k = 0; k < S->n; k++) {
-            double u = v[k] + S->shift[k];
-            pts[(size_t)i * S->n + k] = at_share(S, k, u - floor(u));
-        }
-    }
-    int nd = zp_scan_batch(S, pts, count);
-    free(pts);
-    return nd;
-}
-
-static int arch_ahead(const zp_search *S, int i, int j) {
-    return zp_search_ahead(&S->a.e[i], zp_archive_f(S, i), &S->a.e[j], zp_archive_f(S, j), S->n);
+static int arch_ahead(const zp_search_state *S, int i, int j) {
+    return zp_search_state_ahead(&S->a.e[i], zp_search_state_point(S, i), &S->a.e[j],
+                                 zp_search_state_point(S, j), S->n);
 }
 
 /* the ZOOM best local minima of the score among archive points [n0, n0 + n), best first */
-static int local_minima(const zp_search *S, int n0, int n, int *best) {
+static int local_minima(const zp_search_state *S, int n0, int n, int *best) {
     int nb = 0;
     for (int i = n0; i < n0 + n; i++) {
         int lmin =
@@ -128,8 +44,8 @@ static int local_minima(const zp_search *S, int n0, int n, int *best) {
 }
 
 /* where archive point i lies along line k: its parameter k, or (k < 0) its share of the box */
-static double along(const zp_search *S, int i, int k) {
-    const double *f = zp_archive_f(S, i);
+static double along(const zp_search_state *S, int i, int k) {
+    const double *f = zp_search_state_point(S, i);
     return k >= 0 ? f[k] : (f[0] - S->lo[0]) / (S->hi[0] - S->lo[0]);
 }
 
@@ -137,8 +53,8 @@ static double along(const zp_search *S, int i, int k) {
    every parameter at the same share of the box from a to b); then twice more, finer, around
    the ZOOM best local minima of the score: runs that die further along point at survivable
    bands narrower than the grid */
-static void line(zp_search *S, const double *cur, int k, double a, double b, int npt, int depth,
-                 double *pts) {
+static void line(zp_search_state *S, const double *cur, int k, double a, double b, int npt,
+                 int depth, double *pts) {
     for (int i = 0; i < npt; i++) {
         double *p = pts + (size_t)i * S->n, t = a + (b - a) * i / (npt - 1);
         for (int j = 0; j < S->n; j++) {
@@ -146,7 +62,7 @@ static void line(zp_search *S, const double *cur, int k, double a, double b, int
         }
     }
     int n0 = S->a.n;
-    int n = zp_scan_batch(S, pts, npt);
+    int n = zp_search_state_batch(S, pts, npt);
     if (depth == 0 || n < npt) {
         return;
     }
@@ -160,11 +76,13 @@ static void line(zp_search *S, const double *cur, int k, double a, double b, int
     }
 }
 
-/* 1 when a line in k through cur was scanned already (it differs only in k from its origin) */
-static int seen_line(zp_search *S, const double *cur, int k) {
-    for (int j = 0; j < S->nlined; j++) {
-        const double *o = S->lined + (size_t)j * S->n;
-        int same = S->lined_k[j] == k;
+/* 1 when a line in k through cur was scanned already (it differs only in k from its origin);
+   else it is remembered as scanned */
+static int seen_line(const zp_search_state *S, zp_scan *sc, const double *cur, int k) {
+    size_t row = (size_t)S->n + 1;
+    for (int j = 0; j < sc->nlined; j++) {
+        const double *o = sc->lined + j * row;
+        int same = o[S->n] == k;
         for (int i = 0; same && i < S->n; i++) {
             same = i == k || o[i] == cur[i];
         }
@@ -172,24 +90,26 @@ static int seen_line(zp_search *S, const double *cur, int k) {
             return 1;
         }
     }
-    void *pl = S->lined, *pk = S->lined_k;
-    int ok = S->nlined < S->linecap ||
-             grow(&pl, sizeof *cur * S->n, &pk, sizeof *S->lined_k, &S->linecap, 64);
-    S->lined = pl;
-    S->lined_k = pk;
-    if (!ok) {
-        return 1;
+    if (sc->nlined == sc->linecap) {
+        int cap = sc->linecap ? 2 * sc->linecap : 64;
+        double *l = realloc(sc->lined, sizeof *l * row * cap);
+        if (!l) {
+            return 1; /* out of memory: not scanned again */
+        }
+        sc->lined = l;
+        sc->linecap = cap;
     }
-    memcpy(S->lined + (size_t)S->nlined * S->n, cur, sizeof *cur * S->n);
-    S->lined_k[S->nlined++] = k;
+    double *o = sc->lined + sc->nlined++ * row;
+    memcpy(o, cur, sizeof *cur * S->n);
+    o[S->n] = k;
     return 0;
 }
 
 /* how far parameter k may move from cur before a run fails, among archive points from n0 */
-static double survivable_width(const zp_search *S, const double *cur, int k, int n0) {
+static double survivable_width(const zp_search_state *S, const double *cur, int k, int n0) {
     double left = S->lo[k], right = S->hi[k];
     for (int i = n0; i < S->a.n; i++) {
-        double f = zp_archive_f(S, i)[k];
+        double f = zp_search_state_point(S, i)[k];
         if (!zp_objective_feasible(&S->a.e[i])) {
             left = f < cur[k] ? fmax(left, f) : left;
             right = f > cur[k] ? fmin(right, f) : right;
@@ -198,7 +118,19 @@ static double survivable_width(const zp_search *S, const double *cur, int k, int
     return right - left;
 }
 
-int zp_scan_diag(zp_search *S) {
+void zp_scan_init(zp_scan *sc, const zp_search_state *S, double share) {
+    *sc = (zp_scan){.lined = NULL};
+    for (int k = 0; k < S->n; k++) {
+        sc->step[k] = share * (S->hi[k] - S->lo[k]);
+    }
+}
+
+void zp_scan_free(zp_scan *sc) {
+    free(sc->lined);
+    sc->lined = NULL;
+}
+
+int zp_scan_diag(zp_search_state *S) {
     double *pts = malloc(sizeof *pts * LINE_PTS * S->n);
     int n0 = S->a.n;
     if (pts) {
@@ -210,29 +142,30 @@ int zp_scan_diag(zp_search *S) {
 
 /* Survivable bands can be narrower than any affordable grid in all parameters at once, but a
    line resolves one parameter finely. */
-void zp_scan_lines(zp_search *S, const double *origin, const zp_eval *origin_e) {
+void zp_scan_lines(zp_search_state *S, zp_scan *sc, const double *origin, const zp_eval *origin_e) {
     double cur[ZP_SCHED_MAX_PARAMS], *pts = malloc(sizeof *pts * LINE_PTS * S->n);
     if (!pts) {
         return;
     }
     memcpy(cur, origin, sizeof *cur * S->n);
     zp_eval be = *origin_e;
-    for (int pass = 0; pass < LINE_PASSES && !zp_search_halted(S); pass++) {
+    for (int pass = 0; pass < LINE_PASSES && !zp_search_state_halted(S); pass++) {
         int moved = 0;
-        for (int k = 0; k < S->n && !zp_search_halted(S); k++) {
-            if (seen_line(S, cur, k)) {
+        for (int k = 0; k < S->n && !zp_search_state_halted(S); k++) {
+            if (seen_line(S, sc, cur, k)) {
                 continue;
             }
             int n0 = S->a.n;
             line(S, cur, k, S->lo[k], S->hi[k], LINE_PTS, 2, pts);
             for (int i = n0; i < S->a.n; i++) {
-                if (zp_search_ahead(&S->a.e[i], zp_archive_f(S, i), &be, cur, S->n)) {
+                if (zp_search_state_ahead(&S->a.e[i], zp_search_state_point(S, i), &be, cur,
+                                          S->n)) {
                     be = S->a.e[i];
-                    memcpy(cur, zp_archive_f(S, i), sizeof *cur * S->n);
+                    memcpy(cur, zp_search_state_point(S, i), sizeof *cur * S->n);
                     moved = 1;
                 }
             }
-            S->step[k] = fmin(STEP_SHARE * survivable_width(S, cur, k, n0), S->step[k]);
+            sc->step[k] = fmin(STEP_SHARE * survivable_width(S, cur, k, n0), sc->step[k]);
         }
         if (!moved) {
             break;

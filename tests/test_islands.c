@@ -10,7 +10,7 @@
 
 #include "basins.h"
 #include "check.h"
-#include "search_int.h"
+#include "islands.h"
 
 /* relative: the brute-force sum is cut at K = 2e6, where the tail of K^(w - n + 1) is below it */
 #define SUM_TOL 1e-6
@@ -30,7 +30,7 @@ static double posterior_mean(int n, int w) {
     return num / den;
 }
 
-static zp_search map;
+static zp_search_state map;
 static double lo[2] = {0, 0}, hi[2] = {100, 100};
 
 static void put(double f1, double f2, int feasible, double time) {
@@ -42,13 +42,13 @@ static void put(double f1, double f2, int feasible, double time) {
                                          : 50,
                  .scenario = -1};
     e.score = e.obj + fmax(e.cons, 0);
-    CHECK(zp_archive_add(&map, (double[2]){f1, f2}, &e) >= 0);
+    CHECK(zp_search_state_add(&map, (double[2]){f1, f2}, &e) >= 0);
 }
 
 static void clear(void) {
     free(map.a.f);
     free(map.a.e);
-    map = (zp_search){.n = 2, .lo = lo, .hi = hi};
+    map = (zp_search_state){.n = 2, .lo = lo, .hi = hi};
 }
 
 int main(void) {
@@ -81,8 +81,8 @@ int main(void) {
     CHECK(zp_islands_map(&map, &m) == 0);
     CHECK(m.n == 2 && m.nnear == 16);
     CHECK(m.isl[0].npts == 5 && m.isl[1].npts == 11);
-    CHECK(zp_archive_f(&map, m.isl[0].head)[0] == 14);
-    CHECK(zp_archive_f(&map, m.isl[1].head)[0] == 25);
+    CHECK(zp_search_state_point(&map, m.isl[0].head)[0] == 14);
+    CHECK(zp_search_state_point(&map, m.isl[1].head)[0] == 25);
     zp_islands_free(&m);
 
     /* without the death between them the two bands are one island */

@@ -9,6 +9,7 @@
 
 #include "check.h"
 #include "search.h"
+#include "strategy.h"
 #include "testutil.h"
 
 /* m/m: a 1 g link on a 30 kg trolley changes the acceleration by ~3e-5 of itself */
@@ -25,9 +26,9 @@ static const char *bare =
 
 static zp_search_result res, res2;
 
-static void search(const zp_objective *ob, const zp_sim_opts *o, const zp_scene *sc,
-                   int nthreads, zp_search_result *r) {
-    zp_search_opts so = {.algo = 0, .max_evals = sc->max_evals, .seed = sc->seed,
+static void search_with(const zp_objective *ob, const zp_sim_opts *o, const zp_scene *sc,
+                        int algo, int nthreads, zp_search_result *r) {
+    zp_search_opts so = {.algo = algo, .max_evals = sc->max_evals, .seed = sc->seed,
                          .nthreads = nthreads};
     char err[256];
     double lo[ZP_MAX_SECTIONS], hi[ZP_MAX_SECTIONS];
@@ -36,6 +37,11 @@ static void search(const zp_objective *ob, const zp_sim_opts *o, const zp_scene 
         hi[k] = sc->force_max;
     }
     CHECK(zp_search_run(ob, o, lo, hi, &so, r, err, sizeof err) == ZP_OK);
+}
+
+static void search(const zp_objective *ob, const zp_sim_opts *o, const zp_scene *sc,
+                   int nthreads, zp_search_result *r) {
+    search_with(ob, o, sc, 0, nthreads, r);
 }
 
 int main(void) {
@@ -110,6 +116,20 @@ int main(void) {
         /* the answer survives with the margin */
         CHECK(res.found && res.best.outcome == ZP_OUTCOME_FINISHED);
         CHECK(res.best.angle <= ob.limit);
+        /* every --algorithm: a global strategy then a local one, and the same bits on one
+           thread and two (the random NLopt global algorithms too: seeded on the thread that
+           runs them) */
+        sc.max_evals = 150;
+        for (int a = 0; a < zp_search_algo_count(); a++) {
+            const zp_search_algo *alg = zp_search_algo_get(a);
+            CHECK(alg->global->phase == ZP_STRATEGY_GLOBAL);
+            CHECK(alg->local->phase == ZP_STRATEGY_LOCAL);
+            search_with(&ob, &o, &sc, a, 2, &res);
+            search_with(&ob, &o, &sc, a, 1, &res2);
+            CHECK(!memcmp(res.force, res2.force, sizeof res.force));
+            CHECK(res.evals == res2.evals && res.best.time == res2.best.time);
+            CHECK(res.evals <= sc.max_evals);
+        }
         zp_model_free(m);
     }
     /* a larger budget runs everything a smaller one does: never a worse best (beyond 1e-9

@@ -1,0 +1,32 @@
+/* The search held to a growing set (search.h): a search, then, while the caller grows the set,
+   a warm restart from what the last one found. */
+#include "search.h"
+
+zp_status zp_search_grow(const zp_objective *ob, const zp_sim_opts *so, const double *lo,
+                         const double *hi, const zp_search_opts *o, zp_search_result *res,
+                         zp_search_grow_fn grow, void *user, zp_search_grown *info, char *err,
+                         size_t errlen) {
+    *info = (zp_search_grown){0};
+    zp_search_opts ro = *o; /* the progress says which restart it reports */
+    zp_status st = ZP_OK;
+    for (int grown = 1; !st && grown;) {
+        int k = info->searches;
+        ro.restart = k;
+        if (k) {
+            long before = res->evals; /* the warm restart adds to the counts */
+            st = zp_search_warm(ob, so, lo, hi, &ro, res, err, errlen);
+            info->evals += res->evals - before;
+        }
+        /* afresh: the first search, or when no warm start survives the grown set */
+        if (!st && (!k || (!res->found && !res->interrupted))) {
+            st = zp_search_run(ob, so, lo, hi, &ro, res, err, errlen);
+            info->evals += res->evals;
+        }
+        info->searches++;
+        grown = 0;
+        if (!st) {
+            st = grow(user, res, info->searches, &grown, err, errlen);
+        }
+    }
+    return st;
+}
