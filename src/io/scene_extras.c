@@ -48,8 +48,8 @@ void zp_scene_read_envelope(parse_ctx *c, zp_scene *sc, int k) {
         while (*end2 == ' ') {
             end2++;
         }
-        if (end1 == item || *end1 || end2 == colon + 1 || *end2 || !isfinite(g) ||
-            !isfinite(s) || !(g > 0) || !(s > 0)) {
+        if (end1 == item || *end1 || end2 == colon + 1 || *end2 || !isfinite(g) || !isfinite(s) ||
+            !(g > 0) || !(s > 0)) {
             zp_scene_bad_key(c, k, "item %d is not two numbers > 0", n + 1);
             return;
         }

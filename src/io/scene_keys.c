@@ -8,13 +8,17 @@
 
 _Static_assert(K_COUNT <= 64, "zp_scene.given holds one bit per key");
 
+/* the table's vocabulary, one macro per word, kept on one line each (clang-format 14 would
+   split the _Generic selections and brace initializers apart) */
+/* clang-format off */
+
 /* a member of zp_scene (not evaluated: its type and size only) */
 #define M(member) (((zp_scene *)0)->member)
 #define AT(member) .field = offsetof(zp_scene, member), .size = sizeof M(member)
 
 /* the value column: the member's C type must be the one the reader stores (else no match) */
 #define NUMBER(member, r) AT(member), .type = _Generic(M(member), double: T_NUMBER), .rule = r
-#define WHOLE(member, lo, hi)                                                                  \
+#define WHOLE(member, lo, hi) \
     AT(member), .type = _Generic(M(member), int: T_INT, long: T_LONG, unsigned long: T_ULONG), \
     .min = lo, .max = hi
 #define TEXT(member) AT(member), .type = _Generic(M(member), char *: T_TEXT)
@@ -36,13 +40,15 @@ _Static_assert(K_COUNT <= 64, "zp_scene.given holds one bit per key");
 #define REQUIRED(what) {D_REQUIRED, 0, what, "*required*"}
 #define HAND(docs) {D_HAND, 0, NULL, docs}
 
+/* clang-format on */
+
 #define ZP_SECTION(id, ...)
-#define ZP_KEY(id, section, key, value, default_, expected, meaning)                           \
-    [K_##id] = {.sec = S_##section,                                                            \
-                .name = key,                                                                   \
-                value,                                                                         \
-                .dflt = default_,                                                              \
-                .expect = expected,                                                            \
+#define ZP_KEY(id, section, key, value, default_, expected, meaning)                               \
+    [K_##id] = {.sec = S_##section,                                                                \
+                .name = key,                                                                       \
+                value,                                                                             \
+                .dflt = default_,                                                                  \
+                .expect = expected,                                                                \
                 .doc = meaning},
 const zp_scene_key zp_scene_keys[K_COUNT] = {
 #include "scene_keys.def"

@@ -108,7 +108,8 @@ static void unknown_key(parse_ctx *c, int s, const char *name) {
             snprintf(list + len, sizeof list - len, "%s%s", len ? ", " : "", zp_scene_keys[k].name);
         }
     }
-    zp_scene_bad(c, c->line, zp_scene_sections[s].name, name, "unknown key; expected one of: %s", list);
+    zp_scene_bad(c, c->line, zp_scene_sections[s].name, name, "unknown key; expected one of: %s",
+                 list);
 }
 
 /* the next raw line of the text (without its newline, CR, or the file's UTF-8 mark) in

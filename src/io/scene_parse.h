@@ -1,5 +1,6 @@
-/* Inside the scene reader (not for other floors): the key table, the parse context and the
-   helpers its files share: the line reader, the value getters, one reader per INI section. */
+/* Inside the scene reader (not for other floors): the key table's types (scene_keys.def), the
+   parse context and the helpers its files share: the line reader, the value getters, the
+   special keys' readers. */
 #ifndef ZP_SCENE_PARSE_H
 #define ZP_SCENE_PARSE_H
 
@@ -167,9 +168,8 @@ int zp_scene_parse_forces(parse_ctx *c, int nsec, zp_schedule *s);
 void zp_scene_set_forces(zp_scene *sc, const zp_schedule *s);
 
 zp_scene_reader zp_scene_read_name, zp_scene_read_section, zp_scene_read_lengths,
-    zp_scene_read_masses, zp_scene_read_damping, zp_scene_read_death_angle,
-    zp_scene_read_direction, zp_scene_read_forces, zp_scene_read_accuracy,
-    zp_scene_read_objective;
+    zp_scene_read_masses, zp_scene_read_damping, zp_scene_read_death_angle, zp_scene_read_direction,
+    zp_scene_read_forces, zp_scene_read_accuracy, zp_scene_read_objective;
 zp_scene_reader zp_scene_read_envelope, zp_scene_read_links, zp_scene_read_range,
     zp_scene_read_safety_factor, zp_scene_read_wind_range, zp_scene_read_drag_area;
 

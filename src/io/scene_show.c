@@ -18,6 +18,19 @@ static void list(char *out, size_t cap, const double *v, int n) {
     }
 }
 
+/* a mask of links (bit i: link i + 1) as their numbers; 0 is every link */
+static void links(char *out, size_t cap, unsigned mask, int nlink) {
+    if (mask == 0) {
+        snprintf(out, cap, "every link");
+    }
+    for (int i = 0, used = 0, first = 1; i < nlink && used < (int)cap; i++) {
+        if (mask >> i & 1) {
+            used += snprintf(out + used, cap - used, "%s%d", first ? "" : ", ", i + 1);
+            first = 0;
+        }
+    }
+}
+
 /* the shortest text that reads back as the same double */
 static void number(char *out, size_t cap, double v) {
     for (int digits = 15; digits <= 17; digits++) {
@@ -31,6 +44,7 @@ static void number(char *out, size_t cap, double v) {
 /* the value of a key whose member alone does not say it (lists, links, computed defaults):
    1 when written in out, 0 for a key its member says */
 static int hand_text(const zp_scene *sc, int k, char *out, size_t cap) {
+    const void *at = (const char *)sc + zp_scene_keys[k].field;
     switch (k) {
     case K_MAX_EVALS:
         snprintf(out, cap, "%ld (the search's default: %d per section)",
@@ -78,50 +92,54 @@ static int hand_text(const zp_scene *sc, int k, char *out, size_t cap) {
     case K_LENGTH_RANGE:
     case K_TROLLEY_MASS_RANGE:
     case K_DAMPING_RANGE:
-        list(out, cap, (const double *)((const char *)sc + zp_scene_keys[k].field), 2);
+        list(out, cap, at, 2);
         return 1;
     case K_G_LINKS:
-    case K_SCALE_LINKS: {
-        unsigned mask = *(const unsigned *)((const char *)sc + zp_scene_keys[k].field);
-        if (mask == 0) {
-            snprintf(out, cap, "every link");
-        }
-        for (int i = 0, used = 0, first = 1; i < sc->nlink && used < (int)cap; i++) {
-            if (mask >> i & 1) {
-                used += snprintf(out + used, cap - used, "%s%d", first ? "" : ", ", i + 1);
-                first = 0;
-            }
-        }
+    case K_SCALE_LINKS:
+        links(out, cap, *(const unsigned *)at, sc->nlink);
         return 1;
-    }
     default:
         return 0;
     }
 }
 
+/* a plain key's value, from its member as the table says the member holds it */
+static void member_text(const zp_scene *sc, int k, char *out, size_t cap) {
+    const void *at = (const char *)sc + zp_scene_keys[k].field;
+    switch (zp_scene_keys[k].type) {
+    case T_NUMBER:
+        number(out, cap, *(const double *)at);
+        break;
+    case T_INT:
+        snprintf(out, cap, "%d", *(const int *)at);
+        break;
+    case T_LONG:
+        snprintf(out, cap, "%ld", *(const long *)at);
+        break;
+    case T_ULONG:
+        snprintf(out, cap, "%lu", *(const unsigned long *)at);
+        break;
+    case T_TEXT:
+        snprintf(out, cap, "%s", (const char *)at);
+        break;
+    default: /* a list no lister above knows: only the required ones, never listed given */
+        snprintf(out, cap, "(required, not given)");
+        break;
+    }
+}
+
 /* the value key k holds in sc, as scene-file text; a key off by default and not given is off */
 static void value_text(const zp_scene *sc, int k, char *out, size_t cap) {
-    const zp_scene_key *key = &zp_scene_keys[k];
-    const void *at = (const char *)sc + key->field;
     int given = sc->given >> k & 1;
-    if (!given && key->dflt.how == D_OFF) {
+    zp_scene_how how = zp_scene_keys[k].dflt.how;
+    if (!given && how == D_OFF) {
         snprintf(out, cap, "off");
     } else if (sc->accuracy > 0 && (k == K_METHOD || k == K_RTOL || k == K_ATOL)) {
         snprintf(out, cap, "chosen for accuracy = %g s (work-precision table)", sc->accuracy);
-    } else if (hand_text(sc, k, out, cap)) {
-        return;
-    } else if (key->type == T_OTHER || (!given && key->dflt.how == D_REQUIRED)) {
+    } else if (!given && how == D_REQUIRED) {
         snprintf(out, cap, "(required, not given)");
-    } else if (key->type == T_NUMBER) {
-        number(out, cap, *(const double *)at);
-    } else if (key->type == T_INT) {
-        snprintf(out, cap, "%d", *(const int *)at);
-    } else if (key->type == T_LONG) {
-        snprintf(out, cap, "%ld", *(const long *)at);
-    } else if (key->type == T_ULONG) {
-        snprintf(out, cap, "%lu", *(const unsigned long *)at);
-    } else {
-        snprintf(out, cap, "%s", (const char *)at);
+    } else if (!hand_text(sc, k, out, cap)) {
+        member_text(sc, k, out, cap);
     }
 }
 
@@ -141,8 +159,8 @@ int zp_scene_print_added(const zp_scene *sc, FILE *f, const char *indent) {
             if (zp_scene_keys[k].sec == s && !(sc->given >> k & 1)) {
                 char v[256];
                 value_text(sc, k, v, sizeof v);
-                fprintf(f, "%s[%s] %s = %s\n", indent, zp_scene_sections[s].name, zp_scene_keys[k].name,
-                        v);
+                fprintf(f, "%s[%s] %s = %s\n", indent, zp_scene_sections[s].name,
+                        zp_scene_keys[k].name, v);
                 n++;
             }
         }

@@ -23,8 +23,8 @@ void zp_scene_bad_key(parse_ctx *c, int k, const char *fmt, ...) {
     vsnprintf(what, sizeof what, fmt, ap);
     va_end(ap);
     c->key_bad[k] = 1;
-    zp_scene_bad(c, c->key_line[k], zp_scene_sec_of(k), zp_scene_keys[k].name, "%s; expected %s", what,
-                 zp_scene_keys[k].expect);
+    zp_scene_bad(c, c->key_line[k], zp_scene_sec_of(k), zp_scene_keys[k].name, "%s; expected %s",
+                 what, zp_scene_keys[k].expect);
 }
 
 void zp_scene_bad_count(parse_ctx *c, int k, int n, const char *fmt, ...) {
@@ -34,8 +34,8 @@ void zp_scene_bad_count(parse_ctx *c, int k, int n, const char *fmt, ...) {
     vsnprintf(what, sizeof what, fmt, ap);
     va_end(ap);
     c->key_bad[k] = 1;
-    zp_scene_bad(c, c->key_line[k], zp_scene_sec_of(k), zp_scene_keys[k].name, "%d value%s, expected %s", n,
-                 n == 1 ? "" : "s", what);
+    zp_scene_bad(c, c->key_line[k], zp_scene_sec_of(k), zp_scene_keys[k].name,
+                 "%d value%s, expected %s", n, n == 1 ? "" : "s", what);
 }
 
 void zp_scene_missing(parse_ctx *c, int k, const char *what) {
@@ -123,6 +123,7 @@ int zp_scene_get_text(parse_ctx *c, int k, char *out, size_t cap) {
     strcpy(out, c->val[k]);
     return 1;
 }
+
 /* a whole number into key k's member, of the member's type */
 static void put_whole(zp_scene *sc, int k, unsigned long u) {
     void *at = zp_scene_member(sc, k);
