@@ -21,7 +21,7 @@ static void cell(const char *text) {
 int main(void) {
     for (int s = 0; s < S_COUNT; s++) {
         printf("## [%s]\n\n| key | default | expected | meaning |\n|---|---|---|---|\n",
-               zp_scene_sections[s].name);
+               zp_scene_keys_sections[s].name);
         for (int k = 0; k < K_COUNT; k++) {
             const zp_scene_key *key = &zp_scene_keys[k];
             if (key->sec == s) {

@@ -818,7 +818,7 @@ static const char *base_with(int k, const char *value) {
         const char *line = base[i];
         if (line[0] == '[') {
             snprintf(cur, sizeof cur, "%.*s", (int)strcspn(line + 1, "]"), line + 1);
-        } else if (!strcmp(cur, zp_scene_sections[key->sec].name) &&
+        } else if (!strcmp(cur, zp_scene_keys_sections[key->sec].name) &&
                    !strncmp(line, key->name, len) && line[len] == ' ') {
             line = found++ || !value ? "" : value;
         }
@@ -827,7 +827,7 @@ static const char *base_with(int k, const char *value) {
     }
     if (!found && value) {
         snprintf(text + strlen(text), sizeof text - strlen(text), "[%s]\n%s = %s\n",
-                 zp_scene_sections[key->sec].name, key->name, value);
+                 zp_scene_keys_sections[key->sec].name, key->name, value);
     }
     return text;
 }
@@ -841,14 +841,14 @@ static void expect_value(int k, const char *value, const char *what) {
     zp_diag_init(&d);
     zp_scene_load_string(base_with(k, value), "t.ini", &sc, &d);
     char message[512];
-    snprintf(message, sizeof message, "[%s] %s: %s", zp_scene_sections[key->sec].name,
+    snprintf(message, sizeof message, "[%s] %s: %s", zp_scene_keys_sections[key->sec].name,
              key->name, what ? what : "");
     char refusal[256];
     snprintf(refusal, sizeof refusal, "; expected %s", key->expect);
     int ok = what ? has_message(&d, message) : !has_message(&d, refusal);
     CHECK(ok);
     if (!ok) {
-        fprintf(stderr, "  [%s] %s = %s: wanted %s `%s`\n", zp_scene_sections[key->sec].name,
+        fprintf(stderr, "  [%s] %s = %s: wanted %s `%s`\n", zp_scene_keys_sections[key->sec].name,
                 key->name, value ? value : "(none)", what ? "" : "none like",
                 what ? message : refusal);
         show(&d);

@@ -58,7 +58,7 @@ const zp_scene_key zp_scene_keys[K_COUNT] = {
 
 #define ZP_KEY(id, ...)
 #define ZP_SECTION(id, section, optional_) [S_##id] = {section, optional_},
-const zp_scene_section zp_scene_sections[S_COUNT] = {
+const zp_scene_section zp_scene_keys_sections[S_COUNT] = {
 #include "scene_keys.def"
 };
 #undef ZP_SECTION

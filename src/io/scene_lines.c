@@ -11,7 +11,7 @@
 
 static int find_section(const char *name) {
     for (int s = 0; s < S_COUNT; s++) {
-        if (!strcmp(name, zp_scene_sections[s].name)) {
+        if (!strcmp(name, zp_scene_keys_sections[s].name)) {
             return s;
         }
     }
@@ -58,30 +58,30 @@ static void unknown_section(parse_ctx *c, const char *name) {
         return;
     }
     for (int s = 0; s < S_COUNT; s++) {
-        if (zp_diag_is_near(name, zp_scene_sections[s].name)) {
+        if (zp_diag_is_near(name, zp_scene_keys_sections[s].name)) {
             zp_scene_bad(c, c->line, NULL, NULL, "unknown section [%s]; did you mean [%s]?", name,
-                         zp_scene_sections[s].name);
+                         zp_scene_keys_sections[s].name);
             return;
         }
     }
     char list[256] = "";
     for (int s = 0; s < S_COUNT; s++) {
         size_t len = strlen(list);
-        snprintf(list + len, sizeof list - len, " [%s]", zp_scene_sections[s].name);
+        snprintf(list + len, sizeof list - len, " [%s]", zp_scene_keys_sections[s].name);
     }
     zp_scene_bad(c, c->line, NULL, NULL, "unknown section [%s]; expected one of%s", name, list);
 }
 
 static void unknown_key(parse_ctx *c, int s, const char *name) {
     if (c->schedule) {
-        zp_scene_bad(c, c->line, zp_scene_sections[s].name, name,
+        zp_scene_bad(c, c->line, zp_scene_keys_sections[s].name, name,
                      "unknown key; a schedule file holds only [drive] forces");
         return;
     }
     /* a right key in the wrong section says where it belongs, before any near miss */
     for (int k = 0; k < K_COUNT; k++) {
         if (!strcmp(name, zp_scene_keys[k].name)) {
-            zp_scene_bad(c, c->line, zp_scene_sections[s].name, name,
+            zp_scene_bad(c, c->line, zp_scene_keys_sections[s].name, name,
                          "unknown key here; `%s` belongs in [%s]", name, zp_scene_sec_of(k));
             return;
         }
@@ -97,8 +97,8 @@ static void unknown_key(parse_ctx *c, int s, const char *name) {
         }
     }
     if (best >= 0) {
-        zp_scene_bad(c, c->line, zp_scene_sections[s].name, name, "unknown key; did you mean `%s`?",
-                     zp_scene_keys[best].name);
+        zp_scene_bad(c, c->line, zp_scene_keys_sections[s].name, name,
+                     "unknown key; did you mean `%s`?", zp_scene_keys[best].name);
         return;
     }
     char list[256] = "";
@@ -108,8 +108,8 @@ static void unknown_key(parse_ctx *c, int s, const char *name) {
             snprintf(list + len, sizeof list - len, "%s%s", len ? ", " : "", zp_scene_keys[k].name);
         }
     }
-    zp_scene_bad(c, c->line, zp_scene_sections[s].name, name, "unknown key; expected one of: %s",
-                 list);
+    zp_scene_bad(c, c->line, zp_scene_keys_sections[s].name, name,
+                 "unknown key; expected one of: %s", list);
 }
 
 /* the next raw line of the text (without its newline, CR, or the file's UTF-8 mark) in
@@ -289,7 +289,7 @@ static int on_key(void *user, const char *section, const char *name, const char 
         return 1;
     }
     if (c->key_line[k]) {
-        zp_scene_bad(c, c->line, zp_scene_sections[s].name, name,
+        zp_scene_bad(c, c->line, zp_scene_keys_sections[s].name, name,
                      "duplicate key (first set on line %d); expected it once", c->key_line[k]);
         return 1;
     }

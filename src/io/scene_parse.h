@@ -77,11 +77,11 @@ typedef struct zp_scene_section {
     const char *name;
     int optional; /* off unless given: check lists what it sets */
 } zp_scene_section;
-extern const zp_scene_section zp_scene_sections[S_COUNT];
+extern const zp_scene_section zp_scene_keys_sections[S_COUNT];
 
 /* key k's section name */
 static inline const char *zp_scene_sec_of(int k) {
-    return zp_scene_sections[zp_scene_keys[k].sec].name;
+    return zp_scene_keys_sections[zp_scene_keys[k].sec].name;
 }
 /* where key k's value lives in sc: its member */
 static inline void *zp_scene_member(zp_scene *sc, int k) {

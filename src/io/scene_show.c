@@ -146,20 +146,20 @@ static void value_text(const zp_scene *sc, int k, char *out, size_t cap) {
 int zp_scene_print_added(const zp_scene *sc, FILE *f, const char *indent) {
     int n = 0;
     for (int s = 0; s < S_COUNT; s++) {
-        int optional = zp_scene_sections[s].optional;
+        int optional = zp_scene_keys_sections[s].optional;
         int any = s == S_ROBUST && sc->robust;
         for (int k = 0; k < K_COUNT; k++) {
             any |= zp_scene_keys[k].sec == s && (sc->given >> k & 1);
         }
         if (optional && !any) {
-            fprintf(f, "%s[%s]: none given, all off\n", indent, zp_scene_sections[s].name);
+            fprintf(f, "%s[%s]: none given, all off\n", indent, zp_scene_keys_sections[s].name);
             continue;
         }
         for (int k = 0; k < K_COUNT; k++) {
             if (zp_scene_keys[k].sec == s && !(sc->given >> k & 1)) {
                 char v[256];
                 value_text(sc, k, v, sizeof v);
-                fprintf(f, "%s[%s] %s = %s\n", indent, zp_scene_sections[s].name,
+                fprintf(f, "%s[%s] %s = %s\n", indent, zp_scene_keys_sections[s].name,
                         zp_scene_keys[k].name, v);
                 n++;
             }
@@ -206,15 +206,15 @@ static void json_value(FILE *f, const char *text) {
 
 void zp_scene_print_optional(const zp_scene *sc, FILE *f, int json) {
     for (int s = 0, first = 1; s < S_COUNT; s++) {
-        if (!zp_scene_sections[s].optional) {
+        if (!zp_scene_keys_sections[s].optional) {
             continue;
         }
         int n = 0;
         if (json) {
-            fprintf(f, "%s\"%s\": {", first ? "" : ", ", zp_scene_sections[s].name);
+            fprintf(f, "%s\"%s\": {", first ? "" : ", ", zp_scene_keys_sections[s].name);
             first = 0;
         } else {
-            fprintf(f, "%s:", zp_scene_sections[s].name);
+            fprintf(f, "%s:", zp_scene_keys_sections[s].name);
         }
         for (int k = 0; k < K_COUNT; k++) {
             if (!shown(sc, s, k)) {
