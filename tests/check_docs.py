@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """The user's documentation is whole and true to the program: every scene key the reader
-accepts is in docs/scene-file.md under its section, every option the commands' --help names
+accepts is in docs/scene-file.md under its section as the reader's key table prints it (its
+default, what it expects, what it means), every option the commands' --help names
 and every top-level JSON key `simulate --json` prints is in docs/commands.md, every link
 between the docs resolves, and nothing a user reads sends them to files a clone lacks.
 
-usage: check_docs.py ZIPOPT_EXE SOURCE_DIR"""
+usage: check_docs.py ZIPOPT_EXE SOURCE_DIR SCENE_KEYS_MD_EXE"""
 import json
 import os
 import re
@@ -14,7 +15,7 @@ import tempfile
 
 from checklib import check, done
 
-exe, src = sys.argv[1], sys.argv[2]
+exe, src, keys_exe = sys.argv[1], sys.argv[2], sys.argv[3]
 
 
 def read(rel):
@@ -22,24 +23,32 @@ def read(rel):
         return f.read()
 
 
-# the reader's key table: `[K_ID] = {S_SECTION, "name", ...}` and the section names in order
-lines_c = read("src/io/scene_lines.c")
-sec_names = re.search(r"zp_scene_sec_names\[S_COUNT\] = \{(.*?)\};", lines_c, re.S).group(1)
-sections = re.findall(r'"([a-z]+)"', sec_names)
-keys = re.findall(r'\[K_[A-Z0-9_]+\] = \{S_([A-Z]+), "([a-z0-9_]+)"', lines_c)
-if len(keys) < 40 or not sections:
-    check(False, "could not read the key table of src/io/scene_lines.c (%d keys)" % len(keys))
+# the key tables: under each `## [section]` heading the first table is the one the reader's key
+# table (src/io/scene_keys.def) prints
+def key_tables(text):
+    """{section: the lines of the first table under its `## [section]` heading}"""
+    out = {}
+    for sec, block in re.findall(r"^## \[([a-z]+)\]\n(.*?)(?=^## |\Z)", text, re.S | re.M):
+        lines = block.split("\n")
+        first = next((i for i, line in enumerate(lines) if line.startswith("|")), len(lines))
+        end = first
+        while end < len(lines) and lines[end].startswith("|"):
+            end += 1
+        out[sec] = lines[first:end]
+    return out
 
-scene_doc = read("docs/scene-file.md")
-# the text under each `## [section]` heading
-blocks = dict(re.findall(r"^## \[([a-z]+)\]\n(.*?)(?=^## |\Z)", scene_doc, re.S | re.M))
-for s in sections:
-    if s not in blocks:
-        check(False, "docs/scene-file.md has no heading `## [%s]`" % s)
-for sec, name in keys:
-    block = blocks.get(sec.lower(), "")
-    if not re.search(r"^\| `%s` \|" % re.escape(name), block, re.M):
-        check(False, "docs/scene-file.md does not document [%s] %s in a table row" % (sec.lower(), name))
+
+printed = subprocess.run([keys_exe], capture_output=True, text=True, check=True).stdout
+wanted = key_tables(printed)
+if len(wanted) < 10 or sum(len(t) - 2 for t in wanted.values()) < 40:
+    check(False, "%s printed no key tables" % keys_exe)
+documented = key_tables(read("docs/scene-file.md"))
+for sec, table in wanted.items():
+    if sec not in documented:
+        check(False, "docs/scene-file.md has no heading `## [%s]`" % sec)
+    elif documented[sec] != table:
+        check(False, "docs/scene-file.md: the table of [%s] is not the one the reader's key "
+              "table prints (%s); it should be:\n%s" % (sec, keys_exe, "\n".join(table)))
 
 # every option of every command's --help
 commands_doc = read("docs/commands.md")

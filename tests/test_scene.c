@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include <limits.h>
 #include <math.h>
 
 #include "check.h"
@@ -804,6 +805,158 @@ static void test_parse_list(void) {
     CHECK(big[0] == 0.25 && big[1999] == 1999.25);
 }
 
+/* the base with [sec] key = value for key k: in place of its lines where the base has it, else
+   under its own header at the end; value NULL: without the key */
+static const char *base_with(int k, const char *value) {
+    const zp_scene_key *key = &zp_scene_keys[k];
+    static char text[8192];
+    char cur[32] = "";
+    size_t len = strlen(key->name);
+    int found = 0;
+    text[0] = '\0';
+    for (int i = 0; i < NBASE; i++) {
+        const char *line = base[i];
+        if (line[0] == '[') {
+            snprintf(cur, sizeof cur, "%.*s", (int)strcspn(line + 1, "]"), line + 1);
+        } else if (!strcmp(cur, zp_scene_keys_sections[key->sec].name) &&
+                   !strncmp(line, key->name, len) && line[len] == ' ') {
+            line = found++ || !value ? "" : value;
+        }
+        snprintf(text + strlen(text), sizeof text - strlen(text), "%s%s%s\n",
+                 line == value ? key->name : "", line == value ? " = " : "", line);
+    }
+    if (!found && value) {
+        snprintf(text + strlen(text), sizeof text - strlen(text), "[%s]\n%s = %s\n",
+                 zp_scene_keys_sections[key->sec].name, key->name, value);
+    }
+    return text;
+}
+
+/* key k given value (NULL: not given): refused with `[sec] key: what` (what not NULL) or with
+   no refusal of its value (a rule joining it with other keys may still speak) */
+static void expect_value(int k, const char *value, const char *what) {
+    const zp_scene_key *key = &zp_scene_keys[k];
+    zp_scene sc;
+    zp_diag d;
+    zp_diag_init(&d);
+    zp_scene_load_string(base_with(k, value), "t.ini", &sc, &d);
+    char message[512];
+    snprintf(message, sizeof message, "[%s] %s: %s", zp_scene_keys_sections[key->sec].name,
+             key->name, what ? what : "");
+    char refusal[256];
+    snprintf(refusal, sizeof refusal, "; expected %s", key->expect);
+    int ok = what ? has_message(&d, message) : !has_message(&d, refusal);
+    CHECK(ok);
+    if (!ok) {
+        fprintf(stderr, "  [%s] %s = %s: wanted %s `%s`\n", zp_scene_keys_sections[key->sec].name,
+                key->name, value ? value : "(none)", what ? "" : "none like",
+                what ? message : refusal);
+        show(&d);
+    }
+}
+
+/* key k given value: refused with `what; expected ..` (its expected text) */
+static void expect_refused(int k, const char *value, const char *what) {
+    char message[512];
+    snprintf(message, sizeof message, "%s; expected %s", what, zp_scene_keys[k].expect);
+    expect_value(k, value, message);
+}
+
+/* each end of a plain number's rule is taken or refused as the rule says */
+static void check_number_rule(int k) {
+    zp_range r = zp_scene_keys[k].rule;
+    char text[64], what[96];
+    const double ends[2] = {r.lo, r.hi}, outward[2] = {-1, 1};
+    const int open[2] = {r.lo_open, r.hi_open};
+    for (int e = 0; e < 2; e++) {
+        if (isinf(ends[e])) {
+            continue;
+        }
+        /* the end itself, then a number beyond it */
+        double v = ends[e];
+        snprintf(text, sizeof text, "%.17g", v);
+        snprintf(what, sizeof what, "%g is out of range", v);
+        if (open[e]) {
+            expect_refused(k, text, what);
+        } else {
+            expect_value(k, text, NULL);
+        }
+        v = ends[e] + outward[e] * fmax(1, fabs(ends[e]));
+        snprintf(text, sizeof text, "%.17g", v);
+        snprintf(what, sizeof what, "%g is out of range", v);
+        expect_refused(k, text, what);
+    }
+}
+
+/* each end of a plain whole number's range is taken, a number beyond it refused */
+static void check_whole_range(int k) {
+    const zp_scene_key *key = &zp_scene_keys[k];
+    char text[64], what[128];
+    unsigned long beyond[2] = {key->min - 1, key->max + 1};
+    for (int e = 0; e < 2; e++) {
+        snprintf(text, sizeof text, "%lu", e ? key->max : key->min);
+        expect_value(k, text, NULL);
+        if (e ? key->max < ULONG_MAX : key->min > 0) {
+            snprintf(text, sizeof text, "%lu", beyond[e]);
+            snprintf(what, sizeof what, "`%s` is not a whole number in [%lu, %lu]", text,
+                     key->min, key->max);
+            expect_refused(k, text, what);
+        }
+    }
+}
+
+/* a key's default as the table gives it: what a scene without the key holds, within the key's
+   rule, and (a number) written in the docs as it reads back */
+static void check_default(const zp_scene *sc, int k) {
+    const zp_scene_key *key = &zp_scene_keys[k];
+    const char *at = (const char *)sc + key->field;
+    if (key->dflt.how == D_OFF) {
+        static const char zero[256];
+        CHECK(key->size <= sizeof zero && !memcmp(at, zero, key->size));
+    } else if (key->dflt.how == D_REQUIRED) {
+        char what[256];
+        snprintf(what, sizeof what, "missing; required: %s", key->dflt.text);
+        expect_value(k, NULL, what);
+    } else if (key->dflt.how == D_VALUE && key->type == T_TEXT) {
+        CHECK(strlen(key->dflt.text) < key->size && !strcmp(at, key->dflt.text));
+    } else if (key->dflt.how == D_VALUE && key->type == T_NUMBER) {
+        double v = key->dflt.num;
+        zp_range r = key->rule;
+        CHECK(*(const double *)at == v && strtod(key->dflt.docs, NULL) == v);
+        CHECK((r.lo_open ? v > r.lo : v >= r.lo) && (r.hi_open ? v < r.hi : v <= r.hi));
+    } else if (key->dflt.how == D_VALUE) {
+        unsigned long v = (unsigned long)key->dflt.num;
+        unsigned long held = key->type == T_INT    ? (unsigned long)*(const int *)at
+                             : key->type == T_LONG ? (unsigned long)*(const long *)at
+                                                   : *(const unsigned long *)at;
+        CHECK(held == v && v >= key->min && v <= key->max);
+        CHECK(strtod(key->dflt.docs, NULL) == key->dflt.num);
+    }
+}
+
+/* the key table (src/io/scene_keys.def): every key read, named once in its section, said in
+   the docs; each plain key's rule and every default as the table gives them */
+static void test_key_table(void) {
+    zp_scene sc;
+    zp_diag d;
+    zp_diag_init(&d);
+    CHECK(zp_scene_load_string(with_line(0, NULL), "t.ini", &sc, &d) == ZP_OK);
+    for (int k = 0; k < K_COUNT; k++) {
+        const zp_scene_key *key = &zp_scene_keys[k];
+        CHECK(key->read || key->type != T_OTHER);
+        CHECK(key->expect[0] && key->doc[0] && key->dflt.docs[0]);
+        for (int j = 0; j < k; j++) {
+            CHECK(zp_scene_keys[j].sec != key->sec || strcmp(zp_scene_keys[j].name, key->name));
+        }
+        check_default(&sc, k);
+        if (!key->read && key->type == T_NUMBER) {
+            check_number_rule(k);
+        } else if (!key->read && key->type != T_TEXT) {
+            check_whole_range(k);
+        }
+    }
+}
+
 int main(void) {
     test_numbers();
     test_margin_vs_death();
@@ -825,5 +978,6 @@ int main(void) {
     test_file_bytes();
     test_expr_names();
     test_course_probing();
+    test_key_table();
     return CHECK_DONE();
 }

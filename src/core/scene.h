@@ -116,7 +116,7 @@ typedef struct zp_scene {
     double rolling;                        /* rolling-resistance coefficient mu (default 0) */
     double kink_radius;                    /* m, 0: sharp kinks */
 
-    /* bit k set: the file gave key k of the reader's table (io/scene_read.h), so `check` can
+    /* bit k set: the file gave key k of the reader's table (io/scene_keys.def), so `check` can
        show every key zipopt added itself */
     unsigned long long given;
 

@@ -9,77 +9,9 @@
 #include "numtext.h"
 #include "scene_parse.h"
 
-const char *const zp_scene_sec_names[S_COUNT] = {"scene",  "course", "trolley",  "body",
-                                                 "drive",  "solver", "optimize", "limits",
-                                                 "robust", "physics"};
-
-const zp_scene_key zp_scene_keys[K_COUNT] = {
-    [K_NAME] = {S_SCENE, "name", "a folder name of letters, digits, `.`, `_` or `-`"},
-    [K_GRAVITY] = {S_SCENE, "gravity", "a number >= 0 (m/s^2)"},
-    [K_X_START] = {S_COURSE, "x_start", "a number (m)"},
-    [K_SECTION] = {S_COURSE, "section", "`x_end : f(x)`, x_end in m"},
-    [K_MASS] = {S_TROLLEY, "mass", "a number > 0 (kg)"},
-    [K_LENGTHS] = {S_BODY, "lengths", "1 to 8 numbers > 0 (m), one per link"},
-    [K_MASSES] = {S_BODY, "masses", "numbers > 0 (kg), one per link"},
-    [K_DAMPING] = {S_BODY, "damping", "numbers >= 0 (N m s/rad), one, or one per joint"},
-    [K_DEATH_ANGLE] = {S_BODY, "death_angle",
-                       "numbers in (0, 360] (deg), one for every joint or one per joint"},
-    [K_DIRECTION] = {S_DRIVE, "direction", "horizontal or tangent"},
-    [K_FORCES] = {S_DRIVE, "forces", "numbers (N), one per section"},
-    [K_MIN] = {S_DRIVE, "min", "a number (N)"},
-    [K_MAX] = {S_DRIVE, "max", "a number (N)"},
-    [K_METHOD] = {S_SOLVER, "method", "a method name (see zipopt --help)"},
-    [K_RTOL] = {S_SOLVER, "rtol", "a number in [" ZP_RTOL_MIN_S ", " ZP_RTOL_MAX_S "]"},
-    [K_ATOL] = {S_SOLVER, "atol", "a number in [" ZP_ATOL_MIN_S ", " ZP_ATOL_MAX_S "]"},
-    [K_T_MAX] = {S_SOLVER, "t_max", "a number in (0, " ZP_T_MAX_MAX_S "] (s)"},
-    [K_FORMULATION] = {S_SOLVER, "formulation", "a formulation name (see zipopt --help)"},
-    [K_OUTPUT_DT] = {S_SOLVER, "output_dt", "a number > 0 (s)"},
-    [K_ACCURACY] = {S_SOLVER, "accuracy",
-                    "a number in [" ZP_ACCURACY_MIN_S ", " ZP_ACCURACY_MAX_S
-                    "] (s), without rtol or atol"},
-    [K_MARGIN] = {S_OPTIMIZE, "margin", "a number >= 0 (deg) below death_angle"},
-    [K_MAX_EVALS] = {S_OPTIMIZE, "max_evals", "a whole number >= 1"},
-    [K_SEED] = {S_OPTIMIZE, "seed", "a whole number >= 0"},
-    [K_OBJECTIVE] = {S_OPTIMIZE, "objective", "nominal or slowest"},
-    [K_SEARCH_METHOD] = {S_OPTIMIZE, "method", "a method name (see zipopt --help)"},
-    [K_SEARCH_RTOL] = {S_OPTIMIZE, "rtol", "a number in [" ZP_RTOL_MIN_S ", " ZP_RTOL_MAX_S "]"},
-    [K_MAX_G] = {S_LIMITS, "max_g", "a number > 0 (g)"},
-    [K_MAX_JOINT_FORCE] = {S_LIMITS, "max_joint_force", "a number > 0 (N)"},
-    [K_MAX_ARRIVAL_SPEED] = {S_LIMITS, "max_arrival_speed", "a number > 0 (km/h)"},
-    [K_MAX_KINK_DV] = {S_LIMITS, "max_kink_dv", "a number > 0 (m/s)"},
-    [K_MIN_ARRIVAL_SPEED] = {S_LIMITS, "min_arrival_speed", "a number > 0 (km/h)"},
-    [K_G_ENVELOPE] = {S_LIMITS, "g_envelope",
-                      "1 to 8 pairs g:s of numbers > 0 (felt g above g for at most s seconds)"},
-    [K_G_LINKS] = {S_LIMITS, "g_links", "link numbers from 1 to the number of links"},
-    [K_FORCE_ERROR] = {S_ROBUST, "force_error", "a number in [0, 100) (%)"},
-    [K_MASS_RANGE] = {S_ROBUST, "mass_range", "two numbers lo, hi with 0 < lo <= hi (%)"},
-    [K_LENGTH_RANGE] = {S_ROBUST, "length_range", "two numbers lo, hi with 0 < lo <= hi (%)"},
-    [K_TROLLEY_MASS_RANGE] = {S_ROBUST, "trolley_mass_range",
-                              "two numbers lo, hi with 0 < lo <= hi (%)"},
-    [K_DAMPING_RANGE] = {S_ROBUST, "damping_range", "two numbers lo, hi with 0 < lo <= hi (%)"},
-    [K_START_ANGLE] = {S_ROBUST, "start_angle", "a number in [0, 90) (deg)"},
-    [K_SAMPLES] = {S_ROBUST, "samples", "a whole number >= 1"},
-    [K_VERIFY_SAMPLES] = {S_ROBUST, "verify_samples", "a whole number >= 1"},
-    [K_WIND_RANGE] = {S_ROBUST, "wind_range",
-                      "two numbers lo, hi with lo <= hi (m/s), with [physics] drag_area"},
-    [K_SCALE_LINKS] = {S_ROBUST, "scale_links", "link numbers from 1 to the number of links"},
-    [K_SAFETY_FACTOR] = {S_ROBUST, "safety_factor",
-                         "a number >= 1 that keeps every widened range above 0 %"},
-    [K_DRAG_AREA] = {S_PHYSICS, "drag_area",
-                     "numbers >= 0 (m^2), the trolley's then one per link (nlink + 1)"},
-    [K_AIR_DENSITY] = {S_PHYSICS, "air_density", "a number >= 0 (kg/m^3), > 0 with drag_area"},
-    [K_WIND] = {S_PHYSICS, "wind", "a number (m/s)"},
-    [K_ROLLING] = {S_PHYSICS, "rolling", "a number >= 0"},
-    [K_KINK_RADIUS] = {S_PHYSICS, "kink_radius", "a number >= 0 (m)"},
-};
-
-static const char *sec_of(int k) {
-    return zp_scene_sec_names[zp_scene_keys[k].sec];
-}
-
 static int find_section(const char *name) {
     for (int s = 0; s < S_COUNT; s++) {
-        if (!strcmp(name, zp_scene_sec_names[s])) {
+        if (!strcmp(name, zp_scene_keys_sections[s].name)) {
             return s;
         }
     }
@@ -126,29 +58,31 @@ static void unknown_section(parse_ctx *c, const char *name) {
         return;
     }
     for (int s = 0; s < S_COUNT; s++) {
-        if (zp_diag_is_near(name, zp_scene_sec_names[s])) {
+        if (zp_diag_is_near(name, zp_scene_keys_sections[s].name)) {
             zp_scene_bad(c, c->line, NULL, NULL, "unknown section [%s]; did you mean [%s]?", name,
-                         zp_scene_sec_names[s]);
+                         zp_scene_keys_sections[s].name);
             return;
         }
     }
-    zp_scene_bad(c, c->line, NULL, NULL,
-                 "unknown section [%s]; expected one of [scene] [course] [trolley] [body] [drive] "
-                 "[solver] [optimize] [limits] [robust] [physics]",
-                 name);
+    char list[256] = "";
+    for (int s = 0; s < S_COUNT; s++) {
+        size_t len = strlen(list);
+        snprintf(list + len, sizeof list - len, " [%s]", zp_scene_keys_sections[s].name);
+    }
+    zp_scene_bad(c, c->line, NULL, NULL, "unknown section [%s]; expected one of%s", name, list);
 }
 
 static void unknown_key(parse_ctx *c, int s, const char *name) {
     if (c->schedule) {
-        zp_scene_bad(c, c->line, zp_scene_sec_names[s], name,
+        zp_scene_bad(c, c->line, zp_scene_keys_sections[s].name, name,
                      "unknown key; a schedule file holds only [drive] forces");
         return;
     }
     /* a right key in the wrong section says where it belongs, before any near miss */
     for (int k = 0; k < K_COUNT; k++) {
         if (!strcmp(name, zp_scene_keys[k].name)) {
-            zp_scene_bad(c, c->line, zp_scene_sec_names[s], name,
-                         "unknown key here; `%s` belongs in [%s]", name, sec_of(k));
+            zp_scene_bad(c, c->line, zp_scene_keys_sections[s].name, name,
+                         "unknown key here; `%s` belongs in [%s]", name, zp_scene_sec_of(k));
             return;
         }
     }
@@ -163,8 +97,8 @@ static void unknown_key(parse_ctx *c, int s, const char *name) {
         }
     }
     if (best >= 0) {
-        zp_scene_bad(c, c->line, zp_scene_sec_names[s], name, "unknown key; did you mean `%s`?",
-                     zp_scene_keys[best].name);
+        zp_scene_bad(c, c->line, zp_scene_keys_sections[s].name, name,
+                     "unknown key; did you mean `%s`?", zp_scene_keys[best].name);
         return;
     }
     char list[256] = "";
@@ -174,7 +108,8 @@ static void unknown_key(parse_ctx *c, int s, const char *name) {
             snprintf(list + len, sizeof list - len, "%s%s", len ? ", " : "", zp_scene_keys[k].name);
         }
     }
-    zp_scene_bad(c, c->line, zp_scene_sec_names[s], name, "unknown key; expected one of: %s", list);
+    zp_scene_bad(c, c->line, zp_scene_keys_sections[s].name, name,
+                 "unknown key; expected one of: %s", list);
 }
 
 /* the next raw line of the text (without its newline, CR, or the file's UTF-8 mark) in
@@ -339,6 +274,9 @@ static int on_key(void *user, const char *section, const char *name, const char 
     }
     /* `section` repeats, once per course section */
     if (k == K_SECTION) {
+        if (c->nsect == 0) {
+            c->key_line[k] = c->line;
+        }
         if (c->nsect < ZP_MAX_SECTIONS) {
             c->sect_line[c->nsect] = c->line;
             snprintf(c->sect_val[c->nsect], LINE_CAP, "%s", value);
@@ -351,7 +289,7 @@ static int on_key(void *user, const char *section, const char *name, const char 
         return 1;
     }
     if (c->key_line[k]) {
-        zp_scene_bad(c, c->line, zp_scene_sec_names[s], name,
+        zp_scene_bad(c, c->line, zp_scene_keys_sections[s].name, name,
                      "duplicate key (first set on line %d); expected it once", c->key_line[k]);
         return 1;
     }

@@ -1,88 +1,92 @@
-/* Inside the scene reader (not for other floors): the key table, the parse context and the
-   helpers its files share: the line reader, the value getters, one reader per INI section. */
+/* Inside the scene reader (not for other floors): the key table's types (scene_keys.def), the
+   parse context and the helpers its files share: the line reader, the value getters, the
+   special keys' readers. */
 #ifndef ZP_SCENE_PARSE_H
 #define ZP_SCENE_PARSE_H
 
 #include <ini.h>
+#include <math.h>
 
 #include "drive.h"
 #include "scene.h"
 
+/* the sections and keys of scene_keys.def: S_SCENE.., K_NAME.. in its order */
+#define ZP_KEY(id, ...)
+#define ZP_SECTION(id, ...) S_##id,
 enum {
-    S_SCENE,
-    S_COURSE,
-    S_TROLLEY,
-    S_BODY,
-    S_DRIVE,
-    S_SOLVER,
-    S_OPTIMIZE,
-    S_LIMITS,
-    S_ROBUST,
-    S_PHYSICS,
+#include "scene_keys.def"
     S_COUNT
 };
-
+#undef ZP_SECTION
+#define ZP_SECTION(id, ...)
+#undef ZP_KEY
+#define ZP_KEY(id, ...) K_##id,
 enum {
-    K_NAME,
-    K_GRAVITY,
-    K_X_START,
-    K_SECTION,
-    K_MASS,
-    K_LENGTHS,
-    K_MASSES,
-    K_DAMPING,
-    K_DEATH_ANGLE,
-    K_DIRECTION,
-    K_FORCES,
-    K_MIN,
-    K_MAX,
-    K_METHOD,
-    K_RTOL,
-    K_ATOL,
-    K_T_MAX,
-    K_FORMULATION,
-    K_OUTPUT_DT,
-    K_ACCURACY,
-    K_MARGIN,
-    K_MAX_EVALS,
-    K_SEED,
-    K_SEARCH_METHOD,
-    K_SEARCH_RTOL,
-    K_OBJECTIVE,
-    K_MAX_G,
-    K_MAX_JOINT_FORCE,
-    K_MAX_ARRIVAL_SPEED,
-    K_MAX_KINK_DV,
-    K_MIN_ARRIVAL_SPEED,
-    K_G_ENVELOPE,
-    K_G_LINKS,
-    K_FORCE_ERROR,
-    K_MASS_RANGE,
-    K_LENGTH_RANGE,
-    K_TROLLEY_MASS_RANGE,
-    K_DAMPING_RANGE,
-    K_START_ANGLE,
-    K_SAMPLES,
-    K_VERIFY_SAMPLES,
-    K_SAFETY_FACTOR,
-    K_SCALE_LINKS,
-    K_WIND_RANGE,
-    K_DRAG_AREA,
-    K_AIR_DENSITY,
-    K_WIND,
-    K_ROLLING,
-    K_KINK_RADIUS,
+#include "scene_keys.def"
     K_COUNT
 };
+#undef ZP_KEY
+#undef ZP_SECTION
 
-/* the docs/scene-file.md contract: section, key and what a value must be (for "expected ...") */
+/* the numbers a key accepts: from lo to hi, each end included unless open */
+typedef struct zp_range {
+    double lo, hi;
+    int lo_open, hi_open;
+} zp_range;
+#define R_ANY ((zp_range){-INFINITY, INFINITY, 0, 0})
+#define R_POS ((zp_range){0, INFINITY, 1, 0})
+#define R_NONNEG ((zp_range){0, INFINITY, 0, 0})
+
+/* what a key's member of zp_scene holds: how the plain reader stores it, how the defaults set
+   it and how `check` lists it (T_OTHER: only its own reader and lister know) */
+typedef enum { T_NUMBER, T_INT, T_LONG, T_ULONG, T_TEXT, T_OTHER } zp_scene_type;
+
+/* a key's default (scene_keys.def): D_VALUE num, or text for a text; D_OFF zero, listed as
+   off; D_REQUIRED none, text says what the missing message asks for; D_HAND set and listed
+   by hand-written code */
+typedef enum { D_VALUE, D_OFF, D_REQUIRED, D_HAND } zp_scene_how;
+typedef struct zp_scene_default {
+    zp_scene_how how;
+    double num;
+    const char *text;
+    const char *docs; /* the docs' default column */
+} zp_scene_default;
+
+typedef struct parse_ctx parse_ctx;
+/* a special key's reader: key k's raw value (absent too, unless required) -> sc, its refusals
+   reported */
+typedef void zp_scene_reader(parse_ctx *c, zp_scene *sc, int k);
+
+/* one line of scene_keys.def */
 typedef struct zp_scene_key {
     int sec;
     const char *name;
-    const char *expect;
+    size_t field;           /* offsetof(zp_scene, member) of the member it fills */
+    size_t size;            /* sizeof that member: a text's capacity */
+    zp_scene_type type;     /* what the member holds */
+    zp_range rule;          /* a number's values */
+    unsigned long min, max; /* a whole number's values */
+    zp_scene_reader *read;  /* a special key's own reader; NULL: read as its type says */
+    zp_scene_default dflt;
+    const char *expect; /* after "expected" in its messages, and in the docs */
+    const char *doc;    /* what it means, for the docs */
 } zp_scene_key;
 extern const zp_scene_key zp_scene_keys[K_COUNT];
-extern const char *const zp_scene_sec_names[S_COUNT];
+
+typedef struct zp_scene_section {
+    const char *name;
+    int optional; /* off unless given: check lists what it sets */
+} zp_scene_section;
+extern const zp_scene_section zp_scene_keys_sections[S_COUNT];
+
+/* key k's section name */
+static inline const char *zp_scene_sec_of(int k) {
+    return zp_scene_keys_sections[zp_scene_keys[k].sec].name;
+}
+/* where key k's value lives in sc: its member */
+static inline void *zp_scene_member(zp_scene *sc, int k) {
+    return (char *)sc + zp_scene_keys[k].field;
+}
 
 #define LINE_CAP INI_MAX_LINE /* inih's line buffer; a longer line is an error, not split */
 /* a [drive] forces line: every parameter of the largest schedule in 17 digits */
@@ -93,7 +97,7 @@ extern const char *const zp_scene_sec_names[S_COUNT];
    was. Our own reader hands it the text line by line and counts; inih calls the handler for a
    line before it asks for the next, so ctx->line is that key's line. The reader also checks
    each line's shape, which lets every syntax error be reported (inih keeps only the first). */
-typedef struct parse_ctx {
+struct parse_ctx {
     const char *file; /* borrowed: the name in messages */
     zp_diag *d;
     int schedule;     /* a schedule file: only [drive] forces */
@@ -103,7 +107,7 @@ typedef struct parse_ctx {
     size_t pos;
     int line;              /* line being parsed (1-based); after parsing, the last line */
     int sec_line[S_COUNT]; /* line of each section's first header, 0 if absent */
-    int key_line[K_COUNT]; /* line of each key, 0 if absent */
+    int key_line[K_COUNT]; /* line of each key (section: its first), 0 if absent */
     int key_bad[K_COUNT];  /* 1 once a value of the key was refused: rules joining keys skip it */
     char val[K_COUNT][LINE_CAP];
     char forces_val[ZP_FORCES_TEXT_MAX];  /* [drive] forces: its line may exceed LINE_CAP */
@@ -119,7 +123,7 @@ typedef struct parse_ctx {
         int line;
         char sec[16], key[LINE_CAP], what[ZP_DIAG_TEXT];
     } msg[MSG_MAX];
-} parse_ctx;
+};
 
 /* ---- scene_lines.c: the line reader, messages and "did you mean" hints ---- */
 
@@ -132,8 +136,6 @@ void zp_scene_bad(parse_ctx *c, int line, const char *sec, const char *key, cons
 int zp_scene_flush(parse_ctx *c);
 
 /* ---- scene_values.c: raw text -> numbers, each with the key's "expected ..." ---- */
-
-typedef enum { R_ANY, R_POS, R_NONNEG } zp_range;
 
 /* a message about key k on its own line: what; expected ... */
 void zp_scene_bad_key(parse_ctx *c, int k, const char *fmt, ...)
@@ -151,25 +153,25 @@ int zp_scene_get_list(parse_ctx *c, int k, zp_range r, double *out, int max);
 int zp_scene_get_whole(parse_ctx *c, int k, unsigned long lo, unsigned long hi, unsigned long *out);
 /* key k as text that fits cap bytes: 1 if set, 0 absent, -1 bad */
 int zp_scene_get_text(parse_ctx *c, int k, char *out, size_t cap);
+/* a plain key k (number, whole number or text, as its table line says) into its member of sc
+   when given and accepted */
+void zp_scene_read_plain(parse_ctx *c, zp_scene *sc, int k);
+/* every key's table default (NUM, TXT) into its member of sc; the others are left alone */
+void zp_scene_put_defaults(zp_scene *sc);
 
-/* ---- scene_sections.c, scene_extras.c: one reader per INI section ---- */
+/* ---- scene_sections.c, scene_extras.c: the special keys' readers (scene_keys.def) ---- */
 
 /* [drive] forces through the drive module, for a course of nsec sections: 1 read into *s,
    0 absent, -1 bad (reported) */
-int zp_scene_read_forces(parse_ctx *c, int nsec, zp_schedule *s);
+int zp_scene_parse_forces(parse_ctx *c, int nsec, zp_schedule *s);
 /* the schedule's kind and parameters into the scene */
 void zp_scene_set_forces(zp_scene *sc, const zp_schedule *s);
 
-void zp_scene_read_scene(parse_ctx *c, zp_scene *sc);
-void zp_scene_read_course(parse_ctx *c, zp_scene *sc);
-void zp_scene_read_trolley(parse_ctx *c, zp_scene *sc);
-void zp_scene_read_body(parse_ctx *c, zp_scene *sc);
-void zp_scene_read_drive(parse_ctx *c, zp_scene *sc);
-void zp_scene_read_solver(parse_ctx *c, zp_scene *sc);
-void zp_scene_read_optimize(parse_ctx *c, zp_scene *sc);
-void zp_scene_read_limits(parse_ctx *c, zp_scene *sc);
-void zp_scene_read_robust(parse_ctx *c, zp_scene *sc);
-void zp_scene_read_physics(parse_ctx *c, zp_scene *sc);
+zp_scene_reader zp_scene_read_name, zp_scene_read_section, zp_scene_read_lengths,
+    zp_scene_read_masses, zp_scene_read_damping, zp_scene_read_death_angle, zp_scene_read_direction,
+    zp_scene_read_forces, zp_scene_read_accuracy, zp_scene_read_objective;
+zp_scene_reader zp_scene_read_envelope, zp_scene_read_links, zp_scene_read_range,
+    zp_scene_read_safety_factor, zp_scene_read_wind_range, zp_scene_read_drag_area;
 
 /* ---- scene_expr.c: `y0`, `pi` and `e` replaced by numbers in each section's f(x) ---- */
 

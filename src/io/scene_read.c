@@ -1,6 +1,7 @@
 /* Scene files (docs/scene-file.md) -> zp_scene, the reader's entry points: defaults, the file read
-   whole (capped in size), the line pass (scene_lines.c), one reader per section and the rules
-   joining them; every violation reported as FILE:LINE: [section] key: what; expected. */
+   whole (capped in size), the line pass (scene_lines.c), every key read as its line of
+   scene_keys.def says and the rules joining them; every violation reported as
+   FILE:LINE: [section] key: what; expected. */
 #include "scene_read.h"
 
 #include <errno.h>
@@ -22,37 +23,20 @@ static void set_defaults(zp_scene *sc, const char *path) {
     if (dot && dot != sc->name) {
         *dot = '\0';
     }
-    sc->gravity = 9.81;
+    zp_scene_put_defaults(sc);
+    /* the keys whose default the table leaves to hand (HAND) */
     sc->ndamping = 1;
     sc->death_angle = 180;
     sc->ndeath = 1;
     for (int i = 0; i < ZP_MAX_LINKS; i++) {
         sc->death_angles[i] = 180;
     }
-    strcpy(sc->direction, "horizontal");
-    sc->force_min = 0;
-    sc->force_max = 500;
-    strcpy(sc->method, "cvode-adams");
-    strcpy(sc->formulation, "lagrange");
-    sc->rtol = 1e-8;
-    sc->atol = 1e-10;
-    sc->t_max = 120;
-    sc->output_dt = 0.02;
-    sc->margin = 10;
-    sc->max_evals = 5000;
-    sc->seed = 1;
-    /* the fastest setting that keeps search runs within 1e-6 s (docs/trade.md) */
-    strcpy(sc->search_method, "gsl-rk8pd");
-    sc->search_rtol = 1e-5;
+    sc->max_evals = ZP_SCENE_EVALS_PER_SECTION;
     /* [robust] ranges at 100 % of nominal mean "not varied" */
     for (int i = 0; i < 2; i++) {
         sc->mass_range[i] = sc->length_range[i] = 100;
         sc->trolley_mass_range[i] = sc->damping_range[i] = 100;
     }
-    sc->robust_samples = 64;
-    sc->verify_samples = 2000;
-    sc->safety_factor = 1;
-    sc->air_density = 1.225;
 }
 
 /* a scene is a few kilobytes; the cap keeps /dev/zero or a wrong file from eating memory */
@@ -82,18 +66,32 @@ char *zp_scene_read_file(const char *path, size_t *len, zp_diag *d) {
     return text;
 }
 
-/* the second pass: raw values -> sc, section by section, then the rules joining them */
-static void read_sections(parse_ctx *c, zp_scene *sc) {
-    zp_scene_read_scene(c, sc);
-    zp_scene_read_course(c, sc);
-    zp_scene_read_trolley(c, sc);
-    zp_scene_read_body(c, sc);
-    zp_scene_read_drive(c, sc);
-    zp_scene_read_solver(c, sc);
-    zp_scene_read_optimize(c, sc);
-    zp_scene_read_limits(c, sc);
-    zp_scene_read_robust(c, sc);
-    zp_scene_read_physics(c, sc);
+/* the lines of keys that later stages judge, for their messages */
+static void keep_lines(const parse_ctx *c, zp_scene *sc) {
+    sc->line_forces = c->key_line[K_FORCES];
+    sc->line_method = c->key_line[K_METHOD];
+    sc->line_formulation = c->key_line[K_FORMULATION];
+    sc->line_search_method = c->key_line[K_SEARCH_METHOD];
+    sc->line_kink_radius = c->key_line[K_KINK_RADIUS];
+    /* 0 also when refused: the search's default budget stands */
+    sc->line_max_evals = c->key_bad[K_MAX_EVALS] ? 0 : c->key_line[K_MAX_EVALS];
+}
+
+/* the second pass: raw values -> sc, key by key in the table's order (a required key that is
+   absent reported, a special key by its own reader), then the rules joining keys */
+static void read_keys(parse_ctx *c, zp_scene *sc) {
+    for (int k = 0; k < K_COUNT; k++) {
+        const zp_scene_key *key = &zp_scene_keys[k];
+        if (!c->key_line[k] && key->dflt.how == D_REQUIRED) {
+            zp_scene_missing(c, k, key->dflt.text);
+        } else if (key->read) {
+            key->read(c, sc, k);
+        } else {
+            zp_scene_read_plain(c, sc, k);
+        }
+    }
+    sc->robust = c->sec_line[S_ROBUST] != 0;
+    keep_lines(c, sc);
     zp_scene_rules(c, sc);
 }
 
@@ -110,9 +108,9 @@ static zp_status load_text(const char *text, size_t len, const char *path, int n
     c->d = d;
     c->need_name = need_name;
     zp_scene_parse_text(c, text, len);
-    read_sections(c, sc);
+    read_keys(c, sc);
     for (int k = 0; k < K_COUNT; k++) {
-        if (c->key_line[k] || (k == K_SECTION && c->nsect)) {
+        if (c->key_line[k]) {
             sc->given |= 1ull << k;
         }
     }
@@ -190,7 +188,7 @@ zp_status zp_scene_overlay_schedule(const char *path, zp_scene *sc, zp_diag *d) 
     free(text);
     /* the forces must fit the scene they are laid over */
     zp_schedule sched;
-    if (zp_scene_read_forces(c, sc->nsec, &sched) == 0) {
+    if (zp_scene_parse_forces(c, sc->nsec, &sched) == 0) {
         zp_scene_missing(c, K_FORCES, "the forces (N), one per section");
     }
     int nbad = zp_scene_flush(c);

@@ -1,5 +1,6 @@
 /* The scene reader's values: raw key text -> numbers, lists, whole numbers and names, each
-   refusal naming the key and what it expects. */
+   refusal naming the key and what it expects; the plain keys read and defaulted as their line
+   of scene_keys.def says. */
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -10,10 +11,6 @@
 #include "numtext.h"
 #include "scene_parse.h"
 #include "scene_read.h"
-
-static const char *sec_of(int k) {
-    return zp_scene_sec_names[zp_scene_keys[k].sec];
-}
 
 int zp_scene_parse_list(const char *text, double *out, int max, char *why, size_t whylen) {
     return zp_text_list(text, out, max, why, whylen);
@@ -26,8 +23,8 @@ void zp_scene_bad_key(parse_ctx *c, int k, const char *fmt, ...) {
     vsnprintf(what, sizeof what, fmt, ap);
     va_end(ap);
     c->key_bad[k] = 1;
-    zp_scene_bad(c, c->key_line[k], sec_of(k), zp_scene_keys[k].name, "%s; expected %s", what,
-                 zp_scene_keys[k].expect);
+    zp_scene_bad(c, c->key_line[k], zp_scene_sec_of(k), zp_scene_keys[k].name, "%s; expected %s",
+                 what, zp_scene_keys[k].expect);
 }
 
 void zp_scene_bad_count(parse_ctx *c, int k, int n, const char *fmt, ...) {
@@ -37,17 +34,17 @@ void zp_scene_bad_count(parse_ctx *c, int k, int n, const char *fmt, ...) {
     vsnprintf(what, sizeof what, fmt, ap);
     va_end(ap);
     c->key_bad[k] = 1;
-    zp_scene_bad(c, c->key_line[k], sec_of(k), zp_scene_keys[k].name, "%d value%s, expected %s", n,
-                 n == 1 ? "" : "s", what);
+    zp_scene_bad(c, c->key_line[k], zp_scene_sec_of(k), zp_scene_keys[k].name,
+                 "%d value%s, expected %s", n, n == 1 ? "" : "s", what);
 }
 
 void zp_scene_missing(parse_ctx *c, int k, const char *what) {
     int line = c->sec_line[zp_scene_keys[k].sec] ? c->sec_line[zp_scene_keys[k].sec] : c->line;
-    zp_scene_bad(c, line, sec_of(k), zp_scene_keys[k].name, "missing; required: %s", what);
+    zp_scene_bad(c, line, zp_scene_sec_of(k), zp_scene_keys[k].name, "missing; required: %s", what);
 }
 
 static int in_range(double v, zp_range r) {
-    return r == R_ANY || (r == R_POS && v > 0) || (r == R_NONNEG && v >= 0);
+    return (r.lo_open ? v > r.lo : v >= r.lo) && (r.hi_open ? v < r.hi : v <= r.hi);
 }
 
 int zp_scene_get_number(parse_ctx *c, int k, zp_range r, double *out) {
@@ -125,4 +122,44 @@ int zp_scene_get_text(parse_ctx *c, int k, char *out, size_t cap) {
     }
     strcpy(out, c->val[k]);
     return 1;
+}
+
+/* a whole number into key k's member, of the member's type */
+static void put_whole(zp_scene *sc, int k, unsigned long u) {
+    void *at = zp_scene_member(sc, k);
+    if (zp_scene_keys[k].type == T_INT) {
+        *(int *)at = (int)u;
+    } else if (zp_scene_keys[k].type == T_LONG) {
+        *(long *)at = (long)u;
+    } else {
+        *(unsigned long *)at = u;
+    }
+}
+
+void zp_scene_read_plain(parse_ctx *c, zp_scene *sc, int k) {
+    const zp_scene_key *key = &zp_scene_keys[k];
+    unsigned long u;
+    if (key->type == T_NUMBER) {
+        zp_scene_get_number(c, k, key->rule, zp_scene_member(sc, k));
+    } else if (key->type == T_TEXT) {
+        zp_scene_get_text(c, k, zp_scene_member(sc, k), key->size);
+    } else if (zp_scene_get_whole(c, k, key->min, key->max, &u) > 0) {
+        put_whole(sc, k, u);
+    }
+}
+
+void zp_scene_put_defaults(zp_scene *sc) {
+    for (int k = 0; k < K_COUNT; k++) {
+        const zp_scene_key *key = &zp_scene_keys[k];
+        if (key->dflt.how != D_VALUE) {
+            continue;
+        }
+        if (key->type == T_NUMBER) {
+            *(double *)zp_scene_member(sc, k) = key->dflt.num;
+        } else if (key->type == T_TEXT) {
+            snprintf(zp_scene_member(sc, k), key->size, "%s", key->dflt.text);
+        } else {
+            put_whole(sc, k, (unsigned long)key->dflt.num);
+        }
+    }
 }
