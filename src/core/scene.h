@@ -38,6 +38,9 @@
 #define ZP_ACCURACY_MIN_S "1e-12"
 #define ZP_ACCURACY_MAX_S "1e-1"
 
+/* room for this many keys' "given" bits (io/scene_keys.def) */
+#define ZP_SCENE_GIVEN_WORDS 2
+
 typedef struct zp_scene {
     char path[1024];           /* the file this came from, for messages */
     char name[ZP_NAME_MAX];    /* [scene] name, default: the file's stem */
@@ -118,11 +121,16 @@ typedef struct zp_scene {
 
     /* bit k set: the file gave key k of the reader's table (io/scene_keys.def), so `check` can
        show every key zipopt added itself */
-    unsigned long long given;
+    unsigned long long given[ZP_SCENE_GIVEN_WORDS];
 
     /* lines of keys that later stages judge (0 if absent), for their messages */
     int line_forces, line_method, line_formulation, line_search_method, line_kink_radius;
     int line_max_evals; /* 0: max_evals not given: ZP_SCENE_EVALS_PER_SECTION per section */
 } zp_scene;
+
+/* 1 when the file gave key k of the key table (io/scene_keys.def) */
+static inline int zp_scene_given(const zp_scene *sc, int k) {
+    return (int)(sc->given[k / 64] >> (k % 64) & 1);
+}
 
 #endif

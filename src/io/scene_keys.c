@@ -6,7 +6,7 @@
 
 #include "scene_parse.h"
 
-_Static_assert(K_COUNT <= 64, "zp_scene.given holds one bit per key");
+_Static_assert(K_COUNT <= 64 * ZP_SCENE_GIVEN_WORDS, "zp_scene.given holds one bit per key");
 
 /* the table's vocabulary, one macro per word, kept on one line each (clang-format 14 would
    split the _Generic selections and brace initializers apart) */

@@ -111,7 +111,7 @@ static zp_status load_text(const char *text, size_t len, const char *path, int n
     read_keys(c, sc);
     for (int k = 0; k < K_COUNT; k++) {
         if (c->key_line[k]) {
-            sc->given |= 1ull << k;
+            sc->given[k / 64] |= 1ull << (k % 64);
         }
     }
     int nbad = zp_scene_flush(c);

@@ -130,7 +130,7 @@ static void member_text(const zp_scene *sc, int k, char *out, size_t cap) {
 
 /* the value key k holds in sc, as scene-file text; a key off by default and not given is off */
 static void value_text(const zp_scene *sc, int k, char *out, size_t cap) {
-    int given = sc->given >> k & 1;
+    int given = zp_scene_given(sc, k);
     zp_scene_how how = zp_scene_keys[k].dflt.how;
     if (!given && how == D_OFF) {
         snprintf(out, cap, "off");
@@ -149,14 +149,14 @@ int zp_scene_print_added(const zp_scene *sc, FILE *f, const char *indent) {
         int optional = zp_scene_keys_sections[s].optional;
         int any = s == S_ROBUST && sc->robust;
         for (int k = 0; k < K_COUNT; k++) {
-            any |= zp_scene_keys[k].sec == s && (sc->given >> k & 1);
+            any |= zp_scene_keys[k].sec == s && (zp_scene_given(sc, k));
         }
         if (optional && !any) {
             fprintf(f, "%s[%s]: none given, all off\n", indent, zp_scene_keys_sections[s].name);
             continue;
         }
         for (int k = 0; k < K_COUNT; k++) {
-            if (zp_scene_keys[k].sec == s && !(sc->given >> k & 1)) {
+            if (zp_scene_keys[k].sec == s && !(zp_scene_given(sc, k))) {
                 char v[256];
                 value_text(sc, k, v, sizeof v);
                 fprintf(f, "%s[%s] %s = %s\n", indent, zp_scene_keys_sections[s].name,
@@ -174,7 +174,7 @@ static int shown(const zp_scene *sc, int s, int k) {
     if (zp_scene_keys[k].sec != s) {
         return 0;
     }
-    return (s == S_ROBUST && sc->robust) || (sc->given >> k & 1);
+    return (s == S_ROBUST && sc->robust) || (zp_scene_given(sc, k));
 }
 
 /* a value as JSON: a number, a list of numbers, or (anything else) a string */
