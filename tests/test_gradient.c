@@ -54,6 +54,9 @@ static void compare(const char *what, const zp_model *m, const zp_sim_opts *o,
         return;
     }
     probe mid = run_at(m, o, sh);
+    const zp_result *plain = tu_run(m, o, &(zp_input){.sched = sh});
+    printf("  %s: cost %.2fx a plain run (%.4f s against %.4f s; %ld against %ld steps)\n", what,
+           g.wall_s / plain->wall_s, g.wall_s, plain->wall_s, g.steps, plain->steps);
     CHECK_NEAR(g.time, mid.time, 1e-8 * (1 + mid.time));
     CHECK_NEAR(g.margin_angle, mid.margin, 1e-7); /* two step sequences' extrema */
     if (!g.smooth) {
