@@ -1,4 +1,4 @@
-/* Exact gradients of a run (docs/search.md "Gradients"): the derivatives of the finish time and
+/* Exact gradients of a run (zipopt simulate --gradient): the derivatives of the finish time and
    of the margin angle (the largest relative joint angle reached) with respect to the schedule's
    parameters, from forward sensitivities s_k = dy/dp_k integrated beside the state, with their
    jumps (saltation) at every event: kinks (the impulse), section switches, arc tangent points
