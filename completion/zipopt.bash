@@ -47,7 +47,7 @@ _zipopt() {
     esac
     local opts
     case $cmd in
-    simulate) opts="--force --schedule --json --sample-times --out --plot --frames-at --animate
+    simulate) opts="--force --schedule --json --sample-times --gradient --out --plot --frames-at --animate
                     --fps --size --speedup --help" ;;
     check) opts="--json --help" ;;
     landscape) opts="--force-range --slice --range --force --schedule --out --json --help" ;;

@@ -88,6 +88,14 @@ ZIPOPT_API int zipopt_scene_load_schedule(zipopt_scene *s, const char *path, cha
    The run owns its copy of everything: free it with zipopt_run_free. */
 ZIPOPT_API zipopt_run *zipopt_simulate(zipopt_scene *s, char *err, size_t errlen);
 ZIPOPT_API void zipopt_run_free(zipopt_run *r); /* NULL is fine */
+/* The gradient of the scene's run at its forces, exact (forward sensitivities, `zipopt simulate
+   --gradient`): d time / d p_k (s per N: the finish, death or stall time) into dtime and
+   d margin angle / d p_k (deg per N: the largest relative joint angle reached) into dmargin,
+   for each schedule parameter p_k (n at least their count). Returns the count, *smooth 1 where
+   the run is differentiable there (0: it meets a point where it is not, e.g. trapped at a
+   kink), or -1 with why in err. */
+ZIPOPT_API int zipopt_gradient(zipopt_scene *s, double *dtime, double *dmargin, int n,
+                               int *smooth, char *err, size_t errlen);
 
 ZIPOPT_API int zipopt_run_outcome(const zipopt_run *r);  /* ZIPOPT_FINISHED, _DIED, _STALLED */
 ZIPOPT_API const char *zipopt_outcome_name(int outcome); /* "finished", .. ; NULL if unknown */

@@ -18,7 +18,7 @@
 
 static void usage(FILE *f) {
     fputs("usage: zipopt simulate SCENE.ini [--force F1,F2,..] [--schedule FILE] [--json]\n"
-          "                       [--sample-times T1,T2,..] [--out DIR]\n"
+          "                       [--sample-times T1,T2,..] [--gradient] [--out DIR]\n"
           "                       [--plot] [--frames-at x=X1,.. | t=T1,..] [--animate]\n"
           "                       [--fps N] [--size WxH] [--speedup S]\n"
           "\n"
@@ -29,6 +29,8 @@ static void usage(FILE *f) {
           "  --schedule FILE     a schedule file ([drive] forces) laid over the scene\n"
           "  --json              print the result as one JSON object (keys: docs/commands.md)\n"
           "  --sample-times T,.. also report the state at these times (s)\n"
+          "  --gradient          also the derivatives of the time and the margin angle with\n"
+          "                      respect to each schedule parameter (exact: sensitivities)\n"
           "  --out DIR           write trajectory.csv and summary.json in DIR itself\n"
           "                      (default out/<scene name>/simulate/)\n"
           "  --plot              also draw the run with gnuplot into the same folder:\n"
@@ -51,7 +53,7 @@ static void usage(FILE *f) {
 typedef struct sim_args {
     const char *scene, *schedule, *out;
     const char *force_text, *sample_text;
-    int json;
+    int json, gradient;
     int plot, animate; /* --frames-at and --animate imply --plot */
     const char *frames_text, *fps_text, *size_text, *speedup_text;
 } sim_args;
@@ -67,7 +69,8 @@ enum {
     O_FRAMES,
     O_FPS,
     O_SIZE,
-    O_SPEEDUP
+    O_SPEEDUP,
+    O_GRADIENT
 };
 static const struct option options[] = {
     {"help", no_argument, NULL, 'h'},
@@ -82,6 +85,7 @@ static const struct option options[] = {
     {"fps", required_argument, NULL, O_FPS},
     {"size", required_argument, NULL, O_SIZE},
     {"speedup", required_argument, NULL, O_SPEEDUP},
+    {"gradient", no_argument, NULL, O_GRADIENT},
     {NULL, 0, NULL, 0},
 };
 
@@ -127,6 +131,9 @@ static int parse_args(int argc, char **argv, sim_args *a) {
             break;
         case O_SPEEDUP:
             a->speedup_text = optarg;
+            break;
+        case O_GRADIENT:
+            a->gradient = 1;
             break;
         default:
             return -1;
@@ -340,6 +347,20 @@ static int say_figures(const char *dir, const zp_plot_opts *po, const zp_plot_in
 }
 
 /* the answer's run and its error estimate; with [solver] accuracy, tightened until it is met */
+/* the gradient's lines of the text summary */
+static void print_gradient(const zp_schedule *sh, const zp_sens_result *g) {
+    printf("gradient (exact, sensitivities), per %s:\n", zp_drive_unit(sh));
+    for (int k = 0; k < g->np; k++) {
+        char label[64];
+        zp_drive_param_label(sh, k, label, sizeof label);
+        printf("  %-12s d time %+.9e s, d margin angle %+.9e deg\n", label, g->dtime[k],
+               g->dmargin[k] * 180 / M_PI);
+    }
+    if (!g->smooth) {
+        printf("  not smooth there: %s\n", g->why_not);
+    }
+}
+
 static zp_status run_answer(const zp_model *m, double accuracy, zp_sim_opts *o,
                             const zp_input *in, zp_sim **s, zp_result *r, zp_estimate *e,
                             zp_accuracy *a) {
@@ -420,12 +441,17 @@ int zp_cmd_simulate(int argc, char **argv) {
         status = ZP_EXIT_USAGE;
         goto done;
     }
+    zp_sens_result grad;
+    if (a.gradient && zp_sens_run(m, &o, &st.sched, &grad)) {
+        fprintf(stderr, "zipopt simulate: --gradient: %s; nothing was written\n", grad.message);
+        goto done;
+    }
     int nsmp;
     const zp_row *smp = zp_sim_samples(s, &nsmp);
     zp_run_meta meta = {st.sc.name, zp_method_get(o.method)->name,
                         zp_formulation_get(o.formulation)->name, o.rtol, o.atol, &st.sched, &est,
                         samples + nsmp, nsample - nsmp, &lim,
-                        st.sc.accuracy > 0 ? &acc : NULL};
+                        st.sc.accuracy > 0 ? &acc : NULL, a.gradient ? &grad : NULL};
     zp_tx t;
     zp_plot_info info;
     if (zp_cli_out_begin(&t, "simulate", "simulate", a.out, &st.sc)) {
@@ -445,6 +471,9 @@ int zp_cmd_simulate(int argc, char **argv) {
         print_estimate(&r, &est);
         if (meta.accuracy) {
             print_accuracy(&acc);
+        }
+        if (a.gradient) {
+            print_gradient(&st.sched, &grad);
         }
     }
     fprintf(a.json ? stderr : stdout, "wrote in %s: %s\n", t.dir, t.written);

@@ -97,6 +97,30 @@ void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp
     }
 }
 
+/* the "gradient" object (docs/commands.md): per schedule parameter, the derivatives of the
+   time and of the largest joint angle (deg) */
+static void write_gradient(FILE *f, const zp_schedule *sh, const zp_sens_result *g) {
+    fputs("  \"gradient\": {\"parameters\": [", f);
+    for (int k = 0; k < sh->np; k++) {
+        char label[64];
+        zp_drive_param_label(sh, k, label, sizeof label);
+        fputs(k ? ", " : "", f);
+        zp_out_json_string(f, label);
+    }
+    fputs("], \"time\": ", f);
+    num_list(f, g->dtime, g->np, 1.0);
+    fputs(", \"margin_angle\": ", f);
+    num_list(f, g->dmargin, g->np, DEG);
+    fprintf(f, ", \"limits\": {}, \"smooth\": %s, \"not_smooth_because\": ",
+            g->smooth ? "true" : "false");
+    if (g->smooth) {
+        fputs("null", f);
+    } else {
+        zp_out_json_string(f, g->why_not);
+    }
+    fputs("},\n", f);
+}
+
 void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp_sim *s,
                         const zp_run_meta *meta) {
     int nsamples, nk;
@@ -177,6 +201,9 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
     fputs("  \"limits\": ", f);
     zp_out_json_limits(f, m, r, meta->lim);
     fputs(",\n", f);
+    if (meta->gradient) {
+        write_gradient(f, meta->sched, meta->gradient);
+    }
     write_samples(f, m, samples, nsamples);
     fputs("  \"samples_not_reached\": ", f);
     num_list(f, meta->unreached, meta->nunreached, 1.0);

@@ -7,6 +7,7 @@
 #include "accuracy.h"
 #include "estimate.h"
 #include "scenario.h"
+#include "sens.h"
 #include "sim.h"
 
 /* What the run was, echoed so a JSON file stands on its own. */
@@ -21,6 +22,7 @@ typedef struct zp_run_meta {
     int nunreached;
     const zp_limits *lim;        /* borrowed; NULL: no [limits] (each reached value still shown) */
     const zp_accuracy *accuracy; /* borrowed; NULL: no accuracy was requested */
+    const zp_sens_result *gradient; /* borrowed; NULL: no gradient was asked for */
 } zp_run_meta;
 
 /* A number that round-trips, or null if it is not finite. */

@@ -17,6 +17,7 @@
 #include "out_columns.h"
 #include "prep.h"
 #include "scene_read.h"
+#include "sens.h"
 
 /* the stop flag is handed to the search as its sig_atomic_t flag */
 _Static_assert(_Generic((sig_atomic_t)0, int : 1, default : 0), "sig_atomic_t is int");
@@ -373,6 +374,34 @@ zipopt_run *zipopt_simulate(zipopt_scene *s, char *err, size_t errlen) {
         return NULL;
     }
     return u;
+}
+
+int zipopt_gradient(zipopt_scene *s, double *dtime, double *dmargin, int n, int *smooth,
+                    char *err, size_t errlen) {
+    if (!s || !dtime || !dmargin || !smooth) {
+        say(err, errlen, "no scene or no room for the gradient given");
+        return -1;
+    }
+    const zp_schedule *sh = &s->st.sched;
+    if (n < sh->np) {
+        say(err, errlen, "room for %d parameters, the schedule has %d", n, sh->np);
+        return -1;
+    }
+    zp_sens_result g;
+    /* its own workspace builds course evaluators, which may be libmatheval's: in turn */
+    pthread_mutex_lock(&turn);
+    zp_status st = zp_sens_run(s->st.m, &s->st.sim, sh, &g);
+    pthread_mutex_unlock(&turn);
+    if (st) {
+        say(err, errlen, "%s", g.message);
+        return -1;
+    }
+    for (int k = 0; k < g.np; k++) {
+        dtime[k] = g.dtime[k];
+        dmargin[k] = g.dmargin[k] * 180 / M_PI;
+    }
+    *smooth = g.smooth;
+    return g.np;
 }
 
 void zipopt_run_free(zipopt_run *r) {

@@ -1,0 +1,134 @@
+/* The sensitivity equations s_k' = J s_k + df/dp_k and the derivative of the kink map.
+ *
+ * Design note: each product J s_k + df/dp_k is the derivative of the plain rates along the
+ * direction (s_k, e_k) in (state, parameters), taken on the plain equations themselves (every
+ * formulation, effect and course provider as the run has them) by the five-point stencil
+ * (-F(2h) + 8 F(h) - 8 F(-h) + F(-2h)) / 12h. Its truncation error is O(h^4) and its round-off
+ * O(eps / h): with h a relative step of 1e-3 of the state's scale both sit near 1e-12 of the
+ * rates, below what an rtol 1e-11 run resolves (tests/test_gradient.c measures it against
+ * central differences of whole runs). The alternative, the formulation's rates differentiated
+ * by hand or by dual numbers, would be exact to round-off but written once per formulation and
+ * effect; the drive is linear in its parameters, so df/dp_k carries no stencil error at all. */
+#include <math.h>
+#include <string.h>
+
+#include "impulse.h"
+#include "sens_int.h"
+#include "sim_rhs.h"
+
+/* the relative step of the stencil: O(h^4) truncation against O(eps / h) round-off */
+#define ZP_SENS_H 1e-3
+
+/* the step along (s, e_k) that moves no entry of the state (positions and rates: the work
+   integrals feed nothing back) nor p_k by more than ZP_SENS_H of its scale */
+static double step_along(const zp_sens *c, const double *y, const double *s, int k) {
+    double r = 1 / fmax(fabs(c->sched.p[k]), 1);
+    for (int i = 0; i < c->sim->w0; i++) {
+        r = fmax(r, fabs(s[i]) / fmax(fabs(y[i]), 1));
+    }
+    return ZP_SENS_H / r;
+}
+
+/* the plain rates at y, the course read on the piece the integrator restarted on (continued
+   past its ends) as without rolling resistance: with it the plain run reads the piece under
+   x, whose f'' jumps at an arc's tangent point inside the stencil */
+static int rates(zp_sens *c, double t, const double *y, double *f) {
+    zp_sim *s = c->sim;
+    if (!(s->m->physics & ZP_PHYS_ROLLING)) {
+        return c->rhs(t, y, f, s);
+    }
+    zp_drive_now dn = zp_sim_rhs_drive_now(s, t, y);
+    dn.tr = zp_model_track_piece(s->m, s->course, s->sec, s->arc, y[0]);
+    zp_drive_push(s->sched, s->m->drive, t, y[0], y[s->w0 / 2], s->sec, dn.tr.fp, &dn.fx,
+                  &dn.fy);
+    return s->form->rhs(s->m, s->fwork, &dn, y, f, NULL);
+}
+
+int zp_sens_rates(zp_sens *c, double t, const double *y, double *f) {
+    return rates(c, t, y, f);
+}
+
+/* the rates at y + a h s with p_k + a h, into f */
+static int rates_at(zp_sens *c, double t, const double *y, const double *s, int k, double p_k,
+                    double a, double h, double *f) {
+    double *yp = c->scratch + 3 * c->n;
+    for (int i = 0; i < c->n; i++) {
+        yp[i] = y[i] + a * h * s[i];
+    }
+    c->sched.p[k] = p_k + a * h;
+    return rates(c, t, yp, f);
+}
+
+int zp_sens_rhs(double t, const double *ya, double *yd, void *user) {
+    zp_sens *c = user;
+    int n = c->n;
+    int rc = rates(c, t, ya, yd);
+    double *f2 = c->scratch, *f1 = c->scratch + n, *g = c->scratch + 2 * n;
+    for (int k = 0; k < c->np && !rc; k++) {
+        const double *s = ya + n * (k + 1);
+        double *ds = yd + n * (k + 1), p_k = c->sched.p[k], h = step_along(c, ya, s, k);
+        rc = rates_at(c, t, ya, s, k, p_k, 2, h, f2) || rates_at(c, t, ya, s, k, p_k, 1, h, f1);
+        for (int i = 0; i < n && !rc; i++) {
+            ds[i] = 8 * f1[i] - f2[i];
+        }
+        rc = rc || rates_at(c, t, ya, s, k, p_k, -1, h, f1) ||
+             rates_at(c, t, ya, s, k, p_k, -2, h, g);
+        for (int i = 0; i < n && !rc; i++) {
+            ds[i] = (ds[i] - 8 * f1[i] + g[i]) / (12 * h);
+        }
+        c->sched.p[k] = p_k;
+    }
+    return rc;
+}
+
+int zp_sens_root(double t, const double *ya, double *g, void *user) {
+    zp_sens *c = user;
+    return c->root(t, ya, g, c->sim);
+}
+
+int zp_sens_kink_map(zp_sens *c, const double *y_in, int to, double *y_out) {
+    zp_sim *s = c->sim;
+    const zp_model *m = s->m;
+    double b = m->xb[to > s->sec ? to : s->sec];
+    zp_chain ch = zp_sim_rhs_chain(s, y_in);
+    zp_track entered = s->track(m, s->course, to, b);
+    ch.q[0] = b;
+    ch.q[1] = entered.f;
+    zp_impulse imp;
+    if (m->physics & ZP_PHYS_ROUNDED) {
+        ch.v[1] = entered.fp * ch.v[0]; /* an arc has no kink: only onto the course at b */
+    } else if (zp_impulse_apply(m, entered.fp, &ch, &imp)) {
+        return 1;
+    }
+    s->form->from_chain(m, &ch, y_in + s->w0, y_out);
+    return 0;
+}
+
+int zp_sens_kink_deriv(zp_sens *c, const double *y, const double *u, int to, double *dh) {
+    int n = c->n;
+    double *yp = c->scratch + 3 * n, *hp = c->scratch, r = 0;
+    for (int i = 0; i < c->sim->w0; i++) {
+        r = fmax(r, fabs(u[i]) / fmax(fabs(y[i]), 1));
+    }
+    memset(dh, 0, sizeof *dh * n);
+    if (r == 0) {
+        return 0;
+    }
+    double h = ZP_SENS_H / r;
+    static const double at[4] = {2, 1, -1, -2}, wt[4] = {-1, 8, -8, 1};
+    for (int j = 0; j < 4; j++) {
+        for (int i = 0; i < n; i++) {
+            yp[i] = y[i] + at[j] * h * u[i];
+        }
+        if (zp_sens_kink_map(c, yp, to, hp)) {
+            return 1;
+        }
+        for (int i = 0; i < n; i++) {
+            dh[i] += wt[j] * hp[i];
+        }
+    }
+    for (int i = 0; i < n; i++) {
+        dh[i] /= 12 * h;
+    }
+    return 0;
+}
