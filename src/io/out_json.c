@@ -29,13 +29,19 @@ void zp_out_json_string(FILE *f, const char *s) {
     fputc('"', f);
 }
 
-static void key_num(FILE *f, const char *key, double v, const char *sep) {
+void zp_out_json_key(FILE *f, const char *key, double v, const char *sep) {
     fprintf(f, "\"%s\": ", key);
     zp_out_json_number(f, v);
     fputs(sep, f);
 }
 
-static void num_list(FILE *f, const double *v, int n, double scale) {
+void zp_out_json_key_string(FILE *f, const char *key, const char *s, const char *sep) {
+    fprintf(f, "\"%s\": ", key);
+    zp_out_json_string(f, s);
+    fputs(sep, f);
+}
+
+void zp_out_json_list(FILE *f, const double *v, int n, double scale) {
     fputc('[', f);
     for (int i = 0; i < n; i++) {
         zp_out_json_number(f, v[i] * scale);
@@ -48,15 +54,15 @@ static void write_samples(FILE *f, const zp_model *m, const zp_row *s, int n) {
     fputs("  \"samples\": [", f);
     for (int k = 0; k < n; k++) {
         fputs(k ? ",\n    {" : "\n    {", f);
-        key_num(f, "t", s[k].t, ", ");
-        key_num(f, "x", s[k].c.q[0], ", ");
-        key_num(f, "y", s[k].c.q[1], ", ");
+        zp_out_json_key(f, "t", s[k].t, ", ");
+        zp_out_json_key(f, "x", s[k].c.q[0], ", ");
+        zp_out_json_key(f, "y", s[k].c.q[1], ", ");
         fprintf(f, "\"section\": %d, \"theta\": ", s[k].sec + 1);
-        num_list(f, s[k].c.q + 2, m->nlink, DEG);
+        zp_out_json_list(f, s[k].c.q + 2, m->nlink, DEG);
         fputs(", \"omega\": ", f);
-        num_list(f, s[k].c.v + 2, m->nlink, DEG);
+        zp_out_json_list(f, s[k].c.v + 2, m->nlink, DEG);
         fputs(", ", f);
-        key_num(f, "normal_force", s[k].loads.normal, "}");
+        zp_out_json_key(f, "normal_force", s[k].loads.normal, "}");
     }
     fputs(n ? "\n  ],\n" : "],\n", f);
 }
@@ -72,9 +78,9 @@ void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp
             fprintf(f, "\"%s\": [", zp_limit_name(i));
             for (int l = 0; l < m->nenv; l++) {
                 fputs(l ? ", {" : "{", f);
-                key_num(f, "g", m->env_g[l], ", ");
-                key_num(f, "allowed_s", m->env_s[l], ", ");
-                key_num(f, "longest_s", r->env_longest[l], "}");
+                zp_out_json_key(f, "g", m->env_g[l], ", ");
+                zp_out_json_key(f, "allowed_s", m->env_s[l], ", ");
+                zp_out_json_key(f, "longest_s", r->env_longest[l], "}");
             }
             fputs(i + 1 < ZP_LIMIT_COUNT ? "], " : "]}", f);
             continue;
@@ -82,13 +88,13 @@ void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp
         fprintf(f, "\"%s\": {", zp_limit_name(i));
         if (!zp_limit_reached_in(r, i)) { /* never measured: neither kept nor broken */
             fputs("\"reached\": null, ", f);
-            key_num(f, "limit", max > 0 ? max : NAN, max > 0 ? ", \"kept\": null}" : "}");
+            zp_out_json_key(f, "limit", max > 0 ? max : NAN, max > 0 ? ", \"kept\": null}" : "}");
             fputs(i + 1 < ZP_LIMIT_COUNT ? ", " : "}", f);
             continue;
         }
-        key_num(f, "reached", v[i], ", ");
+        zp_out_json_key(f, "reached", v[i], ", ");
         if (max > 0) {
-            key_num(f, "limit", max, "");
+            zp_out_json_key(f, "limit", max, "");
             fprintf(f, ", \"kept\": %s}", zp_limits_kept(i, v[i], max) ? "true" : "false");
         } else {
             fputs("\"limit\": null}", f);
@@ -106,30 +112,30 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
     zp_out_json_string(f, meta->scene);
     fprintf(f, ",\n  \"method\": \"%s\",\n  \"formulation\": \"%s\",\n  ", meta->method,
             meta->formulation);
-    key_num(f, "rtol", meta->rtol, ", ");
-    key_num(f, "atol", meta->atol, ",\n");
+    zp_out_json_key(f, "rtol", meta->rtol, ", ");
+    zp_out_json_key(f, "atol", meta->atol, ",\n");
     fputs("  \"forces\": ", f);
-    num_list(f, meta->sched->p, meta->sched->np, 1.0);
+    zp_out_json_list(f, meta->sched->p, meta->sched->np, 1.0);
     fprintf(f, ",\n  \"outcome\": \"%s\",\n  ", zp_sim_outcome_name(r->outcome));
-    key_num(f, "time", r->time, ",\n  ");
-    key_num(f, "x", r->x, ",\n  ");
-    key_num(f, "speed", r->v, ",\n");
+    zp_out_json_key(f, "time", r->time, ",\n  ");
+    zp_out_json_key(f, "x", r->x, ",\n  ");
+    zp_out_json_key(f, "speed", r->v, ",\n");
     if (meta->estimate) {
         /* null when the tighter run failed: no estimate, no verdict */
         const zp_estimate *e = meta->estimate;
         fputs("  ", f);
-        key_num(f, "time_error", e->ok ? e->time_error : NAN, ", ");
-        key_num(f, "time_error_rtol", e->rtol, ", ");
+        zp_out_json_key(f, "time_error", e->ok ? e->time_error : NAN, ", ");
+        zp_out_json_key(f, "time_error_rtol", e->rtol, ", ");
         fprintf(f, "\"sensitive\": %s,\n", !e->ok ? "null" : e->sensitive ? "true" : "false");
     }
     if (meta->accuracy) {
         const zp_accuracy *a = meta->accuracy;
         fputs("  \"accuracy\": {", f);
-        key_num(f, "requested", a->requested, ", ");
-        key_num(f, "met", a->met, ", ");
+        zp_out_json_key(f, "requested", a->requested, ", ");
+        zp_out_json_key(f, "met", a->met, ", ");
         fprintf(f, "\"ok\": %s, \"method\": \"%s\", ", a->ok ? "true" : "false",
                 zp_method_get(a->method)->name);
-        key_num(f, "rtol", a->rtol, ", ");
+        zp_out_json_key(f, "rtol", a->rtol, ", ");
         fprintf(f, "\"reruns\": %d},\n", a->reruns);
     }
     if (r->died_link) {
@@ -146,42 +152,42 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
     for (int k = 0; k < nk; k++) {
         const zp_crossing *c = &cross[k];
         fputs(k ? ",\n    {" : "\n    {", f);
-        key_num(f, "t", c->t, ", ");
-        key_num(f, "x", c->x, ", ");
+        zp_out_json_key(f, "t", c->t, ", ");
+        zp_out_json_key(f, "x", c->x, ", ");
         fprintf(f, "\"from_section\": %d, \"to_section\": %d, ", c->from + 1, c->to + 1);
-        key_num(f, "impulse", c->impulse, ", ");
-        key_num(f, "energy_lost", c->energy_lost, m->narc ? ", \"rounded\": true}" : "}");
+        zp_out_json_key(f, "impulse", c->impulse, ", ");
+        zp_out_json_key(f, "energy_lost", c->energy_lost, m->narc ? ", \"rounded\": true}" : "}");
     }
     fputs(nk ? "\n  ],\n" : "],\n", f);
     fprintf(f, "  \"kink_crossings\": %d,\n  \"max_rel_angle\": ", r->ncross);
-    num_list(f, r->max_rel_angle, m->nlink, DEG);
+    zp_out_json_list(f, r->max_rel_angle, m->nlink, DEG);
     fputs(",\n  \"energy\": {", f);
-    key_num(f, "initial", r->e_initial, ", ");
-    key_num(f, "final", r->e_final, ", ");
-    key_num(f, "drive_work", r->w_drive, ", ");
-    key_num(f, "damper_work", r->w_damp, ", ");
-    key_num(f, "impulse_loss", r->e_impulse, ", ");
+    zp_out_json_key(f, "initial", r->e_initial, ", ");
+    zp_out_json_key(f, "final", r->e_final, ", ");
+    zp_out_json_key(f, "drive_work", r->w_drive, ", ");
+    zp_out_json_key(f, "damper_work", r->w_damp, ", ");
+    zp_out_json_key(f, "impulse_loss", r->e_impulse, ", ");
     for (int k = 0; zp_effect_work_shown(m->physics) && k < ZP_EFFECT_NWORK; k++) {
-        key_num(f, zp_effect_work_names(k)->column, r->w_effect[k], ", ");
+        zp_out_json_key(f, zp_effect_work_names(k)->column, r->w_effect[k], ", ");
     }
-    key_num(f, "residual", zp_estimate_energy_residual(r), "},\n  ");
-    key_num(f, "constraint_residual", r->constraint_residual, ",\n");
+    zp_out_json_key(f, "residual", zp_estimate_energy_residual(r), "},\n  ");
+    zp_out_json_key(f, "constraint_residual", r->constraint_residual, ",\n");
     fputs("  \"loads\": {\"joint_peak\": ", f);
-    num_list(f, r->peaks.joint, m->nlink, 1.0);
+    zp_out_json_list(f, r->peaks.joint, m->nlink, 1.0);
     fputs(", ", f);
-    key_num(f, "normal_min", r->peaks.normal_min, ", ");
-    key_num(f, "normal_max", r->peaks.normal_max, ", ");
+    zp_out_json_key(f, "normal_min", r->peaks.normal_min, ", ");
+    zp_out_json_key(f, "normal_max", r->peaks.normal_max, ", ");
     fputs("\"acc_peak_g\": ", f);
-    num_list(f, r->peaks.acc_g, m->nlink, 1.0);
+    zp_out_json_list(f, r->peaks.acc_g, m->nlink, 1.0);
     fputs("},\n", f);
     fputs("  \"limits\": ", f);
     zp_out_json_limits(f, m, r, meta->lim);
     fputs(",\n", f);
     write_samples(f, m, samples, nsamples);
     fputs("  \"samples_not_reached\": ", f);
-    num_list(f, meta->unreached, meta->nunreached, 1.0);
+    zp_out_json_list(f, meta->unreached, meta->nunreached, 1.0);
     fputs(",\n", f);
     fprintf(f, "  \"stats\": {\"steps\": %ld, \"rejected_steps\": %ld, \"rhs_evals\": %ld, ",
             r->steps, r->rejected, r->rhs_evals);
-    key_num(f, "wall_s", r->wall_s, "}\n}\n");
+    zp_out_json_key(f, "wall_s", r->wall_s, "}\n}\n");
 }
