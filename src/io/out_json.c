@@ -4,6 +4,7 @@
 #include <math.h>
 
 #include "estimate.h"
+#include "out_columns.h"
 
 #define DEG (180.0 / M_PI)
 
@@ -50,19 +51,42 @@ void zp_out_json_list(FILE *f, const double *v, int n, double scale) {
     fputc(']', f);
 }
 
+/* the keys of a sample, in their order: each a quantity of the trajectory's table, its value
+   and unit the table's; list: one per link, as a list */
+static const struct {
+    const char *key;
+    zp_out_quantity q;
+    int list;
+} sample_key[] = {
+    {"t", ZP_OUT_Q_T, 0},           {"x", ZP_OUT_Q_X, 0},         {"y", ZP_OUT_Q_Y, 0},
+    {"section", ZP_OUT_Q_SECTION, 0}, {"theta", ZP_OUT_Q_THETA, 1}, {"omega", ZP_OUT_Q_OMEGA, 1},
+    {"normal_force", ZP_OUT_Q_NORMAL, 0},
+};
+#define NSAMPLE_KEY ((int)(sizeof sample_key / sizeof *sample_key))
+
+static void write_sample(FILE *f, const zp_model *m, const zp_row *s, const zp_out_column *col) {
+    double v[ZP_OUT_COLUMNS_MAX];
+    zp_out_columns_values(m, s, v);
+    for (int i = 0; i < NSAMPLE_KEY; i++) {
+        int n, j = zp_out_columns_find(m, sample_key[i].q, &n);
+        const char *sep = i + 1 < NSAMPLE_KEY ? ", " : "}";
+        if (sample_key[i].list) {
+            fprintf(f, "\"%s\": ", sample_key[i].key);
+            zp_out_json_list(f, v + j, n, col[j].csv_scale);
+            fputs(sep, f);
+        } else {
+            zp_out_json_key(f, sample_key[i].key, v[j] * col[j].csv_scale, sep);
+        }
+    }
+}
+
 static void write_samples(FILE *f, const zp_model *m, const zp_row *s, int n) {
+    zp_out_column col[ZP_OUT_COLUMNS_MAX];
+    zp_out_columns(m, col);
     fputs("  \"samples\": [", f);
     for (int k = 0; k < n; k++) {
         fputs(k ? ",\n    {" : "\n    {", f);
-        zp_out_json_key(f, "t", s[k].t, ", ");
-        zp_out_json_key(f, "x", s[k].c.q[0], ", ");
-        zp_out_json_key(f, "y", s[k].c.q[1], ", ");
-        fprintf(f, "\"section\": %d, \"theta\": ", s[k].sec + 1);
-        zp_out_json_list(f, s[k].c.q + 2, m->nlink, DEG);
-        fputs(", \"omega\": ", f);
-        zp_out_json_list(f, s[k].c.v + 2, m->nlink, DEG);
-        fputs(", ", f);
-        zp_out_json_key(f, "normal_force", s[k].loads.normal, "}");
+        write_sample(f, m, &s[k], col);
     }
     fputs(n ? "\n  ],\n" : "],\n", f);
 }
