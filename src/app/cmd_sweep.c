@@ -13,10 +13,10 @@
 #include "cli.h"
 #include "mpi_queue.h"
 #include "mpi_spread.h"
+#include "report_sweep.h"
 #include "scene_read.h"
 #include "sim_opts.h"
 #include "sweep_csv.h"
-#include "sweep_out.h"
 
 #define MAX_ARGS_VARY                                                                              \
     16 /* --vary options kept for checking; more than ZP_SWEEP_MAX_VARY is an error */
@@ -301,36 +301,24 @@ static int check_points(study *st) {
 }
 
 /* sweep.csv, summary.json and the figure into the transaction t, committed as a set */
-static int write_outputs(zp_tx *t, const zp_sweep_out *o, const char *summary,
+static int write_outputs(zp_tx *t, const zp_report_sweep *o, const char *summary,
                          int *no_gnuplot) {
     char err[1300];
-    int fig = zp_sweep_out_has_figure(o);
-    FILE *csv = zp_tx_open(t, "sweep.csv", err, sizeof err);
-    FILE *js = csv ? zp_tx_open(t, "summary.json", err, sizeof err) : NULL;
-    FILE *gp = js && fig ? zp_tx_open(t, "sweep.gp", err, sizeof err) : js;
-    if (!gp) {
+    if (zp_report_sweep_files(t, o, summary, err, sizeof err)) {
         zp_tx_abort(t);
         zp_cli_error("sweep", "%s; nothing was written", err);
         return -1;
     }
-    zp_sweep_csv_header(csv, o->s, o->np);
-    for (int p = 0; p < o->s->npoint; p++) {
-        zp_sweep_csv_row(csv, o->s, p, &o->rows[p]);
-    }
-    zp_sweep_out_json(js, o, summary);
-    if (fig) {
-        zp_sweep_out_script(gp, o);
-    }
     const char *scripts[] = {"sweep.gp"};
     *no_gnuplot = 0;
-    return zp_cli_out_draw_commit(t, "sweep", scripts, fig, no_gnuplot);
+    return zp_cli_out_draw_commit(t, "sweep", scripts, zp_report_sweep_has_figure(o), no_gnuplot);
 }
 
 /* rank 0, once every point is done: the files, then the summary on stdout */
 static int finish(study *st, const sweep_args *a, zp_tx *t, int ranks) {
-    zp_sweep_out o = {st->s, st->rows, st->name, st->np, st->grid ? st->grid_res : NULL};
+    zp_report_sweep o = {st->s, st->rows, st->name, st->np, st->grid ? st->grid_res : NULL};
     char summary[4096];
-    zp_sweep_out_summary(&o, summary, sizeof summary);
+    zp_report_sweep_summary(&o, summary, sizeof summary);
     int no_gnuplot = 0;
     if (write_outputs(t, &o, summary, &no_gnuplot)) {
         zp_cli_error("sweep", "the finished rows stay in %s; rerun with --resume", st->cp.path);
@@ -338,7 +326,7 @@ static int finish(study *st, const sweep_args *a, zp_tx *t, int ranks) {
     }
     zp_sweep_checkpoint_close(&st->cp, 1); /* sweep.csv holds every row */
     if (a->json) {
-        zp_sweep_out_json(stdout, &o, summary);
+        zp_report_sweep_json(stdout, &o, summary);
     } else {
         char shown[4 * sizeof t->dir];
         printf("%s\n%d points (%d from the checkpoint)%s in %.2f s on %d rank%s; wrote "
@@ -349,7 +337,7 @@ static int finish(study *st, const sweep_args *a, zp_tx *t, int ranks) {
                                    : " and the grid schedule",
                since(&st->start), ranks,
                ranks == 1 ? "" : "s", zp_cli_shown(t->dir, shown, sizeof shown),
-               !zp_sweep_out_has_figure(&o) ? " (no figure for more than two keys)"
+               !zp_report_sweep_has_figure(&o) ? " (no figure for more than two keys)"
                : no_gnuplot                 ? ", sweep.gp (gnuplot is not installed: no image)"
                                             : ", sweep.png");
     }
