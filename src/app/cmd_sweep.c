@@ -15,7 +15,6 @@
 #include "mpi_spread.h"
 #include "report_sweep.h"
 #include "scene_read.h"
-#include "sim_opts.h"
 #include "sweep_csv.h"
 
 #define MAX_ARGS_VARY                                                                              \
@@ -201,19 +200,6 @@ static double since(const struct timespec *a) {
     return (double)(now.tv_sec - a->tv_sec) + 1e-9 * (double)(now.tv_nsec - a->tv_nsec);
 }
 
-/* point p's scene into st->sc; 0, or -1 with the reason in d */
-static int point_scene(study *st, int p, zp_diag *d) {
-    char why[256];
-    char *text = zp_sweep_point_text(st->s, st->base, p, why, sizeof why);
-    if (!text) {
-        zp_diag_add(d, st->path, 0, NULL, NULL, "%s", why);
-        return -1;
-    }
-    zp_status rc = zp_scene_load_string(text, st->path, st->sc, d);
-    free(text);
-    return rc == ZP_OK ? 0 : -1;
-}
-
 /* what an item of the queue comes to: a point's row, or the grid schedule (item npoint) */
 typedef union item_result {
     zp_study_row row;
@@ -229,7 +215,7 @@ static void work(void *user, int p, void *result) {
     zp_study_row *row = result;
     zp_diag d;
     zp_diag_init(&d);
-    if (point_scene(st, p, &d)) {
+    if (zp_sweep_point_scene(st->s, st->base, st->path, p, st->sc, &d)) {
         memset(row, 0, sizeof *row);
         row->failed = 1;
         row->np = st->np;
@@ -277,27 +263,19 @@ static void done(void *user, int p, const void *result) {
     }
 }
 
-/* every point checked by every rule of the scene file before anything runs; 0 or -1 */
+/* every point checked by every rule of the scene file before anything runs; 0 or -1 (said) */
 static int check_points(study *st) {
-    for (int p = 0; p < st->s->npoint; p++) {
-        zp_diag d;
-        zp_diag_init(&d);
-        zp_model *m = NULL;
-        zp_sim_opts so;
-        if (point_scene(st, p, &d) == 0 && (m = zp_model_build(st->sc, &d)) != NULL) {
-            zp_sim_opts_from_scene(st->sc, &so, &d);
-        }
-        zp_model_free(m);
-        if (d.n || d.dropped) {
-            char at[512];
-            zp_sweep_describe(st->s, p, at, sizeof at);
-            zp_cli_error("sweep", "the scene at point %d (%s) is not valid:", p, at);
-            zp_diag_print(&d, stderr);
-            fputs("zipopt sweep: nothing was written\n", stderr);
-            return -1;
-        }
+    zp_diag d;
+    int p = zp_sweep_check_points(st->s, st->base, st->path, st->sc, &d);
+    if (p < 0) {
+        return 0;
     }
-    return 0;
+    char at[512];
+    zp_sweep_describe(st->s, p, at, sizeof at);
+    zp_cli_error("sweep", "the scene at point %d (%s) is not valid:", p, at);
+    zp_diag_print(&d, stderr);
+    fputs("zipopt sweep: nothing was written\n", stderr);
+    return -1;
 }
 
 /* sweep.csv, summary.json and the figure into the transaction t, committed as a set */
