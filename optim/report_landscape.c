@@ -140,8 +140,8 @@ void zp_report_landscape_windows(FILE *f, const zp_report_landscape *L) {
     const zp_landscape_point *p = L->pt;
     int nwin = 0, start = 0, best = fastest(L, 1), quick = fastest(L, 0);
     const char *limits = zp_limits_any(L->lim) ? " and every [limits] value" : "";
-    fprintf(f, "constant push from %g to %g N (%d runs, every %g N): finishes at", r->a, r->b,
-            r->n, (r->b - r->a) / (r->n - 1));
+    fprintf(f, "constant push from %g to %g N (%d runs, every %g N): finishes at", r->a, r->b, r->n,
+            (r->b - r->a) / (r->n - 1));
     for (int k = 0; k < r->n; k++) {
         start = window_starts(p, k) ? k : start;
         if (window_ends(r, p, k)) {
@@ -157,8 +157,7 @@ void zp_report_landscape_windows(FILE *f, const zp_report_landscape *L) {
     }
     if (quick >= 0 && quick != best) {
         fprintf(f, "fastest finishing push: %g N, %.3f s, breaks %s\n",
-                zp_fig_landscape_at(r, quick), p[quick].time,
-                binding(&p[quick], L->limit, L->lim));
+                zp_fig_landscape_at(r, quick), p[quick].time, binding(&p[quick], L->limit, L->lim));
     }
 }
 

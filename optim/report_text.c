@@ -29,8 +29,8 @@ static void robust_text(FILE *f, const zp_answer *a) {
     fprintf(f,
             "robust: held to %d scenarios (%d added by the adversary); on %d fresh ones %d "
             "finished, %d kept the margin, %d every limit: P(survivable) >= %.4f (95 %%)\n",
-            a->rp.set.n, a->rp.info.added, c->samples, c->survived, c->margin_kept,
-            c->limits_kept, c->lower_95);
+            a->rp.set.n, a->rp.info.added, c->samples, c->survived, c->margin_kept, c->limits_kept,
+            c->lower_95);
     const zp_headroom_line *L = &c->headroom.line[ZP_HEADROOM_LINES - 1];
     if (L->range >= 0 && isfinite(L->breaks)) {
         fprintf(f,

@@ -61,8 +61,8 @@ static void write_csv(FILE *f, const zp_tradeoff *T) {
         const zp_tradeoff_level *L = &T->L[i];
         const zp_headroom_line *h = &L->check.headroom.line[ZP_HEADROOM_LINES - 1];
         fprintf(f, "%g,%d,%.9g,%.6g,%.4g,%.6g,%d,%d,%d,%.6g,", L->p, L->found, L->time,
-                zp_tradeoff_cost(T, i), cost_pct(T, i), L->arrival, L->scenarios,
-                L->check.samples, L->check.all_kept, L->check.lower_95);
+                zp_tradeoff_cost(T, i), cost_pct(T, i), L->arrival, L->scenarios, L->check.samples,
+                L->check.all_kept, L->check.lower_95);
         if (L->from != ZP_TRADEOFF_GIVEN) {
             fprintf(f, "%g", T->L[L->from].p);
         }

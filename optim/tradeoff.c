@@ -5,8 +5,7 @@
 
 #define KMH 3.6
 
-void zp_tradeoff_init(zp_tradeoff *T, const zp_problem *su, const double *level, int n,
-                      int given) {
+void zp_tradeoff_init(zp_tradeoff *T, const zp_problem *su, const double *level, int n, int given) {
     memset(T, 0, sizeof *T); /* large: no temporary of it on the stack */
     T->su = su;
     T->n = n;
@@ -38,8 +37,7 @@ static int arrival_of(const zp_tradeoff *T, int i, double *kmh, char *err, size_
 }
 
 zp_status zp_tradeoff_solve(zp_tradeoff *T, int i,
-                            void (*progress)(void *user, const zp_search_progress *p,
-                                             int improved),
+                            void (*progress)(void *user, const zp_search_progress *p, int improved),
                             void *user, char *err, size_t errlen) {
     zp_tradeoff_level *out = &T->L[i];
     zp_problem *pb = &T->pb[i];
@@ -78,8 +76,7 @@ static int adopt(zp_tradeoff *T, int i) {
     }
     int adopted = 0;
     for (int j = -1; j < T->ndone; j++) { /* -1: the schedule the scene or user gave */
-        if (j < 0 ? !T->given
-                  : j == i || !T->L[j].found || (L->found && T->L[j].time >= L->time)) {
+        if (j < 0 ? !T->given : j == i || !T->L[j].found || (L->found && T->L[j].time >= L->time)) {
             continue;
         }
         const double *p = j < 0 ? su->sched.p : T->L[j].force;

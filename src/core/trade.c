@@ -28,9 +28,15 @@ static int cmp_double(const void *a, const void *b) {
 }
 
 static zp_trade_reading read_result(const zp_model *m, const zp_result *r, const zp_sim *s) {
-    zp_trade_reading d = {.ok = 1, .outcome = r->outcome, .died_link = r->died_link,
-                          .time = r->time, .x = r->x, .v = r->v, .evals = r->rhs_evals,
-                          .steps = r->steps, .rejected = r->rejected};
+    zp_trade_reading d = {.ok = 1,
+                          .outcome = r->outcome,
+                          .died_link = r->died_link,
+                          .time = r->time,
+                          .x = r->x,
+                          .v = r->v,
+                          .evals = r->rhs_evals,
+                          .steps = r->steps,
+                          .rejected = r->rejected};
     int n;
     const zp_crossing *cross = zp_sim_crossings(s, &n);
     d.nimp = r->ncross;

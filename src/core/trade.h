@@ -6,10 +6,10 @@
 
 #include "sim.h"
 
-#define ZP_TRADE_NTOL 10          /* rtol 1e-3 .. 1e-12 */
-#define ZP_TRADE_REF_RTOL 1e-13   /* the reference runs' tolerance: tighter than the sweep */
-#define ZP_TRADE_ATOL_RATIO 1e-2  /* atol = rtol / 100, the scene default's ratio */
-#define ZP_TRADE_MAX_IMPULSES 64  /* kink impulses compared per run */
+#define ZP_TRADE_NTOL 10         /* rtol 1e-3 .. 1e-12 */
+#define ZP_TRADE_REF_RTOL 1e-13  /* the reference runs' tolerance: tighter than the sweep */
+#define ZP_TRADE_ATOL_RATIO 1e-2 /* atol = rtol / 100, the scene default's ratio */
+#define ZP_TRADE_MAX_IMPULSES 64 /* kink impulses compared per run */
 #define ZP_TRADE_NCASE 3
 #define ZP_TRADE_NTARGET 3
 

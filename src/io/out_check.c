@@ -28,8 +28,8 @@ static void course_text(FILE *f, const zp_model *m) {
         /* libmatheval's derivative text is unsimplified: its values at the ends say more */
         for (int end = 0; end < 2; end++) {
             zp_track t = zp_course_eval(m->course, k, m->xb[k + end]);
-            fprintf(f, "    at x = %g: f = %.10g m, f' = %.10g, f'' = %.10g 1/m\n",
-                    m->xb[k + end], t.f, t.fp, t.fpp);
+            fprintf(f, "    at x = %g: f = %.10g m, f' = %.10g, f'' = %.10g 1/m\n", m->xb[k + end],
+                    t.f, t.fp, t.fpp);
         }
     }
     if (m->nsec == 1) {
@@ -92,13 +92,13 @@ static void settings_text(FILE *f, const zp_out_check *c) {
         zp_schedule_label(c->sched, k, label, sizeof label);
         fprintf(f, "%s %s", k ? "," : "", label);
     }
-    fprintf(f, "%s; search bounds [%g, %g] N\n", sc->nforce ? "" : " (none given)",
-            sc->force_min, sc->force_max);
+    fprintf(f, "%s; search bounds [%g, %g] N\n", sc->nforce ? "" : " (none given)", sc->force_min,
+            sc->force_max);
     const char *method = zp_method_get(c->sim->method)->name;
     fprintf(f, "solver: method %s (%s); formulation %s (%s)\n", method, method_doc(method),
             sc->formulation, formulation_doc(sc->formulation));
-    fprintf(f, "        rtol %g, atol %g, t_max %g s, output_dt %g s\n", c->sim->rtol,
-            c->sim->atol, sc->t_max, sc->output_dt);
+    fprintf(f, "        rtol %g, atol %g, t_max %g s, output_dt %g s\n", c->sim->rtol, c->sim->atol,
+            sc->t_max, sc->output_dt);
     if (sc->accuracy > 0) {
         fprintf(f,
                 "        picked for accuracy %g s (work-precision table; simulate tightens it "

@@ -3,7 +3,6 @@
 
 #include <math.h>
 
-
 static void outcome_text(FILE *f, const zp_model *m, const zp_result *r) {
     fprintf(f, "outcome: %s", zp_sim_outcome_name(r->outcome));
     if (r->outcome == ZP_OUTCOME_DIED) {
@@ -78,8 +77,7 @@ static void estimate_text(FILE *f, const zp_result *r, const zp_estimate *e) {
         fprintf(f,
                 "SENSITIVE: at rtol %.0e the outcome is %s at %.9f s instead of %s: the verdict "
                 "depends on the tolerance\n",
-                e->rtol, zp_sim_outcome_name(e->outcome), e->time,
-                zp_sim_outcome_name(r->outcome));
+                e->rtol, zp_sim_outcome_name(e->outcome), e->time, zp_sim_outcome_name(r->outcome));
     } else {
         fprintf(f, "time error estimate: %.2g s (difference from a run at rtol %.0e)\n",
                 e->time_error, e->rtol);

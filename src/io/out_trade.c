@@ -14,12 +14,11 @@ void zp_out_trade_csv(FILE *f, const zp_trade_study *st) {
             for (int t = 0; t < ZP_TRADE_NTOL; t++) {
                 const zp_trade_reading *r = &st->runs[c][k][t];
                 const zp_trade_errors *e = &st->errs[c][k][t];
-                fprintf(f,
-                        "%s,%s,%.0e,%s,%.12g,%.3e,%.3e,%.3e,%.3e,%.3e,%ld,%.6e,%ld,%d,%ld\n",
+                fprintf(f, "%s,%s,%.0e,%s,%.12g,%.3e,%.3e,%.3e,%.3e,%.3e,%ld,%.6e,%ld,%d,%ld\n",
                         zp_trade_cases[c].name, zp_method_get(k)->name, st->tols[t],
                         r->ok ? zp_sim_outcome_name(r->outcome) : "failed", r->time, e->time,
-                        e->impulse, e->angle, e->x, e->v, r->evals, r->wall, r->steps,
-                        r->repeats, r->rejected);
+                        e->impulse, e->angle, e->x, e->v, r->evals, r->wall, r->steps, r->repeats,
+                        r->rejected);
             }
         }
     }
@@ -101,8 +100,7 @@ void zp_out_trade_text(FILE *f, const zp_trade_study *st) {
             if (bk < 0) {
                 fprintf(f, "none");
             } else {
-                fprintf(f, "%s %.0e (%.2f ms)", zp_method_get(bk)->name, st->tols[bt],
-                        1e3 * best);
+                fprintf(f, "%s %.0e (%.2f ms)", zp_method_get(bk)->name, st->tols[bt], 1e3 * best);
             }
             fputs(c < ZP_TRADE_NCASE ? ";" : "\n", f);
         }
