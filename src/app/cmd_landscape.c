@@ -139,18 +139,12 @@ typedef struct progress {
     int ranks; /* > 1: the count is rank 0's share */
 } progress;
 
-static double since(const struct timespec *a) {
-    struct timespec now;
-    clock_gettime(CLOCK_MONOTONIC, &now);
-    return (double)(now.tv_sec - a->tv_sec) + 1e-9 * (double)(now.tv_nsec - a->tv_nsec);
-}
-
 static void show(void *user, int done, int total) {
     progress *p = user;
-    if (since(&p->last) > 0.2 || done == total) {
+    if (zp_cli_since(&p->last) > 0.2 || done == total) {
         clock_gettime(CLOCK_MONOTONIC, &p->last);
         fprintf(stderr, "\rzipopt landscape: %d/%d runs%s, %.1f s", done, total,
-                p->ranks > 1 ? " (rank 0's share)" : "", since(&p->start));
+                p->ranks > 1 ? " (rank 0's share)" : "", zp_cli_since(&p->start));
         if (done == total) {
             fputc('\n', stderr);
         }
@@ -308,7 +302,7 @@ static int landscape(int argc, char **argv, const zp_spread *sp) {
                                 : "cannot create the simulators (out of memory)");
         goto done;
     }
-    double wall = since(&pr.start);
+    double wall = zp_cli_since(&pr.start);
     zp_report_landscape L = {st.sc.name, sh,
                              a.schedule     ? a.schedule
                              : a.force_text ? "--force"

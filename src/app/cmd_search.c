@@ -207,9 +207,7 @@ static void on_progress(void *user, const zp_search_progress *p, int improved) {
 /* the verification's progress line: its robustness runs done, and the time left at that pace */
 static void on_verify(void *user, int done, int total) {
     progress_ctx *c = user;
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    double el = (t.tv_sec - c->t0.tv_sec) + 1e-9 * (t.tv_nsec - c->t0.tv_nsec);
+    double el = zp_cli_since(&c->t0);
     if (c->tty && (done == total || el - c->last >= 0.25)) {
         c->last = el;
         fprintf(stderr, "\rrobustness: %d of %d runs and bisections, about %.0f s left   ", done,

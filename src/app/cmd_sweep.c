@@ -194,12 +194,6 @@ typedef struct study {
     struct timespec start;
 } study;
 
-static double since(const struct timespec *a) {
-    struct timespec now;
-    clock_gettime(CLOCK_MONOTONIC, &now);
-    return (double)(now.tv_sec - a->tv_sec) + 1e-9 * (double)(now.tv_nsec - a->tv_nsec);
-}
-
 /* what an item of the queue comes to: a point's row, or the grid schedule (item npoint) */
 typedef union item_result {
     zp_study_row row;
@@ -259,7 +253,7 @@ static void done(void *user, int p, const void *result) {
     }
     if (st->tty || st->lines) {
         fprintf(stderr, "%szipopt sweep: %d/%d points, %.1f s%s", st->tty ? "\r" : "",
-                st->ndone, st->s->npoint, since(&st->start), st->tty ? "   " : "\n");
+                st->ndone, st->s->npoint, zp_cli_since(&st->start), st->tty ? "   " : "\n");
     }
 }
 
@@ -313,7 +307,7 @@ static int finish(study *st, const sweep_args *a, zp_tx *t, int ranks) {
                !st->grid           ? ""
                : st->grid_resumed ? " and the grid schedule (from the checkpoint)"
                                    : " and the grid schedule",
-               since(&st->start), ranks,
+               zp_cli_since(&st->start), ranks,
                ranks == 1 ? "" : "s", zp_cli_shown(t->dir, shown, sizeof shown),
                !zp_report_sweep_has_figure(&o) ? " (no figure for more than two keys)"
                : no_gnuplot                 ? ", sweep.gp (gnuplot is not installed: no image)"
