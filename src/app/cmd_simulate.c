@@ -277,6 +277,52 @@ static zp_status run_answer(const zp_model *m, double accuracy, zp_sim_opts *o,
     return st;
 }
 
+/* --sample-times, sorted, into *samples (malloc'd, NULL when none are asked for); their count,
+   or -1 (said) */
+static int parse_samples(const char *text, double **samples) {
+    *samples = NULL;
+    if (!text) {
+        return 0;
+    }
+    char why[256] = "out of memory";
+    *samples = malloc(sizeof **samples * MAX_SAMPLES);
+    int n = *samples ? zp_cli_parse_list(text, *samples, MAX_SAMPLES, why, sizeof why) : -1;
+    for (int i = 0; i < n; i++) {
+        if ((*samples)[i] < 0) {
+            snprintf(why, sizeof why, "%g is negative", (*samples)[i]);
+            n = -1;
+        }
+    }
+    if (n < 0) {
+        zp_cli_error("simulate", "--sample-times: %s; expected times >= 0 in s", why);
+        return -1;
+    }
+    qsort(*samples, n, sizeof **samples, cmp_double);
+    return n;
+}
+
+/* the run's files (and figures) committed, then the result printed; the exit status */
+static int write_run(const sim_args *a, const zp_problem *st, zp_sim *s, const zp_result *r,
+                     const zp_run_meta *meta, const zp_plot_opts *po) {
+    zp_tx t;
+    zp_plot_info info;
+    if (zp_cli_out_begin(&t, "simulate", "simulate", a->out, &st->sc)) {
+        return ZP_EXIT_FAIL;
+    }
+    if (write_files(&t, st->m, s, r, meta) || (a->plot && draw(&t, st->m, s, r, po, &info)) ||
+        zp_cli_out_commit(&t, "simulate")) {
+        zp_tx_abort(&t);
+        return ZP_EXIT_FAIL;
+    }
+    if (a->json) {
+        zp_out_json_result(stdout, st->m, r, s, meta);
+    } else {
+        zp_out_text_result(stdout, st->m, r, s, meta);
+    }
+    fprintf(a->json ? stderr : stdout, "wrote in %s: %s\n", t.dir, t.written);
+    return a->plot ? say_figures(t.dir, po, &info, a->json ? stderr : stdout) : ZP_EXIT_OK;
+}
+
 int zp_cmd_simulate(int argc, char **argv) {
     sim_args a;
     int pa = parse_args(argc, argv, &a);
@@ -288,31 +334,13 @@ int zp_cmd_simulate(int argc, char **argv) {
     if (zp_setup_load("simulate", a.scene, &ov, &st)) {
         return ZP_EXIT_USAGE;
     }
-    const zp_model *m = st.m;
     zp_sim_opts o = st.sim;
     int status = ZP_EXIT_USAGE;
     zp_sim *s = NULL;
-    double *samples = NULL;
-    char why[256];
-    int nsample = 0;
-    if (a.sample_text) {
-        samples = malloc(sizeof *samples * MAX_SAMPLES);
-        nsample = samples ? zp_cli_parse_list(a.sample_text, samples, MAX_SAMPLES, why, sizeof why)
-                          : -1;
-        for (int i = 0; i < nsample; i++) {
-            if (samples[i] < 0) {
-                snprintf(why, sizeof why, "%g is negative", samples[i]);
-                nsample = -1;
-            }
-        }
-        if (nsample < 0) {
-            zp_cli_error("simulate", "--sample-times: %s; expected times >= 0 in s", why);
-            goto done;
-        }
-        qsort(samples, nsample, sizeof *samples, cmp_double);
-    }
+    double *samples;
+    int nsample = parse_samples(a.sample_text, &samples);
     zp_plot_opts po;
-    if (plot_opts(&a, &st, &po)) {
+    if (nsample < 0 || plot_opts(&a, &st, &po)) {
         goto done;
     }
     status = ZP_EXIT_FAIL;
@@ -324,7 +352,7 @@ int zp_cmd_simulate(int argc, char **argv) {
     zp_accuracy acc;
     zp_input in = {.sched = &st.sched, .sample_t = samples, .nsample = nsample};
     zp_plot_opts_frames_input(&po, &in);
-    if (run_answer(m, st.sc.accuracy, &o, &in, &s, &r, &est, &acc)) {
+    if (run_answer(st.m, st.sc.accuracy, &o, &in, &s, &r, &est, &acc)) {
         fprintf(stderr, "zipopt simulate: %s; nothing was written\n", r.message);
         goto done;
     }
@@ -338,23 +366,7 @@ int zp_cmd_simulate(int argc, char **argv) {
                         zp_formulation_get(o.formulation)->name, o.rtol, o.atol, &st.sched, &est,
                         samples + nsmp, nsample - nsmp, &lim,
                         st.sc.accuracy > 0 ? &acc : NULL};
-    zp_tx t;
-    zp_plot_info info;
-    if (zp_cli_out_begin(&t, "simulate", "simulate", a.out, &st.sc)) {
-        goto done;
-    }
-    if (write_files(&t, m, s, &r, &meta) || (a.plot && draw(&t, m, s, &r, &po, &info)) ||
-        zp_cli_out_commit(&t, "simulate")) {
-        zp_tx_abort(&t);
-        goto done;
-    }
-    if (a.json) {
-        zp_out_json_result(stdout, m, &r, s, &meta);
-    } else {
-        zp_out_text_result(stdout, m, &r, s, &meta);
-    }
-    fprintf(a.json ? stderr : stdout, "wrote in %s: %s\n", t.dir, t.written);
-    status = a.plot ? say_figures(t.dir, &po, &info, a.json ? stderr : stdout) : ZP_EXIT_OK;
+    status = write_run(&a, &st, s, &r, &meta, &po);
 done:
     free(samples);
     zp_sim_free(s);
