@@ -135,7 +135,7 @@ int zp_out_columns_find(const zp_model *m, zp_out_quantity q, int *n) {
         int k = count(m, en->per);
         if (en->n == 1 && en->q[0] == q) {
             *n = k;
-            return j;
+            return k ? j : -1;
         }
         j += k * en->n;
     }
