@@ -1,8 +1,10 @@
-/* The survival landscape's runs (landscape.h): a list of schedules through the per-thread
-   simulator pool, each reduced to its outcome and time. */
+/* The survival landscape's runs (landscape.h): the schedules a plan asks for, run through the
+   per-thread simulator pool, each reduced to its outcome and time. */
 #include "landscape.h"
 
 #include <math.h>
+#include <stdlib.h>
+#include <string.h>
 
 #include "pool.h"
 
@@ -40,4 +42,27 @@ zp_status zp_landscape_sweep(const zp_model *m, const zp_sim_opts *o, const zp_s
     zp_status st = zp_spread_map(sp, pool, n, sweep_job, &w, out, sizeof *out, progress, user);
     zp_pool_free(pool);
     return st;
+}
+
+int zp_landscape_slice_runs(const zp_landscape_plan *p) {
+    return p->si >= 0 ? p->rx.n * p->ry.n : 0;
+}
+
+double *zp_landscape_params(const zp_landscape_plan *p, const zp_schedule *base) {
+    int np = base->np, n1 = p->push.n, n2 = zp_landscape_slice_runs(p);
+    double *param = malloc(sizeof *param * (size_t)(n1 + n2) * (size_t)np);
+    if (!param) {
+        return NULL;
+    }
+    for (int k = 0; k < n1; k++) {
+        zp_schedule push = zp_drive_constant(base, zp_fig_landscape_at(&p->push, k));
+        memcpy(param + (size_t)k * np, push.p, sizeof *param * (size_t)np);
+    }
+    for (int k = 0; k < n2; k++) {
+        double *f = param + (size_t)(n1 + k) * np;
+        memcpy(f, base->p, sizeof *f * (size_t)np);
+        f[p->si] = zp_fig_landscape_at(&p->rx, k % p->rx.n);
+        f[p->sj] = zp_fig_landscape_at(&p->ry, k / p->rx.n);
+    }
+    return param;
 }

@@ -3,6 +3,7 @@
 #ifndef ZP_LANDSCAPE_H
 #define ZP_LANDSCAPE_H
 
+#include "fig_landscape.h"
 #include "scenario.h"
 #include "sim.h"
 #include "spread.h"
@@ -18,6 +19,21 @@ typedef struct zp_landscape_point {
     double max_rel_angle; /* rad, largest |relative joint angle| over every joint */
     double reached[ZP_LIMIT_COUNT]; /* what the run reached of each [limits] value */
 } zp_landscape_point;
+
+/* What the landscape runs: push.n constant pushes (zp_drive_constant), then with a slice
+   parameters si and sj of a base schedule over rx and ry (rx varying fastest), the others at
+   the base's. */
+typedef struct zp_landscape_plan {
+    zp_fig_axis push;
+    int si, sj; /* 0-based; si < 0: no slice */
+    zp_fig_axis rx, ry;
+} zp_landscape_plan;
+
+/* The slice's runs, 0 without one. */
+int zp_landscape_slice_runs(const zp_landscape_plan *p);
+/* p's schedules, push.n + zp_landscape_slice_runs rows of base->np parameters (malloc'd; NULL
+   when out of memory). */
+double *zp_landscape_params(const zp_landscape_plan *p, const zp_schedule *base);
 
 /* Called after each finished run, serialised; done counts runs finished so far. */
 typedef void (*zp_landscape_progress)(void *user, int done, int total);

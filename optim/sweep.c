@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "scene_read.h"
+#include "sim_opts.h"
 
 #define TEXT -1 /* a key docs/scene-file.md knows whose value is not a number */
 
@@ -377,4 +378,35 @@ void zp_sweep_describe(const zp_sweep *s, int p, char *out, size_t cap) {
                                 va->key, va->kind == ZP_VARY_SCALE ? "x" : "",
                                 zp_sweep_value(s, v, p));
     }
+}
+
+int zp_sweep_point_scene(const zp_sweep *s, const char *base, const char *path, int p,
+                         zp_scene *sc, zp_diag *d) {
+    char why[256];
+    char *text = zp_sweep_point_text(s, base, p, why, sizeof why);
+    if (!text) {
+        zp_diag_add(d, path, 0, NULL, NULL, "%s", why);
+        return -1;
+    }
+    zp_status rc = zp_scene_load_string(text, path, sc, d);
+    free(text);
+    return rc == ZP_OK ? 0 : -1;
+}
+
+int zp_sweep_check_points(const zp_sweep *s, const char *base, const char *path, zp_scene *sc,
+                          zp_diag *d) {
+    for (int p = 0; p < s->npoint; p++) {
+        zp_diag_init(d);
+        zp_model *m = NULL;
+        zp_sim_opts so;
+        if (zp_sweep_point_scene(s, base, path, p, sc, d) == 0 &&
+            (m = zp_model_build(sc, d)) != NULL) {
+            zp_sim_opts_from_scene(sc, &so, d);
+        }
+        zp_model_free(m);
+        if (d->n || d->dropped) {
+            return p;
+        }
+    }
+    return -1;
 }

@@ -59,4 +59,14 @@ void zp_sweep_note_base(zp_sweep *s, const char *base);
    absent from base has nothing to scale; no memory). */
 char *zp_sweep_point_text(const zp_sweep *s, const char *base, int p, char *why, size_t whylen);
 
+/* Point p's scene read into sc from its text (zp_sweep_point_text of base), named path in
+   messages; 0, or -1 with why in d. */
+int zp_sweep_point_scene(const zp_sweep *s, const char *base, const char *path, int p,
+                         zp_scene *sc, zp_diag *d);
+/* Every point checked by every rule of the scene file before anything runs: its scene read
+   (into sc, scratch), its model built and its [solver] judged. The first point with a problem,
+   its problems in d (initialised here), or -1 when every point is valid. */
+int zp_sweep_check_points(const zp_sweep *s, const char *base, const char *path, zp_scene *sc,
+                          zp_diag *d);
+
 #endif

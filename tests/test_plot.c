@@ -449,6 +449,28 @@ static void test_cli(void) {
     }
 }
 
+/* a plan's schedules: the constant pushes, then the slice's with its first axis varying fastest
+   and the other sections at the base's (rows written out by hand) */
+static void test_landscape_plan(void) {
+    const double base_p[3] = {7, 8, 9};
+    zp_schedule base = zp_schedule_sections(3, base_p, 0, 0);
+    zp_landscape_plan plan = {
+        .push = {0, 10, 3}, .si = 0, .sj = 2, .rx = {0, 1, 2}, .ry = {5, 7, 3}};
+    const double want[9][3] = {{0, 0, 0}, {5, 5, 5}, {10, 10, 10}, {0, 8, 5}, {1, 8, 5},
+                               {0, 8, 6}, {1, 8, 6},  {0, 8, 7},    {1, 8, 7}};
+    CHECK(zp_landscape_slice_runs(&plan) == 6);
+    double *p = zp_landscape_params(&plan, &base);
+    CHECK(p != NULL);
+    for (int k = 0; p && k < 9; k++) {
+        for (int j = 0; j < 3; j++) {
+            CHECK(p[3 * k + j] == want[k][j]);
+        }
+    }
+    free(p);
+    plan.si = -1; /* no slice: the pushes alone */
+    CHECK(zp_landscape_slice_runs(&plan) == 0);
+}
+
 /* the landscape's points against independent single runs, and the seed's survival windows */
 static void test_landscape(void) {
     zp_scene sc;
@@ -581,6 +603,7 @@ int main(void) {
     test_figures();
     test_frame_geometry();
     test_cli();
+    test_landscape_plan();
     test_landscape();
     test_gnuplot_groups();
     char cmd[1100];

@@ -201,6 +201,12 @@ int zp_cli_out_draw_commit(zp_tx *t, const char *cmd, const char *const *scripts
     return zp_cli_out_commit(t, cmd);
 }
 
+double zp_cli_since(const struct timespec *t0) {
+    struct timespec now;
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    return (double)(now.tv_sec - t0->tv_sec) + 1e-9 * (double)(now.tv_nsec - t0->tv_nsec);
+}
+
 void zp_cli_print_registries(FILE *f) {
     fprintf(f, "methods ([solver] method):\n");
     for (int i = 0; i < ZP_METHOD_COUNT; i++) {

@@ -5,6 +5,7 @@
 
 #include <getopt.h>
 #include <stdio.h>
+#include <time.h>
 
 #include "out_file.h"
 #include "scene.h"
@@ -59,6 +60,8 @@ int zp_cli_out_commit(zp_tx *t, const char *cmd);
    "nothing was written" for `zipopt <cmd>`. 0 or -1. */
 int zp_cli_out_draw_commit(zp_tx *t, const char *cmd, const char *const *scripts, int n,
                            int *missing);
+/* s of wall time since t0 (CLOCK_MONOTONIC), for progress lines and summaries. */
+double zp_cli_since(const struct timespec *t0);
 /* The registries' names and docs, for --help. */
 void zp_cli_print_registries(FILE *f);
 void zp_cli_usage(FILE *f);

@@ -11,11 +11,11 @@
 #include "answer.h"
 #include "cli.h"
 #include "mpi_spread.h"
-#include "out_csv.h"
 #include "out_file.h"
-#include "out_html.h"
 #include "plot.h"
 #include "report.h"
+#include "report_files.h"
+#include "report_text.h"
 #include "robust.h"
 #include "search.h"
 #include "setup.h"
@@ -207,47 +207,13 @@ static void on_progress(void *user, const zp_search_progress *p, int improved) {
 /* the verification's progress line: its robustness runs done, and the time left at that pace */
 static void on_verify(void *user, int done, int total) {
     progress_ctx *c = user;
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    double el = (t.tv_sec - c->t0.tv_sec) + 1e-9 * (t.tv_nsec - c->t0.tv_nsec);
+    double el = zp_cli_since(&c->t0);
     if (c->tty && (done == total || el - c->last >= 0.25)) {
         c->last = el;
         fprintf(stderr, "\rrobustness: %d of %d runs and bisections, about %.0f s left   ", done,
                 total, el / done * (total - done));
         c->shown = 1;
     }
-}
-
-/* report.md, report.html, schedule.ini, summary.json and trajectory.csv into the transaction */
-static int write_outputs(zp_tx *t, const zp_answer *a, const zp_report_place *w) {
-    const zp_problem *p = a->pb;
-    char err[1400] = "", note[200];
-    FILE *md = zp_tx_open(t, "report.md", err, sizeof err);
-    FILE *ini = md ? zp_tx_open(t, "schedule.ini", err, sizeof err) : NULL;
-    FILE *js = ini ? zp_tx_open(t, "summary.json", err, sizeof err) : NULL;
-    FILE *csv = js ? zp_tx_open(t, "trajectory.csv", err, sizeof err) : NULL;
-    if (!csv) {
-        fprintf(stderr, "zipopt: %s; nothing was written\n", err);
-        return -1;
-    }
-    zp_report_write_md(md, a, w);
-    snprintf(note, sizeof note, "%s of the search%s: %s, %.6f s; rerun with zipopt "
-             "simulate SCENE.ini --schedule this-file",
-             a->found ? "best schedule" : "CLOSEST CANDIDATE (nothing met the constraints)",
-             a->res.interrupted ? " (interrupted)" : "",
-             zp_sim_outcome_name(a->v.run->outcome), a->v.run->time);
-    zp_schedule best = zp_schedule_with(&p->sched, a->res.force);
-    zp_report_write_schedule(ini, &p->sc, &best, note);
-    zp_report_write_json(js, a);
-    zp_out_csv_trajectory(csv, p->m, zp_sim_rows(a->best));
-    /* report.html: report.md as one page a person can share, its figures inside it */
-    char title[300];
-    snprintf(title, sizeof title, "zipopt: best forcing, %s", p->sc.name);
-    if (zp_out_html_report(t, "report.md", "report.html", title, err, sizeof err)) {
-        fprintf(stderr, "zipopt: %s; nothing was written\n", err);
-        return -1;
-    }
-    return 0;
 }
 
 /* the answer's figures into the transaction, started: 0, or -1 failed (said on stderr) */
@@ -312,69 +278,24 @@ static int on_stage(void *user, zp_answer_stage s, const zp_answer *a) {
     return 0;
 }
 
-static void print_summary(const zp_answer *a) {
-    const zp_problem *p = a->pb;
-    const zp_search_result *s = &a->res;
-    const zp_result *run = a->v.run;
-    if (a->unheld[0]) {
-        printf("no schedule found: the search's best (ranked with [optimize]'s tolerance) does not "
-               "hold: %s; it is written as the closest candidate (tighten [optimize] rtol)\n",
-               a->unheld);
-    } else if (!a->found) {
-        printf("no schedule keeps the margin%s: none of %ld simulations survived with it; the "
-               "closest candidate is written, marked as such\n",
-               a->rp.robust || zp_limits_any(&p->lim) ? ", the [limits] and the [robust] scenarios"
-                                                      : "",
-               s->evals);
-    }
-    printf("%sbest schedule (%s):", s->interrupted ? "interrupted; " : "", zp_drive_unit(&p->sched));
-    for (int k = 0; k < p->sched.np; k++) {
-        printf(" %.4f", s->force[k]);
-    }
-    double angle = zp_model_angle_used(p->m, run->max_rel_angle);
-    printf("\noutcome: %s, time %.4f s (+/- %.1e s), margin %.2f deg%s\n",
-           zp_sim_outcome_name(run->outcome), run->time, fabs(run->time - a->v.tight->time),
-           p->sc.death_angle - angle * 180 / M_PI,
-           a->v.agree ? ", verified" : ", NOT verified at the tighter tolerance");
-    if (s->base_found) {
-        printf("best constant push: %.3f N, %.4f s\n", s->base_force, s->base.time);
-    } else {
-        printf("best constant push: none found that keeps the margin\n");
-    }
-    printf("search: %s, %ld simulations in %.2f s on %d threads\n", a->algo, s->evals,
-           s->wall_s, s->nthreads);
-    if (a->rp.robust) {
-        const zp_robust_check *c = &a->rp.check;
-        printf("robust: held to %d scenarios (%d added by the adversary); on %d fresh ones %d "
-               "finished, %d kept the margin, %d every limit: P(survivable) >= %.4f (95 %%)\n",
-               a->rp.set.n, a->rp.info.added, c->samples, c->survived, c->margin_kept,
-               c->limits_kept, c->lower_95);
-        const zp_headroom_line *L = &c->headroom.line[ZP_HEADROOM_LINES - 1];
-        if (L->range >= 0 && isfinite(L->breaks)) {
-            printf("headroom: holds to %.4fx the stated ranges along the worst direction found, "
-                   "breaks at %.4fx (%s)\n",
-                   L->holds, L->breaks, L->limited_by);
-        } else if (L->range >= 0) {
-            printf("headroom: holds to %.4fx the stated ranges or more along the worst "
-                   "direction found\n",
-                   L->holds);
-        }
-    }
-    char conv[512];
-    zp_report_convergence(conv, sizeof conv, a);
-    printf("convergence: %s\n", conv);
-}
-
 /* the files of the answer committed and the summary printed; the exit status */
 static int finish(zp_tx *tx, const search_args *args, const zp_answer *a, int drawn) {
     zp_report_place w = {args->scene, tx->dir, drawn > 0};
-    if (drawn < 0 || write_outputs(tx, a, &w) || zp_cli_out_commit(tx, "")) {
+    char err[1400] = "";
+    if (drawn < 0) {
+        return ZP_EXIT_FAIL;
+    }
+    if (zp_report_files_write(tx, a, &w, err, sizeof err)) {
+        fprintf(stderr, "zipopt: %s; nothing was written\n", err);
+        return ZP_EXIT_FAIL;
+    }
+    if (zp_cli_out_commit(tx, "")) {
         return ZP_EXIT_FAIL;
     }
     if (args->json) {
         zp_report_write_json(stdout, a); /* summary.json's object */
     } else {
-        print_summary(a);
+        zp_report_text_write(stdout, a);
     }
     fprintf(args->json ? stderr : stdout, "wrote in %s: %s\n", tx->dir, tx->written);
     if (a->res.interrupted) {

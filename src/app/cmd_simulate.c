@@ -9,6 +9,7 @@
 #include "out_csv.h"
 #include "out_file.h"
 #include "out_json.h"
+#include "out_text.h"
 #include "plot.h"
 #include "setup.h"
 #include "sim.h"
@@ -156,71 +157,6 @@ static int cmp_double(const void *a, const void *b) {
     return (x > y) - (x < y);
 }
 
-/* each [limits] value set: reached against the limit */
-static void print_limits(const zp_model *m, const zp_result *r, const zp_limits *lim) {
-    double v[ZP_LIMIT_COUNT];
-    zp_limits_reached(m, r, v);
-    for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
-        if (lim->max[i] > 0 && !zp_limit_reached_in(r, i)) {
-            printf("limit %s: not reached (the trolley did not arrive)\n", zp_limit_name(i));
-        } else if (lim->max[i] > 0) {
-            printf("limit %s: reached %.4g %s of %g (%s)\n", zp_limit_name(i), v[i],
-                   zp_limit_unit(i), lim->max[i],
-                   zp_limits_kept(i, v[i], lim->max[i]) ? "kept" : "BROKEN");
-        }
-    }
-    for (int l = 0; l < m->nenv; l++) {
-        printf("  felt g above %g g: longest %.4g s at once, allowed %g s%s\n", m->env_g[l],
-               r->env_longest[l], m->env_s[l],
-               l == zp_limits_envelope_worst(m, r) ? " (the worst level)" : "");
-    }
-}
-
-static void print_text(const zp_model *m, const zp_result *r) {
-    printf("outcome: %s", zp_sim_outcome_name(r->outcome));
-    if (r->outcome == ZP_OUTCOME_DIED) {
-        printf(" (joint of link %d looped)", r->died_link);
-    } else if (r->outcome == ZP_OUTCOME_STALLED) {
-        printf(" (%s)", zp_sim_stall_name(r->stall));
-    }
-    printf("\ntime: %.9f s\nx: %.6f m\nspeed: %.4f m/s (%.2f km/h)\n", r->time, r->x, r->v,
-           3.6 * r->v);
-    printf("largest |relative joint angle| (deg):");
-    for (int i = 0; i < m->nlink; i++) {
-        printf(" %.3f", r->max_rel_angle[i] * 180.0 / M_PI);
-    }
-    printf("\nkink crossings: %d\n", r->ncross);
-    if (zp_effect_work_shown(m->physics)) {
-        for (int k = 0; k < ZP_EFFECT_NWORK; k++) {
-            printf("%s%s: %.6g J", k ? ", " : "", zp_effect_work_names(k)->words, r->w_effect[k]);
-        }
-        putchar('\n');
-    }
-    printf("energy audit residual: %.3g J\n", zp_estimate_energy_residual(r));
-    printf("steps: %ld (and %ld rejected), rhs evaluations: %ld, wall: %.4f s\n", r->steps,
-           r->rejected, r->rhs_evals, r->wall_s);
-}
-
-/* the error estimate beside the answer (docs/trade.md) */
-static void print_estimate(const zp_result *r, const zp_estimate *e) {
-    if (!e->ok) {
-        printf("time error estimate: unavailable, the run at rtol %.0e failed: %s\n", e->rtol,
-               e->message);
-    } else if (e->sensitive) {
-        printf("SENSITIVE: at rtol %.0e the outcome is %s at %.9f s instead of %s: the verdict "
-               "depends on the tolerance\n",
-               e->rtol, zp_sim_outcome_name(e->outcome), e->time, zp_sim_outcome_name(r->outcome));
-    } else {
-        printf("time error estimate: %.2g s (difference from a run at rtol %.0e)\n",
-               e->time_error, e->rtol);
-    }
-    if (e->ok && e->energy_large) {
-        printf("SUSPECT: the energy audit residual %.3g J is large against the energies of the "
-               "run: the tolerances are too loose for this answer\n",
-               e->energy_residual);
-    }
-}
-
 /* trajectory.csv and summary.json into the command's transaction */
 static int write_files(zp_tx *t, const zp_model *m, zp_sim *s, const zp_result *r,
                        const zp_run_meta *meta) {
@@ -234,23 +170,6 @@ static int write_files(zp_tx *t, const zp_model *m, zp_sim *s, const zp_result *
     zp_out_csv_trajectory(csv, m, zp_sim_rows(s));
     zp_out_json_result(js, m, r, s, meta);
     return 0;
-}
-
-/* the state at each reached --sample-times value, and the times never reached */
-static void print_samples(const zp_model *m, const zp_row *smp, int nsmp, const zp_run_meta *meta,
-                          double t_end) {
-    for (int k = 0; k < nsmp; k++) {
-        printf("sample t = %g s: x = %.6f m, y = %.6f m, section %d, theta (deg):", smp[k].t,
-               smp[k].c.q[0], smp[k].c.q[1], smp[k].sec + 1);
-        for (int i = 0; i < m->nlink; i++) {
-            printf(" %.3f", smp[k].c.q[2 + i] * 180.0 / M_PI);
-        }
-        printf(", normal force %.3f N\n", smp[k].loads.normal);
-    }
-    for (int k = 0; k < meta->nunreached; k++) {
-        printf("sample t = %g s: not reached (the run ended at %.9f s)\n", meta->unreached[k],
-               t_end);
-    }
 }
 
 /* the --plot options, checked before the run; 0, or -1 with the message printed */
@@ -348,19 +267,6 @@ static int say_figures(const char *dir, const zp_plot_opts *po, const zp_plot_in
 
 /* the answer's run and its error estimate; with [solver] accuracy, tightened until it is met */
 /* the gradient's lines of the text summary */
-static void print_gradient(const zp_schedule *sh, const zp_sens_result *g) {
-    printf("gradient (exact, sensitivities), per %s:\n", zp_drive_unit(sh));
-    for (int k = 0; k < g->np; k++) {
-        char label[64];
-        zp_drive_param_label(sh, k, label, sizeof label);
-        printf("  %-12s d time %+.9e s, d margin angle %+.9e deg\n", label, g->dtime[k],
-               g->dmargin[k] * 180 / M_PI);
-    }
-    if (!g->smooth) {
-        printf("  not smooth there: %s\n", g->why_not);
-    }
-}
-
 static zp_status run_answer(const zp_model *m, double accuracy, zp_sim_opts *o,
                             const zp_input *in, zp_sim **s, zp_result *r, zp_estimate *e,
                             zp_accuracy *a) {
@@ -379,11 +285,50 @@ static zp_status run_answer(const zp_model *m, double accuracy, zp_sim_opts *o,
     return st;
 }
 
-/* what a request for accuracy met, and what it cost */
-static void print_accuracy(const zp_accuracy *a) {
-    printf("accuracy: %.2g s requested, %.2g s met%s (%s at rtol %.0e, %d rerun%s)\n",
-           a->requested, a->met, a->ok ? "" : " - NOT MET", zp_method_get(a->method)->name,
-           a->rtol, a->reruns, a->reruns == 1 ? "" : "s");
+/* --sample-times, sorted, into *samples (malloc'd, NULL when none are asked for); their count,
+   or -1 (said) */
+static int parse_samples(const char *text, double **samples) {
+    *samples = NULL;
+    if (!text) {
+        return 0;
+    }
+    char why[256] = "out of memory";
+    *samples = malloc(sizeof **samples * MAX_SAMPLES);
+    int n = *samples ? zp_cli_parse_list(text, *samples, MAX_SAMPLES, why, sizeof why) : -1;
+    for (int i = 0; i < n; i++) {
+        if ((*samples)[i] < 0) {
+            snprintf(why, sizeof why, "%g is negative", (*samples)[i]);
+            n = -1;
+        }
+    }
+    if (n < 0) {
+        zp_cli_error("simulate", "--sample-times: %s; expected times >= 0 in s", why);
+        return -1;
+    }
+    qsort(*samples, n, sizeof **samples, cmp_double);
+    return n;
+}
+
+/* the run's files (and figures) committed, then the result printed; the exit status */
+static int write_run(const sim_args *a, const zp_problem *st, zp_sim *s, const zp_result *r,
+                     const zp_run_meta *meta, const zp_plot_opts *po) {
+    zp_tx t;
+    zp_plot_info info;
+    if (zp_cli_out_begin(&t, "simulate", "simulate", a->out, &st->sc)) {
+        return ZP_EXIT_FAIL;
+    }
+    if (write_files(&t, st->m, s, r, meta) || (a->plot && draw(&t, st->m, s, r, po, &info)) ||
+        zp_cli_out_commit(&t, "simulate")) {
+        zp_tx_abort(&t);
+        return ZP_EXIT_FAIL;
+    }
+    if (a->json) {
+        zp_out_json_result(stdout, st->m, r, s, meta);
+    } else {
+        zp_out_text_result(stdout, st->m, r, s, meta);
+    }
+    fprintf(a->json ? stderr : stdout, "wrote in %s: %s\n", t.dir, t.written);
+    return a->plot ? say_figures(t.dir, po, &info, a->json ? stderr : stdout) : ZP_EXIT_OK;
 }
 
 int zp_cmd_simulate(int argc, char **argv) {
@@ -397,31 +342,13 @@ int zp_cmd_simulate(int argc, char **argv) {
     if (zp_setup_load("simulate", a.scene, &ov, &st)) {
         return ZP_EXIT_USAGE;
     }
-    const zp_model *m = st.m;
     zp_sim_opts o = st.sim;
     int status = ZP_EXIT_USAGE;
     zp_sim *s = NULL;
-    double *samples = NULL;
-    char why[256];
-    int nsample = 0;
-    if (a.sample_text) {
-        samples = malloc(sizeof *samples * MAX_SAMPLES);
-        nsample = samples ? zp_cli_parse_list(a.sample_text, samples, MAX_SAMPLES, why, sizeof why)
-                          : -1;
-        for (int i = 0; i < nsample; i++) {
-            if (samples[i] < 0) {
-                snprintf(why, sizeof why, "%g is negative", samples[i]);
-                nsample = -1;
-            }
-        }
-        if (nsample < 0) {
-            zp_cli_error("simulate", "--sample-times: %s; expected times >= 0 in s", why);
-            goto done;
-        }
-        qsort(samples, nsample, sizeof *samples, cmp_double);
-    }
+    double *samples;
+    int nsample = parse_samples(a.sample_text, &samples);
     zp_plot_opts po;
-    if (plot_opts(&a, &st, &po)) {
+    if (nsample < 0 || plot_opts(&a, &st, &po)) {
         goto done;
     }
     status = ZP_EXIT_FAIL;
@@ -433,7 +360,7 @@ int zp_cmd_simulate(int argc, char **argv) {
     zp_accuracy acc;
     zp_input in = {.sched = &st.sched, .sample_t = samples, .nsample = nsample};
     zp_plot_opts_frames_input(&po, &in);
-    if (run_answer(m, st.sc.accuracy, &o, &in, &s, &r, &est, &acc)) {
+    if (run_answer(st.m, st.sc.accuracy, &o, &in, &s, &r, &est, &acc)) {
         fprintf(stderr, "zipopt simulate: %s; nothing was written\n", r.message);
         goto done;
     }
@@ -442,42 +369,17 @@ int zp_cmd_simulate(int argc, char **argv) {
         goto done;
     }
     zp_sens_result grad;
-    if (a.gradient && zp_sens_run(m, &o, &st.sched, &grad)) {
+    if (a.gradient && zp_sens_run(st.m, &o, &st.sched, &grad)) {
         fprintf(stderr, "zipopt simulate: --gradient: %s; nothing was written\n", grad.message);
         goto done;
     }
     int nsmp;
-    const zp_row *smp = zp_sim_samples(s, &nsmp);
+    zp_sim_samples(s, &nsmp); /* the times reached; the rest were not */
     zp_run_meta meta = {st.sc.name, zp_method_get(o.method)->name,
                         zp_formulation_get(o.formulation)->name, o.rtol, o.atol, &st.sched, &est,
                         samples + nsmp, nsample - nsmp, &lim,
                         st.sc.accuracy > 0 ? &acc : NULL, a.gradient ? &grad : NULL};
-    zp_tx t;
-    zp_plot_info info;
-    if (zp_cli_out_begin(&t, "simulate", "simulate", a.out, &st.sc)) {
-        goto done;
-    }
-    if (write_files(&t, m, s, &r, &meta) || (a.plot && draw(&t, m, s, &r, &po, &info)) ||
-        zp_cli_out_commit(&t, "simulate")) {
-        zp_tx_abort(&t);
-        goto done;
-    }
-    if (a.json) {
-        zp_out_json_result(stdout, m, &r, s, &meta);
-    } else {
-        print_text(m, &r);
-        print_limits(m, &r, &lim);
-        print_samples(m, smp, nsmp, &meta, r.time);
-        print_estimate(&r, &est);
-        if (meta.accuracy) {
-            print_accuracy(&acc);
-        }
-        if (a.gradient) {
-            print_gradient(&st.sched, &grad);
-        }
-    }
-    fprintf(a.json ? stderr : stdout, "wrote in %s: %s\n", t.dir, t.written);
-    status = a.plot ? say_figures(t.dir, &po, &info, a.json ? stderr : stdout) : ZP_EXIT_OK;
+    status = write_run(&a, &st, s, &r, &meta, &po);
 done:
     free(samples);
     zp_sim_free(s);

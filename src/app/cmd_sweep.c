@@ -13,10 +13,9 @@
 #include "cli.h"
 #include "mpi_queue.h"
 #include "mpi_spread.h"
+#include "report_sweep.h"
 #include "scene_read.h"
-#include "sim_opts.h"
 #include "sweep_csv.h"
-#include "sweep_out.h"
 
 #define MAX_ARGS_VARY                                                                              \
     16 /* --vary options kept for checking; more than ZP_SWEEP_MAX_VARY is an error */
@@ -195,25 +194,6 @@ typedef struct study {
     struct timespec start;
 } study;
 
-static double since(const struct timespec *a) {
-    struct timespec now;
-    clock_gettime(CLOCK_MONOTONIC, &now);
-    return (double)(now.tv_sec - a->tv_sec) + 1e-9 * (double)(now.tv_nsec - a->tv_nsec);
-}
-
-/* point p's scene into st->sc; 0, or -1 with the reason in d */
-static int point_scene(study *st, int p, zp_diag *d) {
-    char why[256];
-    char *text = zp_sweep_point_text(st->s, st->base, p, why, sizeof why);
-    if (!text) {
-        zp_diag_add(d, st->path, 0, NULL, NULL, "%s", why);
-        return -1;
-    }
-    zp_status rc = zp_scene_load_string(text, st->path, st->sc, d);
-    free(text);
-    return rc == ZP_OK ? 0 : -1;
-}
-
 /* what an item of the queue comes to: a point's row, or the grid schedule (item npoint) */
 typedef union item_result {
     zp_study_row row;
@@ -229,7 +209,7 @@ static void work(void *user, int p, void *result) {
     zp_study_row *row = result;
     zp_diag d;
     zp_diag_init(&d);
-    if (point_scene(st, p, &d)) {
+    if (zp_sweep_point_scene(st->s, st->base, st->path, p, st->sc, &d)) {
         memset(row, 0, sizeof *row);
         row->failed = 1;
         row->np = st->np;
@@ -273,64 +253,44 @@ static void done(void *user, int p, const void *result) {
     }
     if (st->tty || st->lines) {
         fprintf(stderr, "%szipopt sweep: %d/%d points, %.1f s%s", st->tty ? "\r" : "",
-                st->ndone, st->s->npoint, since(&st->start), st->tty ? "   " : "\n");
+                st->ndone, st->s->npoint, zp_cli_since(&st->start), st->tty ? "   " : "\n");
     }
 }
 
-/* every point checked by every rule of the scene file before anything runs; 0 or -1 */
+/* every point checked by every rule of the scene file before anything runs; 0 or -1 (said) */
 static int check_points(study *st) {
-    for (int p = 0; p < st->s->npoint; p++) {
-        zp_diag d;
-        zp_diag_init(&d);
-        zp_model *m = NULL;
-        zp_sim_opts so;
-        if (point_scene(st, p, &d) == 0 && (m = zp_model_build(st->sc, &d)) != NULL) {
-            zp_sim_opts_from_scene(st->sc, &so, &d);
-        }
-        zp_model_free(m);
-        if (d.n || d.dropped) {
-            char at[512];
-            zp_sweep_describe(st->s, p, at, sizeof at);
-            zp_cli_error("sweep", "the scene at point %d (%s) is not valid:", p, at);
-            zp_diag_print(&d, stderr);
-            fputs("zipopt sweep: nothing was written\n", stderr);
-            return -1;
-        }
+    zp_diag d;
+    int p = zp_sweep_check_points(st->s, st->base, st->path, st->sc, &d);
+    if (p < 0) {
+        return 0;
     }
-    return 0;
+    char at[512];
+    zp_sweep_describe(st->s, p, at, sizeof at);
+    zp_cli_error("sweep", "the scene at point %d (%s) is not valid:", p, at);
+    zp_diag_print(&d, stderr);
+    fputs("zipopt sweep: nothing was written\n", stderr);
+    return -1;
 }
 
 /* sweep.csv, summary.json and the figure into the transaction t, committed as a set */
-static int write_outputs(zp_tx *t, const zp_sweep_out *o, const char *summary,
+static int write_outputs(zp_tx *t, const zp_report_sweep *o, const char *summary,
                          int *no_gnuplot) {
     char err[1300];
-    int fig = zp_sweep_out_has_figure(o);
-    FILE *csv = zp_tx_open(t, "sweep.csv", err, sizeof err);
-    FILE *js = csv ? zp_tx_open(t, "summary.json", err, sizeof err) : NULL;
-    FILE *gp = js && fig ? zp_tx_open(t, "sweep.gp", err, sizeof err) : js;
-    if (!gp) {
+    if (zp_report_sweep_files(t, o, summary, err, sizeof err)) {
         zp_tx_abort(t);
         zp_cli_error("sweep", "%s; nothing was written", err);
         return -1;
     }
-    zp_sweep_csv_header(csv, o->s, o->np);
-    for (int p = 0; p < o->s->npoint; p++) {
-        zp_sweep_csv_row(csv, o->s, p, &o->rows[p]);
-    }
-    zp_sweep_out_json(js, o, summary);
-    if (fig) {
-        zp_sweep_out_script(gp, o);
-    }
     const char *scripts[] = {"sweep.gp"};
     *no_gnuplot = 0;
-    return zp_cli_out_draw_commit(t, "sweep", scripts, fig, no_gnuplot);
+    return zp_cli_out_draw_commit(t, "sweep", scripts, zp_report_sweep_has_figure(o), no_gnuplot);
 }
 
 /* rank 0, once every point is done: the files, then the summary on stdout */
 static int finish(study *st, const sweep_args *a, zp_tx *t, int ranks) {
-    zp_sweep_out o = {st->s, st->rows, st->name, st->np, st->grid ? st->grid_res : NULL};
+    zp_report_sweep o = {st->s, st->rows, st->name, st->np, st->grid ? st->grid_res : NULL};
     char summary[4096];
-    zp_sweep_out_summary(&o, summary, sizeof summary);
+    zp_report_sweep_summary(&o, summary, sizeof summary);
     int no_gnuplot = 0;
     if (write_outputs(t, &o, summary, &no_gnuplot)) {
         zp_cli_error("sweep", "the finished rows stay in %s; rerun with --resume", st->cp.path);
@@ -338,7 +298,7 @@ static int finish(study *st, const sweep_args *a, zp_tx *t, int ranks) {
     }
     zp_sweep_checkpoint_close(&st->cp, 1); /* sweep.csv holds every row */
     if (a->json) {
-        zp_sweep_out_json(stdout, &o, summary);
+        zp_report_sweep_json(stdout, &o, summary);
     } else {
         char shown[4 * sizeof t->dir];
         printf("%s\n%d points (%d from the checkpoint)%s in %.2f s on %d rank%s; wrote "
@@ -347,9 +307,9 @@ static int finish(study *st, const sweep_args *a, zp_tx *t, int ranks) {
                !st->grid           ? ""
                : st->grid_resumed ? " and the grid schedule (from the checkpoint)"
                                    : " and the grid schedule",
-               since(&st->start), ranks,
+               zp_cli_since(&st->start), ranks,
                ranks == 1 ? "" : "s", zp_cli_shown(t->dir, shown, sizeof shown),
-               !zp_sweep_out_has_figure(&o) ? " (no figure for more than two keys)"
+               !zp_report_sweep_has_figure(&o) ? " (no figure for more than two keys)"
                : no_gnuplot                 ? ", sweep.gp (gnuplot is not installed: no image)"
                                             : ", sweep.png");
     }

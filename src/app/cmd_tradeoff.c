@@ -3,22 +3,14 @@
    their answers, so the costs never fall as the level grows past what the searches missed. */
 #include <getopt.h>
 #include <limits.h>
-#include <math.h>
 #include <signal.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
-#include "answer.h"
 #include "cli.h"
-#include "out_json.h"
-#include "report.h"
+#include "report_tradeoff.h"
 #include "setup.h"
-
-#define MAX_LEVELS 16
-#define KMH 3.6
-#define FROM_GIVEN -1 /* an answer that is the schedule the scene or --schedule/--force gave */
 
 static void usage(FILE *f) {
     fputs("usage: zipopt tradeoff SCENE.ini [--levels P1,P2,..] [--max-evals N] [--max-time S]\n"
@@ -45,90 +37,20 @@ static void usage(FILE *f) {
           f);
 }
 
-typedef struct level_out {
-    double p; /* % */
-    int found;
-    int done;       /* 1: its search finished; 0: stopped by Ctrl-C or never started */
-    int from;       /* the level whose search found this answer, or FROM_GIVEN */
-    double time;    /* s, nominal finish time of the answer */
-    double arrival; /* km/h */
-    double force[ZP_SCHED_MAX_PARAMS];
-    int scenarios;
-    zp_robust_check check;
-} level_out;
-
-/* what every level shares, and each level's problem and answer kept for the exchange */
-typedef struct tradeoff {
-    const zp_problem *su;
-    zp_problem pb[MAX_LEVELS]; /* su with the level's force error, its model su's (borrowed) */
-    zp_answer ans[MAX_LEVELS];
-    level_out L[MAX_LEVELS];
-    int n;     /* levels asked for */
-    int ndone; /* levels whose search ran to its end */
-    int given; /* the scene or --schedule/--force gave a schedule to hold as a candidate */
-    int tty;
-    double max_time;
-} tradeoff;
-
 /* set by the first Ctrl-C (the transaction's handler): the level under way stops cleanly */
 static volatile sig_atomic_t interrupted;
 
-/* "key": number, then sep */
-static void json_num(FILE *f, const char *key, double v, const char *sep) {
-    fprintf(f, "\"%s\": ", key);
-    zp_out_json_number(f, v);
-    fputs(sep, f);
-}
-
-/* the cost of level i against the 0 % level: never negative once the answers are exchanged */
-static double cost(const level_out *L, int i) {
-    return L[i].time - L[0].time;
-}
-
-/* the levels as one JSON object, the CSV's columns by name */
-static void write_json(FILE *f, const zp_scene *sc, const level_out *L, int n, int np,
-                       int complete) {
-    fputs("{\n  \"scene\": ", f);
-    zp_out_json_string(f, sc->name);
-    fprintf(f, ",\n  \"complete\": %s,\n  \"levels\": [", complete ? "true" : "false");
-    for (int i = 0; i < n; i++) {
-        fprintf(f, "%s\n    {", i ? "," : "");
-        json_num(f, "force_error_pct", L[i].p, ", ");
-        fprintf(f, "\"found\": %s, \"from_level_pct\": ", L[i].found ? "true" : "false");
-        zp_out_json_number(f, L[i].from == FROM_GIVEN ? NAN : L[L[i].from].p);
-        fputs(", ", f);
-        json_num(f, "time", L[i].time, ", ");
-        json_num(f, "cost", cost(L, i), ", ");
-        json_num(f, "cost_pct", 100 * cost(L, i) / L[0].time, ", ");
-        json_num(f, "arrival_kmh", L[i].arrival, ", ");
-        fputs("\"forces\": [", f);
-        for (int k = 0; k < np; k++) {
-            zp_out_json_number(f, L[i].force[k]);
-            fputs(k + 1 < np ? ", " : "], ", f);
-        }
-        fprintf(f,
-                "\"scenarios\": %d, \"verify\": {\"samples\": %d, \"survived\": %d, "
-                "\"margin_kept\": %d, \"all_kept\": %d, ",
-                L[i].scenarios, L[i].check.samples, L[i].check.survived, L[i].check.margin_kept,
-                L[i].check.all_kept);
-        json_num(f, "lower_95", L[i].check.lower_95, "}, ");
-        fputs("\"headroom\": ", f);
-        zp_summary_headroom_json(f, &L[i].check.headroom);
-        fputs("}", f);
-    }
-    fputs("\n  ]\n}\n", f);
-}
-
 /* the progress line inside a level: what its search is doing and its best so far */
 typedef struct level_progress {
-    const tradeoff *T;
+    const zp_tradeoff *T;
     int i;
+    int tty;
 } level_progress;
 
 static void on_progress(void *user, const zp_search_progress *p, int improved) {
     (void)improved;
     const level_progress *lp = user;
-    if (!lp->T->tty) {
+    if (!lp->tty) {
         return;
     }
     fprintf(stderr,
@@ -141,184 +63,11 @@ static void on_progress(void *user, const zp_search_progress *p, int improved) {
     }
 }
 
-/* the answer's arrival speed: one nominal run at the search's tolerance */
-static int arrival_of(const tradeoff *T, int i, double *kmh, char *err, size_t errlen) {
-    const zp_problem *su = T->su;
-    zp_sim *s = zp_sim_create(su->m, &T->pb[i].search);
-    zp_schedule sched = zp_schedule_with(&su->sched, T->L[i].force);
-    zp_input in = {.sched = &sched};
-    static zp_result run;
-    int bad = !s || zp_sim_run(su->m, s, &in, &run);
-    if (bad) {
-        snprintf(err, errlen, "the answer's run failed: %s", s ? run.message : "out of memory");
-    } else {
-        *kmh = run.v * KMH;
-    }
-    zp_sim_free(s);
-    return bad ? -1 : 0;
-}
-
-/* the robust answer at force error L[i].p, its problem and answer kept in T */
-static zp_status solve_level(tradeoff *T, int i, char *err, size_t errlen) {
-    level_out *out = &T->L[i];
-    zp_problem *pb = &T->pb[i];
-    *pb = *T->su;
-    pb->sc.force_error = out->p;
-    pb->sc.robust = pb->sc.robust || out->p > 0;
-    level_progress lp = {T, i};
-    zp_answer_opts o = zp_answer_opts_of(pb, ZP_ANSWER_SEARCHED);
-    o.search.max_time = T->max_time;
-    o.search.stop = &interrupted;
-    o.search.progress = on_progress;
-    o.search.user = &lp;
-    zp_status st = zp_answer_solve(pb, &o, &T->ans[i], err, errlen);
-    if (T->tty) {
-        fputs("\r\033[K", stderr);
-    }
-    if (st) {
-        return st;
-    }
-    const zp_search_result *res = &T->ans[i].res;
-    out->found = res->found;
-    out->done = !res->interrupted;
-    out->from = i;
-    out->time = res->best.time;
-    out->scenarios = zp_answer_scenarios(&T->ans[i]);
-    out->check = T->ans[i].rp.check;
-    memcpy(out->force, res->force, sizeof out->force);
-    return arrival_of(T, i, &out->arrival, err, errlen) ? ZP_ERR_NUMERIC : ZP_OK;
-}
-
-/* Each level keeps the fastest of its own answer and the others' (and the schedule given)
-   that survives its own held scenarios: an answer robust to +/-5 % is as good a candidate at
-   +/-2 % as the +/-2 % search's, which may have stopped in a slower island. An adopted answer
-   is checked again on the level's fresh scenarios. */
-static int exchange_answers(tradeoff *T, char *err, size_t errlen) {
-    const zp_problem *su = T->su;
-    for (int i = 0; i < T->ndone; i++) {
-        level_out *L = &T->L[i];
-        zp_robust_problem *rp = &T->ans[i].rp;
-        zp_sim *s = zp_sim_create(su->m, &T->pb[i].search);
-        if (!s) {
-            snprintf(err, errlen, "out of memory");
-            return -1;
-        }
-        int adopted = 0;
-        for (int j = -1; j < T->ndone; j++) { /* -1: the schedule the scene or user gave */
-            if (j < 0 ? !T->given
-                      : j == i || !T->L[j].found || (L->found && T->L[j].time >= L->time)) {
-                continue;
-            }
-            const double *p = j < 0 ? su->sched.p : T->L[j].force;
-            zp_eval e;
-            static zp_result r;
-            zp_objective_eval(&rp->ob, s, p, &e, &r);
-            if (zp_objective_feasible(&e) && (!L->found || e.time < L->time)) {
-                memcpy(L->force, p, sizeof *p * (size_t)su->sched.np);
-                L->time = e.time;
-                L->found = adopted = 1;
-                L->from = j < 0 ? FROM_GIVEN : T->L[j].from;
-            }
-        }
-        zp_sim_free(s);
-        if (!adopted) {
-            continue;
-        }
-        if (rp->robust) {
-            if (zp_robust_verify(&rp->ob, &rp->box, &T->pb[i].verify, L->force,
-                                 su->sc.verify_samples, su->seed, 0, NULL, &L->check)) {
-                snprintf(err, errlen, "out of memory verifying the scenarios");
-                return -1;
-            }
-        }
-        if (arrival_of(T, i, &L->arrival, err, errlen)) {
-            return -1;
-        }
-    }
-    return 0;
-}
-
-static void write_csv(FILE *f, const level_out *L, int n, int np) {
-    fputs("force_error_pct,found,time_s,cost_s,cost_pct,arrival_kmh,scenarios,verify_samples,"
-          "verify_kept,lower_95,from_level_pct,headroom_factor",
-          f);
-    for (int k = 0; k < np; k++) {
-        fprintf(f, ",force_%d_N", k + 1);
-    }
-    fputc('\n', f);
-    for (int i = 0; i < n; i++) {
-        const zp_headroom_line *h = &L[i].check.headroom.line[ZP_HEADROOM_LINES - 1];
-        fprintf(f, "%g,%d,%.9g,%.6g,%.4g,%.6g,%d,%d,%d,%.6g,", L[i].p, L[i].found, L[i].time,
-                cost(L, i), 100 * cost(L, i) / L[0].time, L[i].arrival, L[i].scenarios,
-                L[i].check.samples, L[i].check.all_kept, L[i].check.lower_95);
-        if (L[i].from != FROM_GIVEN) {
-            fprintf(f, "%g", L[L[i].from].p);
-        }
-        fprintf(f, ",%.6g", h->range >= 0 ? h->holds : NAN);
-        for (int k = 0; k < np; k++) {
-            fprintf(f, ",%.9g", L[i].force[k]);
-        }
-        fputc('\n', f);
-    }
-}
-
-static void write_plot(FILE *f) {
-    fputs("set terminal pngcairo size 900,500 enhanced font 'DejaVu Sans,11' linewidth 1.3\n"
-          "set output 'tradeoff.png'\nset datafile separator ','\nset key top left\n"
-          "set title 'What robustness costs'\nset xlabel 'force error held (+/- %)'\n"
-          "set ylabel 'finish time (s)'\nset y2label 'arrival speed (km/h)'\n"
-          "set ytics nomirror\nset y2tics\nset grid\n"
-          "plot 'tradeoff.csv' every ::1 using 1:3 with linespoints pt 7 title 'finish time', \\\n"
-          "     '' every ::1 using 1:6 axes x1y2 with linespoints pt 5 dt 2 title 'arrival speed', "
-          "\\\n     '' every ::1::1 using 1:3 with points pt 6 ps 3 lc rgb 'black' "
-          "title 'the 0 % level'\n",
-          f);
-}
-
-static void write_md(FILE *f, const zp_scene *sc, const level_out *L, int n, int complete) {
-    fprintf(f, "# What robustness costs: %s\n\n", sc->name);
-    if (!complete) {
-        fputs("**Incomplete**: stopped (Ctrl-C) before every level was searched; the levels "
-              "below are those finished.\n\n",
-              f);
-    }
-    fprintf(f,
-            "The robust search at each force error level (every section's force off by up to "
-            "+/-p %%, independently%s), against the 0 %% level (%.4f s). Each level keeps the "
-            "fastest answer any level found that survives its own scenarios (\"from\").\n\n"
-            "| +/-p | found | finish (s) | costs (s) | costs (%%) | arrival (km/h) | verified "
-            "survivable | from |\n|---|---|---|---|---|---|---|---|\n",
-            sc->robust ? "; the scene's other [robust] ranges as given" : "", L[0].time);
-    for (int i = 0; i < n; i++) {
-        fprintf(f, "| %g %% | %s | %.4f | %.4f | %.1f | %.1f | ", L[i].p, L[i].found ? "yes" : "no",
-                L[i].time, cost(L, i), 100 * cost(L, i) / L[0].time, L[i].arrival);
-        if (L[i].check.samples) {
-            fprintf(f, "%d / %d (>= %.2f %%) | ", L[i].check.all_kept, L[i].check.samples,
-                    100 * L[i].check.lower_95);
-        } else {
-            fputs("- | ", f);
-        }
-        if (L[i].from == FROM_GIVEN) {
-            fputs("the given schedule |\n", f);
-        } else {
-            fprintf(f, "%s%g %% |\n", L[i].from == i ? "" : "the search at ", L[L[i].from].p);
-        }
-    }
-    fputc('\n', f);
-    for (int i = 1; i < n; i++) {
-        if (L[i].found) {
-            fprintf(f, "Robust to +/-%g %% costs %.3f s (%.1f %%).\n", L[i].p, cost(L, i),
-                    100 * cost(L, i) / L[0].time);
-        }
-    }
-    fputs("\n![finish time and arrival speed against the level](tradeoff.png)\n", f);
-}
-
 /* the levels: 0 first (the reference of the costs), then the ones asked for in the order given */
 static int parse_levels(const char *text, double *lv) {
-    double got[MAX_LEVELS];
+    double got[ZP_TRADEOFF_MAX_LEVELS];
     char why[128] = "";
-    int n = text ? zp_cli_parse_list(text, got, MAX_LEVELS - 1, why, sizeof why) : 4;
+    int n = text ? zp_cli_parse_list(text, got, ZP_TRADEOFF_MAX_LEVELS - 1, why, sizeof why) : 4;
     if (!text) {
         memcpy(got, (double[]){1, 2, 5, 10}, sizeof(double) * 4);
     }
@@ -418,30 +167,17 @@ static int parse_args(int argc, char **argv, tradeoff_args *a) {
     return 0;
 }
 
-/* the finished levels' files, all or nothing; 0, or -1 (said) */
-static int write_files(zp_tx *t, const tradeoff *T, int complete) {
-    char err[1400] = "";
-    const zp_scene *sc = &T->su->sc;
-    FILE *csv = zp_tx_open(t, "tradeoff.csv", err, sizeof err);
-    FILE *gp = csv ? zp_tx_open(t, "tradeoff.gp", err, sizeof err) : NULL;
-    FILE *md = gp ? zp_tx_open(t, "report.md", err, sizeof err) : NULL;
-    if (!md) {
-        zp_tx_abort(t);
-        zp_cli_error("tradeoff", "%s; nothing was written", err);
-        return -1;
-    }
-    write_csv(csv, T->L, T->ndone, T->su->sched.np);
-    write_plot(gp);
-    write_md(md, sc, T->L, T->ndone, complete);
-    return 0;
-}
-
 /* the levels in order until one is stopped (Ctrl-C), those finished counted in T->ndone; 0, or
    -1 (said) */
-static int solve_levels(tradeoff *T) {
+static int solve_levels(zp_tradeoff *T, int tty) {
     char err[1200] = "";
     for (int i = 0; i < T->n && !interrupted; i++) {
-        if (solve_level(T, i, err, sizeof err)) {
+        level_progress lp = {T, i, tty};
+        zp_status st = zp_tradeoff_solve(T, i, on_progress, &lp, err, sizeof err);
+        if (tty) {
+            fputs("\r\033[K", stderr);
+        }
+        if (st) {
             zp_cli_error("tradeoff", "level %g %%: %s; nothing was written", T->L[i].p, err);
             return -1;
         }
@@ -455,82 +191,78 @@ static int solve_levels(tradeoff *T) {
     return 0;
 }
 
+/* the finished levels' files committed, then the summary; the exit status */
+static int write_levels(zp_tx *t, const zp_tradeoff *T, int json) {
+    char err[1400] = "";
+    int missing = 0, complete = T->ndone == T->n;
+    const char *scripts[] = {"tradeoff.gp"};
+    if (zp_report_tradeoff_files(t, T, err, sizeof err)) {
+        zp_tx_abort(t);
+        zp_cli_error("tradeoff", "%s; nothing was written", err);
+        return ZP_EXIT_FAIL;
+    }
+    if (zp_cli_out_draw_commit(t, "tradeoff", scripts, 1, &missing)) {
+        return ZP_EXIT_FAIL;
+    }
+    for (int i = 1; i < T->ndone && !json; i++) {
+        double cost = zp_tradeoff_cost(T, i);
+        printf("robust to +/-%g %%: %.4f s, costs %.3f s (%.1f %%)%s\n", T->L[i].p, T->L[i].time,
+               cost, 100 * cost / T->L[0].time, T->L[i].found ? "" : ", NOT found");
+    }
+    if (json) {
+        zp_report_tradeoff_json(stdout, T);
+    }
+    char shown[4 * sizeof t->dir];
+    fprintf(json ? stderr : stdout, "wrote in %s: %s%s\n",
+            zp_cli_shown(t->dir, shown, sizeof shown), t->written,
+            missing ? " (no gnuplot: tradeoff.gp without its image)" : "");
+    if (!complete) {
+        fprintf(stderr,
+                "zipopt tradeoff: interrupted; wrote the %d level%s finished, marked "
+                "incomplete\n",
+                T->ndone, T->ndone == 1 ? "" : "s");
+    }
+    return complete ? ZP_EXIT_OK : ZP_EXIT_FAIL;
+}
+
 int zp_cmd_tradeoff(int argc, char **argv) {
     tradeoff_args a;
     int pa = parse_args(argc, argv, &a);
     if (pa) {
         return pa > 0 ? ZP_EXIT_OK : ZP_EXIT_USAGE;
     }
-    double lv[MAX_LEVELS];
+    double lv[ZP_TRADEOFF_MAX_LEVELS];
     int n = parse_levels(a.levels, lv);
     static zp_problem su; /* large: kept off the stack */
     if (n < 1 || zp_setup_load("tradeoff", a.scene, &a.ov, &su)) {
         return ZP_EXIT_USAGE;
     }
-    const zp_scene *sc = &su.sc;
-    static tradeoff T; /* large: kept off the stack */
-    T = (tradeoff){.su = &su,
-                   .n = n,
-                   .tty = isatty(STDERR_FILENO),
-                   .max_time = a.max_time,
-                   .given = sc->nforce > 0 || a.ov.schedule || a.ov.force};
-    for (int i = 0; i < n; i++) {
-        T.L[i].p = lv[i];
-    }
+    static zp_tradeoff T; /* large: kept off the stack */
+    zp_tradeoff_init(&T, &su, lv, n, su.sc.nforce > 0 || a.ov.schedule || a.ov.force);
+    T.max_time = a.max_time;
+    T.stop = &interrupted;
     char err[1200] = "";
-    int status = ZP_EXIT_FAIL, begun = 0;
+    int status = ZP_EXIT_FAIL;
     zp_tx t;
-    if (zp_cli_out_begin(&t, "tradeoff", "tradeoff", a.out, sc)) {
+    if (zp_cli_out_begin(&t, "tradeoff", "tradeoff", a.out, &su.sc)) {
         goto done;
     }
-    begun = 1;
     interrupted = 0;
     zp_tx_soft_interrupt(&t, &interrupted);
-    if (solve_levels(&T)) {
-        goto done;
-    }
-    int complete = T.ndone == n;
-    if (T.ndone == 0) {
+    if (solve_levels(&T, isatty(STDERR_FILENO))) {
+        zp_tx_abort(&t);
+    } else if (T.ndone == 0) {
         fputs("zipopt tradeoff: interrupted before a level was finished; nothing was written\n",
               stderr);
-        goto done;
-    }
-    if (exchange_answers(&T, err, sizeof err)) {
+        zp_tx_abort(&t);
+    } else if (zp_tradeoff_exchange(&T, err, sizeof err)) {
         zp_cli_error("tradeoff", "%s; nothing was written", err);
-        goto done;
-    }
-    int missing = 0;
-    const char *scripts[] = {"tradeoff.gp"};
-    begun = 0; /* the files commit or abort the transaction */
-    if (write_files(&t, &T, complete) ||
-        zp_cli_out_draw_commit(&t, "tradeoff", scripts, 1, &missing)) {
-        goto done;
-    }
-    for (int i = 1; i < T.ndone && !a.json; i++) {
-        printf("robust to +/-%g %%: %.4f s, costs %.3f s (%.1f %%)%s\n", T.L[i].p, T.L[i].time,
-               cost(T.L, i), 100 * cost(T.L, i) / T.L[0].time, T.L[i].found ? "" : ", NOT found");
-    }
-    if (a.json) {
-        write_json(stdout, sc, T.L, T.ndone, su.sched.np, complete);
-    }
-    char shown[4 * sizeof t.dir];
-    fprintf(a.json ? stderr : stdout, "wrote in %s: %s%s\n",
-            zp_cli_shown(t.dir, shown, sizeof shown), t.written,
-            missing ? " (no gnuplot: tradeoff.gp without its image)" : "");
-    status = complete ? ZP_EXIT_OK : ZP_EXIT_FAIL;
-    if (!complete) {
-        fprintf(stderr,
-                "zipopt tradeoff: interrupted; wrote the %d level%s finished, marked "
-                "incomplete\n",
-                T.ndone, T.ndone == 1 ? "" : "s");
+        zp_tx_abort(&t);
+    } else {
+        status = write_levels(&t, &T, a.json); /* the files commit or abort the transaction */
     }
 done:
-    if (begun) {
-        zp_tx_abort(&t);
-    }
-    for (int i = 0; i < n; i++) {
-        zp_answer_free(&T.ans[i]);
-    }
+    zp_tradeoff_free(&T);
     zp_setup_free(&su);
     return status;
 }

@@ -13,6 +13,10 @@ static const char *gp_safe(const char *in, char *out, size_t n) {
     return out;
 }
 
+double zp_fig_landscape_at(const zp_fig_axis *r, int k) {
+    return r->a + (r->b - r->a) * k / (r->n - 1);
+}
+
 /* the gnuplot head both figures share */
 static void head(FILE *f, const char *name, int w, int h) {
     fprintf(f,

@@ -13,6 +13,8 @@ typedef struct zp_fig_axis {
     int n;       /* points, a and b included */
 } zp_fig_axis;
 
+/* point k of r (0 .. n-1: a .. b) */
+double zp_fig_landscape_at(const zp_fig_axis *r, int k);
 /* landscape.gp, for scene (its name, in the title) over the constant pushes r */
 void zp_fig_landscape_1d(FILE *f, const char *scene, const zp_fig_axis *r);
 /* landscape_slice.gp: parameters si and sj (0-based) of the schedule base over r1 and r2, the

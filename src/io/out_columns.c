@@ -6,31 +6,6 @@
 
 #define DEG (180.0 / M_PI)
 
-/* the quantities a row shows */
-typedef enum quantity {
-    Q_T,
-    Q_SECTION,
-    Q_X,
-    Q_Y,
-    Q_SPEED,
-    Q_THETA,
-    Q_OMEGA,
-    Q_PHI,
-    Q_COM_X,
-    Q_COM_Y,
-    Q_KINETIC,
-    Q_POTENTIAL,
-    Q_ENERGY,
-    Q_DRIVE,
-    Q_DAMP,
-    Q_IMPULSE,
-    Q_NORMAL,
-    Q_WORK,
-    Q_JOINT_X,
-    Q_JOINT_Y,
-    Q_ACC
-} quantity;
-
 /* how many columns an entry spans: one, one per link (its %d 1..N), per body (0..N), per
    effect's work integral (named by effect.h's table, shown as it says) */
 typedef enum span { ONE, PER_LINK, PER_BODY, PER_WORK } span;
@@ -39,32 +14,32 @@ typedef enum span { ONE, PER_LINK, PER_BODY, PER_WORK } span;
 typedef struct entry {
     span per;
     int n; /* quantities per index, 1 or 2 */
-    quantity q[2];
+    zp_out_quantity q[2];
     const char *csv[2]; /* names, a %d for the index */
     const char *lib;    /* NULL: not in the C library */
     double scale;       /* SI to the CSV's unit */
 } entry;
 
 static const entry table[] = {
-    {ONE, 1, {Q_T}, {"t"}, "t", 1},
-    {ONE, 1, {Q_SECTION}, {"section"}, "section", 1},
-    {ONE, 1, {Q_X}, {"x"}, "x", 1},
-    {ONE, 1, {Q_Y}, {"y"}, "y", 1},
-    {ONE, 1, {Q_SPEED}, {"speed"}, "speed", 1},
-    {PER_LINK, 1, {Q_THETA}, {"theta%d_deg"}, "theta%d", DEG},
-    {PER_LINK, 1, {Q_OMEGA}, {"omega%d_deg_s"}, "omega%d", DEG},
-    {PER_LINK, 1, {Q_PHI}, {"phi%d_deg"}, "phi%d", DEG},
-    {PER_BODY, 2, {Q_COM_X, Q_COM_Y}, {"com%d_x", "com%d_y"}, NULL, 1},
-    {ONE, 1, {Q_KINETIC}, {"kinetic"}, "kinetic", 1},
-    {ONE, 1, {Q_POTENTIAL}, {"potential"}, "potential", 1},
-    {ONE, 1, {Q_ENERGY}, {"energy"}, NULL, 1},
-    {ONE, 1, {Q_DRIVE}, {"drive_work"}, "drive_work", 1},
-    {ONE, 1, {Q_DAMP}, {"damper_work"}, "damper_work", 1},
-    {ONE, 1, {Q_IMPULSE}, {"impulse_loss"}, "impulse_loss", 1},
-    {ONE, 1, {Q_NORMAL}, {"normal_force"}, NULL, 1},
-    {PER_WORK, 1, {Q_WORK}, {NULL}, NULL, 1},
-    {PER_LINK, 2, {Q_JOINT_X, Q_JOINT_Y}, {"joint%d_fx", "joint%d_fy"}, NULL, 1},
-    {PER_LINK, 1, {Q_ACC}, {"acc%d_g"}, NULL, 1},
+    {ONE, 1, {ZP_OUT_Q_T}, {"t"}, "t", 1},
+    {ONE, 1, {ZP_OUT_Q_SECTION}, {"section"}, "section", 1},
+    {ONE, 1, {ZP_OUT_Q_X}, {"x"}, "x", 1},
+    {ONE, 1, {ZP_OUT_Q_Y}, {"y"}, "y", 1},
+    {ONE, 1, {ZP_OUT_Q_SPEED}, {"speed"}, "speed", 1},
+    {PER_LINK, 1, {ZP_OUT_Q_THETA}, {"theta%d_deg"}, "theta%d", DEG},
+    {PER_LINK, 1, {ZP_OUT_Q_OMEGA}, {"omega%d_deg_s"}, "omega%d", DEG},
+    {PER_LINK, 1, {ZP_OUT_Q_PHI}, {"phi%d_deg"}, "phi%d", DEG},
+    {PER_BODY, 2, {ZP_OUT_Q_COM_X, ZP_OUT_Q_COM_Y}, {"com%d_x", "com%d_y"}, NULL, 1},
+    {ONE, 1, {ZP_OUT_Q_KINETIC}, {"kinetic"}, "kinetic", 1},
+    {ONE, 1, {ZP_OUT_Q_POTENTIAL}, {"potential"}, "potential", 1},
+    {ONE, 1, {ZP_OUT_Q_ENERGY}, {"energy"}, NULL, 1},
+    {ONE, 1, {ZP_OUT_Q_DRIVE}, {"drive_work"}, "drive_work", 1},
+    {ONE, 1, {ZP_OUT_Q_DAMP}, {"damper_work"}, "damper_work", 1},
+    {ONE, 1, {ZP_OUT_Q_IMPULSE}, {"impulse_loss"}, "impulse_loss", 1},
+    {ONE, 1, {ZP_OUT_Q_NORMAL}, {"normal_force"}, NULL, 1},
+    {PER_WORK, 1, {ZP_OUT_Q_WORK}, {NULL}, NULL, 1},
+    {PER_LINK, 2, {ZP_OUT_Q_JOINT_X, ZP_OUT_Q_JOINT_Y}, {"joint%d_fx", "joint%d_fy"}, NULL, 1},
+    {PER_LINK, 1, {ZP_OUT_Q_ACC}, {"acc%d_g"}, NULL, 1},
 };
 #define NENTRY ((int)(sizeof table / sizeof *table))
 
@@ -84,50 +59,52 @@ static int count(const zp_model *m, span per) {
 }
 
 /* quantity q of row r (its derived view v) at index i (link i 0-based, body i, work i) */
-static double value(quantity q, const zp_row *r, const zp_row_view *v, int i) {
+static double value(zp_out_quantity q, const zp_row *r, const zp_row_view *v, int i) {
     switch (q) {
-    case Q_T:
+    case ZP_OUT_Q_T:
         return r->t;
-    case Q_SECTION:
+    case ZP_OUT_Q_SECTION:
         return r->sec + 1;
-    case Q_X:
+    case ZP_OUT_Q_X:
         return r->c.q[0];
-    case Q_Y:
+    case ZP_OUT_Q_Y:
         return r->c.q[1];
-    case Q_SPEED:
+    case ZP_OUT_Q_SPEED:
         return v->speed;
-    case Q_THETA:
+    case ZP_OUT_Q_THETA:
         return r->c.q[2 + i];
-    case Q_OMEGA:
+    case ZP_OUT_Q_OMEGA:
         return r->c.v[2 + i];
-    case Q_PHI:
+    case ZP_OUT_Q_PHI:
         return v->phi[i];
-    case Q_COM_X:
+    case ZP_OUT_Q_COM_X:
         return v->com[i][0];
-    case Q_COM_Y:
+    case ZP_OUT_Q_COM_Y:
         return v->com[i][1];
-    case Q_KINETIC:
+    case ZP_OUT_Q_KINETIC:
         return v->e.kinetic;
-    case Q_POTENTIAL:
+    case ZP_OUT_Q_POTENTIAL:
         return v->e.potential;
-    case Q_ENERGY:
+    case ZP_OUT_Q_ENERGY:
         return v->e.kinetic + v->e.potential;
-    case Q_DRIVE:
+    case ZP_OUT_Q_DRIVE:
         return r->w_drive;
-    case Q_DAMP:
+    case ZP_OUT_Q_DAMP:
         return r->w_damp;
-    case Q_IMPULSE:
+    case ZP_OUT_Q_IMPULSE:
         return r->e_impulse;
-    case Q_NORMAL:
+    case ZP_OUT_Q_NORMAL:
         return r->loads.normal;
-    case Q_WORK:
+    case ZP_OUT_Q_WORK:
         return r->w_effect[i];
-    case Q_JOINT_X:
+    case ZP_OUT_Q_JOINT_X:
         return r->loads.joint[i][0];
-    case Q_JOINT_Y:
+    case ZP_OUT_Q_JOINT_Y:
         return r->loads.joint[i][1];
-    case Q_ACC:
+    case ZP_OUT_Q_ACC:
         return v->acc_g[i];
+    case ZP_OUT_Q_COUNT:
+        break;
     }
     return NAN;
 }
@@ -149,6 +126,21 @@ int zp_out_columns(const zp_model *m, zp_out_column *col) {
         }
     }
     return j;
+}
+
+int zp_out_columns_find(const zp_model *m, zp_out_quantity q, int *n) {
+    int j = 0;
+    for (int e = 0; e < NENTRY; e++) {
+        const entry *en = &table[e];
+        int k = count(m, en->per);
+        if (en->n == 1 && en->q[0] == q) {
+            *n = k;
+            return k ? j : -1;
+        }
+        j += k * en->n;
+    }
+    *n = 0;
+    return -1;
 }
 
 void zp_out_columns_values(const zp_model *m, const zp_row *r, double *v) {

@@ -316,6 +316,16 @@ FILE *zp_tx_open(zp_tx *t, const char *name, char *err, size_t errlen) {
     return f;
 }
 
+int zp_tx_open_set(zp_tx *t, const char *const *names, FILE **f, int n, char *err,
+                   size_t errlen) {
+    for (int i = 0; i < n; i++) {
+        if (!(f[i] = zp_tx_open(t, names[i], err, errlen))) {
+            return -1;
+        }
+    }
+    return 0;
+}
+
 int zp_tx_flush(zp_tx *t, char *err, size_t errlen) {
     int bad = 0;
     for (int i = 0; i < t->nopen; i++) {

@@ -50,6 +50,10 @@ void zp_tx_soft_interrupt(zp_tx *t, volatile sig_atomic_t *stop);
    tests, ZIPOPT_TEST_FULL=N makes the Nth file opened in the process go to /dev/full, so its
    writes fail as on a full disk. */
 FILE *zp_tx_open(zp_tx *t, const char *name, char *err, size_t errlen);
+/* Opens the n files names[] in order (zp_tx_open) into f[]; 0, or -1 with why at the first that
+   fails. */
+int zp_tx_open_set(zp_tx *t, const char *const *names, FILE **f, int n, char *err,
+                   size_t errlen);
 /* Closes every open file, checking each was written whole; 0, or -1 with why. */
 int zp_tx_flush(zp_tx *t, char *err, size_t errlen);
 /* The private folder's descriptor, where helper processes work. */

@@ -4,6 +4,7 @@
 #include <math.h>
 
 #include "estimate.h"
+#include "out_columns.h"
 
 #define DEG (180.0 / M_PI)
 
@@ -29,13 +30,19 @@ void zp_out_json_string(FILE *f, const char *s) {
     fputc('"', f);
 }
 
-static void key_num(FILE *f, const char *key, double v, const char *sep) {
+void zp_out_json_key(FILE *f, const char *key, double v, const char *sep) {
     fprintf(f, "\"%s\": ", key);
     zp_out_json_number(f, v);
     fputs(sep, f);
 }
 
-static void num_list(FILE *f, const double *v, int n, double scale) {
+void zp_out_json_key_string(FILE *f, const char *key, const char *s, const char *sep) {
+    fprintf(f, "\"%s\": ", key);
+    zp_out_json_string(f, s);
+    fputs(sep, f);
+}
+
+void zp_out_json_list(FILE *f, const double *v, int n, double scale) {
     fputc('[', f);
     for (int i = 0; i < n; i++) {
         zp_out_json_number(f, v[i] * scale);
@@ -44,19 +51,42 @@ static void num_list(FILE *f, const double *v, int n, double scale) {
     fputc(']', f);
 }
 
+/* the keys of a sample, in their order: each a quantity of the trajectory's table, its value
+   and unit the table's; list: one per link, as a list */
+static const struct {
+    const char *key;
+    zp_out_quantity q;
+    int list;
+} sample_key[] = {
+    {"t", ZP_OUT_Q_T, 0},           {"x", ZP_OUT_Q_X, 0},         {"y", ZP_OUT_Q_Y, 0},
+    {"section", ZP_OUT_Q_SECTION, 0}, {"theta", ZP_OUT_Q_THETA, 1}, {"omega", ZP_OUT_Q_OMEGA, 1},
+    {"normal_force", ZP_OUT_Q_NORMAL, 0},
+};
+#define NSAMPLE_KEY ((int)(sizeof sample_key / sizeof *sample_key))
+
+static void write_sample(FILE *f, const zp_model *m, const zp_row *s, const zp_out_column *col) {
+    double v[ZP_OUT_COLUMNS_MAX];
+    zp_out_columns_values(m, s, v);
+    for (int i = 0; i < NSAMPLE_KEY; i++) {
+        int n, j = zp_out_columns_find(m, sample_key[i].q, &n);
+        const char *sep = i + 1 < NSAMPLE_KEY ? ", " : "}";
+        if (sample_key[i].list) {
+            fprintf(f, "\"%s\": ", sample_key[i].key);
+            zp_out_json_list(f, v + j, n, col[j].csv_scale);
+            fputs(sep, f);
+        } else {
+            zp_out_json_key(f, sample_key[i].key, v[j] * col[j].csv_scale, sep);
+        }
+    }
+}
+
 static void write_samples(FILE *f, const zp_model *m, const zp_row *s, int n) {
+    zp_out_column col[ZP_OUT_COLUMNS_MAX];
+    zp_out_columns(m, col);
     fputs("  \"samples\": [", f);
     for (int k = 0; k < n; k++) {
         fputs(k ? ",\n    {" : "\n    {", f);
-        key_num(f, "t", s[k].t, ", ");
-        key_num(f, "x", s[k].c.q[0], ", ");
-        key_num(f, "y", s[k].c.q[1], ", ");
-        fprintf(f, "\"section\": %d, \"theta\": ", s[k].sec + 1);
-        num_list(f, s[k].c.q + 2, m->nlink, DEG);
-        fputs(", \"omega\": ", f);
-        num_list(f, s[k].c.v + 2, m->nlink, DEG);
-        fputs(", ", f);
-        key_num(f, "normal_force", s[k].loads.normal, "}");
+        write_sample(f, m, &s[k], col);
     }
     fputs(n ? "\n  ],\n" : "],\n", f);
 }
@@ -72,9 +102,9 @@ void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp
             fprintf(f, "\"%s\": [", zp_limit_name(i));
             for (int l = 0; l < m->nenv; l++) {
                 fputs(l ? ", {" : "{", f);
-                key_num(f, "g", m->env_g[l], ", ");
-                key_num(f, "allowed_s", m->env_s[l], ", ");
-                key_num(f, "longest_s", r->env_longest[l], "}");
+                zp_out_json_key(f, "g", m->env_g[l], ", ");
+                zp_out_json_key(f, "allowed_s", m->env_s[l], ", ");
+                zp_out_json_key(f, "longest_s", r->env_longest[l], "}");
             }
             fputs(i + 1 < ZP_LIMIT_COUNT ? "], " : "]}", f);
             continue;
@@ -82,13 +112,13 @@ void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp
         fprintf(f, "\"%s\": {", zp_limit_name(i));
         if (!zp_limit_reached_in(r, i)) { /* never measured: neither kept nor broken */
             fputs("\"reached\": null, ", f);
-            key_num(f, "limit", max > 0 ? max : NAN, max > 0 ? ", \"kept\": null}" : "}");
+            zp_out_json_key(f, "limit", max > 0 ? max : NAN, max > 0 ? ", \"kept\": null}" : "}");
             fputs(i + 1 < ZP_LIMIT_COUNT ? ", " : "}", f);
             continue;
         }
-        key_num(f, "reached", v[i], ", ");
+        zp_out_json_key(f, "reached", v[i], ", ");
         if (max > 0) {
-            key_num(f, "limit", max, "");
+            zp_out_json_key(f, "limit", max, "");
             fprintf(f, ", \"kept\": %s}", zp_limits_kept(i, v[i], max) ? "true" : "false");
         } else {
             fputs("\"limit\": null}", f);
@@ -108,9 +138,9 @@ static void write_gradient(FILE *f, const zp_schedule *sh, const zp_sens_result 
         zp_out_json_string(f, label);
     }
     fputs("], \"time\": ", f);
-    num_list(f, g->dtime, g->np, 1.0);
+    zp_out_json_list(f, g->dtime, g->np, 1.0);
     fputs(", \"margin_angle\": ", f);
-    num_list(f, g->dmargin, g->np, DEG);
+    zp_out_json_list(f, g->dmargin, g->np, DEG);
     fprintf(f, ", \"limits\": {}, \"smooth\": %s, \"not_smooth_because\": ",
             g->smooth ? "true" : "false");
     if (g->smooth) {
@@ -130,30 +160,30 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
     zp_out_json_string(f, meta->scene);
     fprintf(f, ",\n  \"method\": \"%s\",\n  \"formulation\": \"%s\",\n  ", meta->method,
             meta->formulation);
-    key_num(f, "rtol", meta->rtol, ", ");
-    key_num(f, "atol", meta->atol, ",\n");
+    zp_out_json_key(f, "rtol", meta->rtol, ", ");
+    zp_out_json_key(f, "atol", meta->atol, ",\n");
     fputs("  \"forces\": ", f);
-    num_list(f, meta->sched->p, meta->sched->np, 1.0);
+    zp_out_json_list(f, meta->sched->p, meta->sched->np, 1.0);
     fprintf(f, ",\n  \"outcome\": \"%s\",\n  ", zp_sim_outcome_name(r->outcome));
-    key_num(f, "time", r->time, ",\n  ");
-    key_num(f, "x", r->x, ",\n  ");
-    key_num(f, "speed", r->v, ",\n");
+    zp_out_json_key(f, "time", r->time, ",\n  ");
+    zp_out_json_key(f, "x", r->x, ",\n  ");
+    zp_out_json_key(f, "speed", r->v, ",\n");
     if (meta->estimate) {
         /* null when the tighter run failed: no estimate, no verdict */
         const zp_estimate *e = meta->estimate;
         fputs("  ", f);
-        key_num(f, "time_error", e->ok ? e->time_error : NAN, ", ");
-        key_num(f, "time_error_rtol", e->rtol, ", ");
+        zp_out_json_key(f, "time_error", e->ok ? e->time_error : NAN, ", ");
+        zp_out_json_key(f, "time_error_rtol", e->rtol, ", ");
         fprintf(f, "\"sensitive\": %s,\n", !e->ok ? "null" : e->sensitive ? "true" : "false");
     }
     if (meta->accuracy) {
         const zp_accuracy *a = meta->accuracy;
         fputs("  \"accuracy\": {", f);
-        key_num(f, "requested", a->requested, ", ");
-        key_num(f, "met", a->met, ", ");
+        zp_out_json_key(f, "requested", a->requested, ", ");
+        zp_out_json_key(f, "met", a->met, ", ");
         fprintf(f, "\"ok\": %s, \"method\": \"%s\", ", a->ok ? "true" : "false",
                 zp_method_get(a->method)->name);
-        key_num(f, "rtol", a->rtol, ", ");
+        zp_out_json_key(f, "rtol", a->rtol, ", ");
         fprintf(f, "\"reruns\": %d},\n", a->reruns);
     }
     if (r->died_link) {
@@ -170,33 +200,33 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
     for (int k = 0; k < nk; k++) {
         const zp_crossing *c = &cross[k];
         fputs(k ? ",\n    {" : "\n    {", f);
-        key_num(f, "t", c->t, ", ");
-        key_num(f, "x", c->x, ", ");
+        zp_out_json_key(f, "t", c->t, ", ");
+        zp_out_json_key(f, "x", c->x, ", ");
         fprintf(f, "\"from_section\": %d, \"to_section\": %d, ", c->from + 1, c->to + 1);
-        key_num(f, "impulse", c->impulse, ", ");
-        key_num(f, "energy_lost", c->energy_lost, m->narc ? ", \"rounded\": true}" : "}");
+        zp_out_json_key(f, "impulse", c->impulse, ", ");
+        zp_out_json_key(f, "energy_lost", c->energy_lost, m->narc ? ", \"rounded\": true}" : "}");
     }
     fputs(nk ? "\n  ],\n" : "],\n", f);
     fprintf(f, "  \"kink_crossings\": %d,\n  \"max_rel_angle\": ", r->ncross);
-    num_list(f, r->max_rel_angle, m->nlink, DEG);
+    zp_out_json_list(f, r->max_rel_angle, m->nlink, DEG);
     fputs(",\n  \"energy\": {", f);
-    key_num(f, "initial", r->e_initial, ", ");
-    key_num(f, "final", r->e_final, ", ");
-    key_num(f, "drive_work", r->w_drive, ", ");
-    key_num(f, "damper_work", r->w_damp, ", ");
-    key_num(f, "impulse_loss", r->e_impulse, ", ");
+    zp_out_json_key(f, "initial", r->e_initial, ", ");
+    zp_out_json_key(f, "final", r->e_final, ", ");
+    zp_out_json_key(f, "drive_work", r->w_drive, ", ");
+    zp_out_json_key(f, "damper_work", r->w_damp, ", ");
+    zp_out_json_key(f, "impulse_loss", r->e_impulse, ", ");
     for (int k = 0; zp_effect_work_shown(m->physics) && k < ZP_EFFECT_NWORK; k++) {
-        key_num(f, zp_effect_work_names(k)->column, r->w_effect[k], ", ");
+        zp_out_json_key(f, zp_effect_work_names(k)->column, r->w_effect[k], ", ");
     }
-    key_num(f, "residual", zp_estimate_energy_residual(r), "},\n  ");
-    key_num(f, "constraint_residual", r->constraint_residual, ",\n");
+    zp_out_json_key(f, "residual", zp_estimate_energy_residual(r), "},\n  ");
+    zp_out_json_key(f, "constraint_residual", r->constraint_residual, ",\n");
     fputs("  \"loads\": {\"joint_peak\": ", f);
-    num_list(f, r->peaks.joint, m->nlink, 1.0);
+    zp_out_json_list(f, r->peaks.joint, m->nlink, 1.0);
     fputs(", ", f);
-    key_num(f, "normal_min", r->peaks.normal_min, ", ");
-    key_num(f, "normal_max", r->peaks.normal_max, ", ");
+    zp_out_json_key(f, "normal_min", r->peaks.normal_min, ", ");
+    zp_out_json_key(f, "normal_max", r->peaks.normal_max, ", ");
     fputs("\"acc_peak_g\": ", f);
-    num_list(f, r->peaks.acc_g, m->nlink, 1.0);
+    zp_out_json_list(f, r->peaks.acc_g, m->nlink, 1.0);
     fputs("},\n", f);
     fputs("  \"limits\": ", f);
     zp_out_json_limits(f, m, r, meta->lim);
@@ -206,9 +236,9 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
     }
     write_samples(f, m, samples, nsamples);
     fputs("  \"samples_not_reached\": ", f);
-    num_list(f, meta->unreached, meta->nunreached, 1.0);
+    zp_out_json_list(f, meta->unreached, meta->nunreached, 1.0);
     fputs(",\n", f);
     fprintf(f, "  \"stats\": {\"steps\": %ld, \"rejected_steps\": %ld, \"rhs_evals\": %ld, ",
             r->steps, r->rejected, r->rhs_evals);
-    key_num(f, "wall_s", r->wall_s, "}\n}\n");
+    zp_out_json_key(f, "wall_s", r->wall_s, "}\n}\n");
 }

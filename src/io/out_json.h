@@ -1,4 +1,5 @@
-/* The JSON of one simulation (docs/commands.md "simulate --json"): writer only, no decisions. */
+/* JSON: the pieces every writer builds with (numbers that round-trip, escaped strings), and the
+   object of one simulation (docs/commands.md "simulate --json"). Writers only, no decisions. */
 #ifndef ZP_OUT_JSON_H
 #define ZP_OUT_JSON_H
 
@@ -29,6 +30,11 @@ typedef struct zp_run_meta {
 void zp_out_json_number(FILE *f, double v);
 /* A string with JSON escapes. */
 void zp_out_json_string(FILE *f, const char *s);
+/* "key": v (a number as zp_out_json_number, or the string s), then sep. */
+void zp_out_json_key(FILE *f, const char *key, double v, const char *sep);
+void zp_out_json_key_string(FILE *f, const char *key, const char *s, const char *sep);
+/* [v[0] * scale, ..] of n numbers. */
+void zp_out_json_list(FILE *f, const double *v, int n, double scale);
 /* The [limits] object: for each limit, what r reached and the limit (null when off, lim may
    be NULL), and whether it was kept. */
 void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp_limits *lim);

@@ -1,10 +1,11 @@
-/* The study's summary sentence, figure script and summary.json (sweep_out.h). */
-#include "sweep_out.h"
+/* The study's summary sentence, figure script and summary.json (report_sweep.h). */
+#include "report_sweep.h"
 
 #include <math.h>
 #include <string.h>
 
 #include "out_json.h"
+#include "sweep_csv.h"
 
 typedef struct tally {
     int found, infeasible, failed;
@@ -12,7 +13,7 @@ typedef struct tally {
     double tmin, tmax;    /* s, over the points found */
 } tally;
 
-static tally count(const zp_sweep_out *o) {
+static tally count(const zp_report_sweep *o) {
     tally t = {.fastest = -1, .slowest = -1};
     for (int p = 0; p < o->s->npoint; p++) {
         const zp_study_row *r = &o->rows[p];
@@ -41,7 +42,7 @@ static tally count(const zp_sweep_out *o) {
     } while (0)
 
 /* the points with bit set in g (up to max of them, else their count): "A; B; C" */
-static size_t points_list(const zp_sweep_out *o, int (*bit)(const zp_grid_result *, int), int want,
+static size_t points_list(const zp_report_sweep *o, int (*bit)(const zp_grid_result *, int), int want,
                           int max, char *out, size_t cap) {
     size_t len = 0;
     int n = 0;
@@ -70,7 +71,7 @@ static const char *why_broken(const zp_grid_result *g) {
 }
 
 /* the grid schedule's sentence; the length written (as snprintf counts) */
-static size_t grid_summary(const zp_sweep_out *o, char *out, size_t cap) {
+static size_t grid_summary(const zp_report_sweep *o, char *out, size_t cap) {
     const zp_grid_result *g = o->grid;
     size_t len = 0;
     char at[512];
@@ -115,7 +116,7 @@ static size_t grid_summary(const zp_sweep_out *o, char *out, size_t cap) {
     return len;
 }
 
-void zp_sweep_out_summary(const zp_sweep_out *o, char *out, size_t cap) {
+void zp_report_sweep_summary(const zp_report_sweep *o, char *out, size_t cap) {
     const zp_sweep *s = o->s;
     tally t = count(o);
     size_t len = 0;
@@ -158,7 +159,7 @@ void zp_sweep_out_summary(const zp_sweep_out *o, char *out, size_t cap) {
     }
 }
 
-int zp_sweep_out_has_figure(const zp_sweep_out *o) {
+int zp_report_sweep_has_figure(const zp_report_sweep *o) {
     return o->s->nvary <= 2;
 }
 
@@ -189,7 +190,7 @@ static void axis(FILE *f, const char *ax, const zp_sweep_vary *v) {
             v->key, what, ax, v->a - h, v->b + h);
 }
 
-static void script_line(FILE *f, const zp_sweep_out *o, const char *col, const tally *t) {
+static void script_line(FILE *f, const zp_report_sweep *o, const char *col, const tally *t) {
     double span = fmax(t->tmax - t->tmin, fmax(0.02 * fabs(t->tmax), 1e-3));
     double lo = t->found ? t->tmin - 0.2 * span : 0, hi = t->found ? t->tmax + 0.1 * span : 1;
     double mark = t->found ? t->tmin - 0.12 * span : 0.5; /* where unfound points are marked */
@@ -212,7 +213,7 @@ static void script_line(FILE *f, const zp_sweep_out *o, const char *col, const t
             col, mark);
 }
 
-static void script_heat(FILE *f, const zp_sweep_out *o, const char *c1, const char *c2) {
+static void script_heat(FILE *f, const zp_report_sweep *o, const char *c1, const char *c2) {
     double dx = half_step(&o->s->vary[0]), dy = half_step(&o->s->vary[1]);
     axis(f, "x", &o->s->vary[0]);
     axis(f, "y", &o->s->vary[1]);
@@ -234,7 +235,7 @@ static void script_heat(FILE *f, const zp_sweep_out *o, const char *c1, const ch
             c1, c2, dx, dy);
 }
 
-void zp_sweep_out_script(FILE *f, const zp_sweep_out *o) {
+void zp_report_sweep_script(FILE *f, const zp_report_sweep *o) {
     tally t = count(o);
     char c1[64], c2[64], name[128];
     size_t k = 0;
@@ -281,7 +282,7 @@ static void forces_json(FILE *f, const double *force, int np) {
 }
 
 /* the points p with bit(p) == want, as a JSON array (empty for a failed grid schedule) */
-static void points_json(FILE *f, const zp_sweep_out *o, int (*bit)(const zp_grid_result *, int),
+static void points_json(FILE *f, const zp_report_sweep *o, int (*bit)(const zp_grid_result *, int),
                         int want) {
     fputc('[', f);
     for (int p = 0, n = 0; p < o->s->npoint && !o->grid->failed; p++) {
@@ -292,7 +293,7 @@ static void points_json(FILE *f, const zp_sweep_out *o, int (*bit)(const zp_grid
     fputc(']', f);
 }
 
-static void grid_json(FILE *f, const zp_sweep_out *o) {
+static void grid_json(FILE *f, const zp_report_sweep *o) {
     const zp_grid_result *g = o->grid;
     if (!g) {
         fputs("null", f);
@@ -329,7 +330,7 @@ static void grid_json(FILE *f, const zp_sweep_out *o) {
     fputs("}", f);
 }
 
-static void point_json(FILE *f, const zp_sweep_out *o, int p) {
+static void point_json(FILE *f, const zp_report_sweep *o, int p) {
     if (p < 0) {
         fputs("null", f);
         return;
@@ -343,7 +344,7 @@ static void point_json(FILE *f, const zp_sweep_out *o, int p) {
     fputs("}", f);
 }
 
-void zp_sweep_out_json(FILE *f, const zp_sweep_out *o, const char *summary) {
+void zp_report_sweep_json(FILE *f, const zp_report_sweep *o, const char *summary) {
     tally t = count(o);
     fputs("{\n  \"scene\": ", f);
     zp_out_json_string(f, o->scene);
@@ -368,4 +369,22 @@ void zp_sweep_out_json(FILE *f, const zp_sweep_out *o, const char *summary) {
     fputs(",\n  \"summary\": ", f);
     zp_out_json_string(f, summary);
     fputs("\n}\n", f);
+}
+
+int zp_report_sweep_files(zp_tx *t, const zp_report_sweep *o, const char *summary, char *err,
+                          size_t errlen) {
+    const char *names[] = {"sweep.csv", "summary.json", "sweep.gp"};
+    FILE *f[3];
+    if (zp_tx_open_set(t, names, f, zp_report_sweep_has_figure(o) ? 3 : 2, err, errlen)) {
+        return -1;
+    }
+    zp_sweep_csv_header(f[0], o->s, o->np);
+    for (int p = 0; p < o->s->npoint; p++) {
+        zp_sweep_csv_row(f[0], o->s, p, &o->rows[p]);
+    }
+    zp_report_sweep_json(f[1], o, summary);
+    if (zp_report_sweep_has_figure(o)) {
+        zp_report_sweep_script(f[2], o);
+    }
+    return 0;
 }

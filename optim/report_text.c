@@ -1,0 +1,76 @@
+/* The search's text summary (report_text.h). */
+#include "report_text.h"
+
+#include <math.h>
+
+#include "report.h"
+
+/* why no schedule was found, when none was */
+static void none_text(FILE *f, const zp_answer *a) {
+    if (a->unheld[0]) {
+        fprintf(f,
+                "no schedule found: the search's best (ranked with [optimize]'s tolerance) does "
+                "not hold: %s; it is written as the closest candidate (tighten [optimize] rtol)\n",
+                a->unheld);
+    } else if (!a->found) {
+        fprintf(f,
+                "no schedule keeps the margin%s: none of %ld simulations survived with it; the "
+                "closest candidate is written, marked as such\n",
+                a->rp.robust || zp_limits_any(&a->pb->lim)
+                    ? ", the [limits] and the [robust] scenarios"
+                    : "",
+                a->res.evals);
+    }
+}
+
+/* the fresh scenarios' verdict and how far past the stated ranges the answer holds */
+static void robust_text(FILE *f, const zp_answer *a) {
+    const zp_robust_check *c = &a->rp.check;
+    fprintf(f,
+            "robust: held to %d scenarios (%d added by the adversary); on %d fresh ones %d "
+            "finished, %d kept the margin, %d every limit: P(survivable) >= %.4f (95 %%)\n",
+            a->rp.set.n, a->rp.info.added, c->samples, c->survived, c->margin_kept, c->limits_kept,
+            c->lower_95);
+    const zp_headroom_line *L = &c->headroom.line[ZP_HEADROOM_LINES - 1];
+    if (L->range >= 0 && isfinite(L->breaks)) {
+        fprintf(f,
+                "headroom: holds to %.4fx the stated ranges along the worst direction found, "
+                "breaks at %.4fx (%s)\n",
+                L->holds, L->breaks, L->limited_by);
+    } else if (L->range >= 0) {
+        fprintf(f,
+                "headroom: holds to %.4fx the stated ranges or more along the worst "
+                "direction found\n",
+                L->holds);
+    }
+}
+
+void zp_report_text_write(FILE *f, const zp_answer *a) {
+    const zp_problem *p = a->pb;
+    const zp_search_result *s = &a->res;
+    const zp_result *run = a->v.run;
+    none_text(f, a);
+    fprintf(f, "%sbest schedule (%s):", s->interrupted ? "interrupted; " : "",
+            zp_drive_unit(&p->sched));
+    for (int k = 0; k < p->sched.np; k++) {
+        fprintf(f, " %.4f", s->force[k]);
+    }
+    double angle = zp_model_angle_used(p->m, run->max_rel_angle);
+    fprintf(f, "\noutcome: %s, time %.4f s (+/- %.1e s), margin %.2f deg%s\n",
+            zp_sim_outcome_name(run->outcome), run->time, fabs(run->time - a->v.tight->time),
+            p->sc.death_angle - angle * 180 / M_PI,
+            a->v.agree ? ", verified" : ", NOT verified at the tighter tolerance");
+    if (s->base_found) {
+        fprintf(f, "best constant push: %.3f N, %.4f s\n", s->base_force, s->base.time);
+    } else {
+        fprintf(f, "best constant push: none found that keeps the margin\n");
+    }
+    fprintf(f, "search: %s, %ld simulations in %.2f s on %d threads\n", a->algo, s->evals,
+            s->wall_s, s->nthreads);
+    if (a->rp.robust) {
+        robust_text(f, a);
+    }
+    char conv[512];
+    zp_report_convergence(conv, sizeof conv, a);
+    fprintf(f, "convergence: %s\n", conv);
+}
