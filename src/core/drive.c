@@ -125,6 +125,10 @@ const char *zp_drive_dir_name(zp_drive_dir d) {
     return dir_names[d];
 }
 
+int zp_drive_plain(const zp_schedule *s) {
+    return s->kind == ZP_SCHED_SECTIONS && !(s->power > 0);
+}
+
 const char *zp_drive_kind_name(zp_sched_kind k) {
     return kinds[k].name;
 }

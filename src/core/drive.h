@@ -132,6 +132,10 @@ int zp_schedule_format(const zp_schedule *s, char *buf, size_t cap);
 /* A short label of section sec's drive for figures and reports ("59.6 N"). */
 void zp_schedule_label(const zp_schedule *s, int sec, char *buf, size_t cap);
 
+/* 1 for the drive every scene had before kinds and a power: constant per section, no cap (its
+   outputs keep their old shape). */
+int zp_drive_plain(const zp_schedule *s);
+
 /* Names of the kinds ([drive] kind: "constant", "profile") and lookup (-1 if unknown). */
 const char *zp_drive_kind_name(zp_sched_kind k);
 int zp_drive_kind_find(const char *name);

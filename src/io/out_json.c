@@ -67,6 +67,11 @@ void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp
     fputs("{", f);
     for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
         double max = lim ? lim->max[i] : 0;
+        /* the drive's power shows in "drive"; here only as a limit set */
+        if (i == ZP_LIMIT_DRIVE_POWER && !(max > 0)) {
+            continue;
+        }
+        fputs(i ? ", " : "", f);
         if (i == ZP_LIMIT_G_ENVELOPE) {
             /* docs/commands.md: per level {g, allowed_s, longest_s} */
             fprintf(f, "\"%s\": [", zp_limit_name(i));
@@ -76,14 +81,13 @@ void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp
                 key_num(f, "allowed_s", m->env_s[l], ", ");
                 key_num(f, "longest_s", r->env_longest[l], "}");
             }
-            fputs(i + 1 < ZP_LIMIT_COUNT ? "], " : "]}", f);
+            fputs("]", f);
             continue;
         }
         fprintf(f, "\"%s\": {", zp_limit_name(i));
         if (!zp_limit_reached_in(r, i)) { /* never measured: neither kept nor broken */
             fputs("\"reached\": null, ", f);
             key_num(f, "limit", max > 0 ? max : NAN, max > 0 ? ", \"kept\": null}" : "}");
-            fputs(i + 1 < ZP_LIMIT_COUNT ? ", " : "}", f);
             continue;
         }
         key_num(f, "reached", v[i], ", ");
@@ -93,8 +97,8 @@ void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp
         } else {
             fputs("\"limit\": null}", f);
         }
-        fputs(i + 1 < ZP_LIMIT_COUNT ? ", " : "}", f);
     }
+    fputs("}", f);
 }
 
 void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp_sim *s,
@@ -166,6 +170,12 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
     }
     key_num(f, "residual", zp_estimate_energy_residual(r), "},\n  ");
     key_num(f, "constraint_residual", r->constraint_residual, ",\n");
+    if (!zp_drive_plain(meta->sched) || (meta->lim && meta->lim->max[ZP_LIMIT_DRIVE_POWER] > 0)) {
+        fputs("  \"drive\": {", f);
+        key_num(f, "peak_power", r->drive_peak_power, ", ");
+        key_num(f, "energy", r->w_drive, ", ");
+        key_num(f, "time_at_cap", r->drive_time_at_cap, "},\n");
+    }
     fputs("  \"loads\": {\"joint_peak\": ", f);
     num_list(f, r->peaks.joint, m->nlink, 1.0);
     fputs(", ", f);
