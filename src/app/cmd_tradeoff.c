@@ -1,6 +1,7 @@
 /* `zipopt tradeoff SCENE.ini [--levels P1,P2,..]`: the robust search at each force_error level
-   (the scene's other [robust] ranges as given): what robustness costs. The levels exchange
-   their answers, so the costs never fall as the level grows past what the searches missed. */
+   (the scene's other [robust] ranges as given): what robustness costs; with `--power W1,..` the
+   search at each drive power (W) against no cap: what a motor buys. The levels exchange their
+   answers, so the costs never fall as the level grows past what the searches missed. */
 #include <getopt.h>
 #include <limits.h>
 #include <math.h>
@@ -21,8 +22,9 @@
 #define FROM_GIVEN -1 /* an answer that is the schedule the scene or --schedule/--force gave */
 
 static void usage(FILE *f) {
-    fputs("usage: zipopt tradeoff SCENE.ini [--levels P1,P2,..] [--max-evals N] [--max-time S]\n"
-          "                       [--schedule FILE | --force F1,..] [--json] [--out DIR]\n"
+    fputs("usage: zipopt tradeoff SCENE.ini [--levels P1,P2,.. | --power W1,W2,..] [--max-evals N]\n"
+          "                       [--max-time S] [--schedule FILE | --force F1,..] [--json]\n"
+          "                       [--out DIR]\n"
           "\n"
           "Runs the robust search (zipopt SCENE.ini) at each force error level P (%, each\n"
           "section's force off by up to +/-P %; the scene's other [robust] ranges and [limits]\n"
@@ -34,6 +36,9 @@ static void usage(FILE *f) {
           "Ctrl-C stops the level under way and writes the levels finished, marked\n"
           "incomplete.\n"
           "  --levels P1,..      force error levels in % (default 0,1,2,5,10), each in [0, 100)\n"
+          "  --power W1,..       drive powers in W instead (each > 0): the search at each, the\n"
+          "                      drive's force capped at W / speed, against no cap (the first\n"
+          "                      level, 0): finish time against drive power, what a motor buys\n"
           "  --max-evals N       simulations each level's search may spend (default: the\n"
           "                      scene's [optimize] max_evals)\n"
           "  --max-time S        stops each level's search after S seconds of wall time,\n"
@@ -46,7 +51,7 @@ static void usage(FILE *f) {
 }
 
 typedef struct level_out {
-    double p; /* % */
+    double p; /* %, or with --power W (0: no cap) */
     int found;
     int done;       /* 1: its search finished; 0: stopped by Ctrl-C or never started */
     int from;       /* the level whose search found this answer, or FROM_GIVEN */
@@ -67,8 +72,14 @@ typedef struct tradeoff {
     int ndone; /* levels whose search ran to its end */
     int given; /* the scene or --schedule/--force gave a schedule to hold as a candidate */
     int tty;
+    int power; /* the levels are drive powers (W), not force errors */
     double max_time;
 } tradeoff;
+
+/* the levels' name in the CSV and JSON, and in words */
+static const char *level_key(int power) {
+    return power ? "power_W" : "force_error_pct";
+}
 
 /* set by the first Ctrl-C (the transaction's handler): the level under way stops cleanly */
 static volatile sig_atomic_t interrupted;
@@ -87,14 +98,15 @@ static double cost(const level_out *L, int i) {
 
 /* the levels as one JSON object, the CSV's columns by name */
 static void write_json(FILE *f, const zp_scene *sc, const level_out *L, int n, int np,
-                       int complete) {
+                       int complete, int power) {
     fputs("{\n  \"scene\": ", f);
     zp_out_json_string(f, sc->name);
     fprintf(f, ",\n  \"complete\": %s,\n  \"levels\": [", complete ? "true" : "false");
     for (int i = 0; i < n; i++) {
         fprintf(f, "%s\n    {", i ? "," : "");
-        json_num(f, "force_error_pct", L[i].p, ", ");
-        fprintf(f, "\"found\": %s, \"from_level_pct\": ", L[i].found ? "true" : "false");
+        json_num(f, level_key(power), L[i].p, ", ");
+        fprintf(f, "\"found\": %s, \"from_level_%s\": ", L[i].found ? "true" : "false",
+                power ? "W" : "pct");
         zp_out_json_number(f, L[i].from == FROM_GIVEN ? NAN : L[L[i].from].p);
         fputs(", ", f);
         json_num(f, "time", L[i].time, ", ");
@@ -145,7 +157,7 @@ static void on_progress(void *user, const zp_search_progress *p, int improved) {
 static int arrival_of(const tradeoff *T, int i, double *kmh, char *err, size_t errlen) {
     const zp_problem *su = T->su;
     zp_sim *s = zp_sim_create(su->m, &T->pb[i].search);
-    zp_schedule sched = zp_schedule_with(&su->sched, T->L[i].force);
+    zp_schedule sched = zp_schedule_with(&T->pb[i].sched, T->L[i].force);
     zp_input in = {.sched = &sched};
     static zp_result run;
     int bad = !s || zp_sim_run(su->m, s, &in, &run);
@@ -163,8 +175,13 @@ static zp_status solve_level(tradeoff *T, int i, char *err, size_t errlen) {
     level_out *out = &T->L[i];
     zp_problem *pb = &T->pb[i];
     *pb = *T->su;
-    pb->sc.force_error = out->p;
-    pb->sc.robust = pb->sc.robust || out->p > 0;
+    if (T->power) {
+        pb->sc.drive_power = out->p;
+        pb->sched.power = out->p;
+    } else {
+        pb->sc.force_error = out->p;
+        pb->sc.robust = pb->sc.robust || out->p > 0;
+    }
     level_progress lp = {T, i};
     zp_answer_opts o = zp_answer_opts_of(pb, ZP_ANSWER_SEARCHED);
     o.search.max_time = T->max_time;
@@ -238,10 +255,11 @@ static int exchange_answers(tradeoff *T, char *err, size_t errlen) {
     return 0;
 }
 
-static void write_csv(FILE *f, const level_out *L, int n, int np) {
-    fputs("force_error_pct,found,time_s,cost_s,cost_pct,arrival_kmh,scenarios,verify_samples,"
-          "verify_kept,lower_95,from_level_pct,headroom_factor",
-          f);
+static void write_csv(FILE *f, const level_out *L, int n, int np, int power) {
+    fprintf(f,
+            "%s,found,time_s,cost_s,cost_pct,arrival_kmh,scenarios,verify_samples,"
+            "verify_kept,lower_95,from_level_%s,headroom_factor",
+            level_key(power), power ? "W" : "pct");
     for (int k = 0; k < np; k++) {
         fprintf(f, ",force_%d_N", k + 1);
     }
@@ -262,25 +280,71 @@ static void write_csv(FILE *f, const level_out *L, int n, int np) {
     }
 }
 
-static void write_plot(FILE *f) {
+static void write_plot(FILE *f, int power) {
     fputs("set terminal pngcairo size 900,500 enhanced font 'DejaVu Sans,11' linewidth 1.3\n"
-          "set output 'tradeoff.png'\nset datafile separator ','\nset key top left\n"
-          "set title 'What robustness costs'\nset xlabel 'force error held (+/- %)'\n"
-          "set ylabel 'finish time (s)'\nset y2label 'arrival speed (km/h)'\n"
-          "set ytics nomirror\nset y2tics\nset grid\n"
-          "plot 'tradeoff.csv' every ::1 using 1:3 with linespoints pt 7 title 'finish time', \\\n"
-          "     '' every ::1 using 1:6 axes x1y2 with linespoints pt 5 dt 2 title 'arrival speed', "
-          "\\\n     '' every ::1::1 using 1:3 with points pt 6 ps 3 lc rgb 'black' "
-          "title 'the 0 % level'\n",
+          "set output 'tradeoff.png'\nset datafile separator ','\nset key top left\n",
+          f);
+    if (power) {
+        /* the no-cap level (0 W) is the reference, drawn as a line: it has no place on the
+           power axis */
+        fputs("set title 'What a motor buys'\nset xlabel 'drive power (W)'\n"
+              "stats 'tradeoff.csv' every ::1::1 using 3 nooutput name 'free'\n",
+              f);
+    } else {
+        fputs("set title 'What robustness costs'\nset xlabel 'force error held (+/- %)'\n", f);
+    }
+    fputs("set ylabel 'finish time (s)'\nset y2label 'arrival speed (km/h)'\n"
+          "set ytics nomirror\nset y2tics\nset grid\n",
+          f);
+    fprintf(f,
+            "plot 'tradeoff.csv' every ::%d using 1:3 with linespoints pt 7 title 'finish time', "
+            "\\\n     '' every ::%d using 1:6 axes x1y2 with linespoints pt 5 dt 2 title "
+            "'arrival speed', \\\n",
+            power ? 2 : 1, power ? 2 : 1);
+    fputs(power ? "     free_min with lines dt 3 lc rgb 'black' title 'no cap'\n"
+                : "     '' every ::1::1 using 1:3 with points pt 6 ps 3 lc rgb 'black' "
+                  "title 'the 0 % level'\n",
           f);
 }
 
-static void write_md(FILE *f, const zp_scene *sc, const level_out *L, int n, int complete) {
-    fprintf(f, "# What robustness costs: %s\n\n", sc->name);
+/* the levels of a power tradeoff: finish time against drive power, against no cap */
+static void write_md_power(FILE *f, const level_out *L, int n) {
+    fprintf(f,
+            "The search at each drive power (the applied force capped at power / speed; the "
+            "scene's [robust] and [limits] as given), against no cap (%.4f s). Each level keeps "
+            "the fastest answer any level found that holds at its own power (\"from\").\n\n"
+            "| power (W) | found | finish (s) | slower (s) | slower (%%) | arrival (km/h) | from "
+            "|\n|---|---|---|---|---|---|---|\n",
+            L[0].time);
+    for (int i = 0; i < n; i++) {
+        char power[32] = "no cap";
+        if (i) {
+            snprintf(power, sizeof power, "%g", L[i].p);
+        }
+        fprintf(f, "| %s | %s | %.4f | %.4f | %.1f | %.1f | ", power, L[i].found ? "yes" : "no",
+                L[i].time, cost(L, i), 100 * cost(L, i) / L[0].time, L[i].arrival);
+        if (L[i].from == FROM_GIVEN) {
+            fputs("the given schedule |\n", f);
+        } else if (L[i].from == 0) {
+            fputs("no cap |\n", f);
+        } else {
+            fprintf(f, "%g W |\n", L[L[i].from].p);
+        }
+    }
+    fputs("\n![finish time and arrival speed against drive power](tradeoff.png)\n", f);
+}
+
+static void write_md(FILE *f, const zp_scene *sc, const level_out *L, int n, int complete,
+                     int power) {
+    fprintf(f, "# %s: %s\n\n", power ? "What a motor buys" : "What robustness costs", sc->name);
     if (!complete) {
         fputs("**Incomplete**: stopped (Ctrl-C) before every level was searched; the levels "
               "below are those finished.\n\n",
               f);
+    }
+    if (power) {
+        write_md_power(f, L, n);
+        return;
     }
     fprintf(f,
             "The robust search at each force error level (every section's force off by up to "
@@ -314,13 +378,21 @@ static void write_md(FILE *f, const zp_scene *sc, const level_out *L, int n, int
     fputs("\n![finish time and arrival speed against the level](tradeoff.png)\n", f);
 }
 
-/* the levels: 0 first (the reference of the costs), then the ones asked for in the order given */
-static int parse_levels(const char *text, double *lv) {
+/* the levels: 0 first (the reference of the costs: no force error, or no cap), then the ones
+   asked for in the order given */
+static int parse_levels(const char *text, int power, double *lv) {
     double got[MAX_LEVELS];
     char why[128] = "";
     int n = text ? zp_cli_parse_list(text, got, MAX_LEVELS - 1, why, sizeof why) : 4;
     if (!text) {
         memcpy(got, (double[]){1, 2, 5, 10}, sizeof(double) * 4);
+    }
+    if (power && n < 1) {
+        zp_cli_error("tradeoff",
+                     "--power '%s': %s; expected powers in W such as 2000,5000,10000; nothing "
+                     "was written",
+                     text, *why ? why : "bad list");
+        return -1;
     }
     if (n < 1) {
         zp_cli_error("tradeoff",
@@ -332,7 +404,13 @@ static int parse_levels(const char *text, double *lv) {
     int m = 1;
     lv[0] = 0;
     for (int i = 0; i < n; i++) {
-        if (!(got[i] >= 0 && got[i] < 100)) {
+        if (power && !(got[i] > 0 && isfinite(got[i]))) {
+            zp_cli_error("tradeoff",
+                         "--power: %g is not a power; expected each > 0 (W); nothing was written",
+                         got[i]);
+            return -1;
+        }
+        if (!(got[i] >= 0 && got[i] < 100) && !power) {
             zp_cli_error("tradeoff",
                          "--levels: %g is not a level; expected each in [0, 100) %%; nothing was "
                          "written",
@@ -346,11 +424,12 @@ static int parse_levels(const char *text, double *lv) {
     return m;
 }
 
-enum { O_LEVELS = ZP_OPT_FIRST, O_OUT, O_JSON, O_MAX_EVALS, O_MAX_TIME, O_SCHEDULE, O_FORCE };
+enum { O_LEVELS = ZP_OPT_FIRST, O_POWER, O_OUT, O_JSON, O_MAX_EVALS, O_MAX_TIME, O_SCHEDULE, O_FORCE };
 
 static const struct option options[] = {
     {"help", no_argument, NULL, 'h'},
     {"levels", required_argument, NULL, O_LEVELS},
+    {"power", required_argument, NULL, O_POWER},
     {"out", required_argument, NULL, O_OUT},
     {"json", no_argument, NULL, O_JSON},
     {"max-evals", required_argument, NULL, O_MAX_EVALS},
@@ -363,6 +442,7 @@ static const struct option options[] = {
 typedef struct tradeoff_args {
     const char *scene, *out, *levels;
     int json;
+    int power; /* --power: the levels are drive powers */
     double max_time;
     zp_overrides ov;
 } tradeoff_args;
@@ -378,7 +458,13 @@ static int parse_args(int argc, char **argv, tradeoff_args *a) {
             usage(stdout);
             return 1;
         case O_LEVELS:
+        case O_POWER:
+            if (a->levels && a->power != (c == O_POWER)) {
+                zp_cli_error("tradeoff", "--levels and --power: give one; nothing was written");
+                return -1;
+            }
             a->levels = optarg;
+            a->power = c == O_POWER;
             break;
         case O_OUT:
             a->out = optarg;
@@ -430,9 +516,9 @@ static int write_files(zp_tx *t, const tradeoff *T, int complete) {
         zp_cli_error("tradeoff", "%s; nothing was written", err);
         return -1;
     }
-    write_csv(csv, T->L, T->ndone, T->su->sched.np);
-    write_plot(gp);
-    write_md(md, sc, T->L, T->ndone, complete);
+    write_csv(csv, T->L, T->ndone, T->su->sched.np, T->power);
+    write_plot(gp, T->power);
+    write_md(md, sc, T->L, T->ndone, complete, T->power);
     return 0;
 }
 
@@ -442,15 +528,21 @@ static int solve_levels(tradeoff *T) {
     char err[1200] = "";
     for (int i = 0; i < T->n && !interrupted; i++) {
         if (solve_level(T, i, err, sizeof err)) {
-            zp_cli_error("tradeoff", "level %g %%: %s; nothing was written", T->L[i].p, err);
+            zp_cli_error("tradeoff", "level %g %s: %s; nothing was written", T->L[i].p,
+                         T->power ? "W" : "%", err);
             return -1;
         }
         if (!T->L[i].done) {
             break; /* stopped inside this level: it is not reported */
         }
         T->ndone = i + 1;
-        fprintf(stderr, "tradeoff: +/-%g %%: %s%.4f s\n", T->L[i].p,
-                T->L[i].found ? "" : "(none) ", T->L[i].time);
+        if (T->power) {
+            fprintf(stderr, "tradeoff: %g W: %s%.4f s\n", T->L[i].p,
+                    T->L[i].found ? "" : "(none) ", T->L[i].time);
+        } else {
+            fprintf(stderr, "tradeoff: +/-%g %%: %s%.4f s\n", T->L[i].p,
+                    T->L[i].found ? "" : "(none) ", T->L[i].time);
+        }
     }
     return 0;
 }
@@ -462,7 +554,7 @@ int zp_cmd_tradeoff(int argc, char **argv) {
         return pa > 0 ? ZP_EXIT_OK : ZP_EXIT_USAGE;
     }
     double lv[MAX_LEVELS];
-    int n = parse_levels(a.levels, lv);
+    int n = parse_levels(a.levels, a.power, lv);
     static zp_problem su; /* large: kept off the stack */
     if (n < 1 || zp_setup_load("tradeoff", a.scene, &a.ov, &su)) {
         return ZP_EXIT_USAGE;
@@ -472,6 +564,7 @@ int zp_cmd_tradeoff(int argc, char **argv) {
     T = (tradeoff){.su = &su,
                    .n = n,
                    .tty = isatty(STDERR_FILENO),
+                   .power = a.power,
                    .max_time = a.max_time,
                    .given = sc->nforce > 0 || a.ov.schedule || a.ov.force};
     for (int i = 0; i < n; i++) {
@@ -506,12 +599,16 @@ int zp_cmd_tradeoff(int argc, char **argv) {
         zp_cli_out_draw_commit(&t, "tradeoff", scripts, 1, &missing)) {
         goto done;
     }
-    for (int i = 1; i < T.ndone && !a.json; i++) {
+    for (int i = 1; i < T.ndone && !a.json && a.power; i++) {
+        printf("at %g W: %.4f s, %.3f s slower than no cap (%.1f %%)%s\n", T.L[i].p, T.L[i].time,
+               cost(T.L, i), 100 * cost(T.L, i) / T.L[0].time, T.L[i].found ? "" : ", NOT found");
+    }
+    for (int i = 1; i < T.ndone && !a.json && !a.power; i++) {
         printf("robust to +/-%g %%: %.4f s, costs %.3f s (%.1f %%)%s\n", T.L[i].p, T.L[i].time,
                cost(T.L, i), 100 * cost(T.L, i) / T.L[0].time, T.L[i].found ? "" : ", NOT found");
     }
     if (a.json) {
-        write_json(stdout, sc, T.L, T.ndone, su.sched.np, complete);
+        write_json(stdout, sc, T.L, T.ndone, su.sched.np, complete, a.power);
     }
     char shown[4 * sizeof t.dir];
     fprintf(a.json ? stderr : stdout, "wrote in %s: %s%s\n",
