@@ -41,7 +41,7 @@ _zipopt() {
         return
         ;;
     --force | --vary | --seed | --max-evals | --max-time | --sample-times | --frames-at | --fps | --size | \
-        --speedup | --force-range | --slice | --range | --repeats | --levels)
+        --speedup | --force-range | --slice | --range | --repeats | --levels | --power)
         return # a value the user types
         ;;
     esac
@@ -54,7 +54,7 @@ _zipopt() {
     sweep) opts="--vary --run --out --resume --json --grid-schedule --no-grid-schedule --max-evals
                  --max-time --schedule --force --help" ;;
     bench) opts="--repeats --json --out --help" ;;
-    tradeoff) opts="--levels --max-evals --max-time --schedule --force --json --out --help" ;;
+    tradeoff) opts="--levels --power --max-evals --max-time --schedule --force --json --out --help" ;;
     *) opts="--out --algorithm --seed --max-evals --max-time --no-plot --json --help --help-all
              --version" ;;
     esac

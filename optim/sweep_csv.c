@@ -24,7 +24,8 @@ const char *zp_sweep_csv_limit_column(int i) {
     static const char *const columns[ZP_LIMIT_COUNT] = {
         [ZP_LIMIT_G] = "peak_g", [ZP_LIMIT_JOINT] = "peak_joint_force_N",
         [ZP_LIMIT_ARRIVAL] = "arrival_kmh", [ZP_LIMIT_KINK_DV] = "max_kink_dv_m_s",
-        [ZP_LIMIT_G_ENVELOPE] = "g_envelope_share", [ZP_LIMIT_MIN_ARRIVAL] = "slowest_arrival_kmh"};
+        [ZP_LIMIT_G_ENVELOPE] = "g_envelope_share", [ZP_LIMIT_MIN_ARRIVAL] = "slowest_arrival_kmh",
+        [ZP_LIMIT_DRIVE_POWER] = "drive_peak_power_W"};
     return columns[i];
 }
 

@@ -5,11 +5,13 @@
 
 #define KMH 3.6
 
-void zp_tradeoff_init(zp_tradeoff *T, const zp_problem *su, const double *level, int n, int given) {
+void zp_tradeoff_init(zp_tradeoff *T, const zp_problem *su, const double *level, int n, int given,
+                      int power) {
     memset(T, 0, sizeof *T); /* large: no temporary of it on the stack */
     T->su = su;
     T->n = n;
     T->given = given;
+    T->power = power;
     for (int i = 0; i < n; i++) {
         T->L[i].p = level[i];
     }
@@ -23,7 +25,7 @@ double zp_tradeoff_cost(const zp_tradeoff *T, int i) {
 static int arrival_of(const zp_tradeoff *T, int i, double *kmh, char *err, size_t errlen) {
     const zp_problem *su = T->su;
     zp_sim *s = zp_sim_create(su->m, &T->pb[i].search);
-    zp_schedule sched = zp_schedule_with(&su->sched, T->L[i].force);
+    zp_schedule sched = zp_schedule_with(&T->pb[i].sched, T->L[i].force);
     zp_input in = {.sched = &sched};
     static zp_result run;
     int bad = !s || zp_sim_run(su->m, s, &in, &run);
@@ -42,8 +44,13 @@ zp_status zp_tradeoff_solve(zp_tradeoff *T, int i,
     zp_tradeoff_level *out = &T->L[i];
     zp_problem *pb = &T->pb[i];
     *pb = *T->su;
-    pb->sc.force_error = out->p;
-    pb->sc.robust = pb->sc.robust || out->p > 0;
+    if (T->power) {
+        pb->sc.drive_power = out->p;
+        pb->sched.power = out->p;
+    } else {
+        pb->sc.force_error = out->p;
+        pb->sc.robust = pb->sc.robust || out->p > 0;
+    }
     zp_answer_opts o = zp_answer_opts_of(pb, ZP_ANSWER_SEARCHED);
     o.search.max_time = T->max_time;
     o.search.stop = T->stop;

@@ -1,6 +1,7 @@
 /* What robustness costs (`zipopt tradeoff`): the robust search of one problem at each force
-   error level (the scene's other [robust] ranges as given), the levels then exchanging their
-   answers, so that a level never keeps a slower answer than a wider level found. */
+   error level (the scene's other [robust] ranges as given), or at each drive power against no
+   cap (what a motor buys), the levels then exchanging their answers, so that a level never
+   keeps a slower answer than another level found that holds at its own. */
 #ifndef ZP_TRADEOFF_H
 #define ZP_TRADEOFF_H
 
@@ -11,7 +12,7 @@
 
 /* One level's answer. */
 typedef struct zp_tradeoff_level {
-    double p; /* %: each section's force off by up to +/-p */
+    double p; /* %: each section's force off by up to +/-p; or W: the drive's power (0: no cap) */
     int found;
     int done;       /* 1: its search finished; 0: stopped or never started */
     int from;       /* the level whose search found this answer, or ZP_TRADEOFF_GIVEN */
@@ -31,12 +32,15 @@ typedef struct zp_tradeoff {
     int n;           /* levels asked for, L[0] the 0 % level (the reference of the costs) */
     int ndone;       /* levels whose search ran to its end, the first ndone */
     int given;       /* su's schedule was given (scene or command line): one more candidate */
+    int power;       /* the levels are drive powers (W), not force errors */
     double max_time; /* s per level's search, 0: no limit */
     volatile sig_atomic_t *stop; /* borrowed, may be NULL: nonzero stops the level under way */
 } zp_tradeoff;
 
-/* T for problem su at the n levels (%, level[0] == 0); given: su's schedule is a candidate. */
-void zp_tradeoff_init(zp_tradeoff *T, const zp_problem *su, const double *level, int n, int given);
+/* T for problem su at the n levels (%, or W with power; level[0] == 0: the reference);
+   given: su's schedule is a candidate. */
+void zp_tradeoff_init(zp_tradeoff *T, const zp_problem *su, const double *level, int n, int given,
+                      int power);
 /* Level i's robust search (progress and user as zp_search_opts' ) into T->L[i]: its answer
    and, on the nominal scene at the search's tolerance, its arrival speed. ZP_OK (L[i].done 0
    when stopped), or a failure with why in err. */

@@ -1,8 +1,10 @@
 /* `zipopt tradeoff SCENE.ini [--levels P1,P2,..]`: the robust search at each force_error level
-   (the scene's other [robust] ranges as given): what robustness costs. The levels exchange
+   (the scene's other [robust] ranges as given): what robustness costs; with `--power W1,..` the
+   search at each drive power (W) against no cap: what a motor buys. The levels exchange
    their answers, so the costs never fall as the level grows past what the searches missed. */
 #include <getopt.h>
 #include <limits.h>
+#include <math.h>
 #include <signal.h>
 #include <stdio.h>
 #include <string.h>
@@ -13,8 +15,9 @@
 #include "setup.h"
 
 static void usage(FILE *f) {
-    fputs("usage: zipopt tradeoff SCENE.ini [--levels P1,P2,..] [--max-evals N] [--max-time S]\n"
-          "                       [--schedule FILE | --force F1,..] [--json] [--out DIR]\n"
+    fputs("usage: zipopt tradeoff SCENE.ini [--levels P1,P2,.. | --power W1,W2,..] [--max-evals N]\n"
+          "                       [--max-time S] [--schedule FILE | --force F1,..] [--json]\n"
+          "                       [--out DIR]\n"
           "\n"
           "Runs the robust search (zipopt SCENE.ini) at each force error level P (%, each\n"
           "section's force off by up to +/-P %; the scene's other [robust] ranges and [limits]\n"
@@ -26,6 +29,9 @@ static void usage(FILE *f) {
           "Ctrl-C stops the level under way and writes the levels finished, marked\n"
           "incomplete.\n"
           "  --levels P1,..      force error levels in % (default 0,1,2,5,10), each in [0, 100)\n"
+          "  --power W1,..       drive powers in W instead (each > 0): the search at each, the\n"
+          "                      drive's force capped at W / speed, against no cap (the first\n"
+          "                      level, 0): finish time against drive power, what a motor buys\n"
           "  --max-evals N       simulations each level's search may spend (default: the\n"
           "                      scene's [optimize] max_evals)\n"
           "  --max-time S        stops each level's search after S seconds of wall time,\n"
@@ -54,22 +60,30 @@ static void on_progress(void *user, const zp_search_progress *p, int improved) {
         return;
     }
     fprintf(stderr,
-            "\r\033[Ktradeoff: level %d of %d (+/-%g %%): %s, round %d, %ld of %ld "
+            "\r\033[Ktradeoff: level %d of %d (%s%g %s): %s, round %d, %ld of %ld "
             "simulations, %.1f s",
-            lp->i + 1, lp->T->n, lp->T->L[lp->i].p, p->phase, p->round + 1, p->evals, p->budget,
-            p->wall_s);
+            lp->i + 1, lp->T->n, lp->T->power ? "" : "+/-", lp->T->L[lp->i].p,
+            lp->T->power ? "W" : "%", p->phase, p->round + 1, p->evals, p->budget, p->wall_s);
     if (p->found) {
         fprintf(stderr, ", best %.4f s", p->time);
     }
 }
 
-/* the levels: 0 first (the reference of the costs), then the ones asked for in the order given */
-static int parse_levels(const char *text, double *lv) {
+/* the levels: 0 first (the reference of the costs: no force error, or no cap), then the ones
+   asked for in the order given */
+static int parse_levels(const char *text, int power, double *lv) {
     double got[ZP_TRADEOFF_MAX_LEVELS];
     char why[128] = "";
     int n = text ? zp_cli_parse_list(text, got, ZP_TRADEOFF_MAX_LEVELS - 1, why, sizeof why) : 4;
     if (!text) {
         memcpy(got, (double[]){1, 2, 5, 10}, sizeof(double) * 4);
+    }
+    if (power && n < 1) {
+        zp_cli_error("tradeoff",
+                     "--power '%s': %s; expected powers in W such as 2000,5000,10000; nothing "
+                     "was written",
+                     text, *why ? why : "bad list");
+        return -1;
     }
     if (n < 1) {
         zp_cli_error("tradeoff",
@@ -81,7 +95,13 @@ static int parse_levels(const char *text, double *lv) {
     int m = 1;
     lv[0] = 0;
     for (int i = 0; i < n; i++) {
-        if (!(got[i] >= 0 && got[i] < 100)) {
+        if (power && !(got[i] > 0 && isfinite(got[i]))) {
+            zp_cli_error("tradeoff",
+                         "--power: %g is not a power; expected each > 0 (W); nothing was written",
+                         got[i]);
+            return -1;
+        }
+        if (!(got[i] >= 0 && got[i] < 100) && !power) {
             zp_cli_error("tradeoff",
                          "--levels: %g is not a level; expected each in [0, 100) %%; nothing was "
                          "written",
@@ -95,11 +115,12 @@ static int parse_levels(const char *text, double *lv) {
     return m;
 }
 
-enum { O_LEVELS = ZP_OPT_FIRST, O_OUT, O_JSON, O_MAX_EVALS, O_MAX_TIME, O_SCHEDULE, O_FORCE };
+enum { O_LEVELS = ZP_OPT_FIRST, O_POWER, O_OUT, O_JSON, O_MAX_EVALS, O_MAX_TIME, O_SCHEDULE, O_FORCE };
 
 static const struct option options[] = {
     {"help", no_argument, NULL, 'h'},
     {"levels", required_argument, NULL, O_LEVELS},
+    {"power", required_argument, NULL, O_POWER},
     {"out", required_argument, NULL, O_OUT},
     {"json", no_argument, NULL, O_JSON},
     {"max-evals", required_argument, NULL, O_MAX_EVALS},
@@ -112,6 +133,7 @@ static const struct option options[] = {
 typedef struct tradeoff_args {
     const char *scene, *out, *levels;
     int json;
+    int power; /* --power: the levels are drive powers */
     double max_time;
     zp_overrides ov;
 } tradeoff_args;
@@ -127,7 +149,13 @@ static int parse_args(int argc, char **argv, tradeoff_args *a) {
             usage(stdout);
             return 1;
         case O_LEVELS:
+        case O_POWER:
+            if (a->levels && a->power != (c == O_POWER)) {
+                zp_cli_error("tradeoff", "--levels and --power: give one; nothing was written");
+                return -1;
+            }
             a->levels = optarg;
+            a->power = c == O_POWER;
             break;
         case O_OUT:
             a->out = optarg;
@@ -178,15 +206,16 @@ static int solve_levels(zp_tradeoff *T, int tty) {
             fputs("\r\033[K", stderr);
         }
         if (st) {
-            zp_cli_error("tradeoff", "level %g %%: %s; nothing was written", T->L[i].p, err);
+            zp_cli_error("tradeoff", "level %g %s: %s; nothing was written", T->L[i].p,
+                         T->power ? "W" : "%", err);
             return -1;
         }
         if (!T->L[i].done) {
             break; /* stopped inside this level: it is not reported */
         }
         T->ndone = i + 1;
-        fprintf(stderr, "tradeoff: +/-%g %%: %s%.4f s\n", T->L[i].p,
-                T->L[i].found ? "" : "(none) ", T->L[i].time);
+        fprintf(stderr, "tradeoff: %s%g %s: %s%.4f s\n", T->power ? "" : "+/-", T->L[i].p,
+                T->power ? "W" : "%", T->L[i].found ? "" : "(none) ", T->L[i].time);
     }
     return 0;
 }
@@ -206,8 +235,15 @@ static int write_levels(zp_tx *t, const zp_tradeoff *T, int json) {
     }
     for (int i = 1; i < T->ndone && !json; i++) {
         double cost = zp_tradeoff_cost(T, i);
-        printf("robust to +/-%g %%: %.4f s, costs %.3f s (%.1f %%)%s\n", T->L[i].p, T->L[i].time,
-               cost, 100 * cost / T->L[0].time, T->L[i].found ? "" : ", NOT found");
+        if (T->power) {
+            printf("at %g W: %.4f s, %.3f s slower than no cap (%.1f %%)%s\n", T->L[i].p,
+                   T->L[i].time, cost, 100 * cost / T->L[0].time,
+                   T->L[i].found ? "" : ", NOT found");
+        } else {
+            printf("robust to +/-%g %%: %.4f s, costs %.3f s (%.1f %%)%s\n", T->L[i].p,
+                   T->L[i].time, cost, 100 * cost / T->L[0].time,
+                   T->L[i].found ? "" : ", NOT found");
+        }
     }
     if (json) {
         zp_report_tradeoff_json(stdout, T);
@@ -232,13 +268,13 @@ int zp_cmd_tradeoff(int argc, char **argv) {
         return pa > 0 ? ZP_EXIT_OK : ZP_EXIT_USAGE;
     }
     double lv[ZP_TRADEOFF_MAX_LEVELS];
-    int n = parse_levels(a.levels, lv);
+    int n = parse_levels(a.levels, a.power, lv);
     static zp_problem su; /* large: kept off the stack */
     if (n < 1 || zp_setup_load("tradeoff", a.scene, &a.ov, &su)) {
         return ZP_EXIT_USAGE;
     }
     static zp_tradeoff T; /* large: kept off the stack */
-    zp_tradeoff_init(&T, &su, lv, n, su.sc.nforce > 0 || a.ov.schedule || a.ov.force);
+    zp_tradeoff_init(&T, &su, lv, n, su.sc.nforce > 0 || a.ov.schedule || a.ov.force, a.power);
     T.max_time = a.max_time;
     T.stop = &interrupted;
     char err[1200] = "";

@@ -12,6 +12,7 @@
 /* What a kind of schedule is: every question the rest of zipopt asks about a schedule that
    depends on its kind is one entry here. */
 typedef struct kind {
+    const char *name;         /* [drive] kind */
     const char *noun, *nouns; /* one parameter, several: labels are noun + 1-based index */
     const char *unit;         /* of every parameter */
     /* how many parameters s's sections take */
@@ -65,9 +66,53 @@ static void const_label(const zp_schedule *s, int sec, char *buf, size_t cap) {
     snprintf(buf, cap, "%g N", s->p[sec]);
 }
 
+/* kind profile (ZP_SCHED_PROFILE): parameter k is knot k % knots of section k / knots, at the
+   share j / (knots - 1) of the section; the force is linear in x between knots, so continuous
+   in x: only its slope changes at a knot, and the integrator needs no stop there */
+static int prof_nparam(const zp_schedule *s) {
+    return s->nsec * s->knots;
+}
+
+static int prof_section(const zp_schedule *s, int k) {
+    return k / s->knots;
+}
+
+static void prof_span(const zp_schedule *s, int k, const double *xb, double *from, double *to) {
+    int sec = k / s->knots, j = k % s->knots;
+    if (s->knots == 1) {
+        const_span(s, sec, xb, from, to);
+        return;
+    }
+    *from = *to = xb[sec] + (xb[sec + 1] - xb[sec]) * j / (s->knots - 1);
+}
+
+static double prof_force(const zp_schedule *s, const zp_drive_state *st) {
+    const double *p = s->p + st->sec * s->knots;
+    if (s->knots == 1) {
+        return p[0]; /* the constant kind, bit for bit */
+    }
+    /* a trolley a hair past its section's ends (an event located within its tolerance) takes
+       the end knot's force */
+    double a = s->xb[st->sec], b = s->xb[st->sec + 1];
+    double u = fmin(fmax((st->x - a) / (b - a), 0), 1) * (s->knots - 1);
+    int j = u < s->knots - 1 ? (int)u : s->knots - 2;
+    return p[j] + (p[j + 1] - p[j]) * (u - j);
+}
+
+static void prof_label(const zp_schedule *s, int sec, char *buf, size_t cap) {
+    const double *p = s->p + sec * s->knots;
+    if (s->knots == 1) {
+        snprintf(buf, cap, "%g N", p[0]);
+    } else {
+        snprintf(buf, cap, "%g..%g N", p[0], p[s->knots - 1]);
+    }
+}
+
 static const kind kinds[ZP_SCHED_KIND_COUNT] = {
-    [ZP_SCHED_SECTIONS] = {"section", "sections", "N", const_nparam, const_section, const_span,
-                           const_force, const_breaks, const_constant, const_label},
+    [ZP_SCHED_SECTIONS] = {"constant", "section", "sections", "N", const_nparam, const_section,
+                           const_span, const_force, const_breaks, const_constant, const_label},
+    [ZP_SCHED_PROFILE] = {"profile", "knot", "knots", "N", prof_nparam, prof_section, prof_span,
+                          prof_force, const_breaks, const_constant, prof_label},
 };
 
 static const kind *kind_of(const zp_schedule *s) {
@@ -80,6 +125,23 @@ const char *zp_drive_dir_name(zp_drive_dir d) {
     return dir_names[d];
 }
 
+int zp_drive_plain(const zp_schedule *s) {
+    return s->kind == ZP_SCHED_SECTIONS && !(s->power > 0);
+}
+
+const char *zp_drive_kind_name(zp_sched_kind k) {
+    return kinds[k].name;
+}
+
+int zp_drive_kind_find(const char *name) {
+    for (int i = 0; i < ZP_SCHED_KIND_COUNT; i++) {
+        if (!strcmp(name, kinds[i].name)) {
+            return i;
+        }
+    }
+    return -1;
+}
+
 int zp_drive_dir_find(const char *name) {
     for (int i = 0; i < ZP_DRIVE_COUNT; i++) {
         if (!strcmp(name, dir_names[i])) {
@@ -89,9 +151,9 @@ int zp_drive_dir_find(const char *name) {
     return -1;
 }
 
-/* kind's shape on nsec sections, every parameter in [lo, hi] and 0 */
-static zp_schedule shape_of(zp_sched_kind kind, int nsec, double lo, double hi) {
-    zp_schedule s = {.kind = kind, .nsec = nsec};
+/* kind's shape on nsec sections (knots each), every parameter in [lo, hi] and 0 */
+static zp_schedule shape_of(zp_sched_kind kind, int nsec, int knots, double lo, double hi) {
+    zp_schedule s = {.kind = kind, .nsec = nsec, .knots = knots};
     s.np = kind_of(&s)->nparam(&s);
     for (int k = 0; k < s.np; k++) {
         s.lo[k] = lo;
@@ -101,7 +163,18 @@ static zp_schedule shape_of(zp_sched_kind kind, int nsec, double lo, double hi) 
 }
 
 zp_schedule zp_schedule_sections(int nsec, const double *force, double lo, double hi) {
-    zp_schedule s = shape_of(ZP_SCHED_SECTIONS, nsec, lo, hi);
+    zp_schedule s = shape_of(ZP_SCHED_SECTIONS, nsec, 1, lo, hi);
+    for (int k = 0; force && k < s.np; k++) {
+        s.p[k] = force[k];
+    }
+    return s;
+}
+
+zp_schedule zp_drive_profile(int nsec, int knots, double x_start, const double *x_end,
+                             const double *force, double lo, double hi) {
+    zp_schedule s = shape_of(ZP_SCHED_PROFILE, nsec, knots, lo, hi);
+    s.xb[0] = x_start;
+    memcpy(s.xb + 1, x_end, sizeof *x_end * (size_t)nsec);
     for (int k = 0; force && k < s.np; k++) {
         s.p[k] = force[k];
     }
@@ -115,7 +188,11 @@ zp_schedule zp_schedule_with(const zp_schedule *sh, const double *p) {
 }
 
 zp_schedule zp_schedule_of_scene(const zp_scene *sc) {
-    zp_schedule s = shape_of((zp_sched_kind)sc->drive_kind, sc->nsec, sc->force_min, sc->force_max);
+    zp_schedule s = sc->drive_kind == ZP_SCHED_PROFILE
+                        ? zp_drive_profile(sc->nsec, sc->drive_knots, sc->x_start, sc->x_end,
+                                           NULL, sc->force_min, sc->force_max)
+                        : zp_schedule_sections(sc->nsec, NULL, sc->force_min, sc->force_max);
+    s.power = sc->drive_power;
     if (sc->nforce > 0) {
         s.np = sc->nforce;
         memcpy(s.p, sc->forces, sizeof *s.p * (size_t)s.np);
@@ -147,7 +224,15 @@ zp_schedule zp_schedule_scaled(const zp_schedule *s, const double *scale) {
 }
 
 double zp_drive_force(const zp_schedule *s, const zp_drive_state *st) {
-    return kind_of(s)->force(s, st);
+    double F = kind_of(s)->force(s, st);
+    if (s->power > 0 && fabs(F * st->v) > s->power) {
+        F = copysign(s->power / fabs(st->v), F);
+    }
+    return F;
+}
+
+int zp_drive_capped(const zp_schedule *s, const zp_drive_state *st) {
+    return s->power > 0 && fabs(kind_of(s)->force(s, st) * st->v) > s->power;
 }
 
 int zp_schedule_breaks(const zp_schedule *s, double *t, int max) {
@@ -182,8 +267,13 @@ int zp_drive_parse(const zp_schedule *shape, const char *text, zp_schedule *s, c
         return -1;
     }
     if (n != shape->np) {
-        snprintf(why, whylen, "%d value%s, expected %d (one per %s)", n, n == 1 ? "" : "s",
-                 shape->np, kind_of(shape)->noun);
+        if (shape->kind == ZP_SCHED_PROFILE) {
+            snprintf(why, whylen, "%d value%s, expected %d (%d sections x %d knots)", n,
+                     n == 1 ? "" : "s", shape->np, shape->nsec, shape->knots);
+        } else {
+            snprintf(why, whylen, "%d value%s, expected %d (one per %s)", n, n == 1 ? "" : "s",
+                     shape->np, kind_of(shape)->noun);
+        }
         return -2;
     }
     *s = zp_schedule_with(shape, p);

@@ -18,11 +18,16 @@ typedef enum { ZP_DRIVE_HORIZONTAL, ZP_DRIVE_TANGENT, ZP_DRIVE_COUNT } zp_drive_
 
 typedef enum {
     ZP_SCHED_SECTIONS, /* kind constant: one constant force per section (N): p[sec] */
+    ZP_SCHED_PROFILE,  /* kind profile: knots forces per section at evenly spaced x from its
+                          start to its end, linear in x between them (N): p[sec * knots + j] */
     ZP_SCHED_KIND_COUNT
 } zp_sched_kind;
 
 /* The most parameters a schedule may have (scene.h: room for several per section). */
 #define ZP_SCHED_MAX_PARAMS ZP_MAX_DRIVE_PARAMS
+/* The most knots per section of a profile (docs/scene-file.md [drive] knots). */
+#define ZP_DRIVE_MAX_KNOTS 32
+
 /* The most break times (s) a schedule may have: instants where its force jumps in time. */
 #define ZP_SCHED_MAX_BREAKS ZP_SCHED_MAX_PARAMS
 
@@ -33,6 +38,10 @@ typedef struct zp_schedule {
     double p[ZP_SCHED_MAX_PARAMS];  /* the parameters, in the kind's unit */
     double lo[ZP_SCHED_MAX_PARAMS]; /* search bounds of each parameter */
     double hi[ZP_SCHED_MAX_PARAMS];
+    int knots;                      /* forces per section: 1 (constant), profile's knots */
+    double power;                   /* W, the cap |F_applied v| <= power; 0: no cap */
+    double xb[ZP_MAX_SECTIONS + 1]; /* m, the sections' boundaries: where a profile's knots
+                                       lie (0s where the schedule has no course) */
 } zp_schedule;
 
 /* What the drive's force may depend on at one instant. A kind whose applied force is a state
@@ -52,8 +61,14 @@ typedef struct zp_drive_state {
 zp_schedule zp_schedule_sections(int nsec, const double *force, double lo, double hi);
 /* The same shape (kind, sections, bounds) with the parameters p (sh->np of them). */
 zp_schedule zp_schedule_with(const zp_schedule *sh, const double *p);
-/* The schedule the scene's [drive] describes (forces, min, max; all 0 when no forces). */
+/* The schedule the scene's [drive] describes (kind, knots, power, forces, min, max; all forces
+   0 when none are given). */
 zp_schedule zp_schedule_of_scene(const zp_scene *sc);
+/* A profile of knots forces per section on the course whose sections end at x_end (x_start
+   before the first), every one bounded by [lo, hi]; force NULL: all 0. knots = 1 drives as
+   zp_schedule_sections does, bit for bit. */
+zp_schedule zp_drive_profile(int nsec, int knots, double x_start, const double *x_end,
+                             const double *force, double lo, double hi);
 /* The schedule of shape pushing F (N) everywhere: the one-parameter family of constant pushes
    the search's baseline, the landscape and the benchmarks run. */
 zp_schedule zp_drive_constant(const zp_schedule *shape, double F);
@@ -63,8 +78,11 @@ void zp_drive_constant_bounds(const zp_schedule *shape, double *lo, double *hi);
 /* The schedule whose parameters are s's, each times the scale of the section it acts on
    (scale: one factor per section, a drive off by a known factor: a scenario's force error). */
 zp_schedule zp_schedule_scaled(const zp_schedule *s, const double *scale);
-/* N, the force the drive applies at st, along its direction. */
+/* N, the force the drive applies at st, along its direction: the kind's force, capped at
+   power / |v| where s has a power (pushing and braking alike; at rest no cap binds). */
 double zp_drive_force(const zp_schedule *s, const zp_drive_state *st);
+/* 1 when the cap binds at st: the kind's force asks for more than power / |v|. */
+int zp_drive_capped(const zp_schedule *s, const zp_drive_state *st);
 /* N, that force on the trolley (fx, fy) at time t (s), the trolley at x (m) moving at xdot = x'
    (m/s) on section sec, the course's slope there fp, pointing as d says. Inline: every
    evaluation of the equations of motion asks for it. */
@@ -79,6 +97,11 @@ static inline void zp_drive_push(const zp_schedule *s, zp_drive_dir d, double t,
         *fx = zp_drive_force(s, &(zp_drive_state){t, x, xdot, sec});
         *fy = 0;
     }
+}
+/* The drive's state at that instant (v along its direction, as zp_drive_push reads it). */
+static inline zp_drive_state zp_drive_state_at(zp_drive_dir d, double t, double x, double xdot,
+                                               int sec, double fp) {
+    return (zp_drive_state){t, x, d == ZP_DRIVE_TANGENT ? xdot * sqrt(1 + fp * fp) : xdot, sec};
 }
 
 /* The instants (s, ascending, at most max) where the force jumps in time; returns how many.
@@ -108,6 +131,14 @@ int zp_schedule_parse(const char *text, int nsec, zp_schedule *s, char *why, siz
 int zp_schedule_format(const zp_schedule *s, char *buf, size_t cap);
 /* A short label of section sec's drive for figures and reports ("59.6 N"). */
 void zp_schedule_label(const zp_schedule *s, int sec, char *buf, size_t cap);
+
+/* 1 for the drive every scene had before kinds and a power: constant per section, no cap (its
+   outputs keep their old shape). */
+int zp_drive_plain(const zp_schedule *s);
+
+/* Names of the kinds ([drive] kind: "constant", "profile") and lookup (-1 if unknown). */
+const char *zp_drive_kind_name(zp_sched_kind k);
+int zp_drive_kind_find(const char *name);
 
 /* Names of the drive directions and lookup (-1 if unknown). */
 const char *zp_drive_dir_name(zp_drive_dir d);

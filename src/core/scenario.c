@@ -40,9 +40,9 @@ void zp_scenario_start(const zp_chain *nominal, int nlink, const zp_scenario *s,
 
 static const char *const limit_names[ZP_LIMIT_COUNT] = {
     "max_g", "max_joint_force", "max_arrival_speed", "max_kink_dv", "g_envelope",
-    "min_arrival_speed"};
+    "min_arrival_speed", "max_drive_power"};
 static const char *const limit_units[ZP_LIMIT_COUNT] = {"g",   "N", "km/h", "m/s",
-                                                        "x its allowance", "km/h"};
+                                                        "x its allowance", "km/h", "W"};
 
 const char *zp_limit_name(int i) { return limit_names[i]; }
 const char *zp_limit_unit(int i) { return limit_units[i]; }
@@ -54,6 +54,7 @@ void zp_limits_from_scene(const zp_scene *sc, zp_limits *l) {
     l->max[ZP_LIMIT_KINK_DV] = sc->max_kink_dv;
     l->max[ZP_LIMIT_G_ENVELOPE] = sc->nenv > 0 ? 1 : 0;
     l->max[ZP_LIMIT_MIN_ARRIVAL] = sc->min_arrival_speed;
+    l->max[ZP_LIMIT_DRIVE_POWER] = sc->max_drive_power;
 }
 
 int zp_limits_kept(int i, double v, double max) {
@@ -89,6 +90,7 @@ void zp_limits_reached(const zp_model *m, const zp_result *r, double v[ZP_LIMIT_
     v[ZP_LIMIT_ARRIVAL] = r->outcome == ZP_OUTCOME_FINISHED ? r->v * KMH : 0;
     v[ZP_LIMIT_MIN_ARRIVAL] = v[ZP_LIMIT_ARRIVAL];
     v[ZP_LIMIT_KINK_DV] = r->peaks.kink_dv;
+    v[ZP_LIMIT_DRIVE_POWER] = r->drive_peak_power;
     int w = zp_limits_envelope_worst(m, r);
     v[ZP_LIMIT_G_ENVELOPE] = w < 0 ? 0 : r->env_longest[w] / m->env_s[w];
 }

@@ -31,12 +31,13 @@ typedef enum {
     ZP_LIMIT_KINK_DV,
     ZP_LIMIT_G_ENVELOPE, /* the longest excursion over its allowance, at the worst level */
     ZP_LIMIT_MIN_ARRIVAL, /* a floor: every rider arrives at least this fast */
+    ZP_LIMIT_DRIVE_POWER, /* W, the drive's peak |F_applied v| (at the steps' ends) */
     ZP_LIMIT_COUNT
 } zp_limit_id;
 
 typedef struct zp_limits {
-    double max[ZP_LIMIT_COUNT]; /* g, N, km/h, m/s, and 1 (its allowance) for the g envelope;
-                                   0: off */
+    double max[ZP_LIMIT_COUNT]; /* g, N, km/h, m/s, 1 (its allowance) for the g envelope, km/h,
+                                   W; 0: off */
 } zp_limits;
 
 void zp_limits_from_scene(const zp_scene *sc, zp_limits *l);
@@ -51,7 +52,7 @@ const char *zp_limit_unit(int i);
 int zp_limit_reached_in(const zp_result *r, int i);
 /* What run r reached, in each limit's unit: the largest felt acceleration (over the judged
    links, zp_model.g_links) and joint force (over links and the run), the arrival speed (0
-   unless finished), the largest kink dv, and for the g envelope the longest excursion above a
+   unless finished), the largest kink dv, the drive's peak power, and for the g envelope the longest excursion above a
    level over that level's allowance, the worst level's (zp_limits_envelope_worst). */
 void zp_limits_reached(const zp_model *m, const zp_result *r, double v[ZP_LIMIT_COUNT]);
 /* The worst excess over the limits set, reached / limit - 1 (<= 0: all kept; -1 with no

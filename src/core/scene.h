@@ -65,6 +65,8 @@ typedef struct zp_scene {
 
     char direction[16];                /* horizontal | tangent */
     int drive_kind;                    /* zp_sched_kind (drive.h) of the forces */
+    int drive_knots;                   /* kind profile: forces per section (default 3) */
+    double drive_power;                /* W, the cap on |F_applied v|; 0: none */
     int nforce;                        /* parameters; 0 when absent: all forces 0 */
     double forces[ZP_MAX_DRIVE_PARAMS]; /* the schedule's parameters (N per section) */
     double force_min, force_max;       /* N, search bounds */
@@ -91,6 +93,7 @@ typedef struct zp_scene {
     double max_arrival_speed; /* km/h, trolley speed at x_end */
     double max_kink_dv;       /* m/s, |v+ - v-| of the trolley at any kink */
     double min_arrival_speed; /* km/h, every rider arrives at least this fast; 0: off */
+    double max_drive_power;   /* W, peak |F_applied v| the drive delivers over the ride */
     int nenv;                 /* g_envelope levels, 0: none */
     double env_g[8], env_s[8]; /* g, s: felt g above env_g[l] for at most env_s[l] at a time */
     unsigned g_links;         /* bit i: link i + 1's felt g is judged (max_g, g_envelope); 0: all */

@@ -202,6 +202,7 @@ static int start(zp_sim *s, const zp_input *in, zp_result *r, zp_sim_output_curs
     s->slide = (c.v[0] > 0) - (c.v[0] < 0);
     s->inconsistent_t = NAN;
     s->inconsistent_steps = 0;
+    zp_sim_peaks_drive_start(s, t, s->y, r);
     zp_sim_output_emit(s, in, t, 0, oc);
     zp_sim_output_frames_here(s, in, t, s->y[0], oc);
     int dir;

@@ -103,7 +103,25 @@ void zp_sim_peaks_step(zp_sim *s, double t, zp_adv adv) {
     }
 }
 
+/* W, the drive's power F_applied v at (t, y); *capped 1 where its power cap binds */
+static double drive_power(const zp_sim *s, double t, const double *y, int *capped) {
+    double fp = s->m->drive == ZP_DRIVE_TANGENT ? s->track(s->m, s->course, s->sec, y[0]).fp : 0;
+    zp_drive_state st = zp_drive_state_at(s->m->drive, t, y[0], y[s->w0 / 2], s->sec, fp);
+    *capped = zp_drive_capped(s->sched, &st);
+    return zp_drive_force(s->sched, &st) * st.v;
+}
+
+void zp_sim_peaks_drive_start(zp_sim *s, double t, const double *y, zp_result *r) {
+    r->drive_peak_power = fabs(drive_power(s, t, y, &s->drive_capped));
+    s->drive_t = t;
+}
+
 void zp_sim_peaks_extremes(zp_sim *s, double t, const double *y, zp_result *r) {
+    int capped;
+    r->drive_peak_power = fmax(r->drive_peak_power, fabs(drive_power(s, t, y, &capped)));
+    r->drive_time_at_cap += (t - s->drive_t) * (s->drive_capped + capped) / 2;
+    s->drive_t = t;
+    s->drive_capped = capped;
     double phi[ZP_MAX_LINKS], w[ZP_MAX_LINKS];
     s->form->relative(s->m, y, phi, w);
     for (int i = 0; i < s->m->nlink; i++) {

@@ -17,7 +17,10 @@ void zp_sim_peaks_restart(zp_sim *s, double t);
 /* The step that ended at (t, s->y), on a root when adv says so: the peaks and the envelope's
    times inside it. */
 void zp_sim_peaks_step(zp_sim *s, double t, zp_adv adv);
-/* The step that ended at (t, y) in r's extremes: the largest joint angles, with o.track_loads
+/* The run starts at (t, y): the drive's power there is the first of its peak, and the time at
+   its cap counts from t. */
+void zp_sim_peaks_drive_start(zp_sim *s, double t, const double *y, zp_result *r);
+/* The step that ended at (t, y) in r's extremes: the drive's peak power and time at its cap, the largest joint angles, with o.track_loads
    the loads and the trolley's speed, the largest constraint residual. */
 void zp_sim_peaks_extremes(zp_sim *s, double t, const double *y, zp_result *r);
 

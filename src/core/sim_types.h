@@ -98,6 +98,10 @@ typedef struct zp_result {
     double w_effect[ZP_EFFECT_NWORK];   /* J: work taken out by each effect with a work
                                            integral (ZP_EFFECT_W_*; [physics]) */
     double constraint_residual;         /* m */
+    double drive_peak_power;            /* W, largest |F_applied v| at a step's end */
+    double drive_time_at_cap;           /* s, time the drive's power cap bound: the trapezoid
+                                           rule on the indicator at the steps' ends (off by at
+                                           most half a step at each switch) */
     zp_load_peaks peaks;                /* the kink impulses are in zp_sim_crossings */
     double env_longest[8]; /* s, per [limits] g_envelope level: the longest time felt g (of
                               the judged links) stayed above it at once (o.peaks) */

@@ -97,6 +97,11 @@ void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp
     fputs("{", f);
     for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
         double max = lim ? lim->max[i] : 0;
+        /* the drive's power shows in "drive"; here only as a limit set */
+        if (i == ZP_LIMIT_DRIVE_POWER && !(max > 0)) {
+            continue;
+        }
+        fputs(i ? ", " : "", f);
         if (i == ZP_LIMIT_G_ENVELOPE) {
             /* docs/commands.md: per level {g, allowed_s, longest_s} */
             fprintf(f, "\"%s\": [", zp_limit_name(i));
@@ -106,14 +111,13 @@ void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp
                 zp_out_json_key(f, "allowed_s", m->env_s[l], ", ");
                 zp_out_json_key(f, "longest_s", r->env_longest[l], "}");
             }
-            fputs(i + 1 < ZP_LIMIT_COUNT ? "], " : "]}", f);
+            fputs("]", f);
             continue;
         }
         fprintf(f, "\"%s\": {", zp_limit_name(i));
         if (!zp_limit_reached_in(r, i)) { /* never measured: neither kept nor broken */
             fputs("\"reached\": null, ", f);
             zp_out_json_key(f, "limit", max > 0 ? max : NAN, max > 0 ? ", \"kept\": null}" : "}");
-            fputs(i + 1 < ZP_LIMIT_COUNT ? ", " : "}", f);
             continue;
         }
         zp_out_json_key(f, "reached", v[i], ", ");
@@ -123,8 +127,8 @@ void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp
         } else {
             fputs("\"limit\": null}", f);
         }
-        fputs(i + 1 < ZP_LIMIT_COUNT ? ", " : "}", f);
     }
+    fputs("}", f);
 }
 
 /* the "gradient" object (docs/commands.md): per schedule parameter, the derivatives of the
@@ -220,6 +224,12 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
     }
     zp_out_json_key(f, "residual", zp_estimate_energy_residual(r), "},\n  ");
     zp_out_json_key(f, "constraint_residual", r->constraint_residual, ",\n");
+    if (!zp_drive_plain(meta->sched) || (meta->lim && meta->lim->max[ZP_LIMIT_DRIVE_POWER] > 0)) {
+        fputs("  \"drive\": {", f);
+        zp_out_json_key(f, "peak_power", r->drive_peak_power, ", ");
+        zp_out_json_key(f, "energy", r->w_drive, ", ");
+        zp_out_json_key(f, "time_at_cap", r->drive_time_at_cap, "},\n");
+    }
     fputs("  \"loads\": {\"joint_peak\": ", f);
     zp_out_json_list(f, r->peaks.joint, m->nlink, 1.0);
     fputs(", ", f);

@@ -161,14 +161,15 @@ void zp_scene_put_defaults(zp_scene *sc);
 
 /* ---- scene_sections.c, scene_extras.c: the special keys' readers (scene_keys.def) ---- */
 
-/* [drive] forces through the drive module, for a course of nsec sections: 1 read into *s,
-   0 absent, -1 bad (reported) */
-int zp_scene_parse_forces(parse_ctx *c, int nsec, zp_schedule *s);
-/* the schedule's kind and parameters into the scene */
+/* [drive] forces through the drive module, as many as shape (kind, sections, knots) takes: 1
+   read into *s, 0 absent, -1 bad (reported) */
+int zp_scene_parse_forces(parse_ctx *c, const zp_schedule *shape, zp_schedule *s);
+/* the schedule's parameters into the scene (its kind is the scene's already) */
 void zp_scene_set_forces(zp_scene *sc, const zp_schedule *s);
 
 zp_scene_reader zp_scene_read_name, zp_scene_read_section, zp_scene_read_lengths,
     zp_scene_read_masses, zp_scene_read_damping, zp_scene_read_death_angle, zp_scene_read_direction,
+    zp_scene_read_kind, zp_scene_read_knots,
     zp_scene_read_forces, zp_scene_read_accuracy, zp_scene_read_objective;
 zp_scene_reader zp_scene_read_envelope, zp_scene_read_links, zp_scene_read_range,
     zp_scene_read_safety_factor, zp_scene_read_wind_range, zp_scene_read_drag_area;

@@ -187,8 +187,8 @@ zp_status zp_scene_overlay_schedule(const char *path, zp_scene *sc, zp_diag *d) 
     zp_scene_parse_text(c, text, len);
     free(text);
     /* the forces must fit the scene they are laid over */
-    zp_schedule sched;
-    if (zp_scene_parse_forces(c, sc->nsec, &sched) == 0) {
+    zp_schedule shape = zp_schedule_of_scene(sc), sched;
+    if (zp_scene_parse_forces(c, &shape, &sched) == 0) {
         zp_scene_missing(c, K_FORCES, "the forces (N), one per section");
     }
     int nbad = zp_scene_flush(c);

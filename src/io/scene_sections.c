@@ -165,12 +165,12 @@ void zp_scene_read_death_angle(parse_ctx *c, zp_scene *sc, int k) {
     }
 }
 
-int zp_scene_parse_forces(parse_ctx *c, int nsec, zp_schedule *s) {
+int zp_scene_parse_forces(parse_ctx *c, const zp_schedule *shape, zp_schedule *s) {
     if (!c->key_line[K_FORCES]) {
         return 0;
     }
     char why[LINE_CAP + 64];
-    int rc = zp_schedule_parse(c->forces_val, nsec, s, why, sizeof why);
+    int rc = zp_drive_parse(shape, c->forces_val, s, why, sizeof why);
     if (rc == -2) {
         c->key_bad[K_FORCES] = 1;
         zp_scene_bad(c, c->key_line[K_FORCES], "drive", zp_scene_keys[K_FORCES].name, "%s", why);
@@ -181,7 +181,6 @@ int zp_scene_parse_forces(parse_ctx *c, int nsec, zp_schedule *s) {
 }
 
 void zp_scene_set_forces(zp_scene *sc, const zp_schedule *s) {
-    sc->drive_kind = (int)s->kind;
     sc->nforce = s->np;
     memcpy(sc->forces, s->p, sizeof *s->p * (size_t)s->np);
 }
@@ -194,11 +193,42 @@ void zp_scene_read_direction(parse_ctx *c, zp_scene *sc, int k) {
     }
 }
 
-/* the schedule's text is the drive module's to read */
+/* the kind's name is the drive module's */
+void zp_scene_read_kind(parse_ctx *c, zp_scene *sc, int k) {
+    char name[16];
+    if (zp_scene_get_text(c, k, name, sizeof name) > 0) {
+        int kind = zp_drive_kind_find(name);
+        if (kind < 0) {
+            zp_scene_bad_key(c, k, "unknown kind `%s`", name);
+        }
+        sc->drive_kind = kind < 0 ? ZP_SCHED_SECTIONS : kind;
+    }
+}
+
+/* knots shape a profile only, and every section's knots must fit the schedule */
+void zp_scene_read_knots(parse_ctx *c, zp_scene *sc, int k) {
+    zp_scene_read_plain(c, sc, k);
+    if (!c->key_line[k] || c->key_bad[k]) {
+        return;
+    }
+    if (sc->drive_kind != ZP_SCHED_PROFILE) {
+        zp_scene_bad_key(c, k, "given with kind = %s; expected kind = profile",
+                         zp_drive_kind_name((zp_sched_kind)sc->drive_kind));
+    } else if (c->nsect * sc->drive_knots > ZP_SCHED_MAX_PARAMS) {
+        zp_scene_bad_key(c, k, "%d sections x %d knots = %d forces; expected at most %d",
+                         c->nsect, sc->drive_knots, c->nsect * sc->drive_knots,
+                         ZP_SCHED_MAX_PARAMS);
+    }
+}
+
+/* the schedule's text is the drive module's to read, as the kind and knots shape it */
 void zp_scene_read_forces(parse_ctx *c, zp_scene *sc, int k) {
     (void)k; /* K_FORCES: the overlay of a schedule file reads it too (zp_scene_parse_forces) */
-    zp_schedule sched;
-    if (zp_scene_parse_forces(c, c->nsect, &sched) > 0) {
+    if (c->key_bad[K_KIND] || c->key_bad[K_KNOTS]) {
+        return; /* the count they would set is unknown: one mistake, one message */
+    }
+    zp_schedule shape = zp_schedule_of_scene(sc), sched;
+    if (zp_scene_parse_forces(c, &shape, &sched) > 0) {
         zp_scene_set_forces(sc, &sched);
     }
 }

@@ -59,6 +59,9 @@ static int hand_text(const zp_scene *sc, int k, char *out, size_t cap) {
     case K_FORCES:
         snprintf(out, cap, "0 for every section");
         return 1;
+    case K_KIND:
+        snprintf(out, cap, "%s", zp_drive_kind_name((zp_sched_kind)sc->drive_kind));
+        return 1;
     case K_DRAG_AREA:
         if (sc->ndrag) {
             list(out, cap, sc->drag_area, sc->ndrag);
