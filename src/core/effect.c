@@ -47,7 +47,7 @@ int zp_effect_nwork(unsigned physics) {
 }
 
 int zp_effect_work_shown(unsigned physics) {
-    return physics != 0;
+    return (physics & ~(unsigned)ZP_PHYS_CABLE) != 0; /* a cable is a course, not [physics] */
 }
 
 const zp_effect_work *zp_effect_work_names(int k) {
@@ -76,7 +76,10 @@ void zp_effect_forces(unsigned physics, const zp_model *m, const zp_effect_motio
         }
         /* the first sets f: one effect's forces reach the equations bit for bit its own */
         double more[ZP_MAX_LINKS + 1][2];
-        power[work_of[e]] = registry[e]->forces(m, mo, first ? f : more);
+        double pw = registry[e]->forces(m, mo, first ? f : more);
+        if (work_of[e] >= 0) {
+            power[work_of[e]] = pw; /* a conservative force has a potential instead */
+        }
         for (int b = 0; !first && b < mo->nbody; b++) {
             f[b][0] += more[b][0];
             f[b][1] += more[b][1];

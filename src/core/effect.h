@@ -56,6 +56,7 @@ enum { ZP_W_DRIVE, ZP_W_DAMP, ZP_W_EFFECTS, ZP_W_MAX = ZP_W_EFFECTS + ZP_EFFECT_
    of mass, world frame. */
 typedef struct zp_effect_motion {
     int nbody;                     /* links + 1 */
+    double x;                      /* m, the trolley's x (a conservative force's position) */
     double v[ZP_MAX_LINKS + 1][2]; /* m/s */
 } zp_effect_motion;
 
@@ -90,7 +91,8 @@ typedef struct zp_effect {
     zp_effect_work work; /* an effect with ZP_WORK in effects.def */
     /* The force on every body (N, world frame, at its centre of mass) into f from the bodies'
        motion; returns the power it takes out (W). NULL: none. An effect with forces has a
-       work integral, so the energy audit accounts for them. */
+       work integral, so the energy audit accounts for them, or (ZP_NO_WORK: the sagging
+       cable's) is conservative, its potential in the audit instead (zp_model_cable_energy). */
     double (*forces)(const zp_model *m, const zp_effect_motion *mo, double (*f)[2]);
     const zp_effect_course *course; /* NULL: the course stays the scene's */
 } zp_effect;

@@ -198,7 +198,8 @@ void zp_scene_read_direction(parse_ctx *c, zp_scene *sc, int k) {
 void zp_scene_read_forces(parse_ctx *c, zp_scene *sc, int k) {
     (void)k; /* K_FORCES: the overlay of a schedule file reads it too (zp_scene_parse_forces) */
     zp_schedule sched;
-    if (zp_scene_parse_forces(c, c->nsect, &sched) > 0) {
+    int nsec = c->sec_line[S_CABLE] ? zp_scene_cable_nsec(c) : c->nsect;
+    if (zp_scene_parse_forces(c, nsec, &sched) > 0) {
         zp_scene_set_forces(sc, &sched);
     }
 }
