@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "cable_text.h"
 #include "cli.h"
 #include "formulation.h"
 #include "method.h"
@@ -43,6 +44,13 @@ static const char *formulation_doc(const char *name) {
 static void print_course(const zp_model *m) {
     printf("course: %d section%s, x from %g to %g m\n", m->nsec, m->nsec == 1 ? "" : "s", m->xb[0],
            m->xb[m->nsec]);
+    if (m->cable_paths) {
+        for (int k = 0; k < m->nsec; k++) {
+            printf("  drive section %d: x in [%g, %g] m\n", k + 1, m->xb[k], m->xb[k + 1]);
+        }
+        printf("  the path of the loaded cable: smooth, no kinks (below)\n");
+        return;
+    }
     for (int k = 0; k < m->nsec; k++) {
         printf("  section %d: x in [%g, %g] m\n", k + 1, m->xb[k], m->xb[k + 1]);
         printf("    f(x)   = %s\n", m->expr[k]);
@@ -129,6 +137,7 @@ static void print_scene(const zp_problem *st) {
            sc->line_max_evals ? "" : " (the search's default)", sc->seed);
     zp_scene_print_optional(sc, stdout, 0);
     print_physics(sc, m);
+    zp_cable_text_print(stdout, m, sc);
     printf("added by zipopt (keys the file does not give, with the values taken):\n");
     zp_scene_print_added(sc, stdout, "  ");
 }

@@ -3,6 +3,7 @@
 
 #include <math.h>
 
+#include "cable_ride.h"
 #include "estimate.h"
 
 #define DEG (180.0 / M_PI)
@@ -97,6 +98,20 @@ void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp
     }
 }
 
+/* the cable over the x the ride visited (CLI.md `cable`) */
+static void write_cable(FILE *f, const zp_model *m, const zp_result *r) {
+    zp_cable_ride cr;
+    char why[256];
+    const zp_cable *c = zp_cable_paths_cable(m->cable_paths);
+    int ok = zp_cable_ride_over(c, m->g * m->mtot, r->x_min, r->x_max, &cr, why, sizeof why) ==
+             ZP_OK;
+    fputs("\"cable\": {", f);
+    key_num(f, "anchor_tension_max", ok ? fmax(cr.ta_max, cr.tb_max) : NAN, ", ");
+    key_num(f, "trolley_tension_max", ok ? cr.trolley_max : NAN, ", ");
+    key_num(f, "lowest_y", ok ? cr.y_low : NAN, ", ");
+    key_num(f, "sag_mid", ok ? cr.sag_mid : NAN, "},\n  ");
+}
+
 void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp_sim *s,
                         const zp_run_meta *meta) {
     int nsamples, nk;
@@ -164,7 +179,15 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
     for (int k = 0; zp_effect_work_shown(m->physics) && k < ZP_EFFECT_NWORK; k++) {
         key_num(f, zp_effect_work_names(k)->column, r->w_effect[k], ", ");
     }
+    if (m->cable_paths) {
+        fputs("\"cable_potential\": {", f);
+        key_num(f, "initial", r->pi_initial, ", ");
+        key_num(f, "final", r->pi_final, "}, ");
+    }
     key_num(f, "residual", zp_estimate_energy_residual(r), "},\n  ");
+    if (m->cable_paths) {
+        write_cable(f, m, r);
+    }
     key_num(f, "constraint_residual", r->constraint_residual, ",\n");
     fputs("  \"loads\": {\"joint_peak\": ", f);
     num_list(f, r->peaks.joint, m->nlink, 1.0);
