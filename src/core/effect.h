@@ -91,9 +91,12 @@ typedef struct zp_effect {
     zp_effect_work work; /* an effect with ZP_WORK in effects.def */
     /* The force on every body (N, world frame, at its centre of mass) into f from the bodies'
        motion; returns the power it takes out (W). NULL: none. An effect with forces has a
-       work integral, so the energy audit accounts for them, or (ZP_NO_WORK: the sagging
-       cable's) is conservative, its potential in the audit instead (zp_model_cable_energy). */
+       work integral, so the energy audit accounts for them. */
     double (*forces)(const zp_model *m, const zp_effect_motion *mo, double (*f)[2]);
+    /* A conservative force (the sagging cable's -dPi_c/dx): the same, but with no work integral,
+       its potential being in the energy audit instead (zp_model_cable_energy); it returns 0.
+       NULL: none. */
+    double (*conservative)(const zp_model *m, const zp_effect_motion *mo, double (*f)[2]);
     const zp_effect_course *course; /* NULL: the course stays the scene's */
 } zp_effect;
 

@@ -86,6 +86,6 @@ const zp_effect zp_effect_cable = {
     .name = "cable",
     .build = cable_build,
     .describe = cable_describe,
-    .forces = cable_forces,
+    .conservative = cable_forces,
     .course = &path,
 };

@@ -127,7 +127,6 @@ typedef struct zp_scene {
     double cable_tension;        /* N, unloaded horizontal tension; 0: cable_length is given */
     double cable_weight;         /* N/m, per unstretched metre */
     double cable_ea;             /* N, axial stiffness; 0: inextensible */
-    double max_cable_tension;    /* N, [limits]: largest tension at an anchor; 0: off */
 
     /* bit k set: the file gave key k of the reader's table (io/scene_keys.def), so `check` can
        show every key zipopt added itself */

@@ -43,7 +43,7 @@ static int good(const parse_ctx *c, int k) {
 }
 
 /* what cannot stand beside a cable: [course], whose place it takes, and kink_radius (a cable has
-   no kinks); and a cable limit without a cable */
+   no kinks) */
 static void alone(parse_ctx *c, const zp_scene *sc) {
     if (sc->cable && c->sec_line[S_COURSE]) {
         zp_scene_bad(c, c->sec_line[S_COURSE], "course", NULL,
@@ -53,9 +53,6 @@ static void alone(parse_ctx *c, const zp_scene *sc) {
     }
     if (sc->cable && c->key_line[K_KINK_RADIUS]) {
         zp_scene_bad_key(c, K_KINK_RADIUS, "given with [cable], whose path has no kinks to round");
-    }
-    if (!sc->cable && c->key_line[K_MAX_CABLE_TENSION]) {
-        zp_scene_bad_key(c, K_MAX_CABLE_TENSION, "given without [cable]");
     }
 }
 
@@ -113,9 +110,30 @@ static void ride_fits(parse_ctx *c, zp_scene *sc) {
     }
 }
 
+/* the keys a cable needs (required with [cable] only, so not REQUIRED in the table) */
+static int given_all(parse_ctx *c) {
+    static const struct {
+        int k;
+        const char *what;
+    } need[] = {
+        {K_CABLE_START, "anchor A (x, y) in m, where the ride starts"},
+        {K_CABLE_END, "anchor B (x, y) in m, where the ride ends"},
+        {K_CABLE_SECTIONS, "the x at which each drive section ends (m); the last is where the "
+                           "ride ends"},
+    };
+    int all = 1;
+    for (size_t i = 0; i < sizeof need / sizeof *need; i++) {
+        if (!c->key_line[need[i].k]) {
+            zp_scene_missing(c, need[i].k, need[i].what);
+            all = 0;
+        }
+    }
+    return all;
+}
+
 void zp_scene_cable_rules(parse_ctx *c, zp_scene *sc) {
     alone(c, sc);
-    if (!sc->cable) {
+    if (!sc->cable || !given_all(c)) {
         return;
     }
     if (good(c, K_CABLE_START) && good(c, K_CABLE_END) && !(sc->cable_a[0] < sc->cable_b[0])) {

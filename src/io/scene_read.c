@@ -77,13 +77,10 @@ static void keep_lines(const parse_ctx *c, zp_scene *sc) {
     sc->line_max_evals = c->key_bad[K_MAX_EVALS] ? 0 : c->key_line[K_MAX_EVALS];
 }
 
-/* whether key k must be given: a required key of an optional section only with its section,
-   and [course]'s not where [cable] lays the course */
+/* whether key k must be given: [course]'s not where [cable] lays the course */
 static int required(const parse_ctx *c, int k) {
     const zp_scene_key *key = &zp_scene_keys[k];
-    return key->dflt.how == D_REQUIRED &&
-           (!zp_scene_keys_sections[key->sec].optional || c->sec_line[key->sec]) &&
-           !(key->sec == S_COURSE && c->sec_line[S_CABLE]);
+    return key->dflt.how == D_REQUIRED && !(key->sec == S_COURSE && c->sec_line[S_CABLE]);
 }
 
 /* the second pass: raw values -> sc, key by key in the table's order (a required key that is
