@@ -47,7 +47,7 @@ int zp_effect_nwork(unsigned physics) {
 }
 
 int zp_effect_work_shown(unsigned physics) {
-    return physics != 0;
+    return (physics & ~(unsigned)ZP_PHYS_CABLE) != 0; /* a cable is a course, not [physics] */
 }
 
 const zp_effect_work *zp_effect_work_names(int k) {
@@ -62,7 +62,7 @@ const zp_effect_work *zp_effect_work_names(int k) {
 unsigned zp_effect_with_forces(unsigned physics) {
     unsigned with = 0;
     for (int e = 0; e < ZP_EFFECT_COUNT; e++) {
-        with |= registry[e]->forces ? 1u << e : 0;
+        with |= registry[e]->forces || registry[e]->conservative ? 1u << e : 0;
     }
     return physics & with;
 }
@@ -71,12 +71,16 @@ void zp_effect_forces(unsigned physics, const zp_model *m, const zp_effect_motio
                       double (*f)[2], double *power) {
     int first = 1;
     for (int e = 0; e < ZP_EFFECT_COUNT; e++) {
-        if (!(physics >> e & 1) || !registry[e]->forces) {
+        if (!(physics >> e & 1) || !(registry[e]->forces || registry[e]->conservative)) {
             continue;
         }
         /* the first sets f: one effect's forces reach the equations bit for bit its own */
         double more[ZP_MAX_LINKS + 1][2];
-        power[work_of[e]] = registry[e]->forces(m, mo, first ? f : more);
+        if (registry[e]->forces) {
+            power[work_of[e]] = registry[e]->forces(m, mo, first ? f : more);
+        } else {
+            registry[e]->conservative(m, mo, first ? f : more); /* a potential, no work */
+        }
         for (int b = 0; !first && b < mo->nbody; b++) {
             f[b][0] += more[b][0];
             f[b][1] += more[b][1];

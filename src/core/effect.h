@@ -56,6 +56,7 @@ enum { ZP_W_DRIVE, ZP_W_DAMP, ZP_W_EFFECTS, ZP_W_MAX = ZP_W_EFFECTS + ZP_EFFECT_
    of mass, world frame. */
 typedef struct zp_effect_motion {
     int nbody;                     /* links + 1 */
+    double x;                      /* m, the trolley's x (a conservative force's position) */
     double v[ZP_MAX_LINKS + 1][2]; /* m/s */
 } zp_effect_motion;
 
@@ -92,6 +93,10 @@ typedef struct zp_effect {
        motion; returns the power it takes out (W). NULL: none. An effect with forces has a
        work integral, so the energy audit accounts for them. */
     double (*forces)(const zp_model *m, const zp_effect_motion *mo, double (*f)[2]);
+    /* A conservative force (the sagging cable's -dPi_c/dx): the same, but with no work integral,
+       its potential being in the energy audit instead (zp_model_cable_energy); it returns 0.
+       NULL: none. */
+    double (*conservative)(const zp_model *m, const zp_effect_motion *mo, double (*f)[2]);
     const zp_effect_course *course; /* NULL: the course stays the scene's */
 } zp_effect;
 

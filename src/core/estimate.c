@@ -12,7 +12,10 @@ double zp_estimate_energy_residual(const zp_result *r) {
     for (int k = 0; k < ZP_EFFECT_NWORK; k++) {
         res += r->w_effect[k];
     }
-    return res;
+    /* the cable's potential belongs to the system (docs/model.md); added only where it moved,
+       so a scene without a cable keeps its residual bit for bit (-0 included) */
+    double dpi = r->pi_final - r->pi_initial;
+    return dpi != 0 ? res + dpi : res;
 }
 
 /* the energies the audit adds up: a residual is judged against their size */
@@ -22,7 +25,8 @@ static double energy_scale(const zp_result *r) {
     for (int k = 0; k < ZP_EFFECT_NWORK; k++) {
         scale += fabs(r->w_effect[k]);
     }
-    return scale;
+    double dpi = r->pi_final - r->pi_initial;
+    return dpi != 0 ? scale + fabs(dpi) : scale;
 }
 
 zp_sim_opts zp_estimate_tighter(const zp_sim_opts *o) {

@@ -170,14 +170,16 @@ static inline void forces_start(lagrange_forces *ef, const zp_drive_now *dn) {
     ef->hold = 0;
 }
 
-/* the effects' forces on every body from the bodies' velocities (thd the angle rates): each
+/* the effects' forces on every body from the trolley's x and the bodies' velocities (thd the
+   angle rates): each
    body's in ef->fd, their sum added to ef->f, each effect's power in ef->pw, and their
    generalized forces J^T f in Q (x, then each angle) */
-static inline void effect_terms(const zp_model *m, double fp, double xd, const double *s,
-                                const double *c, const double *thd, int n, lagrange_forces *ef,
-                                double *Q) {
+static inline void effect_terms(const zp_model *m, double x, double fp, double xd,
+                                const double *s, const double *c, const double *thd, int n,
+                                lagrange_forces *ef, double *Q) {
     zp_effect_motion mo;
     mo.nbody = n + 1;
+    mo.x = x;
     double px = xd, py = fp * xd; /* velocity of the joint above the current link */
     mo.v[0][0] = px;
     mo.v[0][1] = py;
@@ -317,7 +319,7 @@ static int lagrange_rhs_general(const zp_model *m, void *work, const zp_drive_no
     forces_start(&ef, dn);
     if (forces) {
         double Q[ZP_MAX_LINKS + 1];
-        effect_terms(m, fp, xd, s, c, y + nq + 1, n, &ef, Q);
+        effect_terms(m, y[0], fp, xd, s, c, y + nq + 1, n, &ef, Q);
         for (int i = 0; i < nq; i++) {
             gsl_vector_set(lw->R, i, gsl_vector_get(lw->R, i) + Q[i]);
         }
@@ -436,7 +438,7 @@ __attribute__((always_inline)) static inline int fast_rhs(const zp_model *m,
     forces_start(&ef, dn);
     if (forces) {
         double Q[ZP_MAX_LINKS + 1];
-        effect_terms(m, fp, xd, s, c, y + nq + 1, n, &ef, Q);
+        effect_terms(m, y[0], fp, xd, s, c, y + nq + 1, n, &ef, Q);
         for (int i = 0; i < nq; i++) {
             R[i] += Q[i];
         }
@@ -455,8 +457,9 @@ __attribute__((always_inline)) static inline int fast_rhs(const zp_model *m,
             return rc;
         }
     }
-    return store_rates(m, dn, forces || rolling, forces, y, qdd, xd, fp, pdamp, &ef, s, c, ydot,
-                       loads);
+    /* a conservative force alone (the cable's) has no work integral to store */
+    return store_rates(m, dn, (forces || rolling) && m->nwork > ZP_W_EFFECTS, forces, y, qdd, xd,
+                       fp, pdamp, &ef, s, c, ydot, loads);
 }
 
 #define FAST_RHS_P(N, F, R, NAME)                                                                  \

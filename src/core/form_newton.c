@@ -169,6 +169,7 @@ static void newton_effects(const zp_model *m, const double *y, gsl_vector *b, do
     int np = npos(m);
     zp_effect_motion mo;
     mo.nbody = m->nlink + 1;
+    mo.x = y[0];
     for (int bd = 0; bd <= m->nlink; bd++) {
         int k = bd ? 2 + 3 * (bd - 1) : 0;
         mo.v[bd][0] = y[np + k];

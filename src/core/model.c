@@ -33,6 +33,18 @@ void zp_model_derive(zp_model *m) {
             m->C[j][k] = m->C[k][j] = m->len[j] * (m->mass[k] * m->half[k] + m->len[k] * below_k);
         }
     }
+    if (m->cable_paths) {
+        char why[256];
+        m->cable_path = zp_cable_paths_get(m->cable_paths, m->g * m->mtot, why, sizeof why);
+    }
+}
+
+double zp_model_cable_energy(const zp_model *m, double x) {
+    if (!m->cable_paths) {
+        return 0;
+    }
+    zp_cable_path_value v;
+    return m->cable_path && zp_cable_path_eval(m->cable_path, x, &v) == 0 ? v.energy : NAN;
 }
 
 /* probes per section: at least 4096, and no gap over 1 cm below 2^20 of them, so a narrow
@@ -243,7 +255,9 @@ zp_model *zp_model_build(const zp_scene *sc, zp_diag *d) {
     m->xb[0] = sc->x_start;
     for (int k = 0; k < sc->nsec; k++) {
         m->xb[k + 1] = sc->x_end[k];
-        memcpy(m->expr[k], sc->expr[k], ZP_EXPR_MAX);
+        /* a cable's sections are stretches of x: its path lies under them all, the scene's
+           course is a level placeholder the cable's course provider never reads */
+        memcpy(m->expr[k], sc->cable ? "0" : sc->expr[k], sc->cable ? 2 : ZP_EXPR_MAX);
     }
     zp_course_err ce;
     const char *exprs[ZP_MAX_SECTIONS];
@@ -282,7 +296,7 @@ zp_model *zp_model_build(const zp_scene *sc, zp_diag *d) {
     m->drive = dir < 0 ? ZP_DRIVE_HORIZONTAL : (zp_drive_dir)dir;
     zp_model_derive(m);
 
-    m->physics = check_course(m, sc, d) ? zp_effect_build(m, sc, d) : -1;
+    m->physics = sc->cable || check_course(m, sc, d) ? zp_effect_build(m, sc, d) : -1;
     if (m->physics < 0) {
         zp_model_free(m);
         return NULL;
@@ -306,5 +320,6 @@ void zp_model_free(zp_model *m) {
         return;
     }
     zp_course_free(m->course);
+    zp_cable_paths_free(m->cable_paths);
     free(m);
 }

@@ -3,6 +3,7 @@
 #ifndef ZP_MODEL_H
 #define ZP_MODEL_H
 
+#include "cable_paths.h"
 #include "course.h"
 #include "diag.h"
 #include "drive.h"
@@ -64,6 +65,11 @@ typedef struct zp_model {
     int arc_at[ZP_MAX_SECTIONS + 1]; /* index of the arc around boundary xb[k], or -1 */
     const zp_effect_course *course_provider; /* the course an effect lays (zp_model_track),
                                                 NULL: the scene's own */
+    /* [cable] (docs/model.md "A cable that sags"): the course is the path the cable takes under
+       this model's load W = g mtot; both NULL without a cable */
+    zp_cable_paths *cable_paths;     /* owned by the built model, borrowed by its scenarios */
+    const zp_cable_path *cable_path; /* W's path (zp_model_derive), read-only and shared; NULL
+                                        when it could not be built: every run then fails */
 
     /* derived for the equations of motion (docs/model.md chain coordinates) */
     double mtot;                                 /* kg, trolley + links */
@@ -94,8 +100,12 @@ zp_track zp_model_track_piece(const zp_model *m, const zp_course *course, int se
    below phi_max, so that phi_max - the result is the smallest margin of any joint (with one
    death angle for every joint: the largest angle itself). */
 double zp_model_angle_used(const zp_model *m, const double *max_rel_angle);
-/* Recomputes mtot, B and C from m0, len, half, mass and inertia (after changing them). */
+/* Recomputes mtot, B and C from m0, len, half, mass and inertia (after changing them), and with
+   a cable the path of the load g mtot (built once per load, then shared). */
 void zp_model_derive(zp_model *m);
+/* The cable's own potential energy Pi_c (J) with the trolley at x (docs/model.md "A cable that
+   sags"); 0 without a cable, NaN off the path. */
+double zp_model_cable_energy(const zp_model *m, double x);
 /* A course for one simulating thread (zp_course_for_thread: compiled code shared by all),
    owned by the caller; NULL with why in e. */
 zp_course *zp_model_course(const zp_model *m, zp_course_err *e);

@@ -122,12 +122,22 @@ typedef struct zp_scene {
     double rolling;                        /* rolling-resistance coefficient mu (default 0) */
     double kink_radius;                    /* m, 0: sharp kinks */
 
+    /* [cable] (docs/scene-file.md, docs/model.md "A cable that sags"), instead of [course]: the
+       reader then fills x_start and the drive sections (nsec, x_end) from it, expr stays empty */
+    int cable;                   /* 1 when the scene has a [cable] section */
+    double cable_a[2], cable_b[2]; /* m, anchors A (the ride starts) and B */
+    double cable_length;         /* m, unstretched length; 0: from cable_tension */
+    double cable_tension;        /* N, unloaded horizontal tension; 0: cable_length is given */
+    double cable_weight;         /* N/m, per unstretched metre */
+    double cable_ea;             /* N, axial stiffness; 0: inextensible */
+
     /* bit k set: the file gave key k of the reader's table (io/scene_keys.def), so `check` can
        show every key zipopt added itself */
     unsigned long long given[ZP_SCENE_GIVEN_WORDS];
 
     /* lines of keys that later stages judge (0 if absent), for their messages */
     int line_forces, line_method, line_formulation, line_search_method, line_kink_radius;
+    int line_cable; /* the [cable] header's line */
     int line_max_evals; /* 0: max_evals not given: ZP_SCENE_EVALS_PER_SECTION per section */
 } zp_scene;
 

@@ -196,6 +196,8 @@ static int start(zp_sim *s, const zp_input *in, zp_result *r, zp_sim_output_curs
     s->form->from_chain(m, &c, zero_work, s->y);
     zp_energy e0 = zp_state_energy(m, &c);
     r->e_initial = e0.kinetic + e0.potential;
+    r->pi_initial = zp_model_cable_energy(m, c.q[0]);
+    r->x_min = r->x_max = c.q[0];
 
     double t = 0;
     s->stuck = 0;

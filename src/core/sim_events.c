@@ -34,8 +34,8 @@ static int cross_kink(zp_sim *s, double t, zp_result *r, int to) {
     c.q[1] = entered.f;
     zp_impulse imp = {0, 0};
     double v_in[2] = {c.v[0], c.v[1]};
-    if (m->physics & ZP_PHYS_ROUNDED) {
-        c.v[1] = entered.fp * c.v[0]; /* an arc has no kink: only onto the course at b */
+    if (m->physics & (ZP_PHYS_ROUNDED | ZP_PHYS_CABLE)) {
+        c.v[1] = entered.fp * c.v[0]; /* an arc or a cable has no kink: only onto the course */
     } else if (zp_impulse_apply(m, entered.fp, &c, &imp)) {
         return -1;
     }
@@ -46,6 +46,9 @@ static int cross_kink(zp_sim *s, double t, zp_result *r, int to) {
     s->e_impulse += imp.energy_lost;
     int from = s->sec;
     s->sec = to;
+    if (m->physics & ZP_PHYS_CABLE) {
+        return 0; /* a drive section's end on a cable is no kink: not listed, nothing traps */
+    }
     if (s->ncross < ZP_MAX_CROSSINGS) {
         s->cross[s->ncross++] = (zp_crossing){t, b, from, to, imp.lambda, imp.energy_lost};
     }

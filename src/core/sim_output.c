@@ -113,6 +113,9 @@ void zp_sim_output_finish(zp_sim *s, zp_result *r, double t, zp_outcome o, zp_st
     r->v = hypot(c.v[0], c.v[1]);
     zp_energy e = zp_state_energy(s->m, &c);
     r->e_final = e.kinetic + e.potential;
+    r->pi_final = zp_model_cable_energy(s->m, c.q[0]);
+    r->x_min = fmin(r->x_min, r->x);
+    r->x_max = fmax(r->x_max, r->x);
     r->w_drive = s->y[s->w0 + ZP_W_DRIVE];
     r->w_damp = s->y[s->w0 + ZP_W_DAMP];
     for (int k = ZP_W_EFFECTS; k < s->m->nwork; k++) {

@@ -127,6 +127,8 @@ void zp_sim_peaks_extremes(zp_sim *s, double t, const double *y, zp_result *r) {
     for (int i = 0; i < s->m->nlink; i++) {
         r->max_rel_angle[i] = fmax(r->max_rel_angle[i], fabs(phi[i]));
     }
+    r->x_min = fmin(r->x_min, y[0]);
+    r->x_max = fmax(r->x_max, y[0]);
     /* load and speed peaks, when asked for, are sampled at every step (one more rhs call) */
     if (s->o.track_loads) {
         zp_chain c = zp_sim_peaks_row(s, t, y).c;

@@ -93,7 +93,9 @@ typedef struct zp_result {
     double max_speed;                   /* m/s, largest trolley speed at a step (track_loads) */
     int ncross;                         /* kink crossings (all of them; the first
                                            ZP_MAX_CROSSINGS are in zp_sim_crossings) */
-    double e_initial, e_final;          /* J */
+    double e_initial, e_final;          /* J, the bodies' energy */
+    double pi_initial, pi_final;        /* J, the cable's own potential Pi_c ([cable]; else 0) */
+    double x_min, x_max;                /* m, the trolley's x visited, at the steps' ends */
     double w_drive, w_damp, e_impulse;  /* J: drive work, damper loss, impulse loss */
     double w_effect[ZP_EFFECT_NWORK];   /* J: work taken out by each effect with a work
                                            integral (ZP_EFFECT_W_*; [physics]) */

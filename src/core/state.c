@@ -8,7 +8,7 @@
 void zp_state_start(const zp_model *m, const zp_course *course, zp_chain *c) {
     memset(c, 0, sizeof *c);
     c->q[0] = m->xb[0];
-    c->q[1] = zp_course_eval(course, 0, m->xb[0]).f;
+    c->q[1] = zp_model_track(m, course, 0, m->xb[0]).f;
 }
 
 void zp_state_com(const zp_model *m, const zp_chain *c, double xy[][2]) {

@@ -3,6 +3,7 @@
 
 #include <math.h>
 
+#include "cable_text.h"
 #include "formulation.h"
 #include "method.h"
 #include "out_json.h"
@@ -22,6 +23,13 @@ static const char *formulation_doc(const char *name) {
 static void course_text(FILE *f, const zp_model *m) {
     fprintf(f, "course: %d section%s, x from %g to %g m\n", m->nsec, m->nsec == 1 ? "" : "s",
             m->xb[0], m->xb[m->nsec]);
+    if (m->cable_paths) {
+        for (int k = 0; k < m->nsec; k++) {
+            fprintf(f, "  drive section %d: x in [%g, %g] m\n", k + 1, m->xb[k], m->xb[k + 1]);
+        }
+        fprintf(f, "  the path of the loaded cable: smooth, no kinks (below)\n");
+        return;
+    }
     for (int k = 0; k < m->nsec; k++) {
         fprintf(f, "  section %d: x in [%g, %g] m\n", k + 1, m->xb[k], m->xb[k + 1]);
         fprintf(f, "    f(x)   = %s\n", m->expr[k]);
@@ -118,6 +126,7 @@ void zp_out_check_text(FILE *f, const zp_out_check *c) {
     settings_text(f, c);
     zp_scene_print_optional(sc, f, 0);
     physics_text(f, sc, c->m);
+    zp_cable_text_print(f, c->m, sc);
     fprintf(f, "added by zipopt (keys the file does not give, with the values taken):\n");
     zp_scene_print_added(sc, f, "  ");
 }

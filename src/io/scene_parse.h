@@ -174,6 +174,16 @@ zp_scene_reader zp_scene_read_name, zp_scene_read_section, zp_scene_read_lengths
 zp_scene_reader zp_scene_read_envelope, zp_scene_read_links, zp_scene_read_range,
     zp_scene_read_safety_factor, zp_scene_read_wind_range, zp_scene_read_drag_area;
 
+/* ---- scene_cable.c: [cable] (docs/model.md "A cable that sags") ---- */
+
+zp_scene_reader zp_scene_read_anchor, zp_scene_read_cable_sections;
+/* the drive sections [cable] sections gives (its values counted, as the forces need before
+   it is read) */
+int zp_scene_cable_nsec(const parse_ctx *c);
+/* [cable]'s rules: the anchors' order, length or tension, the cable hangs, the ride inside the
+   span, no [course] or kink_radius beside it; x_start's default */
+void zp_scene_cable_rules(parse_ctx *c, zp_scene *sc);
+
 /* ---- scene_expr.c: `y0`, `pi` and `e` replaced by numbers in each section's f(x) ---- */
 
 /* in with `pi`, `e` and `y0` (*y0; y0 NULL: unknown, as after a bad previous section) written

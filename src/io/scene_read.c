@@ -77,12 +77,20 @@ static void keep_lines(const parse_ctx *c, zp_scene *sc) {
     sc->line_max_evals = c->key_bad[K_MAX_EVALS] ? 0 : c->key_line[K_MAX_EVALS];
 }
 
+/* whether key k must be given: [course]'s not where [cable] lays the course */
+static int required(const parse_ctx *c, int k) {
+    const zp_scene_key *key = &zp_scene_keys[k];
+    return key->dflt.how == D_REQUIRED && !(key->sec == S_COURSE && c->sec_line[S_CABLE]);
+}
+
 /* the second pass: raw values -> sc, key by key in the table's order (a required key that is
    absent reported, a special key by its own reader), then the rules joining keys */
 static void read_keys(parse_ctx *c, zp_scene *sc) {
+    sc->cable = c->sec_line[S_CABLE] != 0;
+    sc->line_cable = c->sec_line[S_CABLE];
     for (int k = 0; k < K_COUNT; k++) {
         const zp_scene_key *key = &zp_scene_keys[k];
-        if (!c->key_line[k] && key->dflt.how == D_REQUIRED) {
+        if (!c->key_line[k] && required(c, k)) {
             zp_scene_missing(c, k, key->dflt.text);
         } else if (key->read) {
             key->read(c, sc, k);

@@ -79,4 +79,5 @@ void zp_scene_rules(parse_ctx *c, zp_scene *sc) {
     margin_below_death(c, sc);
     row_count(c, sc);
     drag(c, sc);
+    zp_scene_cable_rules(c, sc);
 }

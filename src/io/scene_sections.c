@@ -228,6 +228,10 @@ void zp_scene_read_forces(parse_ctx *c, zp_scene *sc, int k) {
         return; /* the count they would set is unknown: one mistake, one message */
     }
     zp_schedule shape = zp_schedule_of_scene(sc), sched;
+    if (c->sec_line[S_CABLE]) { /* [cable] is read after [drive]: its sections counted here */
+        shape.nsec = zp_scene_cable_nsec(c);
+        shape.np = shape.nsec * (sc->drive_kind == ZP_SCHED_PROFILE ? sc->drive_knots : 1);
+    }
     if (zp_scene_parse_forces(c, &shape, &sched) > 0) {
         zp_scene_set_forces(sc, &sched);
     }

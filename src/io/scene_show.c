@@ -97,6 +97,20 @@ static int hand_text(const zp_scene *sc, int k, char *out, size_t cap) {
     case K_DAMPING_RANGE:
         list(out, cap, at, 2);
         return 1;
+    case K_CABLE_START:
+    case K_CABLE_END:
+        list(out, cap, at, 2);
+        return 1;
+    case K_CABLE_SECTIONS:
+        list(out, cap, sc->x_end, sc->nsec);
+        return 1;
+    case K_CABLE_EA:
+        if (sc->cable_ea > 0) {
+            number(out, cap, sc->cable_ea);
+        } else {
+            snprintf(out, cap, "inextensible");
+        }
+        return 1;
     case K_G_LINKS:
     case K_SCALE_LINKS:
         links(out, cap, *(const unsigned *)at, sc->nlink);
@@ -157,6 +171,9 @@ int zp_scene_print_added(const zp_scene *sc, FILE *f, const char *indent) {
         if (optional && !any) {
             fprintf(f, "%s[%s]: none given, all off\n", indent, zp_scene_keys_sections[s].name);
             continue;
+        }
+        if (s == S_COURSE && sc->cable) {
+            continue; /* the cable lays the course */
         }
         for (int k = 0; k < K_COUNT; k++) {
             if (zp_scene_keys[k].sec == s && !(zp_scene_given(sc, k))) {
