@@ -12,20 +12,6 @@
 #define GROW_CAP 4.0   /* factors past this are not searched: "holds beyond 4x" */
 #define BISECT_ITER 14 /* a share of 1e-4 of the bracket */
 
-void zp_box_widen(const zp_box *b, double f, zp_box *out) {
-    *out = *b;
-    out->force_error = f * b->force_error;
-    for (int q = 0; q < 4; q++) {
-        for (int e = 0; e < 2; e++) {
-            out->range[q][e] = 1 + f * (b->range[q][e] - 1);
-        }
-    }
-    out->theta_max = f * b->theta_max;
-    for (int e = 0; e < 2; e++) {
-        out->wind[e] = b->wind0 + f * (b->wind[e] - b->wind0);
-    }
-}
-
 /* the lines: the force, the four factors (mass, length, trolley, damping), the start angles,
    the wind, then the whole box */
 enum { LINE_FORCE = 0, LINE_THETA = 5, LINE_WIND = 6, LINE_BOX = 7 };

@@ -4,11 +4,28 @@
 #ifndef ZP_HEADROOM_H
 #define ZP_HEADROOM_H
 
-#include "robust.h"
+#include "box.h"
+#include "objective.h"
 
-/* b widened by factor f about the nominal: force error and start angle times f, each range
-   [lo, hi] to [1 + f (lo - 1), 1 + f (hi - 1)], the wind's about the nominal wind. */
-void zp_box_widen(const zp_box *b, double f, zp_box *out);
+/* How far past the stated box the answer still holds (headroom.c): per range and for the box
+   as a whole, along the worst direction found, as a factor on the stated range about the
+   nominal. */
+enum { ZP_HEADROOM_LINES = 8 }; /* force, mass, length, trolley, damping, start angle, wind; the
+                                   box */
+typedef struct zp_headroom_line {
+    int range;      /* 0..6 the range in that order, 7 the whole box; -1: not varied */
+    double holds;   /* the largest factor found holding (bisected; 0: even the nominal breaks) */
+    double breaks;  /* the first factor found breaking; INFINITY: none up to the search's cap */
+    char limited_by[32]; /* what breaks there: died, stalled, margin, a [limits] key */
+    double alive;   /* the largest factor found at which the rider still finishes alive */
+    double dies;    /* the first factor found where not; INFINITY: none up to the cap */
+    char ends_by[32]; /* how the ride ends there: died, stalled */
+} zp_headroom_line;
+typedef struct zp_headroom {
+    double safety_factor;                 /* the box held: the stated one widened this much */
+    zp_headroom_line line[ZP_HEADROOM_LINES];
+} zp_headroom;
+
 /* The headroom of the schedule of parameters p in the stated box b along the direction from
    the nominal to the scenario at wu, a point of the held box `hold` (the adversary's worst;
    NULL: every varied quantity at its upper end): for each varied range alone and for the whole

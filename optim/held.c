@@ -7,6 +7,7 @@
 #include <stdlib.h>
 
 #include "pool.h"
+#include "scen_set.h"
 #include "state.h"
 
 #define DEG (180.0 / M_PI)

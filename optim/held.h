@@ -4,7 +4,8 @@
 #ifndef ZP_HELD_H
 #define ZP_HELD_H
 
-#include "robust.h"
+#include "box.h"
+#include "objective.h"
 
 typedef struct zp_held {
     int runs;                /* the nominal scene, the set's scenarios and the adversary's worst */

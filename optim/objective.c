@@ -6,7 +6,6 @@
 
 #include <math.h>
 
-#include "robust.h"
 
 #define DEG (180.0 / M_PI)
 /* deg kept below the limit besides the margin, so that the margin also holds when the run is

@@ -35,6 +35,23 @@ typedef struct zp_objective {
                           and the set's scenarios run (a throughput: the line's slowest rider) */
 } zp_objective;
 
+/* The scenarios every candidate is held to, with their derived models and starts (built,
+   grown and ordered by scen_set.h). */
+typedef struct zp_scen_set {
+    int n, cap;
+    int ncorner;       /* the first ncorner are corners of the box */
+    double *u;         /* owned, cap x ZP_BOX_MAX: each scenario's point */
+    zp_scenario *sc;   /* owned, cap */
+    zp_model *m;       /* owned, cap: sharing the nominal model's course */
+    zp_chain *start;   /* owned, cap */
+    int *order;        /* owned, n: the order of evaluation, worst first */
+    long *fails;       /* owned, cap: candidates each scenario stopped, for the order */
+    zp_objective *judge; /* owned, cap, or NULL (every scenario judged by the search's
+                            objective): scenario j's own criteria (limit, t_max, [limits]) where
+                            zp_scen_set_add_model gave one, judge[j].m == NULL where not */
+    long runs;         /* scenario simulations so far (the search counts candidates) */
+} zp_scen_set;
+
 /* How many parameters the search varies: ob->shape's, or one force per section. */
 static inline int zp_objective_nparams(const zp_objective *ob) {
     return ob->shape ? ob->shape->np : ob->m->nsec;

@@ -20,221 +20,11 @@
 #include "estimate.h"
 
 #define DEG (180.0 / M_PI)
-#define SOBOL_MAX_DIM 40     /* gsl_qrng_sobol's largest dimension */
 #define ADV_POINTS 128       /* random points of the adversary's first look */
 #define ADV_POLISH 2         /* of them, the worst polished locally */
 #define ADV_EVALS 60         /* simulations per polish */
-#define STREAM_SET 0x5e7u    /* seeds of the set's shift and the adversary: streams apart from */
-#define STREAM_ADV 0xad5u    /* each other and from ZP_ROBUST_STREAM_VERIFY */
-
-void zp_box_from_scene(const zp_scene *sc, const zp_model *m, zp_box *b) {
-    memset(b, 0, sizeof *b);
-    b->nlink = m->nlink;
-    if (sc->force_error > 0) {
-        b->nforce = m->nsec;
-        b->force_error = sc->force_error / 100;
-        b->d = m->nsec;
-    }
-    const double *ranges[4] = {sc->mass_range, sc->length_range, sc->trolley_mass_range,
-                               sc->damping_range};
-    for (int q = 0; q < 4; q++) {
-        b->dim[q] = -1;
-        if (ranges[q][0] != 100 || ranges[q][1] != 100) {
-            b->dim[q] = b->d++;
-            b->range[q][0] = ranges[q][0] / 100;
-            b->range[q][1] = ranges[q][1] / 100;
-        }
-    }
-    b->theta0 = -1;
-    if (sc->start_angle > 0) {
-        b->theta0 = b->d;
-        b->theta_max = sc->start_angle / DEG;
-        b->d += m->nlink;
-    }
-    b->wind_dim = -1;
-    b->wind0 = m->wind;
-    if (sc->wind_varied) {
-        b->wind_dim = b->d++;
-        b->wind[0] = sc->wind_range[0];
-        b->wind[1] = sc->wind_range[1];
-    }
-}
-
-void zp_box_scenario(const zp_box *b, const double *u, zp_scenario *s) {
-    zp_scenario_nominal(s);
-    for (int k = 0; k < b->nforce; k++) {
-        s->force[k] = 1 + b->force_error * u[k];
-    }
-    double *fac[4] = {&s->mass, &s->length, &s->trolley, &s->damping};
-    for (int q = 0; q < 4; q++) {
-        if (b->dim[q] >= 0) {
-            double w = 0.5 * (u[b->dim[q]] + 1);
-            *fac[q] = b->range[q][0] + w * (b->range[q][1] - b->range[q][0]);
-        }
-    }
-    for (int i = 0; b->theta0 >= 0 && i < b->nlink; i++) {
-        s->theta[i] = b->theta_max * u[b->theta0 + i];
-    }
-    if (b->wind_dim >= 0) {
-        s->wind_set = 1;
-        s->wind = b->wind[0] + 0.5 * (u[b->wind_dim] + 1) * (b->wind[1] - b->wind[0]);
-    }
-}
-
-void zp_scen_set_free(zp_scen_set *set) {
-    free(set->u);
-    free(set->sc);
-    free(set->m);
-    free(set->start);
-    free(set->order);
-    free(set->fails);
-    free(set->judge);
-    memset(set, 0, sizeof *set);
-}
-
-static int grow(zp_scen_set *set) {
-    int cap = set->cap ? 2 * set->cap : 64;
-    double *u = realloc(set->u, sizeof *u * ZP_BOX_MAX * cap);
-    set->u = u ? u : set->u;
-    zp_scenario *sc = realloc(set->sc, sizeof *sc * cap);
-    set->sc = sc ? sc : set->sc;
-    zp_model *m = realloc(set->m, sizeof *m * cap);
-    set->m = m ? m : set->m;
-    zp_chain *st = realloc(set->start, sizeof *st * cap);
-    set->start = st ? st : set->start;
-    int *order = realloc(set->order, sizeof *order * cap);
-    set->order = order ? order : set->order;
-    long *fails = realloc(set->fails, sizeof *fails * cap);
-    set->fails = fails ? fails : set->fails;
-    zp_objective *judge = set->judge ? realloc(set->judge, sizeof *judge * cap) : NULL;
-    set->judge = judge ? judge : set->judge;
-    if (!u || !sc || !m || !st || !order || !fails || (set->judge && !judge)) {
-        return -1;
-    }
-    set->cap = cap;
-    return 0;
-}
-
-zp_status zp_scen_set_add(zp_scen_set *set, const zp_box *b, const zp_model *nom,
-                          const double *u) {
-    if (set->n == set->cap && grow(set)) {
-        return ZP_ERR_NOMEM;
-    }
-    int j = set->n++;
-    memcpy(set->u + (size_t)j * ZP_BOX_MAX, u, sizeof *u * b->d);
-    zp_box_scenario(b, u, &set->sc[j]);
-    zp_scenario_model(nom, &set->sc[j], &set->m[j]);
-    zp_chain c0;
-    zp_state_start(nom, nom->course, &c0);
-    zp_scenario_start(&c0, nom->nlink, &set->sc[j], &set->start[j]);
-    /* a new scenario is the adversary's worst: it goes first */
-    memmove(set->order + 1, set->order, sizeof *set->order * j);
-    set->order[0] = j;
-    set->fails[j] = 0;
-    if (set->judge) {
-        set->judge[j] = (zp_objective){0}; /* the search's objective */
-    }
-    return ZP_OK;
-}
-
-zp_status zp_scen_set_add_model(zp_scen_set *set, const zp_model *m, const zp_scenario *sc,
-                                const zp_chain *start, const zp_objective *judge) {
-    if (set->n == set->cap && grow(set)) {
-        return ZP_ERR_NOMEM;
-    }
-    if (judge && !set->judge) {
-        /* the scenarios so far keep the search's objective: theirs is marked by m == NULL */
-        set->judge = calloc((size_t)set->cap, sizeof *set->judge);
-        if (!set->judge) {
-            return ZP_ERR_NOMEM;
-        }
-    }
-    int j = set->n++;
-    memset(set->u + (size_t)j * ZP_BOX_MAX, 0, sizeof *set->u * ZP_BOX_MAX);
-    set->sc[j] = *sc;
-    set->m[j] = *m;
-    if (start) {
-        set->start[j] = *start;
-    } else {
-        zp_chain c0;
-        zp_state_start(m, m->course, &c0);
-        zp_scenario_start(&c0, m->nlink, sc, &set->start[j]);
-    }
-    set->order[j] = j; /* in the order given */
-    set->fails[j] = 0;
-    if (set->judge) {
-        set->judge[j] = judge ? *judge : (zp_objective){0};
-        set->judge[j].set = NULL;
-    }
-    return ZP_OK;
-}
-
-/* corner i of the box: coordinate c at -1 or +1 by bit c of i */
-static void corner(int d, unsigned long i, double *u) {
-    for (int c = 0; c < d; c++) {
-        u[c] = (i >> c) & 1 ? 1 : -1;
-    }
-}
-
-zp_status zp_scen_set_build(zp_scen_set *set, const zp_box *b, const zp_model *nom, int samples,
-                            unsigned long seed) {
-    memset(set, 0, sizeof *set);
-    if (b->d == 0) {
-        return ZP_OK;
-    }
-    gsl_qrng *q = gsl_qrng_alloc(b->d <= SOBOL_MAX_DIM ? gsl_qrng_sobol : gsl_qrng_halton, b->d);
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    if (!q || !rng) {
-        gsl_qrng_free(q);
-        gsl_rng_free(rng);
-        return ZP_ERR_NOMEM;
-    }
-    gsl_rng_set(rng, seed ^ STREAM_SET);
-    double shift[ZP_BOX_MAX], p[ZP_BOX_MAX], u[ZP_BOX_MAX];
-    for (int c = 0; c < b->d; c++) {
-        shift[c] = gsl_rng_uniform(rng);
-    }
-    int all = b->d < 30 && (1L << b->d) <= samples;
-    int ncorner = all ? (int)(1L << b->d) : samples / 2;
-    zp_status st = ZP_OK;
-    gsl_qrng_get(q, p); /* the first point is the origin: skipped */
-    for (int i = 0; i < samples && !st; i++) {
-        if (i < ncorner && all) {
-            corner(b->d, (unsigned long)i, u);
-        } else {
-            gsl_qrng_get(q, p);
-            for (int c = 0; c < b->d; c++) {
-                double w = fmod(p[c] + shift[c], 1.0);
-                u[c] = i < ncorner ? (w < 0.5 ? -1 : 1) : 2 * w - 1;
-            }
-        }
-        st = zp_scen_set_add(set, b, nom, u);
-    }
-    /* the corners first, in the order they were made */
-    for (int i = 0; i < set->n; i++) {
-        set->order[i] = i;
-    }
-    set->ncorner = ncorner < set->n ? ncorner : set->n;
-    gsl_qrng_free(q);
-    gsl_rng_free(rng);
-    return st;
-}
-
-/* scenario i goes before j: more fails, then the lower index */
-static int before(const zp_scen_set *set, int i, int j) {
-    return set->fails[i] != set->fails[j] ? set->fails[i] > set->fails[j] : i < j;
-}
-
-void zp_scen_set_reorder(zp_scen_set *set) {
-    /* insertion sort: a few hundred scenarios at most, between searches */
-    for (int a = 1; a < set->n; a++) {
-        int v = set->order[a], b = a;
-        for (; b > 0 && before(set, v, set->order[b - 1]); b--) {
-            set->order[b] = set->order[b - 1];
-        }
-        set->order[b] = v;
-    }
-}
+#define STREAM_ADV 0xad5u    /* the adversary's seeds: a stream apart from the set's shift
+                                (scen_set.c) and from ZP_ROBUST_STREAM_VERIFY */
 
 static double beta_excess(double p, void *params) {
     const double *a = params; /* k, n - k + 1, alpha */
@@ -243,7 +33,7 @@ static double beta_excess(double p, void *params) {
 
 /* the root of I_p(k, n - k + 1) = alpha by Brent's method: gsl_cdf_beta_Pinv fails to converge
    for large n with k near n (e.g. 1943 of 2000), while the distribution itself stays accurate */
-double zp_clopper_pearson_lower(int k, int n, double alpha) {
+double zp_robust_clopper_pearson_lower(int k, int n, double alpha) {
     if (k <= 0) {
         return 0;
     }
@@ -544,7 +334,7 @@ zp_status zp_robust_verify_each(const zp_objective *ob, const zp_box *b, const z
     /* two ends were kept as the largest of -value: back to the value */
     c->fastest.value = -c->fastest.value;
     c->arrival_low.value = -c->arrival_low.value;
-    c->lower_95 = zp_clopper_pearson_lower(c->all_kept, n, 0.05);
+    c->lower_95 = zp_robust_clopper_pearson_lower(c->all_kept, n, 0.05);
     if (each && !st) {
         memcpy(each, pw, sizeof *pw * (size_t)n);
     }

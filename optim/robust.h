@@ -4,83 +4,12 @@
 #ifndef ZP_ROBUST_H
 #define ZP_ROBUST_H
 
+#include "headroom.h"
+#include "scen_set.h"
 #include "search.h"
 #include "spread.h"
 
-/* The [robust] ranges as a box [-1, 1]^d: one coordinate per varied quantity. */
-typedef struct zp_box {
-    int d;
-    int nforce;           /* sections with a force coordinate (the first nforce), 0: none */
-    double force_error;   /* share, u = 1 scales a force by 1 + force_error */
-    int dim[4];           /* coordinate of mass, length, trolley, damping; -1: not varied */
-    double range[4][2];   /* their factors at u = -1 and u = +1 */
-    int theta0;           /* first start-angle coordinate (one per link), -1: none */
-    double theta_max;     /* rad */
-    int nlink;
-    int wind_dim;         /* coordinate of the wind, -1: not varied */
-    double wind[2];       /* m/s at u = -1 and u = +1 */
-    double wind0;         /* m/s, the nominal wind ([physics] wind) */
-} zp_box;
-
-void zp_box_from_scene(const zp_scene *sc, const zp_model *m, zp_box *b);
-/* The scenario at u (d coordinates in [-1, 1]). */
-void zp_box_scenario(const zp_box *b, const double *u, zp_scenario *s);
-
-/* The scenarios every candidate is held to, with their derived models and starts. */
-typedef struct zp_scen_set {
-    int n, cap;
-    int ncorner;       /* the first ncorner are corners of the box */
-    double *u;         /* owned, cap x ZP_BOX_MAX: each scenario's point */
-    zp_scenario *sc;   /* owned, cap */
-    zp_model *m;       /* owned, cap: sharing the nominal model's course */
-    zp_chain *start;   /* owned, cap */
-    int *order;        /* owned, n: the order of evaluation, worst first */
-    long *fails;       /* owned, cap: candidates each scenario stopped, for the order */
-    zp_objective *judge; /* owned, cap, or NULL (every scenario judged by the search's
-                            objective): scenario j's own criteria (limit, t_max, [limits]) where
-                            zp_scen_set_add_model gave one, judge[j].m == NULL where not */
-    long runs;         /* scenario simulations so far (the search counts candidates) */
-} zp_scen_set;
-
 #define ZP_ROBUST_STREAM_VERIFY 0x7e1fUL
-#define ZP_BOX_MAX (ZP_MAX_SECTIONS + 5 + ZP_MAX_LINKS)
-
-/* samples scenarios of b around nom: every corner when 2^d fits in samples (else samples/2
-   corners picked by quasi-random signs), then Sobol (Halton past 40 coordinates) points
-   shifted by a seeded random vector. ZP_OK or ZP_ERR_NOMEM. */
-zp_status zp_scen_set_build(zp_scen_set *set, const zp_box *b, const zp_model *nom, int samples,
-                            unsigned long seed);
-zp_status zp_scen_set_add(zp_scen_set *set, const zp_box *b, const zp_model *nom,
-                          const double *u);
-/* Adds the scenario sc (its force factors) on the model m itself, borrowed and copied as a
-   struct (it must outlive the set and run on workspaces of the search's nominal model: the
-   same links, sections, course and effects), from start (NULL: m's own docs/model.md start turned
-   to sc's angles), judged by judge (copied; NULL: the search's objective). ZP_OK or
-   ZP_ERR_NOMEM. */
-zp_status zp_scen_set_add_model(zp_scen_set *set, const zp_model *m, const zp_scenario *sc,
-                                const zp_chain *start, const zp_objective *judge);
-/* Sorts the order by the scenarios' fail counts so far (most first; ties by index). */
-void zp_scen_set_reorder(zp_scen_set *set);
-void zp_scen_set_free(zp_scen_set *set);
-
-/* How far past the stated box the answer still holds (headroom.c): per range and for the box
-   as a whole, along the worst direction found, as a factor on the stated range about the
-   nominal. */
-enum { ZP_HEADROOM_LINES = 8 }; /* force, mass, length, trolley, damping, start angle, wind; the
-                                   box */
-typedef struct zp_headroom_line {
-    int range;      /* 0..6 the range in that order, 7 the whole box; -1: not varied */
-    double holds;   /* the largest factor found holding (bisected; 0: even the nominal breaks) */
-    double breaks;  /* the first factor found breaking; INFINITY: none up to the search's cap */
-    char limited_by[32]; /* what breaks there: died, stalled, margin, a [limits] key */
-    double alive;   /* the largest factor found at which the rider still finishes alive */
-    double dies;    /* the first factor found where not; INFINITY: none up to the cap */
-    char ends_by[32]; /* how the ride ends there: died, stalled */
-} zp_headroom_line;
-typedef struct zp_headroom {
-    double safety_factor;                 /* the box held: the stated one widened this much */
-    zp_headroom_line line[ZP_HEADROOM_LINES];
-} zp_headroom;
 
 /* One end of the spread over the fresh scenarios: its value and the scenario that gives it. */
 typedef struct zp_spread_end {
@@ -107,19 +36,6 @@ typedef struct zp_robust_check {
        (s), lowest and highest arrival speed (km/h) */
     zp_spread_end fastest, slowest, arrival_low, arrival_high;
 } zp_robust_check;
-
-/* The worst scenario found for a schedule, and what limited it. */
-typedef struct zp_robust_worst {
-    double u[ZP_BOX_MAX];
-    double cons;      /* deg, the constraint there (> 0: broken) */
-    double margin_deg;
-    int outcome;      /* zp_outcome */
-    int joint;        /* 1-based joint with the largest angle */
-    int limit;        /* zp_limit_id with the largest excess, -1: none set */
-    double excess;    /* that excess, reached / limit - 1 (> 0: broken; -1: none set) */
-    double time;      /* s: finish, death or stall */
-    double arrival_kmh; /* km/h at the finish, 0 when it does not finish */
-} zp_robust_worst;
 
 typedef struct zp_robust_info {
     int rounds;        /* rounds run (1 + scenarios added by the adversary) */
@@ -186,6 +102,6 @@ void zp_robust_release(const zp_spread *sp);
 void zp_robust_problem_free(zp_robust_problem *p);
 
 /* The one-sided 95 % Clopper-Pearson lower bound of a probability with k successes in n. */
-double zp_clopper_pearson_lower(int k, int n, double alpha);
+double zp_robust_clopper_pearson_lower(int k, int n, double alpha);
 
 #endif
