@@ -32,9 +32,10 @@ typedef struct grad_run {
 
 /* design note: a sensitivity run integrates the state with one copy per parameter, at the
    steps its error test on them all asks for, so it is charged as the integrator's work on
-   1 + np copies: its rate evaluations over the plain run's at the same point, times 1 + np.
-   Measured against wall time (bench/polish_compare) this is within a factor of about 3 either
-   way; docs/search.md gives both counts */
+   1 + np copies: its integrator's rate evaluations over the plain run's at the same point,
+   times 1 + np. Against wall time (bench/polish_compare: a sensitivity run takes 20-60 plain
+   runs' time) this overstates the cost by 1.6-3.2x on seed, multi4 and multi8; docs/search.md
+   gives both counts */
 static long sens_charge(const zp_sens_result *sr, const zp_result *plain) {
     long base = plain->rhs_evals > 0 ? plain->rhs_evals : 1;
     return 1 + (sr->rhs_evals * (1 + sr->np) - 1) / base;
