@@ -1,8 +1,9 @@
 /* The polish alone, derivative-free (COBYLA) against the gradient polish (SLSQP with the
-   sensitivities), from the same start: the best constant push the default search found (its
-   scan.s), and the default search's answer with its pushes 5 % less. For each, the simulations (sensitivity runs charged as the search charges them) and
-   the wall time to reach the better of the two answers within 1e-6 relative, and where each
-   ended; and what a sensitivity run costs in plain runs, measured on the start.
+   sensitivities), from the same starts: the best constant push of the default search's scan,
+   and the default search's answer with its pushes 5 % less. For each, the simulations
+   (sensitivity runs charged as the search charges them) to reach the better survivable end of
+   the two within 1e-6 relative, where each ended and its wall time; and what a sensitivity run
+   costs in plain runs' wall time, measured at the start.
    Usage: polish_compare SCENE.ini...   (prints a markdown table) */
 #include <math.h>
 #include <stdio.h>
