@@ -11,8 +11,7 @@
 #define XTOL 1e-3      /* N: the parameters' resolution */
 #define DIAG_XTOL 1e-6 /* share of the box: the resolution of the one variable of the pushes */
 
-/* the parameters of the leg's point x, inside the box */
-static void to_params(const zp_leg *leg, const double *x, double *f) {
+void zp_leg_params(const zp_leg *leg, const double *x, double *f) {
     const zp_search_state *S = leg->S;
     for (int k = 0; k < S->n; k++) {
         double v = leg->diag ? S->lo[k] + (S->hi[k] - S->lo[k]) * x[0] : x[k];
@@ -30,7 +29,7 @@ const zp_eval *zp_leg_eval(zp_leg *leg, const double *x) {
         return NULL;
     }
     double f[ZP_SCHED_MAX_PARAMS];
-    to_params(leg, x, f);
+    zp_leg_params(leg, x, f);
     zp_search_state_eval(S, leg->sim, leg->r, f, &leg->e);
     memcpy(leg->key, x, sizeof *x * leg->nx);
     leg->have = 1;
@@ -47,6 +46,12 @@ const zp_eval *zp_leg_eval(zp_leg *leg, const double *x) {
         zp_search_state_add(S, f, &leg->e);
     }
     return &leg->e;
+}
+
+int zp_leg_charge(zp_leg *leg, long runs) {
+    int fits = leg->n + runs <= leg->budget;
+    leg->n = fits ? leg->n + runs : leg->budget;
+    return fits && !zp_search_state_stopped(leg->S) ? 0 : -1;
 }
 
 /* the leg of job j with the given budget: its variables, their bounds and its start */

@@ -52,6 +52,13 @@ typedef struct zp_leg {
    of it there; NULL when the leg must stop: its budget is spent or the search stopped. */
 const zp_eval *zp_leg_eval(zp_leg *leg, const double *x);
 
+/* the parameters f (S->n) of the leg's variables x, inside the box */
+void zp_leg_params(const zp_leg *leg, const double *x, double *f);
+/* runs a strategy spent beside zp_leg_eval's (a sensitivity run, charged as the plain runs it
+   costs) into the leg's count, as many as its budget holds: 0, or -1 when they did not all fit
+   or the search stopped (the leg must stop) */
+int zp_leg_charge(zp_leg *leg, long runs);
+
 /* runs leg to its end on the calling thread; how: what the caller passed with it */
 typedef void (*zp_leg_run)(const void *how, zp_leg *leg);
 

@@ -26,6 +26,7 @@ void zp_search_state_begin(zp_search_state *S, const zp_objective *ob, const dou
 
 zp_status zp_search_state_start(zp_search_state *S, const zp_sim_opts *so, char *err,
                                 size_t errlen) {
+    S->so = so;
     S->pool = zp_pool_create(S->ob->m, so, S->o->nthreads);
     if (!S->pool || (S->ob->set && zp_pool_help(S->pool, S->ob->m, so))) {
         snprintf(err, errlen, "out of memory creating the search's workspaces");

@@ -23,6 +23,7 @@ typedef struct zp_archive {
 typedef struct zp_search_state {
     const zp_objective *ob;
     const zp_search_opts *o;
+    const zp_sim_opts *so; /* borrowed: the runs' options, for a strategy's runs of its own */
     int n;                 /* parameters */
     const double *lo, *hi; /* borrowed, n */
     zp_pool *pool;         /* owned */

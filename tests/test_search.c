@@ -175,5 +175,37 @@ int main(void) {
             zp_model_free(m);
         }
     }
+    /* the gradient polish on the seed: it polishes, the same bits on 1 and 2 threads, its
+       answer survivable; and it refuses constraints without gradients, saying which */
+    {
+        zp_scene_seed(&sc);
+        sc.max_evals = 2000;
+        zp_diag d;
+        zp_diag_init(&d);
+        zp_model *m = zp_model_build(&sc, &d);
+        zp_sim_opts o = tu_opts(&sc, sc.rtol);
+        o.atol = sc.atol;
+        zp_objective ob = tu_objective(m, &sc, &o);
+        int a = zp_search_algo_find("scan-slsqp");
+        CHECK(a >= 0);
+        search_with(&ob, &o, &sc, a, 2, &res);
+        search_with(&ob, &o, &sc, a, 1, &res2);
+        CHECK(res.nstarts > 0 && res.found && zp_objective_feasible(&res.best));
+        CHECK(!memcmp(res.force, res2.force, sizeof res.force));
+        CHECK(res.evals == res2.evals && res.best.time == res2.best.time);
+        CHECK(res.evals <= sc.max_evals);
+        zp_objective held = ob;
+        held.lim.max[0] = 5;
+        zp_search_opts so = {.algo = a, .max_evals = sc.max_evals, .seed = sc.seed};
+        char err[256] = "";
+        double lo[ZP_MAX_SECTIONS], hi[ZP_MAX_SECTIONS];
+        for (int k = 0; k < sc.nsec; k++) {
+            lo[k] = sc.force_min;
+            hi[k] = sc.force_max;
+        }
+        CHECK(zp_search_run(&held, &o, lo, hi, &so, &res, err, sizeof err) == ZP_ERR_INPUT);
+        CHECK(strstr(err, "[limits]") != NULL);
+        zp_model_free(m);
+    }
     return CHECK_DONE();
 }
