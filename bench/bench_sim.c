@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "scene_read.h"
+#include "scene_load.h"
 #include "sim.h"
 
 static int cmp_double(const void *a, const void *b) {
@@ -47,7 +47,7 @@ int main(int argc, char **argv) {
     }
     gsl_set_error_handler_off();
     zp_scene sc;
-    zp_scene_seed(&sc);
+    zp_scene_load_seed(&sc);
     zp_diag d;
     zp_diag_init(&d);
     zp_model *m = zp_model_build(&sc, &d);
@@ -55,7 +55,7 @@ int main(int argc, char **argv) {
     if (!m || !wall) {
         return 1;
     }
-    zp_schedule shape = zp_schedule_of_scene(&sc);
+    zp_schedule shape = zp_drive_of_scene(&sc);
     zp_schedule sched = zp_drive_constant(&shape, force);
     zp_input in = {.sched = &sched};
     zp_result r;

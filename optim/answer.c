@@ -50,7 +50,7 @@ static int holds(const zp_problem *p, const zp_verify *v, char *why, size_t n) {
                  zp_model_angle_used(p->m, v->run->max_rel_angle) * 180 / M_PI,
                  p->limit * 180 / M_PI);
     } else if (b == ZP_BREAKS_LIMIT) {
-        snprintf(why, n, "rerun with [solver] it breaks [limits] %s", zp_limit_name(which));
+        snprintf(why, n, "rerun with [solver] it breaks [limits] %s", zp_limits_name(which));
     } else if (!v->agree) {
         snprintf(why, n, "it is not verified at the tighter tolerance (rtol %.0e)", v->rtol);
     } else {

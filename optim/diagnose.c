@@ -8,7 +8,7 @@
 
 const char *zp_diagnose_kind_name(int k) {
     static const char *const fixed[ZP_FAIL_LIMIT] = {"died", "stalled", "margin"};
-    return k < ZP_FAIL_LIMIT ? fixed[k] : zp_limit_name(k - ZP_FAIL_LIMIT);
+    return k < ZP_FAIL_LIMIT ? fixed[k] : zp_limits_name(k - ZP_FAIL_LIMIT);
 }
 
 const char *zp_diagnose_range_name(int r) {

@@ -11,7 +11,7 @@
 #include "events.h"
 #include "problem.h"
 #include "robust.h"
-#include "scene_read.h"
+#include "scene_load.h"
 #include "search.h"
 
 #define DEG (180.0 / M_PI)

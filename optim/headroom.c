@@ -141,7 +141,7 @@ static int holds_at(ray *ry, double f, char *why, size_t n) {
     }
     int which;
     if (zp_limits_any(&ry->ob->lim) && zp_limits_excess(&ry->ob->lim, &m, ry->r, &which) > 0) {
-        snprintf(why, n, "%s", zp_limit_name(which));
+        snprintf(why, n, "%s", zp_limits_name(which));
         return 0;
     }
     return 1;

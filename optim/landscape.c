@@ -18,7 +18,7 @@ typedef struct sweep {
 static void sweep_job(void *user, int k, zp_sim *s, zp_result *r) {
     const sweep *w = user;
     const zp_model *m = w->m;
-    zp_schedule sched = zp_schedule_with(w->shape, w->param + (size_t)k * w->shape->np);
+    zp_schedule sched = zp_drive_with(w->shape, w->param + (size_t)k * w->shape->np);
     zp_input in = {.sched = &sched};
     zp_landscape_point *p = &w->out[k];
     p->failed = zp_sim_run(m, s, &in, r) != ZP_OK;

@@ -62,9 +62,9 @@ double zp_objective_scenario_cons(const zp_objective *ob, const zp_eval *e) {
 
 zp_schedule zp_objective_schedule(const zp_objective *ob, const double *p) {
     if (ob->shape) {
-        return zp_schedule_with(ob->shape, p);
+        return zp_drive_with(ob->shape, p);
     }
-    return zp_schedule_sections(ob->m->nsec, p, -INFINITY, INFINITY);
+    return zp_drive_sections(ob->m->nsec, p, -INFINITY, INFINITY);
 }
 
 int zp_objective_eval_nominal(const zp_objective *ob, zp_sim *s, const zp_schedule *sched,

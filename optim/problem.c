@@ -50,7 +50,7 @@ int zp_problem_build(zp_problem *p, int flags, zp_diag *d) {
     p->m = zp_model_build(sc, d);
     zp_problem_profiles(p, flags, d);
     if (p->m) {
-        p->sched = zp_schedule_of_scene(sc);
+        p->sched = zp_drive_of_scene(sc);
         p->limit = p->m->phi_max - sc->margin * M_PI / 180;
         p->max_evals = sc->line_max_evals ? sc->max_evals : zp_search_default_budget(p->sched.np);
         p->seed = sc->seed;

@@ -164,7 +164,7 @@ void zp_report_breaks(const zp_problem *p, const zp_result *run, char *out, size
                                        [ZP_BREAKS_MARGIN] = "the margin"};
     int which;
     zp_breaks b = zp_problem_breaks(p, run, &which);
-    snprintf(out, cap, "%s", b == ZP_BREAKS_LIMIT ? zp_limit_name(which) : said[b]);
+    snprintf(out, cap, "%s", b == ZP_BREAKS_LIMIT ? zp_limits_name(which) : said[b]);
 }
 
 static void md_gains(FILE *f, const zp_answer *a) {
@@ -304,12 +304,12 @@ static void md_limits(FILE *f, const zp_answer *a) {
     zp_limits_reached(a->pb->m, run, v);
     fputs("\n## Limits\n\n| limit | reached | allowed | |\n|---|---|---|---|\n", f);
     for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
-        if (lim->max[i] > 0 && !zp_limit_reached_in(run, i)) {
-            fprintf(f, "| %s | not reached (did not arrive) | %g %s | |\n", zp_limit_name(i),
-                    lim->max[i], zp_limit_unit(i));
+        if (lim->max[i] > 0 && !zp_limits_reached_in(run, i)) {
+            fprintf(f, "| %s | not reached (did not arrive) | %g %s | |\n", zp_limits_name(i),
+                    lim->max[i], zp_limits_unit(i));
         } else if (lim->max[i] > 0) {
-            fprintf(f, "| %s | %.4g %s | %g %s | %s |\n", zp_limit_name(i), v[i],
-                    zp_limit_unit(i), lim->max[i], zp_limit_unit(i),
+            fprintf(f, "| %s | %.4g %s | %g %s | %s |\n", zp_limits_name(i), v[i],
+                    zp_limits_unit(i), lim->max[i], zp_limits_unit(i),
                     zp_limits_kept(i, v[i], lim->max[i]) ? "kept" : "**broken**");
         }
     }
@@ -475,7 +475,7 @@ static void md_survivable(FILE *f, const zp_answer *a) {
                 s.mass, s.length, s.trolley, s.damping, zp_sim_outcome_name(w->outcome),
                 w->margin_deg, w->joint);
         if (w->limit >= 0) {
-            fprintf(f, "; nearest limit %s at %+.1f %% of it", zp_limit_name(w->limit),
+            fprintf(f, "; nearest limit %s at %+.1f %% of it", zp_limits_name(w->limit),
                     100 * w->excess);
         }
         fprintf(f, " (%s).\n", w->cons > 0 ? "**broken**: the search ran out of rounds"

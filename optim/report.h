@@ -15,10 +15,10 @@ typedef struct zp_report_place {
 } zp_report_place;
 
 /* A schedule file: only [drive] forces (docs/scene-file.md), with comments saying what it is. */
-void zp_report_write_schedule(FILE *f, const zp_scene *sc, const zp_schedule *sched,
+void zp_checkpoint_write_schedule(FILE *f, const zp_scene *sc, const zp_schedule *sched,
                               const char *comment);
 /* summary.json's object: a solved to ZP_ANSWER_REPORTED. */
-void zp_report_write_json(FILE *f, const zp_answer *a);
+void zp_summary_write_json(FILE *f, const zp_answer *a);
 /* robust.headroom (docs/commands.md) as one JSON object: factor and limited_by for the whole box
    (null and "" when not searched), breaks_at, safety_factor, and ranges: per varied range. */
 void zp_summary_headroom_json(FILE *f, const zp_headroom *h);

@@ -43,8 +43,8 @@ void zp_report_diagnosis_md(FILE *f, const zp_diagnosis *d) {
     }
     for (int l = 0; l < ZP_LIMIT_COUNT; l++) {
         if (d->needed[l] > 0) {
-            fprintf(f, " %s of at least %.4g %s;", zp_limit_name(l), d->needed[l],
-                    zp_limit_unit(l));
+            fprintf(f, " %s of at least %.4g %s;", zp_limits_name(l), d->needed[l],
+                    zp_limits_unit(l));
         }
     }
     fputs(" or narrower ranges where the table shows the failures.\n", f);
@@ -77,7 +77,7 @@ void zp_report_diagnosis_json(FILE *f, const zp_diagnosis *d) {
     }
     for (int l = 0; l < ZP_LIMIT_COUNT; l++) {
         if (d->needed[l] > 0) {
-            fprintf(f, "%s\"%s\": %.17g", n++ ? ", " : "", zp_limit_name(l), d->needed[l]);
+            fprintf(f, "%s\"%s\": %.17g", n++ ? ", " : "", zp_limits_name(l), d->needed[l]);
         }
     }
     fputs("}}", f);

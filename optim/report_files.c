@@ -20,9 +20,9 @@ int zp_report_files_write(zp_tx *t, const zp_answer *a, const zp_report_place *w
              a->found ? "best schedule" : "CLOSEST CANDIDATE (nothing met the constraints)",
              a->res.interrupted ? " (interrupted)" : "", zp_sim_outcome_name(a->v.run->outcome),
              a->v.run->time);
-    zp_schedule best = zp_schedule_with(&p->sched, a->res.force);
-    zp_report_write_schedule(f[1], &p->sc, &best, note);
-    zp_report_write_json(f[2], a);
+    zp_schedule best = zp_drive_with(&p->sched, a->res.force);
+    zp_checkpoint_write_schedule(f[1], &p->sc, &best, note);
+    zp_summary_write_json(f[2], a);
     zp_out_csv_trajectory(f[3], p->m, zp_sim_rows(a->best));
     /* report.html: report.md as one page a person can share, its figures inside it */
     char title[300];

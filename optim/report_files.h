@@ -3,7 +3,7 @@
 #ifndef ZP_REPORT_FILES_H
 #define ZP_REPORT_FILES_H
 
-#include "out_file.h"
+#include "tx.h"
 #include "report.h"
 
 /* a's files (a solved to ZP_ANSWER_REPORTED, its files at w) into t; 0, or -1 with why in err. */

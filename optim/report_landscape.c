@@ -20,7 +20,7 @@ static const char *binding(const zp_landscape_point *p, double limit, const zp_l
     }
     int worst;
     double excess = zp_limits_excess_of(lim, p->reached, &worst);
-    return worst >= 0 && excess > 0 ? zp_limit_name(worst) : "";
+    return worst >= 0 && excess > 0 ? zp_limits_name(worst) : "";
 }
 
 /* the result columns' header: the outcome, then what the run reached of each limit set */
@@ -28,8 +28,8 @@ static void write_header(FILE *f, const zp_limits *lim) {
     fputs("outcome,stall_reason,time,x,died_link,max_rel_angle_deg,kept,binding", f);
     for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
         if (lim->max[i] > 0) {
-            fprintf(f, ",%s_reached_", zp_limit_name(i));
-            for (const char *u = zp_limit_unit(i); *u; u++) { /* km/h -> km_h: a plain name */
+            fprintf(f, ",%s_reached_", zp_limits_name(i));
+            for (const char *u = zp_limits_unit(i); *u; u++) { /* km/h -> km_h: a plain name */
                 fputc(*u == '/' || *u == ' ' ? '_' : *u, f);
             }
         }

@@ -7,7 +7,7 @@
 #include <stdio.h>
 
 #include "landscape.h"
-#include "out_file.h"
+#include "tx.h"
 
 /* A landscape that ran. */
 typedef struct zp_report_landscape {

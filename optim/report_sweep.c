@@ -235,7 +235,7 @@ static void script_heat(FILE *f, const zp_report_sweep *o, const char *c1, const
             c1, c2, dx, dy);
 }
 
-void zp_report_sweep_script(FILE *f, const zp_report_sweep *o) {
+static void zp_report_sweep_script(FILE *f, const zp_report_sweep *o) {
     tally t = count(o);
     char c1[64], c2[64], name[128];
     size_t k = 0;

@@ -7,7 +7,7 @@
 #include <stdio.h>
 
 #include "grid.h"
-#include "out_file.h"
+#include "tx.h"
 #include "sweep.h"
 
 /* The study's results: rows[s->npoint], every point done. */
@@ -24,8 +24,6 @@ typedef struct zp_report_sweep {
 void zp_report_sweep_summary(const zp_report_sweep *o, char *out, size_t cap);
 /* 1 when the study has a figure (one or two varied keys). */
 int zp_report_sweep_has_figure(const zp_report_sweep *o);
-/* sweep.gp: draws sweep.png from sweep.csv, infeasible and failed points marked. */
-void zp_report_sweep_script(FILE *f, const zp_report_sweep *o);
 /* summary.json: scene, run, keys varied, counts, fastest and slowest point, the grid schedule
    (null when not searched for), the summary. */
 void zp_report_sweep_json(FILE *f, const zp_report_sweep *o, const char *summary);

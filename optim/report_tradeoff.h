@@ -5,7 +5,7 @@
 
 #include <stdio.h>
 
-#include "out_file.h"
+#include "tx.h"
 #include "tradeoff.h"
 
 /* tradeoff.csv, tradeoff.gp and report.md of T's finished levels into t (incomplete when a

@@ -9,6 +9,12 @@
 
 #define PROGRESS_DT 0.25 /* s between progress reports */
 
+static double zp_search_state_since(const zp_search_state *S) {
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (t.tv_sec - S->t0.tv_sec) + 1e-9 * (t.tv_nsec - S->t0.tv_nsec);
+}
+
 void zp_search_state_begin(zp_search_state *S, const zp_objective *ob, const double *lo,
                            const double *hi, const zp_search_opts *o, zp_search_result *res) {
     memset(res, 0, sizeof *res);
@@ -50,11 +56,6 @@ void zp_search_state_end(zp_search_state *S) {
     free(S->a.e);
 }
 
-double zp_search_state_since(const zp_search_state *S) {
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (t.tv_sec - S->t0.tv_sec) + 1e-9 * (t.tv_nsec - S->t0.tv_nsec);
-}
 
 int zp_search_state_stopped(const zp_search_state *S) {
     return (S->o->stop && *S->o->stop) ||
@@ -124,7 +125,7 @@ int zp_search_state_distinct(const zp_search_state *S, const double *a, const do
     return 0;
 }
 
-void zp_search_state_report(zp_search_state *S, int improved) {
+static void zp_search_state_report(zp_search_state *S, int improved) {
     zp_search_result *res = S->res;
     double now = zp_search_state_since(S);
     if (!S->o->progress || (!improved && now - S->last_report < PROGRESS_DT)) {

@@ -48,7 +48,6 @@ zp_status zp_search_state_start(zp_search_state *S, const zp_sim_opts *so, char 
 /* how the search ended into res, and S freed */
 void zp_search_state_end(zp_search_state *S);
 
-double zp_search_state_since(const zp_search_state *S);
 /* stopped by the caller or by max_time: nothing more is run */
 int zp_search_state_stopped(const zp_search_state *S);
 /* stopped, or the budget is spent */
@@ -71,8 +70,6 @@ void zp_search_state_eval(zp_search_state *S, zp_sim *s, zp_result *r, const dou
 int zp_search_state_batch(zp_search_state *S, const double *pts, int npt);
 /* an improvement of the serial history, `at` simulations into the search */
 void zp_search_state_record(zp_search_state *S, long at, const zp_eval *e);
-/* the progress callback, now and then or on an improvement */
-void zp_search_state_report(zp_search_state *S, int improved);
 
 /* the result's baseline: the constant push f, evaluated e */
 void zp_search_state_base(zp_search_state *S, const double *f, const zp_eval *e);

@@ -53,7 +53,7 @@ static void fill(const zp_problem *p, const zp_result *r, zp_study_row *row) {
         int which;
         zp_breaks b = zp_problem_breaks(p, r, &which);
         snprintf(row->limit, sizeof row->limit, "%s",
-                 b == ZP_BREAKS_LIMIT ? zp_limit_name(which) : said[b]);
+                 b == ZP_BREAKS_LIMIT ? zp_limits_name(which) : said[b]);
         return;
     }
     int at_max = 0, at_min = 0;
@@ -71,7 +71,7 @@ static void fill(const zp_problem *p, const zp_result *r, zp_study_row *row) {
         if (p->lim.max[i] > 0 && row->reached[i] >= (1 - ACTIVE_REL_LIMIT) * p->lim.max[i]) {
             size_t n = strlen(row->limit);
             snprintf(row->limit + n, sizeof row->limit - n, "%s%s", n ? "+" : "",
-                     zp_limit_name(i));
+                     zp_limits_name(i));
         }
     }
     if (!row->limit[0]) {
@@ -131,7 +131,7 @@ static void run_simulate(const zp_problem *p, zp_study_row *row) {
 
 void zp_study_run(const zp_scene *sc, zp_study_kind kind, double max_time, zp_study_row *row) {
     memset(row, 0, sizeof *row);
-    row->np = zp_schedule_of_scene(sc).np;
+    row->np = zp_drive_of_scene(sc).np;
     zp_problem *p = malloc(sizeof *p); /* large: off the stack */
     zp_diag d;
     zp_diag_init(&d);

@@ -181,7 +181,7 @@ static void json_scenarios(FILE *f, const zp_answer *a) {
     fputs("}", f);
 }
 
-void zp_report_write_json(FILE *f, const zp_answer *a) {
+void zp_summary_write_json(FILE *f, const zp_answer *a) {
     const zp_search_result *s = &a->res;
     const zp_result *run = a->v.run;
     const zp_model *m = a->pb->m;

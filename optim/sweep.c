@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "scene_read.h"
+#include "scene_load.h"
 #include "sim_opts.h"
 
 #define TEXT -1 /* a key docs/scene-file.md knows whose value is not a number */
@@ -335,7 +335,7 @@ static char *set_key(const char *t, const zp_sweep_vary *v, double x, char *why,
     if (v->kind == ZP_VARY_SCALE) {
         double item[ZP_MAX_DRIVE_PARAMS]; /* the longest list a key holds: [drive] forces */
         char bad[200];
-        int n = found ? zp_scene_parse_list(val, item, ZP_MAX_DRIVE_PARAMS, bad, sizeof bad) : -1;
+        int n = found ? zp_scene_values_parse_list(val, item, ZP_MAX_DRIVE_PARAMS, bad, sizeof bad) : -1;
         if (n < 0) {
             snprintf(why, whylen, "[%s] %s: %s; a list key is varied by scaling its values",
                      v->section, v->key, found ? bad : "not in the scene, so nothing to scale");

@@ -12,7 +12,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "out_file.h"
+#include "tx.h"
 
 /* result columns before the forces: status .. evals (8), the limited quantities */
 #define NFIXED (8 + ZP_LIMIT_COUNT)
@@ -20,7 +20,7 @@
     16384 /* a row or grid line is shorter (a grid line of 10000 points:                           \
              twice 2500 hex digits, with 256 forces) */
 
-const char *zp_sweep_csv_limit_column(int i) {
+static const char *zp_sweep_csv_limit_column(int i) {
     static const char *const columns[ZP_LIMIT_COUNT] = {
         [ZP_LIMIT_G] = "peak_g", [ZP_LIMIT_JOINT] = "peak_joint_force_N",
         [ZP_LIMIT_ARRIVAL] = "arrival_kmh", [ZP_LIMIT_KINK_DV] = "max_kink_dv_m_s",
@@ -371,7 +371,7 @@ static char *read_fd(int fd, size_t *len) {
     return NULL;
 }
 
-zp_status zp_sweep_checkpoint_open(zp_sweep_checkpoint *c, int dirfd, const char *dir,
+zp_status zp_sweep_csv_checkpoint_open(zp_sweep_checkpoint *c, int dirfd, const char *dir,
                                    const zp_sweep *s, const char *base, int np, int resume,
                                    zp_study_row *rows, unsigned char *done, int *ndone,
                                    zp_grid_result *grid, int *grid_done, char *err, size_t errlen) {
@@ -444,19 +444,19 @@ static int push(zp_sweep_checkpoint *c) {
     return fflush(c->f) || fsync(fileno(c->f)) ? -1 : 0;
 }
 
-int zp_sweep_checkpoint_add(zp_sweep_checkpoint *c, const zp_sweep *s, int p,
+int zp_sweep_csv_checkpoint_add(zp_sweep_checkpoint *c, const zp_sweep *s, int p,
                             const zp_study_row *r) {
     zp_sweep_csv_row(c->f, s, p, r);
     return push(c);
 }
 
-int zp_sweep_checkpoint_add_grid(zp_sweep_checkpoint *c, const zp_sweep *s,
+int zp_sweep_csv_checkpoint_add_grid(zp_sweep_checkpoint *c, const zp_sweep *s,
                                  const zp_grid_result *g) {
     zp_sweep_csv_grid(c->f, g, s->npoint);
     return push(c);
 }
 
-void zp_sweep_checkpoint_close(zp_sweep_checkpoint *c, int remove_file) {
+void zp_sweep_csv_checkpoint_close(zp_sweep_checkpoint *c, int remove_file) {
     if (c->f) {
         fclose(c->f);
         c->f = NULL;

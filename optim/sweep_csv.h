@@ -8,8 +8,6 @@
 #include "grid.h"
 #include "sweep.h"
 
-/* The sweep.csv column of each [limits] quantity a row reports (peak_g, arrival_kmh, ...). */
-const char *zp_sweep_csv_limit_column(int i);
 /* The header line: point, the varied columns, then the result columns (F1..Fnp last but
    one, message last). */
 void zp_sweep_csv_header(FILE *f, const zp_sweep *s, int np);
@@ -37,17 +35,17 @@ typedef struct zp_sweep_checkpoint {
    torn last line (no newline, or not a row) is cut, and new rows follow; a checkpoint
    of another study is ZP_ERR_INPUT. Without resume (or with no checkpoint) it starts afresh.
    ZP_ERR_IO with why in err. */
-zp_status zp_sweep_checkpoint_open(zp_sweep_checkpoint *c, int dirfd, const char *dir,
+zp_status zp_sweep_csv_checkpoint_open(zp_sweep_checkpoint *c, int dirfd, const char *dir,
                                    const zp_sweep *s, const char *base, int np, int resume,
                                    zp_study_row *rows, unsigned char *done, int *ndone,
                                    zp_grid_result *grid, int *grid_done, char *err, size_t errlen);
 /* Appends point p's row and pushes it to the disk; 0, or -1 when it could not be written. */
-int zp_sweep_checkpoint_add(zp_sweep_checkpoint *c, const zp_sweep *s, int p,
+int zp_sweep_csv_checkpoint_add(zp_sweep_checkpoint *c, const zp_sweep *s, int p,
                             const zp_study_row *r);
 /* Appends the grid schedule's line and pushes it to the disk; 0 or -1. */
-int zp_sweep_checkpoint_add_grid(zp_sweep_checkpoint *c, const zp_sweep *s,
+int zp_sweep_csv_checkpoint_add_grid(zp_sweep_checkpoint *c, const zp_sweep *s,
                                  const zp_grid_result *g);
 /* Closes the file; remove = 1 also deletes it (the study's outputs hold every row). */
-void zp_sweep_checkpoint_close(zp_sweep_checkpoint *c, int remove_file);
+void zp_sweep_csv_checkpoint_close(zp_sweep_checkpoint *c, int remove_file);
 
 #endif

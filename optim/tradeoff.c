@@ -25,7 +25,7 @@ double zp_tradeoff_cost(const zp_tradeoff *T, int i) {
 static int arrival_of(const zp_tradeoff *T, int i, double *kmh, char *err, size_t errlen) {
     const zp_problem *su = T->su;
     zp_sim *s = zp_sim_create(su->m, &T->pb[i].search);
-    zp_schedule sched = zp_schedule_with(&T->pb[i].sched, T->L[i].force);
+    zp_schedule sched = zp_drive_with(&T->pb[i].sched, T->L[i].force);
     zp_input in = {.sched = &sched};
     static zp_result run;
     int bad = !s || zp_sim_run(su->m, s, &in, &run);

@@ -67,7 +67,7 @@ static void every_scene(void) {
         zp_sim_opts o = tu_opts(&sc, 1); /* tolerances replaced by the pick below */
         zp_sim_opts_from_scene(&sc, &o, &d);
         o.output_dt = 0;
-        zp_schedule sched = zp_schedule_of_scene(&sc);
+        zp_schedule sched = zp_drive_of_scene(&sc);
         check_met(m, o, &sched, REQUEST, de->d_name);
         zp_model_free(m);
         n++;

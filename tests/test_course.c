@@ -14,7 +14,7 @@
 #include "check.h"
 #include "course.h"
 #include "model.h"
-#include "scene_read.h"
+#include "scene_load.h"
 
 /* the derivatives are symbolic, so only round-off separates them from the closed forms */
 static double round_off(double v) {

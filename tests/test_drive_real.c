@@ -42,7 +42,7 @@ static void test_profile_force(void) {
 /* |F| <= P / |v| pushing and braking; no cap at rest or below it */
 static void test_cap(void) {
     const double f[2] = {400, -400};
-    zp_schedule s = zp_schedule_sections(2, f, -500, 500);
+    zp_schedule s = zp_drive_sections(2, f, -500, 500);
     s.power = 2000;
     CHECK(zp_drive_force(&s, &(zp_drive_state){0, 0, 0, 0}) == 400);
     CHECK(zp_drive_force(&s, &(zp_drive_state){0, 0, 4, 0}) == 400);
@@ -74,7 +74,7 @@ static zp_model *seed_with(const char *drive, zp_scene *sc) {
 static void test_one_knot(void) {
     zp_scene sa, sb;
     zp_model *ma = seed_with(seed_drive, &sa), *mb = seed_with(seed_drive_k1, &sb);
-    zp_schedule a = zp_schedule_of_scene(&sa), b = zp_schedule_of_scene(&sb);
+    zp_schedule a = zp_drive_of_scene(&sa), b = zp_drive_of_scene(&sb);
     CHECK(a.kind == ZP_SCHED_SECTIONS && b.kind == ZP_SCHED_PROFILE && a.np == 3 && b.np == 3);
     zp_sim_opts o = tu_opts(&sa, 1e-9);
     zp_result ra = *tu_run(ma, &o, &(zp_input){.sched = &a});
@@ -107,7 +107,7 @@ static void test_power_incline(void) {
                            "[drive]\ndirection = tangent\nforces = 2000\nmax = 5000\n"
                            "power = 5000\n[solver]\noutput_dt = 0.05\n",
                            &sc);
-    zp_schedule s = zp_schedule_of_scene(&sc);
+    zp_schedule s = zp_drive_of_scene(&sc);
     CHECK(s.power == P);
     zp_sim_opts o = tu_opts(&sc, 1e-11);
     o.output_dt = 0.05;
@@ -154,7 +154,7 @@ static void test_profile_energy(void) {
     zp_model *m = seed_with("[drive]\nkind = profile\nknots = 3\npower = 4000\n"
                             "forces = 50, 120, 300, 500, 400, 500, 500, 250, 0\n",
                             &sc);
-    zp_schedule s = zp_schedule_of_scene(&sc);
+    zp_schedule s = zp_drive_of_scene(&sc);
     zp_sim_opts o = tu_opts(&sc, 1e-10);
     const zp_result *r = tu_run(m, &o, &(zp_input){.sched = &s});
     CHECK(r->drive_peak_power <= 4000 * (1 + 1e-9) && r->drive_time_at_cap > 0);

@@ -10,7 +10,7 @@
 
 #include "check.h"
 #include "estimate.h"
-#include "scene_read.h"
+#include "scene_load.h"
 #include "testutil.h"
 
 /* the reference's own error, far below the errors compared here */

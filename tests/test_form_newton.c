@@ -312,7 +312,7 @@ static void check_runs(void) {
     zp_scene sc;
     zp_diag d;
     zp_diag_init(&d);
-    zp_scene_seed(&sc);
+    zp_scene_load_seed(&sc);
     zp_model *m = zp_model_build(&sc, &d);
     CHECK(m != NULL);
     if (!m) {

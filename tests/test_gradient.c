@@ -118,7 +118,7 @@ static void scene_path(const char *path, unsigned *seed) {
     }
     zp_sim_opts o = tu_opts(&sc, RTOL);
     o.atol = RTOL / 100;
-    zp_schedule sh = zp_schedule_of_scene(&sc);
+    zp_schedule sh = zp_drive_of_scene(&sc);
     printf("%s (%d parameters)\n", name, sh.np);
     compare("scene's schedule", m, &o, &sh);
     for (int trial = 0; trial < 1; trial++) {

@@ -17,7 +17,7 @@
 #include <unistd.h>
 
 #include "check.h"
-#include "out_file.h"
+#include "tx.h"
 
 /* enough files that the moves take milliseconds: the worker sees the commit under way */
 #define NFILE 400

@@ -25,7 +25,7 @@ typedef struct effects {
 static zp_model *build(const char *ini, const effects *e, zp_scene *sc, zp_diag *d) {
     zp_diag_init(d);
     if (!ini) {
-        zp_scene_seed(sc);
+        zp_scene_load_seed(sc);
     } else if (zp_scene_load_string(ini, "test.ini", sc, d) != ZP_OK) {
         return NULL;
     }

@@ -453,7 +453,7 @@ static void test_cli(void) {
    and the other sections at the base's (rows written out by hand) */
 static void test_landscape_plan(void) {
     const double base_p[3] = {7, 8, 9};
-    zp_schedule base = zp_schedule_sections(3, base_p, 0, 0);
+    zp_schedule base = zp_drive_sections(3, base_p, 0, 0);
     zp_landscape_plan plan = {
         .push = {0, 10, 3}, .si = 0, .sj = 2, .rx = {0, 1, 2}, .ry = {5, 7, 3}};
     const double want[9][3] = {{0, 0, 0}, {5, 5, 5}, {10, 10, 10}, {0, 8, 5}, {1, 8, 5},

@@ -162,7 +162,7 @@ static void test_run_rows(void) {
         at[k] = k * o.output_dt; /* as the simulator spaces its rows */
     }
     double f[ZP_MAX_SECTIONS] = {10, 10, 10};
-    zp_schedule sched = zp_schedule_sections(m->nsec, f, 0, 0);
+    zp_schedule sched = zp_drive_sections(m->nsec, f, 0, 0);
     zp_input in = {.sched = &sched, .sample_t = at, .nsample = NSAMPLE};
     zp_sim *s = zp_sim_create(m, &o);
     static zp_result r;

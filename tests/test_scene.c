@@ -1,6 +1,6 @@
 /* scene.c: every rule of docs/scene-file.md on inline INI text. Each bad case must give
    ZP_ERR_INPUT and a message "t.ini:LINE: [section] key:" at the line the case put it on; defaults
-   are docs/scene-file.md's; config/seed.ini and zp_scene_seed both equal docs/scene-file.md's
+   are docs/scene-file.md's; config/seed.ini and zp_scene_load_seed both equal docs/scene-file.md's
    example. */
 #include <stdio.h>
 #include <string.h>
@@ -12,7 +12,7 @@
 #include "model.h"
 #include "report.h"
 #include "scene_parse.h"
-#include "scene_read.h"
+#include "scene_load.h"
 
 /* a small valid scene; cases replace one of its lines (1-based) */
 static const char *const base[] = {
@@ -386,7 +386,7 @@ static void check_is_config_example(const zp_scene *sc) {
 
 static void test_seed(void) {
     zp_scene built, file;
-    zp_scene_seed(&built);
+    zp_scene_load_seed(&built);
     check_is_config_example(&built);
 
     zp_diag d;
@@ -680,12 +680,12 @@ static const char *write_bytes(const char *name, const char *bytes, size_t n) {
 static void test_schedule(void) {
     zp_scene sc;
     zp_diag d;
-    zp_scene_seed(&sc);
+    zp_scene_load_seed(&sc);
 
     zp_diag_init(&d);
     const char *good = write_temp("zp_test_sched_good.ini", "; found by the search\n[drive]\n"
                                                             "forces = 12.5, 0, -3\n");
-    CHECK(zp_scene_overlay_schedule(good, &sc, &d) == ZP_OK && d.n == 0);
+    CHECK(zp_scene_load_overlay_schedule(good, &sc, &d) == ZP_OK && d.n == 0);
     CHECK(sc.nforce == 3 && sc.forces[0] == 12.5 && sc.forces[1] == 0 && sc.forces[2] == -3);
     CHECK(sc.force_max == 500); /* nothing else changes */
 
@@ -704,7 +704,7 @@ static void test_schedule(void) {
         const char *p = write_temp("zp_test_sched_bad.ini", bad[i].text);
         char want[1024];
         snprintf(want, sizeof want, "%s%s", p, bad[i].part);
-        CHECK(zp_scene_overlay_schedule(p, &sc, &d) == ZP_ERR_INPUT);
+        CHECK(zp_scene_load_overlay_schedule(p, &sc, &d) == ZP_ERR_INPUT);
         CHECK(has_message(&d, want));
         CHECK(sc.forces[0] == 12.5 && sc.forces[2] == -3);
         if (!has_message(&d, want)) {
@@ -715,7 +715,7 @@ static void test_schedule(void) {
     remove(good);
 
     zp_diag_init(&d);
-    CHECK(zp_scene_overlay_schedule("/nonexistent/sched.ini", &sc, &d) == ZP_ERR_INPUT);
+    CHECK(zp_scene_load_overlay_schedule("/nonexistent/sched.ini", &sc, &d) == ZP_ERR_INPUT);
     CHECK(has_message(&d, "/nonexistent/sched.ini"));
     zp_diag_init(&d);
     CHECK(zp_scene_load("/nonexistent/scene.ini", &sc, &d) == ZP_ERR_INPUT);
@@ -723,7 +723,7 @@ static void test_schedule(void) {
 }
 
 /* the forces of many sections, in 17 digits each, exceed inih's 200-byte line: a scene's
-   [drive] forces line and the search's schedule file (zp_report_write_schedule) read back
+   [drive] forces line and the search's schedule file (zp_checkpoint_write_schedule) read back
    to the same bits; a longer line than any schedule needs, or another long line, is refused */
 static void test_long_forces(void) {
     enum { NSEC = 16 };
@@ -751,21 +751,21 @@ static void test_long_forces(void) {
     CHECK(sc.nforce == NSEC && !memcmp(sc.forces, want, sizeof want));
 
     /* the search's schedule file of other forces, laid over it */
-    zp_schedule sched = zp_schedule_of_scene(&sc);
+    zp_schedule sched = zp_drive_of_scene(&sc);
     double other[NSEC];
     for (int i = 0; i < NSEC; i++) {
         other[i] = 100 + (i + 1) / 7.0;
     }
-    sched = zp_schedule_with(&sched, other);
+    sched = zp_drive_with(&sched, other);
     const char *path = write_temp("zp_test_sched_long.ini", "");
     FILE *f = fopen(path, "w");
     CHECK(f != NULL);
     if (f) {
-        zp_report_write_schedule(f, &sc, &sched, "found by the search");
+        zp_checkpoint_write_schedule(f, &sc, &sched, "found by the search");
         fclose(f);
     }
     zp_diag_init(&d);
-    CHECK(zp_scene_overlay_schedule(path, &sc, &d) == ZP_OK);
+    CHECK(zp_scene_load_overlay_schedule(path, &sc, &d) == ZP_OK);
     show(&d);
     CHECK(!memcmp(sc.forces, other, sizeof other));
     remove(path);
@@ -779,7 +779,7 @@ static void test_long_forces(void) {
     snprintf(huge + len, sizeof huge - len, "\n");
     zp_diag_init(&d);
     path = write_temp("zp_test_sched_huge.ini", huge);
-    CHECK(zp_scene_overlay_schedule(path, &sc, &d) == ZP_ERR_INPUT);
+    CHECK(zp_scene_load_overlay_schedule(path, &sc, &d) == ZP_ERR_INPUT);
     CHECK(has_message(&d, "characters long"));
     remove(path);
 }
@@ -787,21 +787,21 @@ static void test_long_forces(void) {
 static void test_parse_list(void) {
     double v[4];
     char why[128];
-    CHECK(zp_scene_parse_list("1, 2.5 ,-3e1", v, 4, why, sizeof why) == 3);
+    CHECK(zp_scene_values_parse_list("1, 2.5 ,-3e1", v, 4, why, sizeof why) == 3);
     CHECK(v[0] == 1 && v[1] == 2.5 && v[2] == -30);
-    CHECK(zp_scene_parse_list("7", v, 4, why, sizeof why) == 1 && v[0] == 7);
-    CHECK(zp_scene_parse_list("1,,2", v, 4, why, sizeof why) == -1 && strstr(why, "item 2"));
-    CHECK(zp_scene_parse_list("", v, 4, why, sizeof why) == -1);
-    CHECK(zp_scene_parse_list("1,2,3,4,5", v, 4, why, sizeof why) == -1);
-    CHECK(zp_scene_parse_list("1,abc", v, 4, why, sizeof why) == -1 && strstr(why, "abc"));
-    CHECK(zp_scene_parse_list("nan", v, 4, why, sizeof why) == -1);
+    CHECK(zp_scene_values_parse_list("7", v, 4, why, sizeof why) == 1 && v[0] == 7);
+    CHECK(zp_scene_values_parse_list("1,,2", v, 4, why, sizeof why) == -1 && strstr(why, "item 2"));
+    CHECK(zp_scene_values_parse_list("", v, 4, why, sizeof why) == -1);
+    CHECK(zp_scene_values_parse_list("1,2,3,4,5", v, 4, why, sizeof why) == -1);
+    CHECK(zp_scene_values_parse_list("1,abc", v, 4, why, sizeof why) == -1 && strstr(why, "abc"));
+    CHECK(zp_scene_values_parse_list("nan", v, 4, why, sizeof why) == -1);
     /* command-line lists may be longer than any scene line */
     static char many[20000];
     static double big[2000];
     for (int i = 0; i < 2000; i++) {
         snprintf(many + strlen(many), sizeof many - strlen(many), "%s%d.25", i ? ", " : "", i);
     }
-    CHECK(zp_scene_parse_list(many, big, 2000, why, sizeof why) == 2000);
+    CHECK(zp_scene_values_parse_list(many, big, 2000, why, sizeof why) == 2000);
     CHECK(big[0] == 0.25 && big[1999] == 1999.25);
 }
 

@@ -98,7 +98,7 @@ int main(void) {
 
     /* the seed: same seed, same bits, with two threads twice and with one */
     {
-        zp_scene_seed(&sc);
+        zp_scene_load_seed(&sc);
         sc.max_evals = 300;
         zp_diag d;
         zp_diag_init(&d);
@@ -143,7 +143,7 @@ int main(void) {
         for (int s = 0; s < 2; s++) {
             zp_model *m = NULL;
             if (s == 0) {
-                zp_scene_seed(&sc);
+                zp_scene_load_seed(&sc);
                 zp_diag d;
                 zp_diag_init(&d);
                 m = zp_model_build(&sc, &d);
@@ -178,7 +178,7 @@ int main(void) {
     /* the gradient polish on the seed: it polishes, the same bits on 1 and 2 threads, its
        answer survivable; and it refuses constraints without gradients, saying which */
     {
-        zp_scene_seed(&sc);
+        zp_scene_load_seed(&sc);
         sc.max_evals = 2000;
         zp_diag d;
         zp_diag_init(&d);

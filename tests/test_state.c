@@ -11,7 +11,7 @@
 
 int main(void) {
     zp_scene sc;
-    zp_scene_seed(&sc);
+    zp_scene_load_seed(&sc);
     sc.nlink = 4;
     sc.lengths[3] = 1.5;
     sc.masses[3] = 7;

@@ -8,7 +8,7 @@
 
 #include "check.h"
 #include "robust.h"
-#include "scene_read.h"
+#include "scene_load.h"
 #include "sweep_csv.h"
 #include "testutil.h"
 

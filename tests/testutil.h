@@ -10,7 +10,7 @@
 #include <unistd.h>
 
 #include "objective.h"
-#include "scene_read.h"
+#include "scene_load.h"
 #include "sim.h"
 #include "sim_opts.h"
 
@@ -33,7 +33,7 @@ static inline zp_model *tu_model(const char *ini, zp_scene *sc) {
 static inline zp_model *tu_seed_model(zp_scene *sc) {
     zp_diag d;
     zp_diag_init(&d);
-    zp_scene_seed(sc);
+    zp_scene_load_seed(sc);
     zp_model *m = zp_model_build(sc, &d);
     if (!m) {
         zp_diag_print(&d, stderr);
@@ -99,7 +99,7 @@ static inline const zp_crossing *tu_crossings(void) {
 
 /* Per-section constant forces f (N, one per section of m) as a schedule. */
 static inline zp_schedule tu_sched(const zp_model *m, const double *f) {
-    return zp_schedule_sections(m->nsec, f, 0, 0);
+    return zp_drive_sections(m->nsec, f, 0, 0);
 }
 
 /* Runs a shell command; its stdout (up to cap - 1 bytes) in out; returns its exit status. */

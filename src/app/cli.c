@@ -12,7 +12,7 @@
 #include "formulation.h"
 #include "gnuplot.h"
 #include "method.h"
-#include "numtext.h"
+#include "text.h"
 
 int zp_cli_parse_list(const char *text, double *out, int max, char *why, size_t whylen) {
     return zp_text_list(text, out, max, why, whylen);
@@ -207,7 +207,7 @@ double zp_cli_since(const struct timespec *t0) {
     return (double)(now.tv_sec - t0->tv_sec) + 1e-9 * (double)(now.tv_nsec - t0->tv_nsec);
 }
 
-void zp_cli_print_registries(FILE *f) {
+static void zp_cli_print_registries(FILE *f) {
     fprintf(f, "methods ([solver] method):\n");
     for (int i = 0; i < ZP_METHOD_COUNT; i++) {
         const zp_method *me = zp_method_get(i);

@@ -7,7 +7,7 @@
 #include <stdio.h>
 #include <time.h>
 
-#include "out_file.h"
+#include "tx.h"
 #include "scene.h"
 
 enum { ZP_EXIT_OK = 0, ZP_EXIT_FAIL = 1, ZP_EXIT_USAGE = 2, ZP_EXIT_NONE = 3 };
@@ -62,8 +62,6 @@ int zp_cli_out_draw_commit(zp_tx *t, const char *cmd, const char *const *scripts
                            int *missing);
 /* s of wall time since t0 (CLOCK_MONOTONIC), for progress lines and summaries. */
 double zp_cli_since(const struct timespec *t0);
-/* The registries' names and docs, for --help. */
-void zp_cli_print_registries(FILE *f);
 void zp_cli_usage(FILE *f);
 
 int zp_cmd_simulate(int argc, char **argv);

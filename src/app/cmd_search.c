@@ -11,7 +11,7 @@
 #include "answer.h"
 #include "cli.h"
 #include "mpi_spread.h"
-#include "out_file.h"
+#include "tx.h"
 #include "plot.h"
 #include "report.h"
 #include "report_files.h"
@@ -174,8 +174,8 @@ static void write_checkpoint(FILE *f, void *user) {
     char note[160];
     snprintf(note, sizeof note, "search checkpoint: best so far, finish %.6f s after %ld "
              "simulations", c->p->time, c->p->evals);
-    zp_schedule best = zp_schedule_with(c->shape, c->p->force);
-    zp_report_write_schedule(f, c->sc, &best, note);
+    zp_schedule best = zp_drive_with(c->shape, c->p->force);
+    zp_checkpoint_write_schedule(f, c->sc, &best, note);
 }
 
 /* the progress line, and the checkpoint of every improvement so a killed run loses nothing */
@@ -223,7 +223,7 @@ static int figures_start(progress_ctx *c, const zp_answer *a, int procs) {
     zp_plot_opts_default(&po);
     po.procs = procs;
     po.margin = p->sc.margin * M_PI / 180;
-    zp_schedule best = zp_schedule_with(&p->sched, a->res.force);
+    zp_schedule best = zp_drive_with(&p->sched, a->res.force);
     po.sched = &best;
     char err[1400];
     if (zp_plot_start(c->tx, p->m, a->best, a->v.run, &po, &c->info, &c->job, err, sizeof err)) {
@@ -293,7 +293,7 @@ static int finish(zp_tx *tx, const search_args *args, const zp_answer *a, int dr
         return ZP_EXIT_FAIL;
     }
     if (args->json) {
-        zp_report_write_json(stdout, a); /* summary.json's object */
+        zp_summary_write_json(stdout, a); /* summary.json's object */
     } else {
         zp_report_text_write(stdout, a);
     }

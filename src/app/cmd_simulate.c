@@ -7,7 +7,7 @@
 
 #include "cli.h"
 #include "out_csv.h"
-#include "out_file.h"
+#include "tx.h"
 #include "out_json.h"
 #include "out_text.h"
 #include "plot.h"

@@ -14,7 +14,7 @@
 #include "mpi_queue.h"
 #include "mpi_spread.h"
 #include "report_sweep.h"
-#include "scene_read.h"
+#include "scene_load.h"
 #include "sweep_csv.h"
 
 #define MAX_ARGS_VARY                                                                              \
@@ -240,8 +240,8 @@ static void done(void *user, int p, const void *result) {
         st->ndone += !st->done[p];
         st->done[p] = 1;
     }
-    if (!st->cp_failed && (grid ? zp_sweep_checkpoint_add_grid(&st->cp, st->s, st->grid_res)
-                                : zp_sweep_checkpoint_add(&st->cp, st->s, p, &st->rows[p]))) {
+    if (!st->cp_failed && (grid ? zp_sweep_csv_checkpoint_add_grid(&st->cp, st->s, st->grid_res)
+                                : zp_sweep_csv_checkpoint_add(&st->cp, st->s, p, &st->rows[p]))) {
         st->cp_failed = 1;
         fputc('\n', stderr);
         zp_cli_error("sweep",
@@ -296,7 +296,7 @@ static int finish(study *st, const sweep_args *a, zp_tx *t, int ranks) {
         zp_cli_error("sweep", "the finished rows stay in %s; rerun with --resume", st->cp.path);
         return ZP_EXIT_FAIL;
     }
-    zp_sweep_checkpoint_close(&st->cp, 1); /* sweep.csv holds every row */
+    zp_sweep_csv_checkpoint_close(&st->cp, 1); /* sweep.csv holds every row */
     if (a->json) {
         zp_report_sweep_json(stdout, &o, summary);
     } else {
@@ -322,16 +322,16 @@ static int overlay(const sweep_args *a, study *st, char **base) {
     char value[ZP_SWEEP_LINE_MAX] = "", why[256];
     zp_diag d;
     zp_diag_init(&d);
-    if (a->schedule && zp_scene_overlay_schedule(a->schedule, st->sc, &d) == ZP_OK) {
-        zp_schedule sh = zp_schedule_of_scene(st->sc);
-        zp_schedule_format(&sh, value, sizeof value);
+    if (a->schedule && zp_scene_load_overlay_schedule(a->schedule, st->sc, &d) == ZP_OK) {
+        zp_schedule sh = zp_drive_of_scene(st->sc);
+        zp_drive_format(&sh, value, sizeof value);
     }
     if (a->force) {
-        zp_schedule sh = zp_schedule_of_scene(st->sc);
+        zp_schedule sh = zp_drive_of_scene(st->sc);
         if (zp_drive_parse(&sh, a->force, &sh, why, sizeof why)) {
             zp_diag_add(&d, NULL, 0, NULL, NULL, "zipopt sweep: --force: %s", why);
         } else {
-            zp_schedule_format(&sh, value, sizeof value);
+            zp_drive_format(&sh, value, sizeof value);
         }
     }
     zp_diag_print(&d, stderr);
@@ -362,7 +362,7 @@ static int prepare(const sweep_args *a, zp_sweep *s, study *st, char **base) {
     zp_diag_init(&d);
     /* the reader every command uses: capped, and a NUL byte refused with its line (the
        points' scenes are made from this text as a string) */
-    *base = zp_scene_read_file(a->scene, &len, &d);
+    *base = zp_scene_load_read_file(a->scene, &len, &d);
     st->base = *base;
     st->path = a->scene;
     zp_model *m = NULL;
@@ -385,7 +385,7 @@ static int prepare(const sweep_args *a, zp_sweep *s, study *st, char **base) {
         return ZP_EXIT_USAGE;
     }
     snprintf(st->name, sizeof st->name, "%s", st->sc->name);
-    st->np = zp_schedule_of_scene(st->sc).np;
+    st->np = zp_drive_of_scene(st->sc).np;
     int kind = zp_study_kind_find(a->run);
     if (kind < 0) {
         zp_cli_error("sweep", "--run '%s': expected search or simulate", a->run);
@@ -430,7 +430,7 @@ static int open_study(study *st, const sweep_args *a, zp_tx *t, int **todo, int 
     if (zp_cli_out_begin(t, "sweep", "sweep", a->out, st->sc)) {
         return ZP_EXIT_FAIL;
     }
-    zp_status rc = zp_sweep_checkpoint_open(&st->cp, t->dirfd, t->dir, st->s, st->base, st->np,
+    zp_status rc = zp_sweep_csv_checkpoint_open(&st->cp, t->dirfd, t->dir, st->s, st->base, st->np,
                                             a->resume, st->rows, st->done, &st->ndone,
                                             st->grid_res, &st->grid_done, err, sizeof err);
     if (rc) {
@@ -487,7 +487,7 @@ static int sweep(int argc, char **argv, int rank) {
     if (rank == 0 && !status) {
         status = finish(&st, &a, &t, zp_mpi_queue_size());
     }
-    zp_sweep_checkpoint_close(&st.cp, 0);
+    zp_sweep_csv_checkpoint_close(&st.cp, 0);
     zp_tx_abort(&t); /* ended already when committed; the checkpoint is not the transaction's */
 done:
     free(base);

@@ -67,14 +67,14 @@ void zp_mpi_queue_end(void) {
            cores share their units (hyperthreads), a spinning rank slows those still at work */
         MPI_Request barrier;
         if (MPI_Ibarrier(MPI_COMM_WORLD, &barrier) == MPI_SUCCESS) {
-            zp_mpi_wait_napping(&barrier);
+            zp_mpi_queue_wait_napping(&barrier);
         }
         MPI_Finalize();
         joined = 0;
     }
 }
 
-int zp_mpi_wait_napping(MPI_Request *req) {
+int zp_mpi_queue_wait_napping(MPI_Request *req) {
     for (;;) {
         int flag = 0;
         if (MPI_Test(req, &flag, MPI_STATUS_IGNORE) != MPI_SUCCESS) {

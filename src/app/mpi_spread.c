@@ -34,7 +34,7 @@ static int allgather(void *user, void *all, const int *count, size_t rec) {
     MPI_Type_commit(&t);
     int ok = MPI_Iallgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, all, count, displ, t,
                              MPI_COMM_WORLD, &req) == MPI_SUCCESS &&
-             !zp_mpi_wait_napping(&req);
+             !zp_mpi_queue_wait_napping(&req);
     MPI_Type_free(&t);
     free(displ);
     return ok ? 0 : -1;
@@ -44,7 +44,7 @@ static int bcast(void *user, void *buf, size_t len) {
     (void)user;
     MPI_Request req;
     return MPI_Ibcast(buf, (int)len, MPI_BYTE, 0, MPI_COMM_WORLD, &req) == MPI_SUCCESS
-               ? zp_mpi_wait_napping(&req)
+               ? zp_mpi_queue_wait_napping(&req)
                : -1;
 }
 

@@ -7,6 +7,6 @@
 
 /* 0 when req completed, napping 1 ms between tests (the most a wait overruns); -1 on an MPI
    error */
-int zp_mpi_wait_napping(MPI_Request *req);
+int zp_mpi_queue_wait_napping(MPI_Request *req);
 
 #endif

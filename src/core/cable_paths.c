@@ -98,7 +98,3 @@ const zp_cable *zp_cable_paths_cable(const zp_cable_paths *ps) {
     return &ps->cable;
 }
 
-void zp_cable_paths_interval(const zp_cable_paths *ps, double *x_lo, double *x_hi) {
-    *x_lo = ps->x_lo;
-    *x_hi = ps->x_hi;
-}

@@ -23,6 +23,5 @@ const zp_cable_path *zp_cable_paths_get(zp_cable_paths *ps, double load, char *w
                                         size_t whylen);
 /* The cable of the set, and its interval. */
 const zp_cable *zp_cable_paths_cable(const zp_cable_paths *ps);
-void zp_cable_paths_interval(const zp_cable_paths *ps, double *x_lo, double *x_hi);
 
 #endif

@@ -89,10 +89,3 @@ zp_status zp_cable_ride_over(const zp_cable *c, double load, double x_lo, double
     return rc;
 }
 
-double zp_cable_ride_anchor_max(const zp_cable *c, double load, double x_lo, double x_hi) {
-    zp_cable_ride r;
-    char why[64];
-    return zp_cable_ride_over(c, load, x_lo, x_hi, &r, why, sizeof why) == ZP_OK
-               ? fmax(r.ta_max, r.tb_max)
-               : NAN;
-}

@@ -24,7 +24,5 @@ typedef struct zp_cable_ride {
    error from the equilibrium with why filled. */
 zp_status zp_cable_ride_over(const zp_cable *c, double load, double x_lo, double x_hi,
                              zp_cable_ride *out, char *why, size_t whylen);
-/* The largest tension at either anchor over the ride's [x_lo, x_hi] (N); NaN when not found. */
-double zp_cable_ride_anchor_max(const zp_cable *c, double load, double x_lo, double x_hi);
 
 #endif

@@ -7,7 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "numtext.h"
+#include "text.h"
 
 /* What a kind of schedule is: every question the rest of zipopt asks about a schedule that
    depends on its kind is one entry here. */
@@ -162,7 +162,7 @@ static zp_schedule shape_of(zp_sched_kind kind, int nsec, int knots, double lo, 
     return s;
 }
 
-zp_schedule zp_schedule_sections(int nsec, const double *force, double lo, double hi) {
+zp_schedule zp_drive_sections(int nsec, const double *force, double lo, double hi) {
     zp_schedule s = shape_of(ZP_SCHED_SECTIONS, nsec, 1, lo, hi);
     for (int k = 0; force && k < s.np; k++) {
         s.p[k] = force[k];
@@ -181,17 +181,17 @@ zp_schedule zp_drive_profile(int nsec, int knots, double x_start, const double *
     return s;
 }
 
-zp_schedule zp_schedule_with(const zp_schedule *sh, const double *p) {
+zp_schedule zp_drive_with(const zp_schedule *sh, const double *p) {
     zp_schedule s = *sh;
     memcpy(s.p, p, sizeof *p * (size_t)s.np);
     return s;
 }
 
-zp_schedule zp_schedule_of_scene(const zp_scene *sc) {
+zp_schedule zp_drive_of_scene(const zp_scene *sc) {
     zp_schedule s = sc->drive_kind == ZP_SCHED_PROFILE
                         ? zp_drive_profile(sc->nsec, sc->drive_knots, sc->x_start, sc->x_end,
                                            NULL, sc->force_min, sc->force_max)
-                        : zp_schedule_sections(sc->nsec, NULL, sc->force_min, sc->force_max);
+                        : zp_drive_sections(sc->nsec, NULL, sc->force_min, sc->force_max);
     s.power = sc->drive_power;
     if (sc->nforce > 0) {
         s.np = sc->nforce;
@@ -215,7 +215,7 @@ void zp_drive_constant_bounds(const zp_schedule *shape, double *lo, double *hi) 
     }
 }
 
-zp_schedule zp_schedule_scaled(const zp_schedule *s, const double *scale) {
+zp_schedule zp_drive_scaled(const zp_schedule *s, const double *scale) {
     zp_schedule out = *s;
     for (int k = 0; k < s->np; k++) {
         out.p[k] = s->p[k] * scale[kind_of(s)->section(s, k)];
@@ -235,7 +235,7 @@ int zp_drive_capped(const zp_schedule *s, const zp_drive_state *st) {
     return s->power > 0 && fabs(kind_of(s)->force(s, st) * st->v) > s->power;
 }
 
-int zp_schedule_breaks(const zp_schedule *s, double *t, int max) {
+int zp_drive_breaks(const zp_schedule *s, double *t, int max) {
     return kind_of(s)->breaks(s, t, max);
 }
 
@@ -276,16 +276,16 @@ int zp_drive_parse(const zp_schedule *shape, const char *text, zp_schedule *s, c
         }
         return -2;
     }
-    *s = zp_schedule_with(shape, p);
+    *s = zp_drive_with(shape, p);
     return 0;
 }
 
-int zp_schedule_parse(const char *text, int nsec, zp_schedule *s, char *why, size_t whylen) {
-    zp_schedule shape = zp_schedule_sections(nsec, NULL, 0, 0);
+int zp_drive_parse_sections(const char *text, int nsec, zp_schedule *s, char *why, size_t whylen) {
+    zp_schedule shape = zp_drive_sections(nsec, NULL, 0, 0);
     return zp_drive_parse(&shape, text, s, why, whylen);
 }
 
-int zp_schedule_format(const zp_schedule *s, char *buf, size_t cap) {
+int zp_drive_format(const zp_schedule *s, char *buf, size_t cap) {
     size_t len = 0;
     int total = 0;
     if (cap) {
@@ -300,6 +300,6 @@ int zp_schedule_format(const zp_schedule *s, char *buf, size_t cap) {
     return total;
 }
 
-void zp_schedule_label(const zp_schedule *s, int sec, char *buf, size_t cap) {
+void zp_drive_section_label(const zp_schedule *s, int sec, char *buf, size_t cap) {
     kind_of(s)->label(s, sec, buf, cap);
 }

@@ -58,15 +58,15 @@ typedef struct zp_drive_state {
 } zp_drive_state;
 
 /* Per-section constant forces (N), every one bounded by [lo, hi]; force NULL: all 0. */
-zp_schedule zp_schedule_sections(int nsec, const double *force, double lo, double hi);
+zp_schedule zp_drive_sections(int nsec, const double *force, double lo, double hi);
 /* The same shape (kind, sections, bounds) with the parameters p (sh->np of them). */
-zp_schedule zp_schedule_with(const zp_schedule *sh, const double *p);
+zp_schedule zp_drive_with(const zp_schedule *sh, const double *p);
 /* The schedule the scene's [drive] describes (kind, knots, power, forces, min, max; all forces
    0 when none are given). */
-zp_schedule zp_schedule_of_scene(const zp_scene *sc);
+zp_schedule zp_drive_of_scene(const zp_scene *sc);
 /* A profile of knots forces per section on the course whose sections end at x_end (x_start
    before the first), every one bounded by [lo, hi]; force NULL: all 0. knots = 1 drives as
-   zp_schedule_sections does, bit for bit. */
+   zp_drive_sections does, bit for bit. */
 zp_schedule zp_drive_profile(int nsec, int knots, double x_start, const double *x_end,
                              const double *force, double lo, double hi);
 /* The schedule of shape pushing F (N) everywhere: the one-parameter family of constant pushes
@@ -77,7 +77,7 @@ void zp_drive_constant_bounds(const zp_schedule *shape, double *lo, double *hi);
 
 /* The schedule whose parameters are s's, each times the scale of the section it acts on
    (scale: one factor per section, a drive off by a known factor: a scenario's force error). */
-zp_schedule zp_schedule_scaled(const zp_schedule *s, const double *scale);
+zp_schedule zp_drive_scaled(const zp_schedule *s, const double *scale);
 /* N, the force the drive applies at st, along its direction: the kind's force, capped at
    power / |v| where s has a power (pushing and braking alike; at rest no cap binds). */
 double zp_drive_force(const zp_schedule *s, const zp_drive_state *st);
@@ -106,7 +106,7 @@ static inline zp_drive_state zp_drive_state_at(zp_drive_dir d, double t, double 
 
 /* The instants (s, ascending, at most max) where the force jumps in time; returns how many.
    The simulator stops its integrator there. 0 for per-section constants. */
-int zp_schedule_breaks(const zp_schedule *s, double *t, int max);
+int zp_drive_breaks(const zp_schedule *s, double *t, int max);
 
 /* Parameter k (0-based) of s: the section it acts on, whose force error scales it (0-based);
    its label ("section 2"); the stretch of course [*from, *to] (m) where it acts, xb the
@@ -126,11 +126,11 @@ const char *zp_drive_unit(const zp_schedule *s);
 int zp_drive_parse(const zp_schedule *shape, const char *text, zp_schedule *s, char *why,
                    size_t whylen);
 /* The same for per-section constants on a course of nsec sections (bounds left 0). */
-int zp_schedule_parse(const char *text, int nsec, zp_schedule *s, char *why, size_t whylen);
-/* Writes the text zp_schedule_parse reads back bit for bit; returns snprintf's count. */
-int zp_schedule_format(const zp_schedule *s, char *buf, size_t cap);
+int zp_drive_parse_sections(const char *text, int nsec, zp_schedule *s, char *why, size_t whylen);
+/* Writes the text zp_drive_parse_sections reads back bit for bit; returns snprintf's count. */
+int zp_drive_format(const zp_schedule *s, char *buf, size_t cap);
 /* A short label of section sec's drive for figures and reports ("59.6 N"). */
-void zp_schedule_label(const zp_schedule *s, int sec, char *buf, size_t cap);
+void zp_drive_section_label(const zp_schedule *s, int sec, char *buf, size_t cap);
 
 /* 1 for the drive every scene had before kinds and a power: constant per section, no cap (its
    outputs keep their old shape). */

@@ -90,13 +90,13 @@ static int jump(sens_loop *L, double t, int to, int is_kink) {
     zp_sens *c = &L->c;
     zp_sim *s = c->sim;
     int n = c->n;
-    if (zp_sens_rates(c, t, L->ya, L->fm)) {
+    if (zp_sens_rhs_rates(c, t, L->ya, L->fm)) {
         return 1;
     }
     double *y_minus = L->ym;
     memcpy(y_minus, L->ya, sizeof *y_minus * n);
     if (is_kink) {
-        if (zp_sens_kink_map(c, y_minus, to, L->ya)) {
+        if (zp_sens_rhs_kink_map(c, y_minus, to, L->ya)) {
             return 1;
         }
     } else {
@@ -108,7 +108,7 @@ static int jump(sens_loop *L, double t, int to, int is_kink) {
     int from = s->sec;
     s->sec = to;
     s->arc = zp_model_piece(s->m, s->sec, L->ya[0]);
-    int rc = zp_sens_rates(c, t, L->ya, L->fp);
+    int rc = zp_sens_rhs_rates(c, t, L->ya, L->fp);
     for (int k = 0; k < c->np && !rc; k++) {
         double *sk = L->ya + n * (k + 1);
         for (int i = 0; i < n; i++) {
@@ -116,7 +116,7 @@ static int jump(sens_loop *L, double t, int to, int is_kink) {
         }
         if (is_kink) {
             s->sec = from; /* the map reads the chain on the section it leaves */
-            rc = zp_sens_kink_deriv(c, y_minus, L->u, to, sk);
+            rc = zp_sens_rhs_kink_deriv(c, y_minus, L->u, to, sk);
             s->sec = to;
         } else {
             memcpy(sk, L->u, sizeof *sk * n);
@@ -328,7 +328,7 @@ zp_status zp_sens_run(const zp_model *m, const zp_sim_opts *o, const zp_schedule
         zp_events_directions(m, dir);
         zp_method_opts mo = {o->rtol, o->atol, o->max_steps, NULL, 0};
         L.mwork = L.ya && c->scratch ? L.meth->create(c->naug, c->sim->nroot, dir, zp_sens_rhs,
-                                                     zp_sens_root, c, &mo)
+                                                     zp_sens_rhs_root, c, &mo)
                                      : NULL;
     }
     if (!L.mwork) {
@@ -340,7 +340,7 @@ zp_status zp_sens_run(const zp_model *m, const zp_sim_opts *o, const zp_schedule
     L.fp = L.fm + c->n;
     L.u = L.fp + c->n;
     L.ym = L.u + c->n;
-    L.nbreak = zp_schedule_breaks(sched, L.breaks, ZP_SCHED_MAX_BREAKS);
+    L.nbreak = zp_drive_breaks(sched, L.breaks, ZP_SCHED_MAX_BREAKS);
     int end = loop(&L, r);
     loop_free(&L);
     clock_gettime(CLOCK_MONOTONIC, &t1);

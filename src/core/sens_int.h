@@ -16,17 +16,17 @@ typedef struct zp_sens {
 } zp_sens;
 
 /* The plain rates at y as the sensitivity run reads them (the course on the integrator's piece). */
-int zp_sens_rates(zp_sens *c, double t, const double *y, double *f);
+int zp_sens_rhs_rates(zp_sens *c, double t, const double *y, double *f);
 /* Rates of the augmented state: the plain rates, and for each k the derivative of the rates
    along (s_k, e_k) in (state, parameters), J s_k + df/dp_k. user = zp_sens. */
 int zp_sens_rhs(double t, const double *ya, double *yd, void *user);
 /* The plain roots on ya's state part. user = zp_sens. */
-int zp_sens_root(double t, const double *ya, double *g, void *user);
+int zp_sens_rhs_root(double t, const double *ya, double *g, void *user);
 /* The kink map y+ = h(y-) into section `to` (docs/model.md: onto the boundary, the impulse):
    y_out from y_in, on the current section. Nonzero where the mass matrix is not positive
    definite. */
-int zp_sens_kink_map(zp_sens *c, const double *y_in, int to, double *y_out);
+int zp_sens_rhs_kink_map(zp_sens *c, const double *y_in, int to, double *y_out);
 /* dh: the derivative of the kink map at y along u (n entries). */
-int zp_sens_kink_deriv(zp_sens *c, const double *y, const double *u, int to, double *dh);
+int zp_sens_rhs_kink_deriv(zp_sens *c, const double *y, const double *u, int to, double *dh);
 
 #endif

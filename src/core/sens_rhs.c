@@ -44,7 +44,7 @@ static int rates(zp_sens *c, double t, const double *y, double *f) {
     return s->form->rhs(s->m, s->fwork, &dn, y, f, NULL);
 }
 
-int zp_sens_rates(zp_sens *c, double t, const double *y, double *f) {
+int zp_sens_rhs_rates(zp_sens *c, double t, const double *y, double *f) {
     return rates(c, t, y, f);
 }
 
@@ -81,12 +81,12 @@ int zp_sens_rhs(double t, const double *ya, double *yd, void *user) {
     return rc;
 }
 
-int zp_sens_root(double t, const double *ya, double *g, void *user) {
+int zp_sens_rhs_root(double t, const double *ya, double *g, void *user) {
     zp_sens *c = user;
     return c->root(t, ya, g, c->sim);
 }
 
-int zp_sens_kink_map(zp_sens *c, const double *y_in, int to, double *y_out) {
+int zp_sens_rhs_kink_map(zp_sens *c, const double *y_in, int to, double *y_out) {
     zp_sim *s = c->sim;
     const zp_model *m = s->m;
     double b = m->xb[to > s->sec ? to : s->sec];
@@ -104,7 +104,7 @@ int zp_sens_kink_map(zp_sens *c, const double *y_in, int to, double *y_out) {
     return 0;
 }
 
-int zp_sens_kink_deriv(zp_sens *c, const double *y, const double *u, int to, double *dh) {
+int zp_sens_rhs_kink_deriv(zp_sens *c, const double *y, const double *u, int to, double *dh) {
     int n = c->n;
     double *yp = c->scratch + 3 * n, *hp = c->scratch, r = 0;
     for (int i = 0; i < c->sim->w0; i++) {
@@ -120,7 +120,7 @@ int zp_sens_kink_deriv(zp_sens *c, const double *y, const double *u, int to, dou
         for (int i = 0; i < n; i++) {
             yp[i] = y[i] + at[j] * h * u[i];
         }
-        if (zp_sens_kink_map(c, yp, to, hp)) {
+        if (zp_sens_rhs_kink_map(c, yp, to, hp)) {
             return 1;
         }
         for (int i = 0; i < n; i++) {

@@ -397,12 +397,12 @@ zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     s->m = m;
     /* a scaled drive is a schedule of its own, made once per run, not a factor per evaluation */
     if (in->force_scale) {
-        s->scaled = zp_schedule_scaled(in->sched, in->force_scale);
+        s->scaled = zp_drive_scaled(in->sched, in->force_scale);
         s->sched = &s->scaled;
     } else {
         s->sched = in->sched;
     }
-    s->nbreak = zp_schedule_breaks(in->sched, s->breaks, ZP_SCHED_MAX_BREAKS);
+    s->nbreak = zp_drive_breaks(in->sched, s->breaks, ZP_SCHED_MAX_BREAKS);
     s->sec = 0;
     s->e_impulse = 0;
     s->rows.n = s->nsamples = s->nframes = s->ncross = 0;

@@ -109,7 +109,7 @@ static zp_model *case_model(const zp_scene *base, int c, zp_sim_opts *o, zp_sche
                             zp_diag *d) {
     const zp_trade_case *tc = &zp_trade_cases[c];
     zp_scene sc = *base;
-    zp_schedule shape = zp_schedule_of_scene(&sc);
+    zp_schedule shape = zp_drive_of_scene(&sc);
     *sched = zp_drive_constant(&shape, tc->force);
     if (tc->damping >= 0) {
         sc.ndamping = 1;

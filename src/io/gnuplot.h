@@ -5,7 +5,7 @@
 
 #include <stddef.h>
 
-#include "out_file.h"
+#include "tx.h"
 
 #include <sys/types.h>
 

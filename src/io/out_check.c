@@ -7,7 +7,7 @@
 #include "formulation.h"
 #include "method.h"
 #include "out_json.h"
-#include "scene_read.h"
+#include "scene_load.h"
 
 static const char *method_doc(const char *name) {
     int i = zp_method_find(name);
@@ -97,7 +97,7 @@ static void settings_text(FILE *f, const zp_out_check *c) {
     fprintf(f, "drive: %s; forces:", zp_drive_dir_name(c->m->drive));
     for (int k = 0; k < c->m->nsec; k++) {
         char label[64];
-        zp_schedule_label(c->sched, k, label, sizeof label);
+        zp_drive_section_label(c->sched, k, label, sizeof label);
         fprintf(f, "%s %s", k ? "," : "", label);
     }
     fprintf(f, "%s; search bounds [%g, %g] N\n", sc->nforce ? "" : " (none given)", sc->force_min,
@@ -124,11 +124,11 @@ void zp_out_check_text(FILE *f, const zp_out_check *c) {
     course_text(f, c->m);
     body_text(f, sc, c->m);
     settings_text(f, c);
-    zp_scene_print_optional(sc, f, 0);
+    zp_scene_show_optional(sc, f, 0);
     physics_text(f, sc, c->m);
     zp_cable_text_print(f, c->m, sc);
     fprintf(f, "added by zipopt (keys the file does not give, with the values taken):\n");
-    zp_scene_print_added(sc, f, "  ");
+    zp_scene_show_added(sc, f, "  ");
 }
 
 /* "key": [v, ..], then sep */
@@ -187,6 +187,6 @@ void zp_out_check_json(FILE *f, const zp_out_check *c) {
     zp_out_json_key(f, "output_dt", sc->output_dt, ", ");
     zp_out_json_key(f, "margin", sc->margin, ", ");
     fprintf(f, "\"max_evals\": %ld, \"seed\": %lu, ", sc->max_evals, sc->seed);
-    zp_scene_print_optional(sc, f, 1);
+    zp_scene_show_optional(sc, f, 1);
     fprintf(f, "}\n");
 }

@@ -5,7 +5,7 @@
 
 #include <stddef.h>
 
-#include "out_file.h"
+#include "tx.h"
 
 /* Renders md_name (a markdown file already written in t's private folder, GitHub tables
    included) as html_name in the same folder, with title, a print-friendly style and every

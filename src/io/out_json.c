@@ -105,7 +105,7 @@ void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp
         fputs(i ? ", " : "", f);
         if (i == ZP_LIMIT_G_ENVELOPE) {
             /* docs/commands.md: per level {g, allowed_s, longest_s} */
-            fprintf(f, "\"%s\": [", zp_limit_name(i));
+            fprintf(f, "\"%s\": [", zp_limits_name(i));
             for (int l = 0; l < m->nenv; l++) {
                 fputs(l ? ", {" : "{", f);
                 zp_out_json_key(f, "g", m->env_g[l], ", ");
@@ -115,8 +115,8 @@ void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp
             fputs("]", f);
             continue;
         }
-        fprintf(f, "\"%s\": {", zp_limit_name(i));
-        if (!zp_limit_reached_in(r, i)) { /* never measured: neither kept nor broken */
+        fprintf(f, "\"%s\": {", zp_limits_name(i));
+        if (!zp_limits_reached_in(r, i)) { /* never measured: neither kept nor broken */
             fputs("\"reached\": null, ", f);
             zp_out_json_key(f, "limit", max > 0 ? max : NAN, max > 0 ? ", \"kept\": null}" : "}");
             continue;

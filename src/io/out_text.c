@@ -34,11 +34,11 @@ static void limits_text(FILE *f, const zp_model *m, const zp_result *r, const zp
     double v[ZP_LIMIT_COUNT];
     zp_limits_reached(m, r, v);
     for (int i = 0; i < ZP_LIMIT_COUNT && lim; i++) {
-        if (lim->max[i] > 0 && !zp_limit_reached_in(r, i)) {
-            fprintf(f, "limit %s: not reached (the trolley did not arrive)\n", zp_limit_name(i));
+        if (lim->max[i] > 0 && !zp_limits_reached_in(r, i)) {
+            fprintf(f, "limit %s: not reached (the trolley did not arrive)\n", zp_limits_name(i));
         } else if (lim->max[i] > 0) {
-            fprintf(f, "limit %s: reached %.4g %s of %g (%s)\n", zp_limit_name(i), v[i],
-                    zp_limit_unit(i), lim->max[i],
+            fprintf(f, "limit %s: reached %.4g %s of %g (%s)\n", zp_limits_name(i), v[i],
+                    zp_limits_unit(i), lim->max[i],
                     zp_limits_kept(i, v[i], lim->max[i]) ? "kept" : "BROKEN");
         }
     }

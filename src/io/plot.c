@@ -109,7 +109,7 @@ static void script_course(FILE *f, const zp_model *m, const zp_result *r, const 
           "     $kinks using 1:2:3 with labels boxed center offset 0, 1.6 font ',10' notitle",
           f);
     if (r->outcome == ZP_OUTCOME_DIED && last) {
-        zp_plot_pose ps = zp_plot_pose_of_row(m, last);
+        zp_plot_pose ps = zp_plot_data_pose_of_row(m, last);
         int i = r->died_link;
         fprintf(f,
                 ", \\\n     '+' using (%.9g):(%.9g) every ::0::0 with points pt 2 ps 3 lw 3 "
@@ -322,11 +322,11 @@ zp_status zp_plot_start(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_r
     if (!run) {
         return ZP_ERR_IO;
     }
-    zp_plot_box cb = zp_plot_write_course(course, m);
-    zp_plot_box pb = zp_plot_write_run(run, m, rows);
+    zp_plot_box cb = zp_plot_data_course(course, m);
+    zp_plot_box pb = zp_plot_data_run(run, m, rows);
     zp_plot_box both = cb;
-    zp_plot_grow(&both, pb.x0, pb.y0);
-    zp_plot_grow(&both, pb.x1, pb.y1);
+    zp_plot_data_grow(&both, pb.x0, pb.y0);
+    zp_plot_data_grow(&both, pb.x1, pb.y1);
     zp_row end, *last = &end;
     zp_row_store_get(rows, rows->n - 1, last);
     const char *names[] = {"course.gp", "energy.gp", "angles.gp", "loads.gp", "along.gp"};
@@ -358,7 +358,7 @@ zp_status zp_plot_start(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_r
         }
         int nf;
         const zp_row *frames = zp_sim_frames(s, &nf);
-        info->nframe = zp_plot_frames(fg, fd, m, frames, nf, o);
+        info->nframe = zp_plot_anim_frames(fg, fd, m, frames, nf, o);
         info->nskipped = o->nframe - nf;
     }
     if (o->animate) {

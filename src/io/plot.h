@@ -5,7 +5,7 @@
 #define ZP_PLOT_H
 
 #include "gnuplot.h"
-#include "out_file.h"
+#include "tx.h"
 #include "plot_opts.h"
 
 /* What zp_plot_run made. */

@@ -36,7 +36,7 @@ static void frame_name(const zp_plot_opts *o, int i, char *buf, size_t len) {
     snprintf(buf, len, "frame_%c%g", o->frame_kind == ZP_PLOT_AT_X ? 'x' : 't', o->frame_at[i]);
 }
 
-int zp_plot_frames(FILE *gp, FILE *dat, const zp_model *m, const zp_row *frames, int n,
+int zp_plot_anim_frames(FILE *gp, FILE *dat, const zp_model *m, const zp_row *frames, int n,
                    const zp_plot_opts *o) {
     double reach = 0;
     for (int i = 0; i < m->nlink; i++) {
@@ -47,15 +47,15 @@ int zp_plot_frames(FILE *gp, FILE *dat, const zp_model *m, const zp_row *frames,
     fputs("set size ratio -1\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nunset key\n", gp);
     int drawn = 0;
     for (int i = 0; i < n; i++) {
-        zp_plot_pose ps = zp_plot_pose_of_row(m, &frames[i]);
+        zp_plot_pose ps = zp_plot_data_pose_of_row(m, &frames[i]);
         char name[64], sec[64];
         frame_name(o, i, name, sizeof name);
         zp_plot_script_section(o, ps.sec, sec, sizeof sec);
-        zp_plot_write_pose(dat, m, &ps);
+        zp_plot_data_pose(dat, m, &ps);
         /* one scale for every frame, centred on the body */
         zp_plot_box b = {HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL};
         for (int k = 0; k <= m->nlink; k++) {
-            zp_plot_grow(&b, ps.p[k][0], ps.p[k][1]);
+            zp_plot_data_grow(&b, ps.p[k][0], ps.p[k][1]);
         }
         double half = 0.5 * fmax(1.3 * reach, fmax(b.x1 - b.x0, b.y1 - b.y0)) + 1.5;
         double cx = 0.5 * (b.x0 + b.x1), cy = 0.5 * (b.y0 + b.y1);
@@ -81,8 +81,8 @@ static int anim_data(FILE *dat, FILE *lab, const zp_model *m, const zp_row_store
     nf += t0 + (nf - 1) * dt < t1; /* the last pose too */
     char text[256], sec[64];
     for (int j = 0; j < nf; j++) {
-        zp_plot_pose ps = zp_plot_pose_at_t(m, rows, fmin(t0 + j * dt, t1));
-        zp_plot_write_pose(dat, m, &ps);
+        zp_plot_pose ps = zp_plot_data_pose_at_t(m, rows, fmin(t0 + j * dt, t1));
+        zp_plot_data_pose(dat, m, &ps);
         zp_plot_script_section(o, ps.sec, sec, sizeof sec);
         if (j == nf - 1) {
             zp_plot_script_outcome(r, text, sizeof text);

@@ -8,7 +8,7 @@
 
 /* frames.gp and plot_frames.dat: one still frame per reached position or time (the run's
    frames, the first n of o->frame_at); returns how many were drawn */
-int zp_plot_frames(FILE *gp, FILE *dat, const zp_model *m, const zp_row *frames, int n,
+int zp_plot_anim_frames(FILE *gp, FILE *dat, const zp_model *m, const zp_row *frames, int n,
                    const zp_plot_opts *o);
 /* run.gp, plot_anim.dat and plot_anim_label.dat: the body followed along the course, and
    where it is on the whole course (extent course); returns the animation's frames */

@@ -28,11 +28,11 @@ static zp_plot_pose pose_of(const zp_model *m, double t, int sec, const zp_chain
     return ps;
 }
 
-zp_plot_pose zp_plot_pose_of_row(const zp_model *m, const zp_row *r) {
+zp_plot_pose zp_plot_data_pose_of_row(const zp_model *m, const zp_row *r) {
     return pose_of(m, r->t, r->sec, &r->c);
 }
 
-zp_plot_pose zp_plot_pose_at_t(const zp_model *m, const zp_row_store *rows, double t) {
+zp_plot_pose zp_plot_data_pose_at_t(const zp_model *m, const zp_row_store *rows, double t) {
     int k = 0;
     while (k + 1 < rows->n && zp_row_store_t(rows, k) < t) {
         k++;
@@ -52,14 +52,14 @@ zp_plot_pose zp_plot_pose_at_t(const zp_model *m, const zp_row_store *rows, doub
 
 
 
-void zp_plot_grow(zp_plot_box *b, double x, double y) {
+void zp_plot_data_grow(zp_plot_box *b, double x, double y) {
     b->x0 = fmin(b->x0, x);
     b->x1 = fmax(b->x1, x);
     b->y0 = fmin(b->y0, y);
     b->y1 = fmax(b->y1, y);
 }
 
-zp_plot_box zp_plot_write_course(FILE *f, const zp_model *m) {
+zp_plot_box zp_plot_data_course(FILE *f, const zp_model *m) {
     zp_plot_box b = {HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL};
     fputs("x y section\n", f);
     for (int k = 0; k < m->nsec; k++) {
@@ -68,7 +68,7 @@ zp_plot_box zp_plot_write_course(FILE *f, const zp_model *m) {
             double x = m->xb[k] + (m->xb[k + 1] - m->xb[k]) * j / npt;
             double y = zp_model_track(m, m->course, k, x).f;
             fprintf(f, "%.6g %.6g %d\n", x, y, k + 1);
-            zp_plot_grow(&b, x, y);
+            zp_plot_data_grow(&b, x, y);
         }
         fputc('\n', f);
     }
@@ -86,7 +86,7 @@ static double balance(double e0, const zp_row *r) {
 
 /* plot_run.dat: one line per trajectory row, named columns; returns the extent of the
    centres-of-mass paths */
-zp_plot_box zp_plot_write_run(FILE *f, const zp_model *m, const zp_row_store *rows) {
+zp_plot_box zp_plot_data_run(FILE *f, const zp_model *m, const zp_row_store *rows) {
     zp_plot_box b = {HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL};
     fputs("t section x y speed", f);
     for (int i = 0; i <= m->nlink; i++) {
@@ -121,7 +121,7 @@ zp_plot_box zp_plot_write_run(FILE *f, const zp_model *m, const zp_row_store *ro
         fprintf(f, "%.9g %d %.9g %.9g %.9g", r->t, r->sec + 1, r->c.q[0], r->c.q[1], v.speed);
         for (int i = 0; i <= m->nlink; i++) {
             fprintf(f, " %.9g %.9g", v.com[i][0], v.com[i][1]);
-            zp_plot_grow(&b, v.com[i][0], v.com[i][1]);
+            zp_plot_data_grow(&b, v.com[i][0], v.com[i][1]);
         }
         for (int i = 0; i < m->nlink; i++) {
             fprintf(f, " %.9g", v.phi[i] * ZP_PLOT_DEG);
@@ -146,7 +146,7 @@ zp_plot_box zp_plot_write_run(FILE *f, const zp_model *m, const zp_row_store *ro
     return b;
 }
 
-void zp_plot_write_pose(FILE *f, const zp_model *m, const zp_plot_pose *ps) {
+void zp_plot_data_pose(FILE *f, const zp_model *m, const zp_plot_pose *ps) {
     for (int i = 0; i < m->nlink; i++) {
         fprintf(f, "%.9g %.9g %.9g %.9g %d %.9g %.9g\n", ps->p[i][0], ps->p[i][1], ps->p[i + 1][0],
                 ps->p[i + 1][1], i + 1, ps->com[i + 1][0], ps->com[i + 1][1]);

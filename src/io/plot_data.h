@@ -24,17 +24,17 @@ typedef struct zp_plot_box {
 } zp_plot_box;
 
 /* the pose of one row (a still frame: the simulator's state at the asked moment) */
-zp_plot_pose zp_plot_pose_of_row(const zp_model *m, const zp_row *r);
+zp_plot_pose zp_plot_data_pose_of_row(const zp_model *m, const zp_row *r);
 /* the pose at time t (within the rows' span) between the two rows around it */
-zp_plot_pose zp_plot_pose_at_t(const zp_model *m, const zp_row_store *rows, double t);
+zp_plot_pose zp_plot_data_pose_at_t(const zp_model *m, const zp_row_store *rows, double t);
 /* b grown to hold (x, y) */
-void zp_plot_grow(zp_plot_box *b, double x, double y);
+void zp_plot_data_grow(zp_plot_box *b, double x, double y);
 /* plot_course.dat: the course, one block per section; returns its extent */
-zp_plot_box zp_plot_write_course(FILE *f, const zp_model *m);
+zp_plot_box zp_plot_data_course(FILE *f, const zp_model *m);
 /* plot_run.dat: one line per trajectory row, named columns; returns the extent of the
    centres-of-mass paths */
-zp_plot_box zp_plot_write_run(FILE *f, const zp_model *m, const zp_row_store *rows);
+zp_plot_box zp_plot_data_run(FILE *f, const zp_model *m, const zp_row_store *rows);
 /* one block of a pose: a line per link "x0 y0 x1 y1 link com_x com_y" */
-void zp_plot_write_pose(FILE *f, const zp_model *m, const zp_plot_pose *ps);
+void zp_plot_data_pose(FILE *f, const zp_model *m, const zp_plot_pose *ps);
 
 #endif

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "scene_read.h"
+#include "scene_load.h"
 
 void zp_plot_opts_default(zp_plot_opts *o) {
     memset(o, 0, sizeof *o);
@@ -28,7 +28,7 @@ int zp_plot_opts_parse_frames(const zp_model *m, const char *text, zp_plot_opts 
         return -1;
     }
     o->frame_kind = text[0] == 'x' ? ZP_PLOT_AT_X : ZP_PLOT_AT_T;
-    int n = zp_scene_parse_list(text + 2, o->frame_at, ZP_PLOT_MAX_FRAMES, why, whylen);
+    int n = zp_scene_values_parse_list(text + 2, o->frame_at, ZP_PLOT_MAX_FRAMES, why, whylen);
     if (n < 0) {
         return -1;
     }

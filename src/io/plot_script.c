@@ -20,7 +20,7 @@ void zp_plot_script_outcome(const zp_result *r, char *buf, size_t len) {
 void zp_plot_script_section(const zp_plot_opts *o, int sec, char *buf, size_t len) {
     if (o->sched) {
         char drive[32];
-        zp_schedule_label(o->sched, sec, drive, sizeof drive);
+        zp_drive_section_label(o->sched, sec, drive, sizeof drive);
         snprintf(buf, len, "section %d (%s)", sec + 1, drive);
     } else {
         snprintf(buf, len, "section %d", sec + 1);

@@ -6,14 +6,14 @@
 #include <stdio.h>
 
 #include "cable.h"
-#include "numtext.h"
+#include "text.h"
 #include "scene_parse.h"
 
-void zp_scene_read_anchor(parse_ctx *c, zp_scene *sc, int k) {
+void zp_scene_cable_anchor(parse_ctx *c, zp_scene *sc, int k) {
     double v[2];
-    int n = zp_scene_get_list(c, k, R_ANY, v, 2);
+    int n = zp_scene_values_list(c, k, R_ANY, v, 2);
     if (n > 0 && n != 2) {
-        zp_scene_bad_count(c, k, n, "2 (x, y)");
+        zp_scene_values_bad_count(c, k, n, "2 (x, y)");
     } else if (n == 2) {
         double *anchor = k == K_CABLE_START ? sc->cable_a : sc->cable_b;
         anchor[0] = v[0];
@@ -21,8 +21,8 @@ void zp_scene_read_anchor(parse_ctx *c, zp_scene *sc, int k) {
     }
 }
 
-void zp_scene_read_cable_sections(parse_ctx *c, zp_scene *sc, int k) {
-    int n = zp_scene_get_list(c, k, R_ANY, sc->x_end, ZP_MAX_SECTIONS);
+void zp_scene_cable_sections(parse_ctx *c, zp_scene *sc, int k) {
+    int n = zp_scene_values_list(c, k, R_ANY, sc->x_end, ZP_MAX_SECTIONS);
     if (n > 0) {
         sc->nsec = n;
     }
@@ -46,13 +46,13 @@ static int good(const parse_ctx *c, int k) {
    no kinks) */
 static void alone(parse_ctx *c, const zp_scene *sc) {
     if (sc->cable && c->sec_line[S_COURSE]) {
-        zp_scene_bad(c, c->sec_line[S_COURSE], "course", NULL,
+        zp_scene_lines_bad(c, c->sec_line[S_COURSE], "course", NULL,
                      "given with [cable] on line %d; expected [course] or [cable], not both (the "
                      "cable lays the course)",
                      c->sec_line[S_CABLE]);
     }
     if (sc->cable && c->key_line[K_KINK_RADIUS]) {
-        zp_scene_bad_key(c, K_KINK_RADIUS, "given with [cable], whose path has no kinks to round");
+        zp_scene_values_bad_key(c, K_KINK_RADIUS, "given with [cable], whose path has no kinks to round");
     }
 }
 
@@ -60,12 +60,12 @@ static void alone(parse_ctx *c, const zp_scene *sc) {
 static void hangs(parse_ctx *c, const zp_scene *sc) {
     int has_len = c->key_line[K_CABLE_LENGTH] != 0, has_ten = c->key_line[K_CABLE_TENSION] != 0;
     if (has_len && has_ten) {
-        zp_scene_bad_key(c, K_CABLE_TENSION, "given with length on line %d",
+        zp_scene_values_bad_key(c, K_CABLE_TENSION, "given with length on line %d",
                          c->key_line[K_CABLE_LENGTH]);
         return;
     }
     if (!has_len && !has_ten) {
-        zp_scene_missing(c, K_CABLE_LENGTH,
+        zp_scene_values_missing(c, K_CABLE_LENGTH,
                          "the cable's unstretched length (m), or `tension` (N) to derive it");
         return;
     }
@@ -80,7 +80,7 @@ static void hangs(parse_ctx *c, const zp_scene *sc) {
     zp_cable cable;
     char why[256];
     if (zp_cable_build(&def, &cable, why, sizeof why) != ZP_OK) {
-        zp_scene_bad_key(c, k, "the cable does not hang: %s", why);
+        zp_scene_values_bad_key(c, k, "the cable does not hang: %s", why);
     }
 }
 
@@ -91,7 +91,7 @@ static void ride_fits(parse_ctx *c, zp_scene *sc) {
     if (!c->key_line[K_CABLE_X_START]) {
         sc->x_start = xa + 0.01 * (xb - xa);
     } else if (!c->key_bad[K_CABLE_X_START] && !(sc->x_start > xa && sc->x_start < xb)) {
-        zp_scene_bad_key(c, K_CABLE_X_START, "%g is not between the anchors (%g, %g)",
+        zp_scene_values_bad_key(c, K_CABLE_X_START, "%g is not between the anchors (%g, %g)",
                          sc->x_start, xa, xb);
         return;
     }
@@ -101,7 +101,7 @@ static void ride_fits(parse_ctx *c, zp_scene *sc) {
     double prev = sc->x_start;
     for (int i = 0; i < sc->nsec; i++) {
         if (!(sc->x_end[i] > prev) || !(sc->x_end[i] < xb)) {
-            zp_scene_bad_key(c, K_CABLE_SECTIONS,
+            zp_scene_values_bad_key(c, K_CABLE_SECTIONS,
                              "item %d (%g) is not past %g and short of anchor B at %g", i + 1,
                              sc->x_end[i], prev, xb);
             return;
@@ -124,7 +124,7 @@ static int given_all(parse_ctx *c) {
     int all = 1;
     for (size_t i = 0; i < sizeof need / sizeof *need; i++) {
         if (!c->key_line[need[i].k]) {
-            zp_scene_missing(c, need[i].k, need[i].what);
+            zp_scene_values_missing(c, need[i].k, need[i].what);
             all = 0;
         }
     }
@@ -137,7 +137,7 @@ void zp_scene_cable_rules(parse_ctx *c, zp_scene *sc) {
         return;
     }
     if (good(c, K_CABLE_START) && good(c, K_CABLE_END) && !(sc->cable_a[0] < sc->cable_b[0])) {
-        zp_scene_bad_key(c, K_CABLE_END, "x = %g is not past anchor A's x = %g", sc->cable_b[0],
+        zp_scene_values_bad_key(c, K_CABLE_END, "x = %g is not past anchor A's x = %g", sc->cable_b[0],
                          sc->cable_a[0]);
         return;
     }

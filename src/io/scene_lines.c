@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "numtext.h"
+#include "text.h"
 #include "scene_parse.h"
 
 static int find_section(const char *name) {
@@ -18,7 +18,7 @@ static int find_section(const char *name) {
     return -1;
 }
 
-void zp_scene_bad(parse_ctx *c, int line, const char *sec, const char *key, const char *fmt, ...) {
+void zp_scene_lines_bad(parse_ctx *c, int line, const char *sec, const char *key, const char *fmt, ...) {
     if (c->nmsg == MSG_MAX) {
         c->nmore++;
         return;
@@ -33,7 +33,7 @@ void zp_scene_bad(parse_ctx *c, int line, const char *sec, const char *key, cons
     va_end(ap);
 }
 
-int zp_scene_flush(parse_ctx *c) {
+int zp_scene_lines_flush(parse_ctx *c) {
     int done[MSG_MAX] = {0};
     for (int n = 0; n < c->nmsg; n++) {
         int best = -1;
@@ -53,13 +53,13 @@ int zp_scene_flush(parse_ctx *c) {
 
 static void unknown_section(parse_ctx *c, const char *name) {
     if (c->schedule) {
-        zp_scene_bad(c, c->line, NULL, NULL,
+        zp_scene_lines_bad(c, c->line, NULL, NULL,
                      "unknown section [%s]; a schedule file holds only [drive] forces", name);
         return;
     }
     for (int s = 0; s < S_COUNT; s++) {
         if (zp_diag_is_near(name, zp_scene_keys_sections[s].name)) {
-            zp_scene_bad(c, c->line, NULL, NULL, "unknown section [%s]; did you mean [%s]?", name,
+            zp_scene_lines_bad(c, c->line, NULL, NULL, "unknown section [%s]; did you mean [%s]?", name,
                          zp_scene_keys_sections[s].name);
             return;
         }
@@ -69,19 +69,19 @@ static void unknown_section(parse_ctx *c, const char *name) {
         size_t len = strlen(list);
         snprintf(list + len, sizeof list - len, " [%s]", zp_scene_keys_sections[s].name);
     }
-    zp_scene_bad(c, c->line, NULL, NULL, "unknown section [%s]; expected one of%s", name, list);
+    zp_scene_lines_bad(c, c->line, NULL, NULL, "unknown section [%s]; expected one of%s", name, list);
 }
 
 static void unknown_key(parse_ctx *c, int s, const char *name) {
     if (c->schedule) {
-        zp_scene_bad(c, c->line, zp_scene_keys_sections[s].name, name,
+        zp_scene_lines_bad(c, c->line, zp_scene_keys_sections[s].name, name,
                      "unknown key; a schedule file holds only [drive] forces");
         return;
     }
     /* a right key in the wrong section says where it belongs, before any near miss */
     for (int k = 0; k < K_COUNT; k++) {
         if (!strcmp(name, zp_scene_keys[k].name)) {
-            zp_scene_bad(c, c->line, zp_scene_keys_sections[s].name, name,
+            zp_scene_lines_bad(c, c->line, zp_scene_keys_sections[s].name, name,
                          "unknown key here; `%s` belongs in [%s]", name, zp_scene_sec_of(k));
             return;
         }
@@ -97,7 +97,7 @@ static void unknown_key(parse_ctx *c, int s, const char *name) {
         }
     }
     if (best >= 0) {
-        zp_scene_bad(c, c->line, zp_scene_keys_sections[s].name, name,
+        zp_scene_lines_bad(c, c->line, zp_scene_keys_sections[s].name, name,
                      "unknown key; did you mean `%s`?", zp_scene_keys[best].name);
         return;
     }
@@ -108,7 +108,7 @@ static void unknown_key(parse_ctx *c, int s, const char *name) {
             snprintf(list + len, sizeof list - len, "%s%s", len ? ", " : "", zp_scene_keys[k].name);
         }
     }
-    zp_scene_bad(c, c->line, zp_scene_keys_sections[s].name, name,
+    zp_scene_lines_bad(c, c->line, zp_scene_keys_sections[s].name, name,
                  "unknown key; expected one of: %s", list);
 }
 
@@ -125,7 +125,7 @@ static int take_line(parse_ctx *c, const char **s, size_t *len) {
     /* reported; the line is read up to it, so the NUL is the only message */
     const char *nul = memchr(p, '\0', n);
     if (nul) {
-        zp_scene_bad(c, c->line, NULL, NULL,
+        zp_scene_lines_bad(c, c->line, NULL, NULL,
                      "a NUL byte at column %zu; expected a text file without NUL bytes",
                      (size_t)(nul - p) + 1);
         n = (size_t)(nul - p);
@@ -147,12 +147,12 @@ static int take_line(parse_ctx *c, const char **s, size_t *len) {
 static void header(parse_ctx *c, char *str, int num) {
     char *close = strchr(str, ']');
     if (!close) {
-        zp_scene_bad(c, c->line, NULL, NULL, "section header without `]`; expected [name]");
+        zp_scene_lines_bad(c, c->line, NULL, NULL, "section header without `]`; expected [name]");
         str[0] = '\0';
         return;
     }
     if (close[1]) {
-        zp_scene_bad(c, c->line, NULL, NULL,
+        zp_scene_lines_bad(c, c->line, NULL, NULL,
                      "text after the section header; expected [name] alone");
     }
     *close = '\0';
@@ -224,7 +224,7 @@ static char *read_line(char *str, int num, void *stream) {
         return str;
     }
     if (len + 2 > (size_t)num) {
-        zp_scene_bad(c, c->line, NULL, NULL,
+        zp_scene_lines_bad(c, c->line, NULL, NULL,
                      "line is %zu characters long; expected at most %d (a [drive] forces line: "
                      "at most %d)",
                      len, num - 2, ZP_FORCES_TEXT_MAX - 1);
@@ -246,7 +246,7 @@ static char *read_line(char *str, int num, void *stream) {
     /* key = value; inih also splits at `:`, which docs/scene-file.md does not use for keys */
     size_t eq = strcspn(str, "=:");
     if (*str && (str[eq] != '=' || eq == 0)) {
-        zp_scene_bad(c, c->line, NULL, NULL,
+        zp_scene_lines_bad(c, c->line, NULL, NULL,
                      "`%s` is not a `key = value` line; expected key = value", str);
         str[0] = '\0';
     }
@@ -256,7 +256,7 @@ static char *read_line(char *str, int num, void *stream) {
 static int on_key(void *user, const char *section, const char *name, const char *value) {
     parse_ctx *c = user;
     if (!*section) {
-        zp_scene_bad(c, c->line, NULL, name,
+        zp_scene_lines_bad(c, c->line, NULL, name,
                      "key outside any section; expected it under its [section]");
         return 1;
     }
@@ -281,7 +281,7 @@ static int on_key(void *user, const char *section, const char *name, const char 
             c->sect_line[c->nsect] = c->line;
             snprintf(c->sect_val[c->nsect], LINE_CAP, "%s", value);
         } else if (c->nsect == ZP_MAX_SECTIONS) {
-            zp_scene_bad(c, c->line, "course", "section",
+            zp_scene_lines_bad(c, c->line, "course", "section",
                          "more than %d sections; expected at most %d", ZP_MAX_SECTIONS,
                          ZP_MAX_SECTIONS);
         }
@@ -289,7 +289,7 @@ static int on_key(void *user, const char *section, const char *name, const char 
         return 1;
     }
     if (c->key_line[k]) {
-        zp_scene_bad(c, c->line, zp_scene_keys_sections[s].name, name,
+        zp_scene_lines_bad(c, c->line, zp_scene_keys_sections[s].name, name,
                      "duplicate key (first set on line %d); expected it once", c->key_line[k]);
         return 1;
     }
@@ -302,7 +302,7 @@ static int on_key(void *user, const char *section, const char *name, const char 
     }
     return 1;
 }
-void zp_scene_parse_text(parse_ctx *c, const char *text, size_t len) {
+void zp_scene_lines_parse(parse_ctx *c, const char *text, size_t len) {
     c->text = text;
     c->len = len;
     ini_parse_stream(read_line, c, on_key, c);

@@ -128,55 +128,53 @@ struct parse_ctx {
 /* ---- scene_lines.c: the line reader, messages and "did you mean" hints ---- */
 
 /* runs inih over text (len bytes, which may hold a NUL: reported); problems are held in c */
-void zp_scene_parse_text(parse_ctx *c, const char *text, size_t len);
+void zp_scene_lines_parse(parse_ctx *c, const char *text, size_t len);
 /* holds one message about line, [sec] key (either may be NULL) */
-void zp_scene_bad(parse_ctx *c, int line, const char *sec, const char *key, const char *fmt, ...)
+void zp_scene_lines_bad(parse_ctx *c, int line, const char *sec, const char *key, const char *fmt, ...)
     __attribute__((format(printf, 5, 6)));
 /* hands the held messages to c->d, ordered by line (stable); returns how many */
-int zp_scene_flush(parse_ctx *c);
+int zp_scene_lines_flush(parse_ctx *c);
 
 /* ---- scene_values.c: raw text -> numbers, each with the key's "expected ..." ---- */
 
 /* a message about key k on its own line: what; expected ... */
-void zp_scene_bad_key(parse_ctx *c, int k, const char *fmt, ...)
+void zp_scene_values_bad_key(parse_ctx *c, int k, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 /* a list of key k with n values where the scene needs another count (said by fmt) */
-void zp_scene_bad_count(parse_ctx *c, int k, int n, const char *fmt, ...)
+void zp_scene_values_bad_count(parse_ctx *c, int k, int n, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
 /* a required key that is absent: pointed at its section's header, else at the file's end */
-void zp_scene_missing(parse_ctx *c, int k, const char *what);
+void zp_scene_values_missing(parse_ctx *c, int k, const char *what);
 /* key k as a number in range r: 1 if set in *out, 0 if absent, -1 if bad (reported) */
-int zp_scene_get_number(parse_ctx *c, int k, zp_range r, double *out);
+int zp_scene_values_number(parse_ctx *c, int k, zp_range r, double *out);
 /* key k as a list in range r: its length if set in out (at most max), 0 absent, -1 bad */
-int zp_scene_get_list(parse_ctx *c, int k, zp_range r, double *out, int max);
-/* key k as a whole number in [lo, hi]: 1 if set, 0 absent, -1 bad */
-int zp_scene_get_whole(parse_ctx *c, int k, unsigned long lo, unsigned long hi, unsigned long *out);
+int zp_scene_values_list(parse_ctx *c, int k, zp_range r, double *out, int max);
 /* key k as text that fits cap bytes: 1 if set, 0 absent, -1 bad */
-int zp_scene_get_text(parse_ctx *c, int k, char *out, size_t cap);
+int zp_scene_values_text(parse_ctx *c, int k, char *out, size_t cap);
 /* a plain key k (number, whole number or text, as its table line says) into its member of sc
    when given and accepted */
-void zp_scene_read_plain(parse_ctx *c, zp_scene *sc, int k);
+void zp_scene_values_plain(parse_ctx *c, zp_scene *sc, int k);
 /* every key's table default (NUM, TXT) into its member of sc; the others are left alone */
-void zp_scene_put_defaults(zp_scene *sc);
+void zp_scene_values_defaults(zp_scene *sc);
 
 /* ---- scene_sections.c, scene_extras.c: the special keys' readers (scene_keys.def) ---- */
 
 /* [drive] forces through the drive module, as many as shape (kind, sections, knots) takes: 1
    read into *s, 0 absent, -1 bad (reported) */
-int zp_scene_parse_forces(parse_ctx *c, const zp_schedule *shape, zp_schedule *s);
+int zp_scene_sections_parse_forces(parse_ctx *c, const zp_schedule *shape, zp_schedule *s);
 /* the schedule's parameters into the scene (its kind is the scene's already) */
-void zp_scene_set_forces(zp_scene *sc, const zp_schedule *s);
+void zp_scene_sections_set_forces(zp_scene *sc, const zp_schedule *s);
 
-zp_scene_reader zp_scene_read_name, zp_scene_read_section, zp_scene_read_lengths,
-    zp_scene_read_masses, zp_scene_read_damping, zp_scene_read_death_angle, zp_scene_read_direction,
-    zp_scene_read_kind, zp_scene_read_knots,
-    zp_scene_read_forces, zp_scene_read_accuracy, zp_scene_read_objective;
-zp_scene_reader zp_scene_read_envelope, zp_scene_read_links, zp_scene_read_range,
-    zp_scene_read_safety_factor, zp_scene_read_wind_range, zp_scene_read_drag_area;
+zp_scene_reader zp_scene_sections_name, zp_scene_sections_section, zp_scene_sections_lengths,
+    zp_scene_sections_masses, zp_scene_sections_damping, zp_scene_sections_death_angle, zp_scene_sections_direction,
+    zp_scene_sections_kind, zp_scene_sections_knots,
+    zp_scene_sections_forces, zp_scene_sections_accuracy, zp_scene_sections_objective;
+zp_scene_reader zp_scene_extras_envelope, zp_scene_extras_links, zp_scene_extras_range,
+    zp_scene_extras_safety_factor, zp_scene_extras_wind_range, zp_scene_extras_drag_area;
 
 /* ---- scene_cable.c: [cable] (docs/model.md "A cable that sags") ---- */
 
-zp_scene_reader zp_scene_read_anchor, zp_scene_read_cable_sections;
+zp_scene_reader zp_scene_cable_anchor, zp_scene_cable_sections;
 /* the drive sections [cable] sections gives (its values counted, as the forces need before
    it is read) */
 int zp_scene_cable_nsec(const parse_ctx *c);

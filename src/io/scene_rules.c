@@ -14,7 +14,7 @@ static int all_good(const parse_ctx *c, int k1, int k2, int k3) {
 static void force_bounds(parse_ctx *c, const zp_scene *sc) {
     if (all_good(c, K_MIN, K_MAX, -1) && sc->force_min > sc->force_max) {
         int k = c->key_line[K_MAX] ? K_MAX : K_MIN;
-        zp_scene_bad(c, c->key_line[k], "drive", zp_scene_keys[k].name,
+        zp_scene_lines_bad(c, c->key_line[k], "drive", zp_scene_keys[k].name,
                      "min %g > max %g; expected min <= max", sc->force_min, sc->force_max);
     }
 }
@@ -30,9 +30,9 @@ static void margin_below_death(parse_ctx *c, const zp_scene *sc) {
         return;
     }
     if (c->key_line[K_MARGIN]) {
-        zp_scene_bad_key(c, K_MARGIN, "%g is not below death_angle %g", sc->margin, least);
+        zp_scene_values_bad_key(c, K_MARGIN, "%g is not below death_angle %g", sc->margin, least);
     } else {
-        zp_scene_bad_key(c, K_DEATH_ANGLE,
+        zp_scene_values_bad_key(c, K_DEATH_ANGLE,
                          "%g is not above the default [optimize] margin %g (give a smaller "
                          "margin)",
                          least, sc->margin);
@@ -46,7 +46,7 @@ static void row_count(parse_ctx *c, const zp_scene *sc) {
         return;
     }
     int k = c->key_line[K_OUTPUT_DT] ? K_OUTPUT_DT : K_T_MAX;
-    zp_scene_bad(c, c->key_line[k], "solver", zp_scene_keys[k].name,
+    zp_scene_lines_bad(c, c->key_line[k], "solver", zp_scene_keys[k].name,
                  "t_max %g s / output_dt %g s asks for %.3g trajectory rows; expected at most %d "
                  "(a larger output_dt or a smaller t_max)",
                  sc->t_max, sc->output_dt, rows, ZP_MAX_ROWS);
@@ -54,12 +54,12 @@ static void row_count(parse_ctx *c, const zp_scene *sc) {
 
 static void drag(parse_ctx *c, const zp_scene *sc) {
     if (sc->ndrag && all_good(c, K_LENGTHS, -1, -1) && sc->nlink && sc->ndrag != sc->nlink + 1) {
-        zp_scene_bad_count(c, K_DRAG_AREA, sc->ndrag, "%d (the trolley's, then one per link)",
+        zp_scene_values_bad_count(c, K_DRAG_AREA, sc->ndrag, "%d (the trolley's, then one per link)",
                            sc->nlink + 1);
     }
     if (sc->ndrag && all_good(c, K_AIR_DENSITY, -1, -1) && !(sc->air_density > 0)) {
         int k = c->key_line[K_AIR_DENSITY] ? K_AIR_DENSITY : K_DRAG_AREA;
-        zp_scene_bad(c, c->key_line[k], "physics", zp_scene_keys[k].name,
+        zp_scene_lines_bad(c, c->key_line[k], "physics", zp_scene_keys[k].name,
                      "air_density %g with drag_area given; expected air_density > 0",
                      sc->air_density);
     }
@@ -68,7 +68,7 @@ static void drag(parse_ctx *c, const zp_scene *sc) {
 /* wind acts on the bodies through their drag only: a range of it without drag changes nothing */
 static void wind_needs_drag(parse_ctx *c, const zp_scene *sc) {
     if (sc->wind_varied && !sc->ndrag && all_good(c, K_DRAG_AREA, -1, -1)) {
-        zp_scene_bad_key(c, K_WIND_RANGE, "given without [physics] drag_area, through which "
+        zp_scene_values_bad_key(c, K_WIND_RANGE, "given without [physics] drag_area, through which "
                                           "wind acts");
     }
 }

@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "scene_parse.h"
-#include "scene_read.h"
+#include "scene_load.h"
 
 static void list(char *out, size_t cap, const double *v, int n) {
     size_t len = 0;
@@ -160,7 +160,7 @@ static void value_text(const zp_scene *sc, int k, char *out, size_t cap) {
     }
 }
 
-int zp_scene_print_added(const zp_scene *sc, FILE *f, const char *indent) {
+int zp_scene_show_added(const zp_scene *sc, FILE *f, const char *indent) {
     int n = 0;
     for (int s = 0; s < S_COUNT; s++) {
         int optional = zp_scene_keys_sections[s].optional;
@@ -201,7 +201,7 @@ static int shown(const zp_scene *sc, int s, int k) {
 static void json_value(FILE *f, const char *text) {
     double v[2 * ZP_MAX_LINKS + 2];
     char why[64];
-    int n = zp_scene_parse_list(text, v, (int)(sizeof v / sizeof *v), why, sizeof why);
+    int n = zp_scene_values_parse_list(text, v, (int)(sizeof v / sizeof *v), why, sizeof why);
     if (n == 1 && !strchr(text, ',')) {
         fprintf(f, "%.17g", v[0]);
         return;
@@ -224,7 +224,7 @@ static void json_value(FILE *f, const char *text) {
     fputc('"', f);
 }
 
-void zp_scene_print_optional(const zp_scene *sc, FILE *f, int json) {
+void zp_scene_show_optional(const zp_scene *sc, FILE *f, int json) {
     for (int s = 0, first = 1; s < S_COUNT; s++) {
         if (!zp_scene_keys_sections[s].optional) {
             continue;

@@ -4,14 +4,14 @@
 
 #include <string.h>
 
-#include "scene_read.h"
+#include "scene_load.h"
 
 /* --schedule FILE, then --force: each replaces the schedule's parameters; --seed, --max-evals */
 static void overrides(const char *cmd, zp_problem *p, const zp_overrides *ov, zp_diag *d) {
     zp_scene *sc = &p->sc;
     if (ov->schedule) {
-        zp_scene_overlay_schedule(ov->schedule, sc, d);
-        p->sched = zp_schedule_of_scene(sc);
+        zp_scene_load_overlay_schedule(ov->schedule, sc, d);
+        p->sched = zp_drive_of_scene(sc);
     }
     char why[256];
     if (ov->force && zp_drive_parse(&p->sched, ov->force, &p->sched, why, sizeof why)) {
@@ -36,7 +36,7 @@ int zp_prep_load(const char *cmd, const char *path, const char *text, const zp_o
     } else if (path) {
         read_ok = zp_scene_load_file(path, !ov->unnamed_ok, sc, d) == ZP_OK;
     } else {
-        zp_scene_seed(sc);
+        zp_scene_load_seed(sc);
     }
     if (read_ok) {
         zp_problem_build(p, 0, d);

@@ -16,7 +16,7 @@
 #include "estimate.h"
 #include "out_columns.h"
 #include "prep.h"
-#include "scene_read.h"
+#include "scene_load.h"
 #include "sens.h"
 
 /* the stop flag is handed to the search as its sig_atomic_t flag */
@@ -237,7 +237,7 @@ int zipopt_scene_set_forces(zipopt_scene *s, const double *force, int n, char *e
             return -1;
         }
     }
-    s->st.sched = zp_schedule_with(sh, force);
+    s->st.sched = zp_drive_with(sh, force);
     return 0;
 }
 
@@ -255,12 +255,12 @@ int zipopt_scene_load_schedule(zipopt_scene *s, const char *path, char *err, siz
         return -1;
     }
     *sc = s->st.sc;
-    int rc = zp_scene_overlay_schedule(path, sc, &d) == ZP_OK ? 0 : -1;
+    int rc = zp_scene_load_overlay_schedule(path, sc, &d) == ZP_OK ? 0 : -1;
     if (rc) {
         diag_text(&d, err, errlen);
     } else {
-        zp_schedule given = zp_schedule_of_scene(sc);
-        s->st.sched = zp_schedule_with(&s->st.sched, given.p);
+        zp_schedule given = zp_drive_of_scene(sc);
+        s->st.sched = zp_drive_with(&s->st.sched, given.p);
     }
     free(sc);
     return rc;
@@ -338,7 +338,7 @@ static void run_numbers(const zp_model *m, const zp_result *r, double *v) {
     const double tail[] = {reached[ZP_LIMIT_G],
                            reached[ZP_LIMIT_JOINT],
                            reached[ZP_LIMIT_KINK_DV],
-                           zp_limit_reached_in(r, ZP_LIMIT_ARRIVAL) ? reached[ZP_LIMIT_ARRIVAL]
+                           zp_limits_reached_in(r, ZP_LIMIT_ARRIVAL) ? reached[ZP_LIMIT_ARRIVAL]
                                                                      : NAN,
                            r->peaks.normal_min,
                            r->peaks.normal_max,

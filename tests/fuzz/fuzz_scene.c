@@ -7,7 +7,7 @@
 
 #include "course.h"
 #include "model.h"
-#include "scene_read.h"
+#include "scene_load.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

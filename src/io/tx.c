@@ -1,7 +1,7 @@
 /* The write-aside transaction (out_file.h): folders opened one name at a time, files made
    exclusively in a private folder, moved as a set under flock, and a cleanup that never
    follows a link, run on a signal by the one thread that takes the signals. */
-#include "out_file.h"
+#include "tx.h"
 
 #include <errno.h>
 #include <fcntl.h>

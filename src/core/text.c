@@ -1,5 +1,5 @@
 /* docs/scene-file.md numbers and lists: strict decimals, so that a typo is an error, not a zero. */
-#include "numtext.h"
+#include "text.h"
 
 #include <ctype.h>
 #include <math.h>

@@ -2,7 +2,7 @@
    whole (capped in size), the line pass (scene_lines.c), every key read as its line of
    scene_keys.def says and the rules joining them; every violation reported as
    FILE:LINE: [section] key: what; expected. */
-#include "scene_read.h"
+#include "scene_load.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -23,7 +23,7 @@ static void set_defaults(zp_scene *sc, const char *path) {
     if (dot && dot != sc->name) {
         *dot = '\0';
     }
-    zp_scene_put_defaults(sc);
+    zp_scene_values_defaults(sc);
     /* the keys whose default the table leaves to hand (HAND) */
     sc->ndamping = 1;
     sc->death_angle = 180;
@@ -42,7 +42,7 @@ static void set_defaults(zp_scene *sc, const char *path) {
 /* a scene is a few kilobytes; the cap keeps /dev/zero or a wrong file from eating memory */
 #define SCENE_FILE_MAX (1 << 20)
 
-char *zp_scene_read_file(const char *path, size_t *len, zp_diag *d) {
+char *zp_scene_load_read_file(const char *path, size_t *len, zp_diag *d) {
     FILE *f = fopen(path, "rb");
     if (!f) {
         zp_diag_add(d, path, 0, NULL, NULL, "cannot open: %s; expected a readable scene file",
@@ -91,11 +91,11 @@ static void read_keys(parse_ctx *c, zp_scene *sc) {
     for (int k = 0; k < K_COUNT; k++) {
         const zp_scene_key *key = &zp_scene_keys[k];
         if (!c->key_line[k] && required(c, k)) {
-            zp_scene_missing(c, k, key->dflt.text);
+            zp_scene_values_missing(c, k, key->dflt.text);
         } else if (key->read) {
             key->read(c, sc, k);
         } else {
-            zp_scene_read_plain(c, sc, k);
+            zp_scene_values_plain(c, sc, k);
         }
     }
     sc->robust = c->sec_line[S_ROBUST] != 0;
@@ -115,14 +115,14 @@ static zp_status load_text(const char *text, size_t len, const char *path, int n
     c->file = path;
     c->d = d;
     c->need_name = need_name;
-    zp_scene_parse_text(c, text, len);
+    zp_scene_lines_parse(c, text, len);
     read_keys(c, sc);
     for (int k = 0; k < K_COUNT; k++) {
         if (c->key_line[k]) {
             sc->given[k / 64] |= 1ull << (k % 64);
         }
     }
-    int nbad = zp_scene_flush(c);
+    int nbad = zp_scene_lines_flush(c);
     free(c);
     return nbad ? ZP_ERR_INPUT : ZP_OK;
 }
@@ -138,7 +138,7 @@ zp_status zp_scene_load_string(const char *text, const char *path, zp_scene *sc,
 
 zp_status zp_scene_load_file(const char *path, int need_name, zp_scene *sc, zp_diag *d) {
     size_t len;
-    char *text = zp_scene_read_file(path, &len, d);
+    char *text = zp_scene_load_read_file(path, &len, d);
     if (!text) {
         set_defaults(sc, path);
         return ZP_ERR_INPUT;
@@ -152,7 +152,7 @@ zp_status zp_scene_load(const char *path, zp_scene *sc, zp_diag *d) {
     return zp_scene_load_file(path, 1, sc, d);
 }
 
-void zp_scene_seed(zp_scene *sc) {
+void zp_scene_load_seed(zp_scene *sc) {
     set_defaults(sc, "<built-in seed scene>");
     strcpy(sc->name, "seed");
     static const double x_end[] = {60, 100, 140};
@@ -177,9 +177,9 @@ void zp_scene_seed(zp_scene *sc) {
     }
 }
 
-zp_status zp_scene_overlay_schedule(const char *path, zp_scene *sc, zp_diag *d) {
+zp_status zp_scene_load_overlay_schedule(const char *path, zp_scene *sc, zp_diag *d) {
     size_t len;
-    char *text = zp_scene_read_file(path, &len, d);
+    char *text = zp_scene_load_read_file(path, &len, d);
     if (!text) {
         return ZP_ERR_INPUT;
     }
@@ -192,19 +192,19 @@ zp_status zp_scene_overlay_schedule(const char *path, zp_scene *sc, zp_diag *d) 
     c->file = path;
     c->d = d;
     c->schedule = 1;
-    zp_scene_parse_text(c, text, len);
+    zp_scene_lines_parse(c, text, len);
     free(text);
     /* the forces must fit the scene they are laid over */
-    zp_schedule shape = zp_schedule_of_scene(sc), sched;
-    if (zp_scene_parse_forces(c, &shape, &sched) == 0) {
-        zp_scene_missing(c, K_FORCES, "the forces (N), one per section");
+    zp_schedule shape = zp_drive_of_scene(sc), sched;
+    if (zp_scene_sections_parse_forces(c, &shape, &sched) == 0) {
+        zp_scene_values_missing(c, K_FORCES, "the forces (N), one per section");
     }
-    int nbad = zp_scene_flush(c);
+    int nbad = zp_scene_lines_flush(c);
     free(c);
     if (nbad) {
         return ZP_ERR_INPUT;
     }
-    zp_scene_set_forces(sc, &sched);
+    zp_scene_sections_set_forces(sc, &sched);
     /* sc->path names the scene, not this file: no line there to point at */
     sc->line_forces = 0;
     return ZP_OK;
