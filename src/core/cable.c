@@ -143,6 +143,12 @@ static zp_status refuse(char *why, size_t whylen, const char *text) {
     return ZP_ERR_INPUT;
 }
 
+zp_cable_def zp_cable_def_of_scene(const zp_scene *sc) {
+    return (zp_cable_def){sc->cable_a[0],     sc->cable_a[1],     sc->cable_b[0],
+                          sc->cable_b[1],     sc->cable_length,   sc->cable_tension,
+                          sc->cable_weight,   sc->cable_ea > 0 ? sc->cable_ea : INFINITY};
+}
+
 zp_status zp_cable_build(const zp_cable_def *d, zp_cable *c, char *why, size_t whylen) {
     if (!isfinite(d->xa) || !isfinite(d->ya) || !isfinite(d->xb) || !isfinite(d->yb) ||
         !isfinite(d->length) || !isfinite(d->tension) || !isfinite(d->weight) || isnan(d->ea)) {

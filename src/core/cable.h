@@ -6,6 +6,7 @@
 #include <stddef.h>
 
 #include "diag.h"
+#include "scene.h"
 
 /* What [cable] gives: plain data. Exactly one of length and tension is given (> 0), the other
    is 0. Loads are forces (N) throughout, so the cable needs no gravity: a caller turns masses
@@ -34,6 +35,8 @@ typedef struct zp_cable {
    inextensible length not longer than |AB| (it cannot hang), a tension on a weightless
    inextensible cable (the taut chord under any tension). ZP_ERR_NUMERIC when L0 could not be
    solved for. An elastic cable of any length hangs, stretched when shorter than |AB|. */
+/* The scene's [cable] as a description (an ea not given: inextensible). */
+zp_cable_def zp_cable_def_of_scene(const zp_scene *sc);
 zp_status zp_cable_build(const zp_cable_def *d, zp_cable *c, char *why, size_t whylen);
 
 /* How the cable hangs under its own weight alone (one elastic catenary from A to B). */

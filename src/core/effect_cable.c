@@ -14,9 +14,7 @@ static int cable_build(zp_model *m, const zp_scene *sc, zp_diag *d) {
     if (!sc->cable) {
         return 0;
     }
-    zp_cable_def def = {sc->cable_a[0], sc->cable_a[1], sc->cable_b[0], sc->cable_b[1],
-                        sc->cable_length, sc->cable_tension, sc->cable_weight,
-                        sc->cable_ea > 0 ? sc->cable_ea : INFINITY};
+    zp_cable_def def = zp_cable_def_of_scene(sc);
     zp_cable cable;
     char why[256];
     if (zp_cable_build(&def, &cable, why, sizeof why) != ZP_OK) {

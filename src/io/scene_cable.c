@@ -74,9 +74,7 @@ static void hangs(parse_ctx *c, const zp_scene *sc) {
         c->key_bad[K_CABLE_WEIGHT] || c->key_bad[K_CABLE_EA] || !(sc->cable_a[0] < sc->cable_b[0])) {
         return;
     }
-    zp_cable_def def = {sc->cable_a[0], sc->cable_a[1], sc->cable_b[0], sc->cable_b[1],
-                        sc->cable_length, sc->cable_tension, sc->cable_weight,
-                        sc->cable_ea > 0 ? sc->cable_ea : INFINITY};
+    zp_cable_def def = zp_cable_def_of_scene(sc);
     zp_cable cable;
     char why[256];
     if (zp_cable_build(&def, &cable, why, sizeof why) != ZP_OK) {
