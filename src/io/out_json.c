@@ -170,23 +170,8 @@ static void write_cable(FILE *f, const zp_model *m, const zp_result *r) {
     zp_out_json_key(f, "sag_mid", ok ? cr.sag_mid : NAN, "},\n  ");
 }
 
-void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp_sim *s,
-                        const zp_run_meta *meta) {
-    int nsamples, nk;
-    const zp_row *samples = zp_sim_samples(s, &nsamples);
-    const zp_crossing *cross = zp_sim_crossings(s, &nk);
-    fputs("{\n  \"scene\": ", f);
-    zp_out_json_string(f, meta->scene);
-    fprintf(f, ",\n  \"method\": \"%s\",\n  \"formulation\": \"%s\",\n  ", meta->method,
-            meta->formulation);
-    zp_out_json_key(f, "rtol", meta->rtol, ", ");
-    zp_out_json_key(f, "atol", meta->atol, ",\n");
-    fputs("  \"forces\": ", f);
-    zp_out_json_list(f, meta->sched->p, meta->sched->np, 1.0);
-    fprintf(f, ",\n  \"outcome\": \"%s\",\n  ", zp_sim_outcome_name(r->outcome));
-    zp_out_json_key(f, "time", r->time, ",\n  ");
-    zp_out_json_key(f, "x", r->x, ",\n  ");
-    zp_out_json_key(f, "speed", r->v, ",\n");
+/* the error estimate and the accuracy met, when the run has them */
+static void checks_json(FILE *f, const zp_run_meta *meta) {
     if (meta->estimate) {
         /* null when the tighter run failed: no estimate, no verdict */
         const zp_estimate *e = meta->estimate;
@@ -205,16 +190,11 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
         zp_out_json_key(f, "rtol", a->rtol, ", ");
         fprintf(f, "\"reruns\": %d},\n", a->reruns);
     }
-    if (r->died_link) {
-        fprintf(f, "  \"died_link\": %d,\n", r->died_link);
-    } else {
-        fputs("  \"died_link\": null,\n", f);
-    }
-    if (r->outcome == ZP_OUTCOME_STALLED) {
-        fprintf(f, "  \"stall_reason\": \"%s\",\n", zp_sim_stall_name(r->stall));
-    } else {
-        fputs("  \"stall_reason\": null,\n", f);
-    }
+}
+
+static void kinks_json(FILE *f, const zp_model *m, const zp_sim *s) {
+    int nk;
+    const zp_crossing *cross = zp_sim_crossings(s, &nk);
     fputs("  \"kinks\": [", f);
     for (int k = 0; k < nk; k++) {
         const zp_crossing *c = &cross[k];
@@ -226,8 +206,10 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
         zp_out_json_key(f, "energy_lost", c->energy_lost, m->narc ? ", \"rounded\": true}" : "}");
     }
     fputs(nk ? "\n  ],\n" : "],\n", f);
-    fprintf(f, "  \"kink_crossings\": %d,\n  \"max_rel_angle\": ", r->ncross);
-    zp_out_json_list(f, r->max_rel_angle, m->nlink, DEG);
+}
+
+/* the energy audit, the cable and the drive, closing the energy object */
+static void energy_json(FILE *f, const zp_model *m, const zp_result *r, const zp_run_meta *meta) {
     fputs(",\n  \"energy\": {", f);
     zp_out_json_key(f, "initial", r->e_initial, ", ");
     zp_out_json_key(f, "final", r->e_final, ", ");
@@ -253,6 +235,39 @@ void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp
         zp_out_json_key(f, "energy", r->w_drive, ", ");
         zp_out_json_key(f, "time_at_cap", r->drive_time_at_cap, "},\n");
     }
+}
+
+void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp_sim *s,
+                        const zp_run_meta *meta) {
+    int nsamples;
+    const zp_row *samples = zp_sim_samples(s, &nsamples);
+    fputs("{\n  \"scene\": ", f);
+    zp_out_json_string(f, meta->scene);
+    fprintf(f, ",\n  \"method\": \"%s\",\n  \"formulation\": \"%s\",\n  ", meta->method,
+            meta->formulation);
+    zp_out_json_key(f, "rtol", meta->rtol, ", ");
+    zp_out_json_key(f, "atol", meta->atol, ",\n");
+    fputs("  \"forces\": ", f);
+    zp_out_json_list(f, meta->sched->p, meta->sched->np, 1.0);
+    fprintf(f, ",\n  \"outcome\": \"%s\",\n  ", zp_sim_outcome_name(r->outcome));
+    zp_out_json_key(f, "time", r->time, ",\n  ");
+    zp_out_json_key(f, "x", r->x, ",\n  ");
+    zp_out_json_key(f, "speed", r->v, ",\n");
+    checks_json(f, meta);
+    if (r->died_link) {
+        fprintf(f, "  \"died_link\": %d,\n", r->died_link);
+    } else {
+        fputs("  \"died_link\": null,\n", f);
+    }
+    if (r->outcome == ZP_OUTCOME_STALLED) {
+        fprintf(f, "  \"stall_reason\": \"%s\",\n", zp_sim_stall_name(r->stall));
+    } else {
+        fputs("  \"stall_reason\": null,\n", f);
+    }
+    kinks_json(f, m, s);
+    fprintf(f, "  \"kink_crossings\": %d,\n  \"max_rel_angle\": ", r->ncross);
+    zp_out_json_list(f, r->max_rel_angle, m->nlink, DEG);
+    energy_json(f, m, r, meta);
     fputs("  \"loads\": {\"joint_peak\": ", f);
     zp_out_json_list(f, r->peaks.joint, m->nlink, 1.0);
     fputs(", ", f);
