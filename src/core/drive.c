@@ -223,16 +223,18 @@ zp_schedule zp_drive_scaled(const zp_schedule *s, const double *scale) {
     return out;
 }
 
+/* 1 when a force F at speed v asks for more than the drive's power */
+static int over_power(const zp_schedule *s, double F, double v) {
+    return s->power > 0 && fabs(F * v) > s->power;
+}
+
 double zp_drive_force(const zp_schedule *s, const zp_drive_state *st) {
     double F = kind_of(s)->force(s, st);
-    if (s->power > 0 && fabs(F * st->v) > s->power) {
-        F = copysign(s->power / fabs(st->v), F);
-    }
-    return F;
+    return over_power(s, F, st->v) ? copysign(s->power / fabs(st->v), F) : F;
 }
 
 int zp_drive_capped(const zp_schedule *s, const zp_drive_state *st) {
-    return s->power > 0 && fabs(kind_of(s)->force(s, st) * st->v) > s->power;
+    return over_power(s, kind_of(s)->force(s, st), st->v);
 }
 
 int zp_drive_breaks(const zp_schedule *s, double *t, int max) {

@@ -160,6 +160,14 @@ static void script_energy(FILE *f, const zp_model *m, const zp_result *r, const 
     fputc('\n', f);
 }
 
+/* one plotted line per joint: column <what><i> of plot_run.dat against column axis */
+static void joint_series(FILE *f, int nlink, const char *axis, const char *what) {
+    for (int i = 1; i <= nlink; i++) {
+        fprintf(f, "%s'plot_run.dat' using '%s':'%s%d' with lines lt %d title 'joint %d'",
+                i > 1 ? ", \\\n     " : "", axis, what, i, i, i);
+    }
+}
+
 static void script_angles(FILE *f, const zp_model *m, const zp_result *r, const kinks *kk,
                           const zp_plot_opts *o, const zp_row *last) {
     double dmax = m->phi_max * ZP_PLOT_DEG, keep = (m->phi_max - o->margin) * ZP_PLOT_DEG;
@@ -188,10 +196,7 @@ static void script_angles(FILE *f, const zp_model *m, const zp_result *r, const 
     }
     kink_lines(f, kk);
     fputs("plot ", f);
-    for (int i = 1; i <= m->nlink; i++) {
-        fprintf(f, "%s'plot_run.dat' using 't':'phi%d' with lines lt %d title 'joint %d'",
-                i > 1 ? ", \\\n     " : "", i, i, i);
-    }
+    joint_series(f, m->nlink, "t", "phi");
     if (r->outcome == ZP_OUTCOME_DIED && last) {
         double phi[ZP_MAX_LINKS], w[ZP_MAX_LINKS];
         zp_state_relative(m, &last->c, phi, w);
@@ -216,10 +221,7 @@ static void script_loads(FILE *f, const zp_model *m, const zp_result *r, const k
     death_line(f, r);
     fputs("set ylabel 'joint reaction (N)'\nset format x ''\n", f);
     fputs("plot ", f);
-    for (int i = 1; i <= m->nlink; i++) {
-        fprintf(f, "%s'plot_run.dat' using 't':'joint%d' with lines lt %d title 'joint %d'",
-                i > 1 ? ", \\\n     " : "", i, i, i);
-    }
+    joint_series(f, m->nlink, "t", "joint");
     fputs("\nset ylabel 'normal force (N)'\nset xlabel 't (s)'\nset format x '%g'\n"
           "plot 'plot_run.dat' using 't':'normal' with lines lw 2 lc rgb '#222222' "
           "title 'course on trolley'\n"
@@ -254,19 +256,13 @@ static void script_along(FILE *f, const zp_model *m, const zp_result *r, const z
             "lc rgb '#ff7f0e'\n"
             "plot ",
             -dmax - 20, dmax + 20, keep, keep, -keep, -keep);
-    for (int i = 1; i <= m->nlink; i++) {
-        fprintf(f, "%s'plot_run.dat' using 'x':'phi%d' with lines lt %d title 'joint %d'",
-                i > 1 ? ", \\\n     " : "", i, i, i);
-    }
+    joint_series(f, m->nlink, "x", "phi");
     fputs("\nunset arrow 101\nunset arrow 102\nset autoscale y\nset ylabel 'felt g (g)'\n"
           "plot 'plot_run.dat' using 'x':'felt_g' with lines lw 2 lc rgb '#9467bd' "
           "title 'largest felt g of the links'\n"
           "set format x '%g'\nset xlabel 'x (m)'\nset ylabel 'joint reaction (N)'\nplot ",
           f);
-    for (int i = 1; i <= m->nlink; i++) {
-        fprintf(f, "%s'plot_run.dat' using 'x':'joint%d' with lines lt %d title 'joint %d'",
-                i > 1 ? ", \\\n     " : "", i, i, i);
-    }
+    joint_series(f, m->nlink, "x", "joint");
     fputs("\nunset multiplot\n", f);
 }
 
