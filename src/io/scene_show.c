@@ -104,6 +104,14 @@ static int hand_text(const zp_scene *sc, int k, char *out, size_t cap) {
     case K_CABLE_SECTIONS:
         list(out, cap, sc->x_end, sc->nsec);
         return 1;
+    case K_CABLE_LENGTH: /* the one not given follows from the other */
+    case K_CABLE_TENSION:
+        if (k == K_CABLE_LENGTH ? sc->cable_length > 0 : sc->cable_tension > 0) {
+            number(out, cap, k == K_CABLE_LENGTH ? sc->cable_length : sc->cable_tension);
+        } else {
+            snprintf(out, cap, "from the %s", k == K_CABLE_LENGTH ? "tension" : "length");
+        }
+        return 1;
     case K_CABLE_EA:
         if (sc->cable_ea > 0) {
             number(out, cap, sc->cable_ea);
