@@ -109,7 +109,7 @@ static void free_point(gpoint *g) {
 /* the corner's model runs on the nominal's workspaces: the same state and events */
 static int same_kind(const zp_model *a, const zp_model *b) {
     return a->nlink == b->nlink && a->nsec == b->nsec && a->physics == b->physics &&
-           a->nwork == b->nwork && a->narc == b->narc && a->nkink == b->nkink &&
+           a->nwork == b->nwork && a->ndrive == b->ndrive && a->narc == b->narc && a->nkink == b->nkink &&
            zp_events_count(a) == zp_events_count(b);
 }
 

@@ -120,6 +120,11 @@ int zp_sim_rhs_rolling(double t, const double *y, double *ydot, void *user) {
     zp_sim *s = user;
     zp_drive_now dn = drive_now(s, t, y, ydot + s->wd);
     int rc = s->form->rhs(s->m, s->fwork, &dn, y, ydot, NULL);
+    if (s->stuck) {
+        /* held, x'' is 0 exactly, not to round-off: a hold that lasts (a drive's force still
+           growing) would drift past the start's boundary, a roll-back */
+        ydot[s->w0 / 2] = 0;
+    }
     if (rc == ZP_RHS_FRICTION_INCONSISTENT) {
         s->inconsistent_t = t;
         s->inconsistent_x = y[0];
