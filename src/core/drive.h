@@ -83,25 +83,32 @@ zp_schedule zp_drive_scaled(const zp_schedule *s, const double *scale);
 double zp_drive_force(const zp_schedule *s, const zp_drive_state *st);
 /* 1 when the cap binds at st: the kind's force asks for more than power / |v|. */
 int zp_drive_capped(const zp_schedule *s, const zp_drive_state *st);
+/* The drive's state at an instant (v along its direction, what a power caps). */
+static inline zp_drive_state zp_drive_state_at(zp_drive_dir d, double t, double x, double xdot,
+                                               int sec, double fp) {
+    return (zp_drive_state){t, x, d == ZP_DRIVE_TANGENT ? xdot * sqrt(1 + fp * fp) : xdot, sec};
+}
+
+/* The applied force F (N) as a force on the trolley (fx, fy), pointing as d says on a course
+   of slope fp. */
+static inline void zp_drive_split(zp_drive_dir d, double F, double fp, double *fx, double *fy) {
+    if (d == ZP_DRIVE_TANGENT) {
+        double norm = sqrt(1 + fp * fp);
+        *fx = F / norm;
+        *fy = F * fp / norm;
+    } else {
+        *fx = F;
+        *fy = 0;
+    }
+}
+
 /* N, that force on the trolley (fx, fy) at time t (s), the trolley at x (m) moving at xdot = x'
    (m/s) on section sec, the course's slope there fp, pointing as d says. Inline: every
    evaluation of the equations of motion asks for it. */
 static inline void zp_drive_push(const zp_schedule *s, zp_drive_dir d, double t, double x,
                                  double xdot, int sec, double fp, double *fx, double *fy) {
-    if (d == ZP_DRIVE_TANGENT) {
-        double norm = sqrt(1 + fp * fp);
-        double F = zp_drive_force(s, &(zp_drive_state){t, x, xdot * norm, sec});
-        *fx = F / norm;
-        *fy = F * fp / norm;
-    } else {
-        *fx = zp_drive_force(s, &(zp_drive_state){t, x, xdot, sec});
-        *fy = 0;
-    }
-}
-/* The drive's state at that instant (v along its direction, as zp_drive_push reads it). */
-static inline zp_drive_state zp_drive_state_at(zp_drive_dir d, double t, double x, double xdot,
-                                               int sec, double fp) {
-    return (zp_drive_state){t, x, d == ZP_DRIVE_TANGENT ? xdot * sqrt(1 + fp * fp) : xdot, sec};
+    zp_drive_state st = zp_drive_state_at(d, t, x, xdot, sec, fp);
+    zp_drive_split(d, zp_drive_force(s, &st), fp, fx, fy);
 }
 
 /* How many states a drive with response time tau (s; [drive] response) adds to the
@@ -114,18 +121,6 @@ static inline int zp_drive_nstate(double tau) {
    (docs/model.md "A real drive"). */
 double zp_drive_lag_rate(const zp_schedule *s, double tau, const zp_drive_state *st,
                          double applied);
-/* The applied force F (N) as a force on the trolley (fx, fy), pointing as d says on a course
-   of slope fp: zp_drive_push's split, for a force the schedule does not give at once. */
-static inline void zp_drive_split(zp_drive_dir d, double F, double fp, double *fx, double *fy) {
-    if (d == ZP_DRIVE_TANGENT) {
-        double norm = sqrt(1 + fp * fp);
-        *fx = F / norm;
-        *fy = F * fp / norm;
-    } else {
-        *fx = F;
-        *fy = 0;
-    }
-}
 
 /* The instants (s, ascending, at most max) where the force jumps in time; returns how many.
    The simulator stops its integrator there. 0 for per-section constants. */

@@ -12,19 +12,14 @@ static zp_track plain_track(const zp_model *m, const zp_course *c, int sec, doub
     return zp_course_eval(c, sec, x);
 }
 
-/* the drive's scheduled force F_s at time t and state y on the current section, the course's
-   slope there fp */
-static zp_drive_state drive_state(const zp_sim *s, double fp, double t, const double *y) {
-    return zp_drive_state_at(s->m->drive, t, y[0], y[s->w0 / 2], s->sec, fp);
-}
-
 /* a drive with a response time: the force applied is the state's F_a, on dn; F_a's rate into
    *rate where rate is not NULL */
 static void drive_lagged(const zp_sim *s, double t, const double *y, zp_drive_now *dn,
                          double *rate) {
     double applied = y[s->wd];
     if (rate) {
-        zp_drive_state st = drive_state(s, dn->tr.fp, t, y);
+        zp_drive_state st =
+            zp_drive_state_at(s->m->drive, t, y[0], y[s->w0 / 2], s->sec, dn->tr.fp);
         *rate = zp_drive_lag_rate(s->sched, s->m->drive_response, &st, applied);
     }
     zp_drive_split(s->m->drive, applied, dn->tr.fp, &dn->fx, &dn->fy);
