@@ -12,8 +12,8 @@ static zp_track plain_track(const zp_model *m, const zp_course *c, int sec, doub
     return zp_course_eval(c, sec, x);
 }
 
-/* a drive with a response time: the force applied is the state's F_a, on dn; F_a's rate into
-   *rate where rate is not NULL */
+/* a drive with a response time: the force applied is the state's F_a, on dn; where rate is
+   not NULL, F_a's rate into it */
 static void drive_lagged(const zp_sim *s, double t, const double *y, zp_drive_now *dn,
                          double *rate) {
     double applied = y[s->wd];
