@@ -5,7 +5,8 @@
    (both formulations, every method); under a power cap the trolley's speed and F_a follow the
    three-state ODE of the bare trolley written here and integrated by GSL; the energy balance
    holds with the applied force's work; response = 0 runs bit for bit as no key; the gradients
-   of the finish time agree with central differences of whole runs; a trolley held by rolling
+   of the finish time agree with central differences of whole runs (with and without rolling
+   resistance); a trolley held by rolling
    resistance at the start is released once the drive's force has grown; a negative response
    exits 2 naming the file, the line and the key. */
 #include <gsl/gsl_errno.h>
@@ -195,41 +196,47 @@ static void test_zero(void) {
     zp_model_free(mb);
 }
 
-/* d time / d p_k through a kink (its impulse, the lag's rate jumping there) against the
-   four-point difference of whole runs at rtol 1e-11 */
+/* d time / d p_k through a kink (its impulse, the lag's rate jumping there), without and with
+   rolling resistance, against the four-point difference of whole runs at rtol 1e-11 */
 static void test_gradient(void) {
-    zp_scene sc;
-    zp_model *m = tu_model("[course]\nx_start = 0\nsection = 50 : -x/10 + 10\n"
-                           "section = 100 : -x/20 + 7.5\n[trolley]\nmass = 30\n"
-                           "[body]\nlengths = 2\nmasses = 10\ndamping = 1\n"
-                           "[drive]\nforces = 100, 50\nresponse = 0.5\n",
-                           &sc);
-    zp_schedule s = zp_drive_of_scene(&sc);
-    for (int form = 0; form < ZP_FORM_COUNT; form++) {
-        zp_sim_opts o = tu_opts(&sc, 1e-11);
-        o.formulation = form;
-        zp_sens_result g;
-        CHECK(zp_sens_run(m, &o, &s, &g) == ZP_OK && g.smooth &&
-              g.outcome == ZP_OUTCOME_FINISHED && g.ncross == 1);
-        for (int k = 0; k < s.np; k++) {
-            double h = 1e-3 * fabs(s.p[k]), T[4];
-            static const double at[4] = {2, 1, -1, -2};
-            for (int j = 0; j < 4; j++) {
-                zp_schedule q = s;
-                q.p[k] += at[j] * h;
-                const zp_result *r = tu_run(m, &o, &(zp_input){.sched = &q});
-                CHECK(r->outcome == ZP_OUTCOME_FINISHED && r->ncross == 1);
-                T[j] = r->time;
+    static const char *const physics[] = {"", "[physics]\nrolling = 0.01\n"};
+    for (size_t ph = 0; ph < sizeof physics / sizeof *physics; ph++) {
+        char ini[1024];
+        snprintf(ini, sizeof ini,
+                 "[course]\nx_start = 0\nsection = 50 : -x/10 + 10\n"
+                 "section = 100 : -x/20 + 7.5\n[trolley]\nmass = 30\n"
+                 "[body]\nlengths = 2\nmasses = 10\ndamping = 1\n"
+                 "[drive]\nforces = 100, 50\nresponse = 0.5\n%s",
+                 physics[ph]);
+        zp_scene sc;
+        zp_model *m = tu_model(ini, &sc);
+        zp_schedule s = zp_drive_of_scene(&sc);
+        for (int form = 0; form < ZP_FORM_COUNT; form++) {
+            zp_sim_opts o = tu_opts(&sc, 1e-11);
+            o.formulation = form;
+            zp_sens_result g;
+            CHECK(zp_sens_run(m, &o, &s, &g) == ZP_OK && g.smooth &&
+                  g.outcome == ZP_OUTCOME_FINISHED && g.ncross == 1);
+            for (int k = 0; k < s.np; k++) {
+                double h = 1e-3 * fabs(s.p[k]), T[4];
+                static const double at[4] = {2, 1, -1, -2};
+                for (int j = 0; j < 4; j++) {
+                    zp_schedule q = s;
+                    q.p[k] += at[j] * h;
+                    const zp_result *r = tu_run(m, &o, &(zp_input){.sched = &q});
+                    CHECK(r->outcome == ZP_OUTCOME_FINISHED && r->ncross == 1);
+                    T[j] = r->time;
+                }
+                double dT = (-T[0] + 8 * T[1] - 8 * T[2] + T[3]) / (12 * h);
+                double noise = 10 * 1e-11 * (g.time + 1) / h;
+                printf("gradient%s, %s, p%d: dT/dp %.10e, differences %.10e (rel %.1e)\n",
+                       ph ? " with rolling resistance" : "", zp_formulation_get(form)->name,
+                       k + 1, g.dtime[k], dT, fabs(g.dtime[k] - dT) / fabs(dT));
+                CHECK(fabs(g.dtime[k] - dT) <= 1e-6 * fabs(dT) + noise);
             }
-            double dT = (-T[0] + 8 * T[1] - 8 * T[2] + T[3]) / (12 * h);
-            double noise = 10 * 1e-11 * (g.time + 1) / h;
-            printf("gradient, %s, p%d: dT/dp %.10e, differences %.10e (rel %.1e)\n",
-                   zp_formulation_get(form)->name, k + 1, g.dtime[k], dT,
-                   fabs(g.dtime[k] - dT) / fabs(dT));
-            CHECK(fabs(g.dtime[k] - dT) <= 1e-6 * fabs(dT) + noise);
         }
+        zp_model_free(m);
     }
-    zp_model_free(m);
 }
 
 /* held by rolling resistance at the start (F_a = 0), the trolley is released as the drive's
