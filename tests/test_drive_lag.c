@@ -6,9 +6,8 @@
    three-state ODE of the bare trolley written here and integrated by GSL; the energy balance
    holds with the applied force's work; response = 0 runs bit for bit as no key; the gradients
    of the finish time agree with central differences of whole runs (with and without rolling
-   resistance); a trolley held by rolling
-   resistance at the start is released once the drive's force has grown; a negative response
-   exits 2 naming the file, the line and the key. */
+   resistance); a trolley held by rolling resistance at the start is released once the drive's
+   force has grown; a negative response exits 2 naming the file, the line and the key. */
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
 #include <math.h>
