@@ -109,8 +109,8 @@ static void free_point(gpoint *g) {
 /* the corner's model runs on the nominal's workspaces: the same state and events */
 static int same_kind(const zp_model *a, const zp_model *b) {
     return a->nlink == b->nlink && a->nsec == b->nsec && a->physics == b->physics &&
-           a->nwork == b->nwork && a->narc == b->narc && a->nkink == b->nkink &&
-           zp_events_count(a) == zp_events_count(b);
+           a->nwork == b->nwork && a->ndrive == b->ndrive && a->narc == b->narc &&
+           a->nkink == b->nkink && zp_events_count(a) == zp_events_count(b);
 }
 
 /* the search and what it is held to, over the rounds */

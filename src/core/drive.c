@@ -237,6 +237,11 @@ int zp_drive_capped(const zp_schedule *s, const zp_drive_state *st) {
     return over_power(s, kind_of(s)->force(s, st), st->v);
 }
 
+double zp_drive_lag_rate(const zp_schedule *s, double tau, const zp_drive_state *st,
+                         double applied) {
+    return (zp_drive_force(s, st) - applied) / tau;
+}
+
 int zp_drive_breaks(const zp_schedule *s, double *t, int max) {
     return kind_of(s)->breaks(s, t, max);
 }

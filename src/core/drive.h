@@ -4,7 +4,8 @@
    unit, labels, bounds, the section whose force error scales each); its family of "the same
    push everywhere"; its text. A new kind of schedule is a zp_sched_kind and an entry of
    drive.c's kind table; a cap on the applied force (a drive's power) is written in
-   zp_drive_force. Nothing outside drive.c depends on the kind. */
+   zp_drive_force; a response time, the applied force a lagging state of the simulator, in
+   zp_drive_lag_rate. Nothing outside drive.c depends on the kind. */
 #ifndef ZP_DRIVE_H
 #define ZP_DRIVE_H
 
@@ -44,10 +45,9 @@ typedef struct zp_schedule {
                                        lie (0s where the schedule has no course) */
 } zp_schedule;
 
-/* What the drive's force may depend on at one instant. A kind whose applied force is a state
-   of its own (a response lag, F_a' = (F_s - F_a) / tau) would extend the kind table with the
-   entries it adds to the simulator's state and their rates, kept beside the work integrals;
-   no kind has one today. */
+/* What the drive's scheduled force may depend on at one instant. The applied force is that
+   force at once, or with a response time a state of the simulator of its own (the drive's
+   states, after the work integrals: zp_drive_nstate, zp_drive_lag_rate). */
 typedef struct zp_drive_state {
     double t; /* s */
     double x; /* m, the trolley's x */
@@ -83,26 +83,44 @@ zp_schedule zp_drive_scaled(const zp_schedule *s, const double *scale);
 double zp_drive_force(const zp_schedule *s, const zp_drive_state *st);
 /* 1 when the cap binds at st: the kind's force asks for more than power / |v|. */
 int zp_drive_capped(const zp_schedule *s, const zp_drive_state *st);
+/* The drive's state at an instant (v along its direction, what a power caps). */
+static inline zp_drive_state zp_drive_state_at(zp_drive_dir d, double t, double x, double xdot,
+                                               int sec, double fp) {
+    return (zp_drive_state){t, x, d == ZP_DRIVE_TANGENT ? xdot * sqrt(1 + fp * fp) : xdot, sec};
+}
+
+/* The applied force F (N) as a force on the trolley (fx, fy), pointing as d says on a course
+   of slope fp. */
+static inline void zp_drive_split(zp_drive_dir d, double F, double fp, double *fx, double *fy) {
+    if (d == ZP_DRIVE_TANGENT) {
+        double norm = sqrt(1 + fp * fp);
+        *fx = F / norm;
+        *fy = F * fp / norm;
+    } else {
+        *fx = F;
+        *fy = 0;
+    }
+}
+
 /* N, that force on the trolley (fx, fy) at time t (s), the trolley at x (m) moving at xdot = x'
    (m/s) on section sec, the course's slope there fp, pointing as d says. Inline: every
    evaluation of the equations of motion asks for it. */
 static inline void zp_drive_push(const zp_schedule *s, zp_drive_dir d, double t, double x,
                                  double xdot, int sec, double fp, double *fx, double *fy) {
-    if (d == ZP_DRIVE_TANGENT) {
-        double norm = sqrt(1 + fp * fp);
-        double F = zp_drive_force(s, &(zp_drive_state){t, x, xdot * norm, sec});
-        *fx = F / norm;
-        *fy = F * fp / norm;
-    } else {
-        *fx = zp_drive_force(s, &(zp_drive_state){t, x, xdot, sec});
-        *fy = 0;
-    }
+    zp_drive_state st = zp_drive_state_at(d, t, x, xdot, sec, fp);
+    zp_drive_split(d, zp_drive_force(s, &st), fp, fx, fy);
 }
-/* The drive's state at that instant (v along its direction, as zp_drive_push reads it). */
-static inline zp_drive_state zp_drive_state_at(zp_drive_dir d, double t, double x, double xdot,
-                                               int sec, double fp) {
-    return (zp_drive_state){t, x, d == ZP_DRIVE_TANGENT ? xdot * sqrt(1 + fp * fp) : xdot, sec};
+
+/* How many states a drive with response time tau (s; [drive] response) adds to the
+   simulator's, after its work integrals: with tau > 0 one, the applied force F_a (N), which
+   starts at 0 and follows the capped schedule as a first-order lag; none at once. */
+static inline int zp_drive_nstate(double tau) {
+    return tau > 0;
 }
+/* N/s, the applied force's rate F_a' = (F_s - F_a) / tau, F_s the capped schedule at st
+   (docs/model.md "A real drive"). */
+double zp_drive_lag_rate(const zp_schedule *s, double tau, const zp_drive_state *st,
+                         double applied);
 
 /* The instants (s, ascending, at most max) where the force jumps in time; returns how many.
    The simulator stops its integrator there. 0 for per-section constants. */

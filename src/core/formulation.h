@@ -1,10 +1,16 @@
 /* The formulation interface: one way of writing the equations of motion of docs/model.md.
-   State contract shared by all formulations (so events are written once):
+   State contract shared by all formulations (so events are written once), n = nstate(m):
      y[0]              trolley x (m); y[(n - nwork) / 2] its rate x' (m/s)
      y[0 .. npos)      positions, npos = (n - nwork) / 2; y[npos + i] is the rate of y[i]
      y[n - nwork ..]   the model's nwork work integrals (J), in ZP_W_* order (effect.h): drive
                        work and damper loss, then the effects' work taken out
    everything else is the formulation's own; to_chain/from_chain convert to docs/model.md's q.
+   The simulator's state is this one followed by the drive's own states, y[n .. n + ndrive)
+   (zp_model.ndrive, drive.h's zp_drive_nstate: the applied force of a drive with a response
+   time; none without one, so such a state is exactly the formulation's). The formulations
+   neither read nor write them: they see the applied force in zp_drive_now, from_chain leaves
+   them as they were (every restart keeps them: they are continuous) and the simulator writes
+   their rates (zp_drive_lag_rate). The drive's work integral is the applied force's work.
    Each formulation picks, once in create, equations holding only the terms the model names;
    the effects' forces on the bodies (effect.h) it only projects onto its own equations. */
 #ifndef ZP_FORMULATION_H

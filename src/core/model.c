@@ -294,6 +294,8 @@ zp_model *zp_model_build(const zp_scene *sc, zp_diag *d) {
     memcpy(m->env_s, sc->env_s, sizeof m->env_s);
     int dir = zp_drive_dir_find(sc->direction);
     m->drive = dir < 0 ? ZP_DRIVE_HORIZONTAL : (zp_drive_dir)dir;
+    m->drive_response = sc->drive_response;
+    m->ndrive = zp_drive_nstate(m->drive_response);
     zp_model_derive(m);
 
     m->physics = sc->cable || check_course(m, sc, d) ? zp_effect_build(m, sc, d) : -1;

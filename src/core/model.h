@@ -47,6 +47,9 @@ typedef struct zp_model {
     double phi_max;               /* rad, the largest joint's death angle */
     double phi_max_j[ZP_MAX_LINKS]; /* rad, each joint's death angle */
     zp_drive_dir drive;
+    double drive_response;        /* s, tau of the applied force's lag ([drive] response), 0 */
+    int ndrive;                   /* the drive's own states after the work integrals
+                                     (zp_drive_nstate): 1 with a response time, else 0 */
     unsigned g_links;             /* bit i: link i's felt g is judged ([limits] g_links); all set
                                      when the scene names none */
     unsigned scale_links;         /* bit i: [robust] mass_range and length_range scale link i */

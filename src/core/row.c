@@ -42,14 +42,14 @@ void zp_row_derive(const zp_model *m, const zp_row *r, zp_row_view *v) {
     zp_row_loads(m, &r->loads, v->joint, v->acc_g);
 }
 
-/* a packed row: t, section, e_impulse, normal, hold, the work integrals, then the chain's
-   coordinates and rates, the joint forces and the body accelerations */
+/* a packed row: t, section, e_impulse, normal, hold, the work integrals, the drive's states,
+   then the chain's coordinates and rates, the joint forces and the body accelerations */
 enum { ROW_T, ROW_SEC, ROW_E_IMPULSE, ROW_NORMAL, ROW_HOLD, ROW_WORK };
 
 int zp_row_store_init(zp_row_store *t, const zp_model *m, int cap) {
     int nq = 2 + m->nlink;
-    *t = (zp_row_store){.cap = cap, .nlink = m->nlink, .nwork = m->nwork};
-    t->stride = ROW_WORK + m->nwork + 2 * nq + 2 * m->nlink + 2 * (m->nlink + 1);
+    *t = (zp_row_store){.cap = cap, .nlink = m->nlink, .nwork = m->nwork, .ndrive = m->ndrive};
+    t->stride = ROW_WORK + m->nwork + m->ndrive + 2 * nq + 2 * m->nlink + 2 * (m->nlink + 1);
     t->v = malloc(sizeof *t->v * (size_t)t->stride * (size_t)cap);
     return t->v ? 0 : -1;
 }
@@ -72,6 +72,9 @@ void zp_row_store_put(zp_row_store *t, const zp_row *r) {
     memcpy(w + ZP_W_EFFECTS, r->w_effect, sizeof r->w_effect);
     memcpy(p + ROW_WORK, w, sizeof *w * t->nwork);
     p += ROW_WORK + t->nwork;
+    if (t->ndrive) {
+        *p++ = r->f_applied;
+    }
     memcpy(p, r->c.q, sizeof *p * nq);
     memcpy(p + nq, r->c.v, sizeof *p * nq);
     memcpy(p + 2 * nq, r->loads.joint, sizeof *p * 2 * t->nlink);
@@ -93,6 +96,9 @@ void zp_row_store_get(const zp_row_store *t, int k, zp_row *r) {
     r->w_damp = w[ZP_W_DAMP];
     memcpy(r->w_effect, w + ZP_W_EFFECTS, sizeof r->w_effect);
     p += ROW_WORK + t->nwork;
+    if (t->ndrive) {
+        r->f_applied = *p++;
+    }
     memcpy(r->c.q, p, sizeof *p * nq);
     memcpy(r->c.v, p + nq, sizeof *p * nq);
     memcpy(r->loads.joint, p + 2 * nq, sizeof *p * 2 * t->nlink);

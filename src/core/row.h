@@ -14,6 +14,8 @@ typedef struct zp_row {
     double w_drive, w_damp, e_impulse; /* J, cumulative */
     double w_effect[ZP_EFFECT_NWORK];  /* J, cumulative, taken out by each effect with a work
                                           integral (ZP_EFFECT_W_*; 0 without them) */
+    double f_applied; /* N, the drive's applied force, a state with a response time (0 without
+                         one: the schedule's force then, not kept) */
     zp_loads loads;
 } zp_row;
 
@@ -30,12 +32,13 @@ typedef struct zp_row_view {
 } zp_row_view;
 
 /* A run's trajectory rows, packed: each keeps only its model's entries (2 + nlink coordinates
-   and rates, nwork work integrals, nlink joint and nlink + 1 body loads), so a run writes a
+   and rates, nwork work integrals, ndrive drive states, nlink joint and nlink + 1 body loads),
+   so a run writes a
    fraction of the fresh memory whole zp_rows would (for 3 links 31 doubles of 63). */
 typedef struct zp_row_store {
     double *v; /* owned, cap x stride */
     int n, cap;
-    int stride, nlink, nwork;
+    int stride, nlink, nwork, ndrive;
 } zp_row_store;
 
 /* The load magnitudes of loads: joint reactions (N) and felt accelerations (g), per link. */

@@ -67,6 +67,7 @@ typedef struct zp_scene {
     int drive_kind;                    /* zp_sched_kind (drive.h) of the forces */
     int drive_knots;                   /* kind profile: forces per section (default 3) */
     double drive_power;                /* W, the cap on |F_applied v|; 0: none */
+    double drive_response;             /* s, the applied force's lag time tau; 0: at once */
     int nforce;                        /* parameters; 0 when absent: all forces 0 */
     double forces[ZP_MAX_DRIVE_PARAMS]; /* the schedule's parameters (N per section) */
     double force_min, force_max;       /* N, search bounds */

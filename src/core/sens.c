@@ -165,6 +165,7 @@ static int start(sens_loop *L, zp_sens_result *r) {
     zp_state_start(m, s->course, &ch);
     const double zero_work[ZP_W_MAX] = {0};
     s->form->from_chain(m, &ch, zero_work, s->y);
+    zp_sim_rhs_drive_start(s, s->y);
     s->stuck = 0;
     s->slide = (ch.v[0] > 0) - (ch.v[0] < 0);
     s->inconsistent_t = NAN;

@@ -19,14 +19,22 @@
 /* the relative step of the stencil: O(h^4) truncation against O(eps / h) round-off */
 #define ZP_SENS_H 1e-3
 
-/* the step along (s, e_k) that moves no entry of the state (positions and rates: the work
-   integrals feed nothing back) nor p_k by more than ZP_SENS_H of its scale */
-static double step_along(const zp_sens *c, const double *y, const double *s, int k) {
-    double r = 1 / fmax(fabs(c->sched.p[k]), 1);
-    for (int i = 0; i < c->sim->w0; i++) {
-        r = fmax(r, fabs(s[i]) / fmax(fabs(y[i]), 1));
+/* the largest of r and |u_i| / max(|y_i|, 1) over the entries of the state that feed back
+   into the rates: positions and rates, and the drive's states (not the work integrals) */
+static double fed_back_ratio(const zp_sim *s, const double *y, const double *u, double r) {
+    for (int i = 0; i < s->w0; i++) {
+        r = fmax(r, fabs(u[i]) / fmax(fabs(y[i]), 1));
     }
-    return ZP_SENS_H / r;
+    for (int i = s->wd; i < s->n; i++) {
+        r = fmax(r, fabs(u[i]) / fmax(fabs(y[i]), 1));
+    }
+    return r;
+}
+
+/* the step along (s, e_k) that moves no entry of the state that feeds back nor p_k by more
+   than ZP_SENS_H of its scale */
+static double step_along(const zp_sens *c, const double *y, const double *s, int k) {
+    return ZP_SENS_H / fed_back_ratio(c->sim, y, s, 1 / fmax(fabs(c->sched.p[k]), 1));
 }
 
 /* the plain rates at y, the course read on the piece the integrator restarted on (continued
@@ -37,10 +45,8 @@ static int rates(zp_sens *c, double t, const double *y, double *f) {
     if (!(s->m->physics & ZP_PHYS_ROLLING)) {
         return c->rhs(t, y, f, s);
     }
-    zp_drive_now dn = zp_sim_rhs_drive_now(s, t, y);
-    dn.tr = zp_model_track_piece(s->m, s->course, s->sec, s->arc, y[0]);
-    zp_drive_push(s->sched, s->m->drive, t, y[0], y[s->w0 / 2], s->sec, dn.tr.fp, &dn.fx,
-                  &dn.fy);
+    zp_track tr = zp_model_track_piece(s->m, s->course, s->sec, s->arc, y[0]);
+    zp_drive_now dn = zp_sim_rhs_drive_on(s, tr, t, y, f);
     return s->form->rhs(s->m, s->fwork, &dn, y, f, NULL);
 }
 
@@ -101,15 +107,13 @@ int zp_sens_rhs_kink_map(zp_sens *c, const double *y_in, int to, double *y_out) 
         return 1;
     }
     s->form->from_chain(m, &ch, y_in + s->w0, y_out);
+    memcpy(y_out + s->wd, y_in + s->wd, sizeof *y_out * (size_t)m->ndrive); /* continuous */
     return 0;
 }
 
 int zp_sens_rhs_kink_deriv(zp_sens *c, const double *y, const double *u, int to, double *dh) {
     int n = c->n;
-    double *yp = c->scratch + 3 * n, *hp = c->scratch, r = 0;
-    for (int i = 0; i < c->sim->w0; i++) {
-        r = fmax(r, fabs(u[i]) / fmax(fabs(y[i]), 1));
-    }
+    double *yp = c->scratch + 3 * n, *hp = c->scratch, r = fed_back_ratio(c->sim, y, u, 0);
     memset(dh, 0, sizeof *dh * n);
     if (r == 0) {
         return 0;

@@ -58,8 +58,9 @@ zp_sim *zp_sim_create(const zp_model *m, const zp_sim_opts *o) {
     }
     zp_course_err ce;
     s->course = zp_model_course(m, &ce);
-    s->n = s->form->nstate(m);
-    s->w0 = s->n - m->nwork;
+    s->wd = s->form->nstate(m);
+    s->n = s->wd + m->ndrive;
+    s->w0 = s->wd - m->nwork;
     s->nroot = zp_events_count(m);
     s->fwork = s->form->create(m);
     s->y = calloc(s->n, sizeof *s->y);
@@ -194,6 +195,7 @@ static int start(zp_sim *s, const zp_input *in, zp_result *r, zp_sim_output_curs
     }
     const double zero_work[ZP_W_MAX] = {0};
     s->form->from_chain(m, &c, zero_work, s->y);
+    zp_sim_rhs_drive_start(s, s->y);
     zp_energy e0 = zp_state_energy(m, &c);
     r->e_initial = e0.kinetic + e0.potential;
     r->pi_initial = zp_model_cable_energy(m, c.q[0]);
@@ -304,7 +306,7 @@ static step_end classify(zp_sim *s, double t, zp_adv adv) {
     const zp_model *m = s->m;
     step_end e = {STEP_EVENT, ZP_EVENT_NONE, 0, 0};
     if (adv != ZP_ADV_ROOT) {
-        if (s->stuck && zp_sim_events_settled(s)) {
+        if (s->stuck && zp_sim_events_settled(s, t)) {
             e.kind = STEP_SETTLED;
             return e;
         }

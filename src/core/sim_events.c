@@ -78,9 +78,9 @@ void zp_sim_events_held(zp_sim *s, zp_result *r, double t) {
     r->time = s->hold_t;
 }
 
-int zp_sim_events_settled(zp_sim *s) {
+int zp_sim_events_settled(zp_sim *s, double t) {
     zp_chain c = zp_sim_rhs_chain(s, s->y);
-    return zp_friction_settled(s->m, &c);
+    return zp_friction_settled(s->m, &c) && zp_sim_rhs_drive_settled(s, t, s->y);
 }
 
 /* the hold at the current state, at rest at t; 0, or the rhs's nonzero status */
@@ -101,7 +101,7 @@ int zp_sim_events_stick(zp_sim *s, double t, zp_result *r, int *dir) {
     *dir = s->stuck ? 0 : h.tangential > 0 ? -1 : 1;
     if (s->stuck) {
         s->hold_t = t;
-        if (zp_sim_events_settled(s)) {
+        if (zp_sim_events_settled(s, t)) {
             zp_sim_events_held(s, r, t);
             return 1;
         }

@@ -17,8 +17,9 @@ int zp_sim_events_departure(zp_sim *s, double t, const double *y);
    Fails where the forces cannot be computed, or sliding friction has no consistent motion
    there (Painleve). */
 int zp_sim_events_stick(zp_sim *s, double t, zp_result *r, int *dir);
-/* Whether the chain under the held trolley has settled, which ends the hold. */
-int zp_sim_events_settled(zp_sim *s);
+/* Whether the chain under the held trolley has settled at t, and the drive's applied force
+   caught up with the schedule (zp_sim_rhs_drive_settled), which ends the hold. */
+int zp_sim_events_settled(zp_sim *s, double t);
 /* A hold that lasted: stalled, held_by_friction, at the time the hold began (docs/model.md). */
 void zp_sim_events_held(zp_sim *s, zp_result *r, double t);
 /* The kink into section `to` at t: the impulse, the outputs just after it; trapped at the kink

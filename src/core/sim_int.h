@@ -50,6 +50,8 @@ struct zp_sim {
                                               where friction had no solution (NaN: none) */
     int inconsistent_steps; /* steps in a row that met such an evaluation */
     int w0;         /* index of the first work integral in the state */
+    int wd;         /* index of the drive's own states (m->ndrive, after the work integrals:
+                       formulation.h) */
     zp_arc_peaks arc_peaks[ZP_MAX_SECTIONS]; /* load peaks on each arc */
     double drive_t;   /* s, the last accepted step's end, where the drive was last looked at */
     int drive_capped; /* 1: the drive's power cap bound there */

@@ -103,12 +103,13 @@ void zp_sim_peaks_step(zp_sim *s, double t, zp_adv adv) {
     }
 }
 
-/* W, the drive's power F_applied v at (t, y); *capped 1 where its power cap binds */
+/* W, the drive's power F_applied v at (t, y); *capped 1 where its power cap binds on the
+   schedule (a lagging applied force may then lie above or below the cap) */
 static double drive_power(const zp_sim *s, double t, const double *y, int *capped) {
     double fp = s->m->drive == ZP_DRIVE_TANGENT ? s->track(s->m, s->course, s->sec, y[0]).fp : 0;
     zp_drive_state st = zp_drive_state_at(s->m->drive, t, y[0], y[s->w0 / 2], s->sec, fp);
     *capped = zp_drive_capped(s->sched, &st);
-    return zp_drive_force(s->sched, &st) * st.v;
+    return zp_sim_rhs_drive_applied(s, &st, y) * st.v;
 }
 
 void zp_sim_peaks_drive_start(zp_sim *s, double t, const double *y, zp_result *r) {

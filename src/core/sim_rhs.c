@@ -12,39 +12,93 @@ static zp_track plain_track(const zp_model *m, const zp_course *c, int sec, doub
     return zp_course_eval(c, sec, x);
 }
 
-/* the drive at time t and state y (the trolley's x and x') on the current section, the course
-   there being tr */
-static inline zp_drive_now drive_with(const zp_sim *s, zp_track tr, double t, const double *y) {
+/* a drive with a response time: the force applied is the state's F_a, on dn; where rate is
+   not NULL, F_a's rate into it */
+static void drive_lagged(const zp_sim *s, double t, const double *y, zp_drive_now *dn,
+                         double *rate) {
+    double applied = y[s->wd];
+    if (rate) {
+        zp_drive_state st =
+            zp_drive_state_at(s->m->drive, t, y[0], y[s->w0 / 2], s->sec, dn->tr.fp);
+        *rate = zp_drive_lag_rate(s->sched, s->m->drive_response, &st, applied);
+    }
+    zp_drive_split(s->m->drive, applied, dn->tr.fp, &dn->fx, &dn->fy);
+}
+
+/* the drive at time t and state y (the trolley's x and x', the drive's states) on the current
+   section, the course there being tr; with a response time the drive's states' rates into
+   rates (NULL: not wanted) */
+static inline zp_drive_now drive_with(const zp_sim *s, zp_track tr, double t, const double *y,
+                                      double *rates) {
     zp_drive_now dn = {tr, 0, 0, 0, 0};
-    zp_drive_push(s->sched, s->m->drive, t, y[0], y[s->w0 / 2], s->sec, tr.fp, &dn.fx, &dn.fy);
+    if (s->m->ndrive) {
+        drive_lagged(s, t, y, &dn, rates);
+    } else {
+        zp_drive_push(s->sched, s->m->drive, t, y[0], y[s->w0 / 2], s->sec, tr.fp, &dn.fx,
+                      &dn.fy);
+    }
     return dn;
 }
 
 /* course and drive at time t and state y on the current section; track a constant where
    inlined */
-static inline zp_drive_now drive_at(const zp_sim *s, track_fn track, double t, const double *y) {
-    return drive_with(s, track(s->m, s->course, s->sec, y[0]), t, y);
+static inline zp_drive_now drive_at(const zp_sim *s, track_fn track, double t, const double *y,
+                                    double *rates) {
+    return drive_with(s, track(s->m, s->course, s->sec, y[0]), t, y, rates);
 }
 
-zp_drive_now zp_sim_rhs_drive_now(const zp_sim *s, double t, const double *y) {
-    zp_drive_now dn = drive_at(s, s->track, t, y);
+/* the drive now with the simulator's hold and slide */
+static inline zp_drive_now drive_now(const zp_sim *s, double t, const double *y, double *rates) {
+    zp_drive_now dn = drive_at(s, s->track, t, y, rates);
     dn.hold = s->stuck;
     dn.slide = s->slide;
     return dn;
 }
 
+zp_drive_now zp_sim_rhs_drive_now(const zp_sim *s, double t, const double *y) {
+    return drive_now(s, t, y, NULL);
+}
+
+zp_drive_now zp_sim_rhs_drive_on(const zp_sim *s, zp_track tr, double t, const double *y,
+                                 double *ydot) {
+    zp_drive_now dn = drive_with(s, tr, t, y, ydot + s->wd);
+    dn.hold = s->stuck;
+    dn.slide = s->slide;
+    return dn;
+}
+
+void zp_sim_rhs_drive_start(const zp_sim *s, double *y) {
+    for (int k = 0; k < s->m->ndrive; k++) {
+        y[s->wd + k] = 0;
+    }
+}
+
+int zp_sim_rhs_drive_settled(const zp_sim *s, double t, const double *y) {
+    if (!s->m->ndrive) {
+        return 1;
+    }
+    zp_drive_now dn = {s->track(s->m, s->course, s->sec, y[0]), 0, 0, 0, 0};
+    double rate;
+    drive_lagged(s, t, y, &dn, &rate);
+    return fabs(rate * s->m->drive_response) <= ZP_FRICTION_SETTLED * s->m->mtot * s->m->g;
+}
+
+double zp_sim_rhs_drive_applied(const zp_sim *s, const zp_drive_state *st, const double *y) {
+    return s->m->ndrive ? y[s->wd] : zp_drive_force(s->sched, st);
+}
+
 /* the equations of motion as the integrator sees them: on the plain course, or on the piece
-   of an effect's course */
+   of an effect's course; the formulation's rates, then the drive's states' */
 int zp_sim_rhs(double t, const double *y, double *ydot, void *user) {
     zp_sim *s = user;
-    zp_drive_now dn = drive_at(s, plain_track, t, y);
+    zp_drive_now dn = drive_at(s, plain_track, t, y, ydot + s->wd);
     return s->form->rhs(s->m, s->fwork, &dn, y, ydot, NULL);
 }
 
 static int sim_rhs_provided(double t, const double *y, double *ydot, void *user) {
     zp_sim *s = user;
     zp_track tr = zp_model_track_piece(s->m, s->course, s->sec, s->arc, y[0]);
-    zp_drive_now dn = drive_with(s, tr, t, y);
+    zp_drive_now dn = drive_with(s, tr, t, y, ydot + s->wd);
     return s->form->rhs(s->m, s->fwork, &dn, y, ydot, NULL);
 }
 
@@ -59,8 +113,13 @@ static int sim_root(double t, const double *y, double *g, void *user) {
 
 int zp_sim_rhs_rolling(double t, const double *y, double *ydot, void *user) {
     zp_sim *s = user;
-    zp_drive_now dn = zp_sim_rhs_drive_now(s, t, y);
+    zp_drive_now dn = drive_now(s, t, y, ydot + s->wd);
     int rc = s->form->rhs(s->m, s->fwork, &dn, y, ydot, NULL);
+    if (s->stuck) {
+        /* held, x'' is 0 exactly, not to round-off: a hold that lasts (a drive's force still
+           growing) would drift past the start's boundary, a roll-back */
+        ydot[s->w0 / 2] = 0;
+    }
     if (rc == ZP_RHS_FRICTION_INCONSISTENT) {
         s->inconsistent_t = t;
         s->inconsistent_x = y[0];
@@ -100,6 +159,7 @@ zp_row zp_sim_rhs_row(zp_sim *s, double t, const double *y) {
         r.w_effect[k - ZP_W_EFFECTS] = y[s->w0 + k];
     }
     r.e_impulse = s->e_impulse;
+    r.f_applied = s->m->ndrive ? y[s->wd] : 0;
     s->form->rhs(s->m, s->fwork, &dn, y, s->ydot, &r.loads);
     return r;
 }

@@ -100,8 +100,12 @@ static void settings_text(FILE *f, const zp_out_check *c) {
         zp_drive_section_label(c->sched, k, label, sizeof label);
         fprintf(f, "%s %s", k ? "," : "", label);
     }
-    fprintf(f, "%s; search bounds [%g, %g] N\n", sc->nforce ? "" : " (none given)", sc->force_min,
+    fprintf(f, "%s; search bounds [%g, %g] N", sc->nforce ? "" : " (none given)", sc->force_min,
             sc->force_max);
+    if (c->m->ndrive) {
+        fprintf(f, "; response %g s (the applied force lags the schedule)", c->m->drive_response);
+    }
+    fputc('\n', f);
     const char *method = zp_method_get(c->sim->method)->name;
     fprintf(f, "solver: method %s (%s); formulation %s (%s)\n", method, method_doc(method),
             sc->formulation, formulation_doc(sc->formulation));

@@ -7,8 +7,9 @@
 #define DEG (180.0 / M_PI)
 
 /* how many columns an entry spans: one, one per link (its %d 1..N), per body (0..N), per
-   effect's work integral (named by effect.h's table, shown as it says) */
-typedef enum span { ONE, PER_LINK, PER_BODY, PER_WORK } span;
+   effect's work integral (named by effect.h's table, shown as it says), one per drive state
+   (the applied force of a drive with a response time; none without) */
+typedef enum span { ONE, PER_LINK, PER_BODY, PER_WORK, PER_DRIVE } span;
 
 /* an entry: one or two quantities per index (a pair alternates: com0_x, com0_y, com1_x, ..) */
 typedef struct entry {
@@ -34,6 +35,7 @@ static const entry table[] = {
     {ONE, 1, {ZP_OUT_Q_POTENTIAL}, {"potential"}, "potential", 1},
     {ONE, 1, {ZP_OUT_Q_ENERGY}, {"energy"}, NULL, 1},
     {ONE, 1, {ZP_OUT_Q_DRIVE}, {"drive_work"}, "drive_work", 1},
+    {PER_DRIVE, 1, {ZP_OUT_Q_F_APPLIED}, {"f_applied"}, NULL, 1},
     {ONE, 1, {ZP_OUT_Q_DAMP}, {"damper_work"}, "damper_work", 1},
     {ONE, 1, {ZP_OUT_Q_IMPULSE}, {"impulse_loss"}, "impulse_loss", 1},
     {ONE, 1, {ZP_OUT_Q_NORMAL}, {"normal_force"}, NULL, 1},
@@ -54,6 +56,8 @@ static int count(const zp_model *m, span per) {
         return m->nlink + 1;
     case PER_WORK:
         return zp_effect_work_shown(m->physics) ? ZP_EFFECT_NWORK : 0;
+    case PER_DRIVE:
+        return m->ndrive;
     }
     return 0;
 }
@@ -89,6 +93,8 @@ static double value(zp_out_quantity q, const zp_row *r, const zp_row_view *v, in
         return v->e.kinetic + v->e.potential;
     case ZP_OUT_Q_DRIVE:
         return r->w_drive;
+    case ZP_OUT_Q_F_APPLIED:
+        return r->f_applied;
     case ZP_OUT_Q_DAMP:
         return r->w_damp;
     case ZP_OUT_Q_IMPULSE:

@@ -7,7 +7,7 @@
 #include "row.h"
 
 /* the columns of the largest chain, every effect's work shown */
-#define ZP_OUT_COLUMNS_MAX (14 + 8 * ZP_MAX_LINKS + ZP_EFFECT_NWORK)
+#define ZP_OUT_COLUMNS_MAX (15 + 8 * ZP_MAX_LINKS + ZP_EFFECT_NWORK)
 #define ZP_OUT_COLUMN_NAME 24
 
 /* The quantities a row shows, each an entry of the table (one column, or one per link, per body
@@ -27,6 +27,7 @@ typedef enum zp_out_quantity {
     ZP_OUT_Q_POTENTIAL,
     ZP_OUT_Q_ENERGY,
     ZP_OUT_Q_DRIVE,
+    ZP_OUT_Q_F_APPLIED,
     ZP_OUT_Q_DAMP,
     ZP_OUT_Q_IMPULSE,
     ZP_OUT_Q_NORMAL,

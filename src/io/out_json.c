@@ -229,7 +229,8 @@ static void energy_json(FILE *f, const zp_model *m, const zp_result *r, const zp
         write_cable(f, m, r);
     }
     zp_out_json_key(f, "constraint_residual", r->constraint_residual, ",\n");
-    if (!zp_drive_plain(meta->sched) || (meta->lim && meta->lim->max[ZP_LIMIT_DRIVE_POWER] > 0)) {
+    if (!zp_drive_plain(meta->sched) || m->ndrive ||
+        (meta->lim && meta->lim->max[ZP_LIMIT_DRIVE_POWER] > 0)) {
         fputs("  \"drive\": {", f);
         zp_out_json_key(f, "peak_power", r->drive_peak_power, ", ");
         zp_out_json_key(f, "energy", r->w_drive, ", ");
