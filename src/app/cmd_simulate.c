@@ -369,7 +369,7 @@ int zp_cmd_simulate(int argc, char **argv) {
         goto done;
     }
     zp_sens_result grad;
-    if (a.gradient && zp_sens_run(st.m, &o, &st.sched, &grad)) {
+    if (a.gradient && zp_sens_run(st.m, &o, &st.sched, &lim, &grad)) {
         fprintf(stderr, "zipopt simulate: --gradient: %s; nothing was written\n", grad.message);
         goto done;
     }

@@ -7,6 +7,7 @@
 #define ZP_SENS_H
 
 #include "drive.h"
+#include "limit.h"
 #include "sim_types.h"
 
 typedef struct zp_sens_result {
@@ -20,6 +21,15 @@ typedef struct zp_sens_result {
     double margin_t;                       /* s, when */
     double dmargin[ZP_SCHED_MAX_PARAMS];   /* rad per parameter unit */
     int ncross;                            /* kink crossings */
+    /* each [limits] value the scene sets (zp_limits_reached's units, the peaks located exactly:
+       the drive's power too, which the plain run samples at its steps' ends), and with
+       limit_has its derivatives (unit per parameter unit); limit_why_not says why not, or why
+       they are not smooth there ("": they are) */
+    double limit[ZP_LIMIT_COUNT];
+    double limit_t[ZP_LIMIT_COUNT]; /* s, where it was reached */
+    double dlimit[ZP_LIMIT_COUNT][ZP_SCHED_MAX_PARAMS];
+    int limit_set[ZP_LIMIT_COUNT], limit_has[ZP_LIMIT_COUNT];
+    char limit_why_not[ZP_LIMIT_COUNT][96];
     int smooth; /* 1: every event met is one whose jump the sensitivities carry exactly; 0: the
                    run met one where the outputs are not differentiable (why_not) */
     char why_not[160];
@@ -29,8 +39,9 @@ typedef struct zp_sens_result {
 } zp_sens_result;
 
 /* The run of sched on m with options o (its trajectory, samples and peaks are not taken), with
-   the sensitivities of the state to each of sched's parameters. */
+   the sensitivities of the state to each of sched's parameters, and the values of the limits
+   lim sets (NULL: none) with theirs. */
 zp_status zp_sens_run(const zp_model *m, const zp_sim_opts *o, const zp_schedule *sched,
-                      zp_sens_result *r);
+                      const zp_limits *lim, zp_sens_result *r);
 
 #endif

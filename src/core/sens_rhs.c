@@ -16,17 +16,14 @@
 #include "sens_int.h"
 #include "sim_rhs.h"
 
-/* the relative step of the stencil: O(h^4) truncation against O(eps / h) round-off */
-#define ZP_SENS_H 1e-3
-
 /* the step along (s, e_k) that moves no entry of the state (positions and rates: the work
-   integrals feed nothing back) nor p_k by more than ZP_SENS_H of its scale */
+   integrals feed nothing back) nor p_k by more than ZP_SENS_STEP of its scale */
 static double step_along(const zp_sens *c, const double *y, const double *s, int k) {
     double r = 1 / fmax(fabs(c->sched.p[k]), 1);
     for (int i = 0; i < c->sim->w0; i++) {
         r = fmax(r, fabs(s[i]) / fmax(fabs(y[i]), 1));
     }
-    return ZP_SENS_H / r;
+    return ZP_SENS_STEP / r;
 }
 
 /* the plain rates at y, the course read on the piece the integrator restarted on (continued
@@ -86,11 +83,13 @@ int zp_sens_rhs_root(double t, const double *ya, double *g, void *user) {
     return c->root(t, ya, g, c->sim);
 }
 
-int zp_sens_rhs_kink_map(zp_sens *c, const double *y_in, int to, double *y_out) {
+/* the chain across the kink into `to` from y_in, before (*in) and after (*out) the impulse */
+static int kink_chains(zp_sens *c, const double *y_in, int to, zp_chain *in, zp_chain *out) {
     zp_sim *s = c->sim;
     const zp_model *m = s->m;
     double b = m->xb[to > s->sec ? to : s->sec];
-    zp_chain ch = zp_sim_rhs_chain(s, y_in);
+    *in = zp_sim_rhs_chain(s, y_in);
+    zp_chain ch = *in;
     zp_track entered = s->track(m, s->course, to, b);
     ch.q[0] = b;
     ch.q[1] = entered.f;
@@ -100,8 +99,52 @@ int zp_sens_rhs_kink_map(zp_sens *c, const double *y_in, int to, double *y_out) 
     } else if (zp_impulse_apply(m, entered.fp, &ch, &imp)) {
         return 1;
     }
-    s->form->from_chain(m, &ch, y_in + s->w0, y_out);
+    *out = ch;
     return 0;
+}
+
+int zp_sens_rhs_kink_map(zp_sens *c, const double *y_in, int to, double *y_out) {
+    zp_chain in, out;
+    if (kink_chains(c, y_in, to, &in, &out)) {
+        return 1;
+    }
+    c->sim->form->from_chain(c->sim->m, &out, y_in + c->sim->w0, y_out);
+    return 0;
+}
+
+int zp_sens_rhs_kink_dv(zp_sens *c, const double *y_in, int to, double *dv) {
+    zp_chain in, out;
+    if (kink_chains(c, y_in, to, &in, &out)) {
+        return 1;
+    }
+    *dv = hypot(out.v[0] - in.v[0], out.v[1] - in.v[1]); /* as the plain run's kink_dv */
+    return 0;
+}
+
+double zp_sens_rhs_speed(zp_sens *c, const double *y) {
+    zp_chain ch = zp_sim_rhs_chain(c->sim, y);
+    return hypot(ch.v[0], ch.v[1]);
+}
+
+int zp_sens_rhs_histories(zp_sens *c, double t, const double *y, double *v, double *power) {
+    zp_sim *s = c->sim;
+    const zp_model *m = s->m;
+    zp_drive_now dn = zp_sim_rhs_drive_now(s, t, y);
+    dn.tr = zp_model_track_piece(m, s->course, s->sec, s->arc, y[0]);
+    zp_drive_push(s->sched, m->drive, t, y[0], y[s->w0 / 2], s->sec, dn.tr.fp, &dn.fx, &dn.fy);
+    zp_drive_state st = zp_drive_state_at(m->drive, t, y[0], y[s->w0 / 2], s->sec, dn.tr.fp);
+    *power = fabs(zp_drive_force(s->sched, &st) * st.v);
+    if (!v) {
+        return 0;
+    }
+    zp_loads loads;
+    double *f = c->scratch + 2 * c->n;
+    int rc = s->form->rhs(m, s->fwork, &dn, y, f, &loads);
+    zp_row_loads(m, &loads, v + m->nlink, v);
+    for (int q = 0; q < 2 * m->nlink; q++) {
+        v[q] = isfinite(v[q]) ? v[q] : 0;
+    }
+    return rc;
 }
 
 int zp_sens_rhs_kink_deriv(zp_sens *c, const double *y, const double *u, int to, double *dh) {
@@ -114,7 +157,7 @@ int zp_sens_rhs_kink_deriv(zp_sens *c, const double *y, const double *u, int to,
     if (r == 0) {
         return 0;
     }
-    double h = ZP_SENS_H / r;
+    double h = ZP_SENS_STEP / r;
     static const double at[4] = {2, 1, -1, -2}, wt[4] = {-1, 8, -8, 1};
     for (int j = 0; j < 4; j++) {
         for (int i = 0; i < n; i++) {

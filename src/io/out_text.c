@@ -105,6 +105,20 @@ static void gradient_text(FILE *f, const zp_schedule *sh, const zp_sens_result *
         fprintf(f, "  %-12s d time %+.9e s, d margin angle %+.9e deg\n", label, g->dtime[k],
                 g->dmargin[k] * 180 / M_PI);
     }
+    for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
+        if (!g->limit_set[i]) {
+            continue;
+        }
+        fprintf(f, "  d %s (%s):", zp_limits_name(i), zp_limits_unit(i));
+        for (int k = 0; g->limit_has[i] && k < g->np; k++) {
+            fprintf(f, " %+.9e", g->dlimit[i][k]);
+        }
+        if (g->limit_has[i]) {
+            fprintf(f, "  (of %.9g at t = %.6g s)", g->limit[i], g->limit_t[i]);
+        }
+        fprintf(f, "%s%s\n", g->limit_why_not[i][0] ? "  not smooth: " : "",
+                g->limit_why_not[i]);
+    }
     if (!g->smooth) {
         fprintf(f, "  not smooth there: %s\n", g->why_not);
     }

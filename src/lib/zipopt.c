@@ -390,7 +390,7 @@ int zipopt_gradient(zipopt_scene *s, double *dtime, double *dmargin, int n, int 
     zp_sens_result g;
     /* its own workspace builds course evaluators, which may be libmatheval's: in turn */
     pthread_mutex_lock(&turn);
-    zp_status st = zp_sens_run(s->st.m, &s->st.sim, sh, &g);
+    zp_status st = zp_sens_run(s->st.m, &s->st.sim, sh, NULL, &g);
     pthread_mutex_unlock(&turn);
     if (st) {
         say(err, errlen, "%s", g.message);
