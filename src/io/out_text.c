@@ -113,8 +113,10 @@ static void gradient_text(FILE *f, const zp_schedule *sh, const zp_sens_result *
         for (int k = 0; g->limit_has[i] && k < g->np; k++) {
             fprintf(f, " %+.9e", g->dlimit[i][k]);
         }
-        if (g->limit_has[i]) {
+        if (g->limit_has[i] && isfinite(g->limit_t[i])) {
             fprintf(f, "  (of %.9g at t = %.6g s)", g->limit[i], g->limit_t[i]);
+        } else if (g->limit_has[i]) {
+            fprintf(f, "  (of %.9g: nowhere reached, 0 nearby)", g->limit[i]);
         }
         fprintf(f, "%s%s\n", g->limit_why_not[i][0] ? "  not smooth: " : "",
                 g->limit_why_not[i]);
