@@ -84,9 +84,20 @@ static double balance(double e0, const zp_row *r) {
     return b;
 }
 
+/* the drive at row r: the speed along its direction (m/s; horizontal x', tangent the speed
+   along the course, signed as x') and the force it applies there (N), the schedule's at once
+   with its power cap: a row's chain lies on the course, so its slope is y' / x' */
+static void drive_at_row(const zp_model *m, const zp_schedule *sh, const zp_row *r, double *v,
+                         double *force) {
+    *v = m->drive == ZP_DRIVE_TANGENT ? copysign(hypot(r->c.v[0], r->c.v[1]), r->c.v[0])
+                                      : r->c.v[0];
+    *force = zp_drive_force(sh, &(zp_drive_state){r->t, r->c.q[0], *v, r->sec});
+}
+
 /* plot_run.dat: one line per trajectory row, named columns; returns the extent of the
    centres-of-mass paths */
-zp_plot_box zp_plot_data_run(FILE *f, const zp_model *m, const zp_row_store *rows) {
+zp_plot_box zp_plot_data_run(FILE *f, const zp_model *m, const zp_row_store *rows,
+                             const zp_schedule *sched) {
     zp_plot_box b = {HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL};
     fputs("t section x y speed", f);
     for (int i = 0; i <= m->nlink; i++) {
@@ -103,7 +114,7 @@ zp_plot_box zp_plot_data_run(FILE *f, const zp_model *m, const zp_row_store *row
         fprintf(f, " %s", zp_effect_work_names(k)->plot);
     }
     fputs(" felt_g", f); /* the largest felt g over the judged links ([limits] g_links) */
-    fputc('\n', f);
+    fputs(sched ? " drive_speed drive_force\n" : "\n", f);
     double e0 = 0;
     for (int k = 0; k < rows->n; k++) {
         zp_row row;
@@ -141,6 +152,11 @@ zp_plot_box zp_plot_data_run(FILE *f, const zp_model *m, const zp_row_store *row
             g = m->g_links >> i & 1 ? fmax(g, v.acc_g[i]) : g;
         }
         fprintf(f, " %.9g", g);
+        if (sched) {
+            double dv, force;
+            drive_at_row(m, sched, r, &dv, &force);
+            fprintf(f, " %.9g %.9g", dv, force);
+        }
         fputc('\n', f);
     }
     return b;
