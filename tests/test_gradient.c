@@ -63,8 +63,8 @@ static void compare(const char *what, const zp_model *m, const zp_sim_opts *o,
     for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
         /* the drive's power the plain run samples at its steps' ends only: a peak between
            them is not the plain run's value, whose differences then measure its steps */
-        lim_same[i] = g.limit_set[i] && g.limit_has[i] && !g.limit_why_not[i][0] &&
-                      fabs(g.limit[i] - mid.lim[i]) <= 1e-8 * (1 + fabs(mid.lim[i]));
+        lim_same[i] = g.limits.set[i] && g.limits.has[i] && !g.limits.why_not[i][0] &&
+                      fabs(g.limits.value[i] - mid.lim[i]) <= 1e-8 * (1 + fabs(mid.lim[i]));
         if (lim_same[i] && mid.outcome == ZP_OUTCOME_DIED) {
             /* measured on seed_robust: 2e-6 apart at rtol 1e-11, 7e-7 at 1e-12, moving with
                the sensitivity equations' stencil step (sens_rhs.c), not with the differences:
@@ -73,11 +73,11 @@ static void compare(const char *what, const zp_model *m, const zp_sim_opts *o,
             printf("  %s: %s not compared: the rider died (the sensitivities grow as the chain "
                    "loops over)\n", what, zp_limits_name(i));
             lim_same[i] = 0;
-        } else if (g.limit_set[i] && !lim_same[i]) {
+        } else if (g.limits.set[i] && !lim_same[i]) {
             printf("  %s: %s %.10g, the plain run %.10g: not compared (%s)\n", what,
-                   zp_limits_name(i), g.limit[i], mid.lim[i],
-                   g.limit_why_not[i][0] ? g.limit_why_not[i] : "a peak between steps");
-            CHECK(i == ZP_LIMIT_DRIVE_POWER || g.limit_why_not[i][0]);
+                   zp_limits_name(i), g.limits.value[i], mid.lim[i],
+                   g.limits.why_not[i][0] ? g.limits.why_not[i] : "a peak between steps");
+            CHECK(i == ZP_LIMIT_DRIVE_POWER || g.limits.why_not[i][0]);
         }
     }
     if (!g.smooth) {
@@ -137,9 +137,9 @@ static void compare(const char *what, const zp_model *m, const zp_sim_opts *o,
             double dL = (-V[1] + 8 * V[2] - 8 * V[3] + V[4]) / (12 * h);
             double dL2 = (-V[0] + 8 * V[1] - 8 * V[4] + V[5]) / (24 * h);
             double nL = 10 * RTOL * (fabs(mid.lim[i]) + 1) / h + fabs(dL - dL2);
-            double eL = fabs(g.dlimit[i][k] - dL);
+            double eL = fabs(g.limits.d[i][k] - dL);
             printf("  %s p%d: d %s/dp %.10e (diff %.10e, rel %.1e)\n", what, k + 1,
-                   zp_limits_name(i), g.dlimit[i][k], dL, eL / fmax(fabs(dL), 1e-300));
+                   zp_limits_name(i), g.limits.d[i][k], dL, eL / fmax(fabs(dL), 1e-300));
             CHECK(eL <= tol * fabs(dL) + nL);
             checked++;
         }

@@ -355,7 +355,7 @@ zp_status zp_sens_run(const zp_model *m, const zp_sim_opts *o, const zp_schedule
     L.nbreak = zp_drive_breaks(sched, L.breaks, ZP_SCHED_MAX_BREAKS);
     int end = loop(&L, r);
     if (end >= 0) {
-        zp_sens_peaks_result(L.pk, r);
+        zp_sens_peaks_result(L.pk, &r->limits);
     }
     loop_free(&L);
     clock_gettime(CLOCK_MONOTONIC, &t1);

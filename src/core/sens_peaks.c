@@ -286,20 +286,20 @@ static int point_of(const zp_sens_peaks *P, int i, const char **why) {
     return -1;
 }
 
-void zp_sens_peaks_result(zp_sens_peaks *P, zp_sens_result *r) {
+void zp_sens_peaks_result(zp_sens_peaks *P, zp_sens_limits *l) {
     for (int i = 0; P && i < ZP_LIMIT_COUNT; i++) {
-        r->limit_set[i] = P->lim.max[i] > 0;
-        if (!r->limit_set[i]) {
+        l->set[i] = P->lim.max[i] > 0;
+        if (!l->set[i]) {
             continue;
         }
         const char *why;
         int q = point_of(P, i, &why);
-        snprintf(r->limit_why_not[i], sizeof r->limit_why_not[i], "%s", why);
-        r->limit[i] = q < 0 ? NAN : P->pt[q].value > -INFINITY ? P->pt[q].value : 0;
-        r->limit_t[i] = q >= 0 && P->pt[q].value > -INFINITY ? P->pt[q].t : NAN;
-        r->limit_has[i] = q >= 0;
+        snprintf(l->why_not[i], sizeof l->why_not[i], "%s", why);
+        l->value[i] = q < 0 ? NAN : P->pt[q].value > -INFINITY ? P->pt[q].value : 0;
+        l->t[i] = q >= 0 && P->pt[q].value > -INFINITY ? P->pt[q].t : NAN;
+        l->has[i] = q >= 0;
         if (q >= 0 && P->pt[q].value > -INFINITY) {
-            derive(P, q, r->dlimit[i]);
+            derive(P, q, l->d[i]);
         }
     }
 }

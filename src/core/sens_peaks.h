@@ -10,8 +10,8 @@
 #define ZP_SENS_PEAKS_H
 
 #include "limit.h"
-#include "sens.h"
 #include "sens_int.h"
+#include "sens_limits.h"
 
 typedef struct zp_sens_peaks zp_sens_peaks;
 
@@ -32,7 +32,7 @@ void zp_sens_peaks_kink(zp_sens_peaks *P, double t, const double *ya, int to, co
 /* The run ends at (t, ya), finished or not; its time moves by dt. */
 void zp_sens_peaks_finish(zp_sens_peaks *P, double t, const double *ya, const double *dt,
                           int finished);
-/* The values and their derivatives into r (limit, dlimit, limit_has, limit_why_not). */
-void zp_sens_peaks_result(zp_sens_peaks *P, zp_sens_result *r);
+/* The values and their derivatives into l. */
+void zp_sens_peaks_result(zp_sens_peaks *P, zp_sens_limits *l);
 
 #endif

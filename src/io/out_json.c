@@ -149,10 +149,10 @@ static void write_gradient(FILE *f, const zp_schedule *sh, const zp_sens_result 
     fputs(", \"limits\": {", f);
     const char *sep = "";
     for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
-        if (g->limit_set[i]) {
+        if (g->limits.set[i]) {
             fprintf(f, "%s\"%s\": ", sep, zp_limits_name(i));
-            if (g->limit_has[i]) {
-                zp_out_json_list(f, g->dlimit[i], g->np, 1.0);
+            if (g->limits.has[i]) {
+                zp_out_json_list(f, g->limits.d[i], g->np, 1.0);
             } else {
                 fputs("null", f);
             }
@@ -163,9 +163,9 @@ static void write_gradient(FILE *f, const zp_schedule *sh, const zp_sens_result 
     fputs("}, \"limits_not_smooth\": {", f);
     sep = "";
     for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
-        if (g->limit_set[i] && g->limit_why_not[i][0]) {
+        if (g->limits.set[i] && g->limits.why_not[i][0]) {
             fprintf(f, "%s\"%s\": ", sep, zp_limits_name(i));
-            zp_out_json_string(f, g->limit_why_not[i]);
+            zp_out_json_string(f, g->limits.why_not[i]);
             sep = ", ";
         }
     }

@@ -106,20 +106,20 @@ static void gradient_text(FILE *f, const zp_schedule *sh, const zp_sens_result *
                 g->dmargin[k] * 180 / M_PI);
     }
     for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
-        if (!g->limit_set[i]) {
+        if (!g->limits.set[i]) {
             continue;
         }
         fprintf(f, "  d %s (%s):", zp_limits_name(i), zp_limits_unit(i));
-        for (int k = 0; g->limit_has[i] && k < g->np; k++) {
-            fprintf(f, " %+.9e", g->dlimit[i][k]);
+        for (int k = 0; g->limits.has[i] && k < g->np; k++) {
+            fprintf(f, " %+.9e", g->limits.d[i][k]);
         }
-        if (g->limit_has[i] && isfinite(g->limit_t[i])) {
-            fprintf(f, "  (of %.9g at t = %.6g s)", g->limit[i], g->limit_t[i]);
-        } else if (g->limit_has[i]) {
-            fprintf(f, "  (of %.9g: nowhere reached, 0 nearby)", g->limit[i]);
+        if (g->limits.has[i] && isfinite(g->limits.t[i])) {
+            fprintf(f, "  (of %.9g at t = %.6g s)", g->limits.value[i], g->limits.t[i]);
+        } else if (g->limits.has[i]) {
+            fprintf(f, "  (of %.9g: nowhere reached, 0 nearby)", g->limits.value[i]);
         }
-        fprintf(f, "%s%s\n", g->limit_why_not[i][0] ? "  not smooth: " : "",
-                g->limit_why_not[i]);
+        fprintf(f, "%s%s\n", g->limits.why_not[i][0] ? "  not smooth: " : "",
+                g->limits.why_not[i]);
     }
     if (!g->smooth) {
         fprintf(f, "  not smooth there: %s\n", g->why_not);

@@ -437,11 +437,11 @@ int zipopt_gradient_limits(zipopt_scene *s, double *d, int n, int *smooth, char 
         return -1;
     }
     for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
-        int given = g->limit_set[i] && g->limit_has[i];
+        int given = g->limits.set[i] && g->limits.has[i];
         for (int k = 0; k < n; k++) {
-            d[(size_t)i * (size_t)n + k] = given && k < g->np ? g->dlimit[i][k] : NAN;
+            d[(size_t)i * (size_t)n + k] = given && k < g->np ? g->limits.d[i][k] : NAN;
         }
-        smooth[i] = given && g->smooth && !g->limit_why_not[i][0];
+        smooth[i] = given && g->smooth && !g->limits.why_not[i][0];
     }
     int np = g->np;
     free(g);
