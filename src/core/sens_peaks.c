@@ -1,7 +1,7 @@
 /* The [limits] values of a sensitivity run and their derivatives (sens_peaks.h). The peaks of
    the load histories and of the drive's power are located as the plain run locates its load
-   peaks (peaks.c on the dense output, here of the augmented state), so the point of each peak
-   carries its sensitivities. */
+   peaks (peaks.c on the dense output, here of the augmented state), and the g envelope's
+   crossings as envelope.c locates them, so each point carries its sensitivities. */
 #include "sens_peaks.h"
 
 #include <math.h>
@@ -13,14 +13,19 @@
    maxima, not differentiable */
 #define TIE_SHARE 1e-9
 
-/* the points kept: the load histories' (felt g per link, then force per joint), then these */
-enum { PT_POWER = ZP_PEAKS_MAX, PT_KINK, PT_ARRIVAL, PT_COUNT };
+/* the points kept: the load histories' (felt g per link, then force per joint), then these;
+   per envelope level three: the start of the excursion under way, the longest's start and
+   end */
+enum { PT_POWER = ZP_PEAKS_MAX, PT_KINK, PT_ARRIVAL, PT_ENV, PT_COUNT = PT_ENV + 3 * ZP_ENV_MAX };
+/* what value_at reads for an envelope's crossing: the judged links' largest felt g */
+#define Q_JUDGED_G PT_COUNT
 
 typedef struct point {
     double value; /* -INFINITY: none yet */
     double t;     /* s */
     int sec, arc, to; /* the section and piece read there; the kink's entered section */
     int shifted;      /* 1: at an event, whose time moves by dt */
+    int crossing;     /* 1: where the judged felt g crosses an envelope level smoothly */
     double dt[ZP_SCHED_MAX_PARAMS];
     double *ya; /* naug: the state and sensitivities there (before a kink's impulse) */
 } point;
@@ -31,7 +36,10 @@ struct zp_sens_peaks {
     const zp_method *meth;
     void *mwork;
     zp_peaks *loads, *power; /* NULL: not asked for */
-    point pt[PT_COUNT];
+    point pt[PT_COUNT + 1]; /* the last: a crossing's point while it is judged */
+    int env;                /* 1: the g envelope's excursions are followed */
+    double env_t, env_g;    /* where the judged felt g was last read, and its value */
+    double longest[ZP_ENV_MAX]; /* s, each level's longest excursion so far */
     double *buf, *f, *u, *yp; /* naug, n, n, n */
     double *mem;
 };
@@ -44,9 +52,10 @@ zp_sens_peaks *zp_sens_peaks_create(zp_sens *c, const zp_limits *lim, const zp_m
     }
     zp_sens_peaks *P = calloc(1, sizeof *P);
     size_t naug = (size_t)c->naug;
-    double *mem = P ? calloc(naug * (PT_COUNT + 1) + 3 * (size_t)c->n, sizeof *mem) : NULL;
+    double *mem = P ? calloc(naug * (PT_COUNT + 2) + 3 * (size_t)c->n, sizeof *mem) : NULL;
     const double *m = lim->max;
-    int loads = m[ZP_LIMIT_G] > 0 || m[ZP_LIMIT_JOINT] > 0;
+    int env = m[ZP_LIMIT_G_ENVELOPE] > 0 && c->sim->m->nenv > 0;
+    int loads = m[ZP_LIMIT_G] > 0 || m[ZP_LIMIT_JOINT] > 0 || env;
     zp_peaks *pl = mem && loads ? zp_peaks_create(2 * c->sim->m->nlink) : NULL;
     zp_peaks *pp = mem && m[ZP_LIMIT_DRIVE_POWER] > 0 ? zp_peaks_create(1) : NULL;
     if (!mem || (loads && !pl) || (m[ZP_LIMIT_DRIVE_POWER] > 0 && !pp)) {
@@ -58,12 +67,12 @@ zp_sens_peaks *zp_sens_peaks_create(zp_sens *c, const zp_limits *lim, const zp_m
         return NULL;
     }
     *P = (zp_sens_peaks){.c = c, .lim = *lim, .meth = meth, .mwork = mwork, .loads = pl,
-                         .power = pp, .mem = mem};
-    for (int q = 0; q < PT_COUNT; q++) {
+                         .power = pp, .env = env, .env_g = 0, .mem = mem};
+    for (int q = 0; q <= PT_COUNT; q++) {
         P->pt[q].value = -INFINITY;
         P->pt[q].ya = mem + naug * q;
     }
-    P->buf = mem + naug * PT_COUNT;
+    P->buf = mem + naug * (PT_COUNT + 1);
     P->f = P->buf + naug;
     P->u = P->f + c->n;
     P->yp = P->u + c->n;
@@ -133,6 +142,78 @@ static void kept_rises(zp_sens_peaks *P, const zp_peaks *pk, int q0, const doubl
     }
 }
 
+/* the judged links' largest felt g among the histories v: what the envelope follows */
+static double judged(const zp_sens_peaks *P, const double *v) {
+    const zp_model *m = P->c->sim->m;
+    double g = 0;
+    for (int i = 0; i < m->nlink; i++) {
+        g = m->g_links >> i & 1 ? fmax(g, v[i]) : g;
+    }
+    return g;
+}
+
+static void point_copy(const zp_sens_peaks *P, point *to, const point *from) {
+    double *ya = to->ya;
+    *to = *from;
+    to->ya = ya;
+    memcpy(ya, from->ya, sizeof *ya * (size_t)P->c->naug);
+}
+
+/* level l seen above (1) or below (0) the level from the point now (the last of pt) on, as
+   envelope.c's side: an excursion's start kept, its end against the longest */
+static void env_side(zp_sens_peaks *P, int l, int above) {
+    point *now = &P->pt[PT_COUNT], *since = &P->pt[PT_ENV + 3 * l];
+    if (above && since->value == -INFINITY) {
+        point_copy(P, since, now);
+        since->value = 0;
+    } else if (!above && since->value != -INFINITY) {
+        if (now->t - since->t > P->longest[l]) {
+            P->longest[l] = now->t - since->t;
+            point_copy(P, &P->pt[PT_ENV + 3 * l + 1], since);
+            point_copy(P, &P->pt[PT_ENV + 3 * l + 2], now);
+        }
+        since->value = -INFINITY;
+    }
+}
+
+/* every level's side at an event at (t, ya) whose time moves by dt, judged felt g now g */
+static void env_event(zp_sens_peaks *P, double t, const double *ya, const double *dt, double g,
+                      int end) {
+    keep(P, PT_COUNT, g, t, ya, dt);
+    P->pt[PT_COUNT].crossing = 0;
+    const zp_model *m = P->c->sim->m;
+    for (int l = 0; l < m->nenv; l++) {
+        env_side(P, l, !end && g > m->env_g[l]);
+    }
+    P->env_t = t;
+    P->env_g = g;
+}
+
+/* a reading of the judged felt g at (t, g) inside the step: each level crossed since the last
+   reading is located by bisection on the dense output, as envelope.c does */
+static void env_reading(zp_sens_peaks *P, double t, double g) {
+    const zp_model *m = P->c->sim->m;
+    for (int l = 0; l < m->nenv; l++) {
+        double level = m->env_g[l], ta = P->env_t, tb = t, v[ZP_PEAKS_MAX];
+        int up = P->env_g <= level;
+        if ((P->env_g > level) == (g > level)) {
+            continue;
+        }
+        for (int it = 0; it < 60; it++) {
+            double mid = 0.5 * (ta + tb);
+            if (!(mid > ta && mid < tb) || dense_loads(mid, 0, v, P)) {
+                break;
+            }
+            *((judged(P, v) > level) == up ? &tb : &ta) = mid;
+        }
+        keep(P, PT_COUNT, level, 0.5 * (ta + tb), NULL, NULL);
+        P->pt[PT_COUNT].crossing = 1;
+        env_side(P, l, g > level);
+    }
+    P->env_t = t;
+    P->env_g = g;
+}
+
 void zp_sens_peaks_restart(zp_sens_peaks *P, double t, const double *ya, const double *dt) {
     static const double fixed[ZP_SCHED_MAX_PARAMS];
     double v[ZP_PEAKS_MAX], before[ZP_PEAKS_MAX], power;
@@ -144,6 +225,9 @@ void zp_sens_peaks_restart(zp_sens_peaks *P, double t, const double *ya, const d
         memcpy(before, P->loads->best, sizeof before);
         zp_peaks_restart(P->loads, t, v);
         kept_rises(P, P->loads, 0, before, t, ya, dt ? dt : fixed);
+    }
+    if (P->env) {
+        env_event(P, t, ya, dt ? dt : fixed, judged(P, v), 0);
     }
     if (P->power) {
         before[0] = P->power->best[0];
@@ -162,6 +246,13 @@ void zp_sens_peaks_step(zp_sens_peaks *P, double t, const double *ya) {
         memcpy(before, P->loads->best, sizeof before);
         zp_peaks_interval(P->loads, t, v, dense_loads, P);
         kept_rises(P, P->loads, 0, before, t, ya, NULL);
+    }
+    if (P->env) {
+        double m = 0.5 * (P->env_t + t), vm[ZP_PEAKS_MAX];
+        if (m > P->env_t && m < t && dense_loads(m, 0, vm, P) == 0) {
+            env_reading(P, m, judged(P, vm));
+        }
+        env_reading(P, t, judged(P, v));
     }
     if (P->power) {
         before[0] = P->power->best[0];
@@ -195,14 +286,17 @@ void zp_sens_peaks_finish(zp_sens_peaks *P, double t, const double *ya, const do
     if (P && finished) {
         keep(P, PT_ARRIVAL, zp_sens_rhs_speed(P->c, ya) * KMH, t, ya, dt);
     }
+    if (P && P->env) {
+        env_event(P, t, ya, dt, P->env_g, 1);
+    }
 }
 
 /* point q's value at (t, y) with the schedule as it stands */
 static double value_at(zp_sens_peaks *P, int q, const point *p, double t, const double *y) {
     double v[ZP_PEAKS_MAX], power, dv;
-    if (q < PT_POWER) {
+    if (q < PT_POWER || q == Q_JUDGED_G) {
         zp_sens_rhs_histories(P->c, t, y, v, &power);
-        return v[q];
+        return q == Q_JUDGED_G ? judged(P, v) : v[q];
     }
     if (q == PT_POWER) {
         zp_sens_rhs_histories(P->c, t, y, NULL, &power);
@@ -216,10 +310,9 @@ static double value_at(zp_sens_peaks *P, int q, const point *p, double t, const 
 
 /* d value / d p_k of point q into d: the five-point stencil along (dt, s_k + f dt, e_k) in
    (time, state, parameters), f the rates of the point's side (dt 0 away from events) */
-static void derive(zp_sens_peaks *P, int q, double *d) {
+static void derive(zp_sens_peaks *P, int q, const point *p, double *d) {
     zp_sens *c = P->c;
     zp_sim *s = c->sim;
-    const point *p = &P->pt[q];
     int n = c->n;
     s->sec = p->sec;
     s->arc = p->arc;
@@ -246,6 +339,78 @@ static void derive(zp_sens_peaks *P, int q, double *d) {
         c->sched.p[k] = p_k;
         d[k] = sum / (12 * h);
     }
+}
+
+/* per s: the judged felt g's rate along the run at point p, the five-point stencil along
+   (1, f) in (time, state) */
+static double judged_rate(zp_sens_peaks *P, const point *p) {
+    zp_sens *c = P->c;
+    zp_sim *s = c->sim;
+    static const double at[4] = {2, 1, -1, -2}, wt[4] = {-1, 8, -8, 1};
+    s->sec = p->sec;
+    s->arc = p->arc;
+    zp_sens_rhs_rates(c, p->t, p->ya, P->f);
+    double r = 1 / fmax(p->t, 1), sum = 0;
+    for (int i = 0; i < s->w0; i++) {
+        r = fmax(r, fabs(P->f[i]) / fmax(fabs(p->ya[i]), 1));
+    }
+    double h = ZP_SENS_STEP / r;
+    for (int j = 0; j < 4; j++) {
+        for (int i = 0; i < c->n; i++) {
+            P->yp[i] = p->ya[i] + at[j] * h * P->f[i];
+        }
+        sum += wt[j] * value_at(P, Q_JUDGED_G, p, p->t + at[j] * h, P->yp);
+    }
+    return sum / (12 * h);
+}
+
+/* d t / d p_k of an excursion's end point p into dt: a smooth crossing of its level moves by
+   -(d g / d p_k) / (d g / d t), one at an event with the event; 0 where g only touches the
+   level (*touch then 1) */
+static void crossing_shift(zp_sens_peaks *P, const point *p, double *dt, int *touch) {
+    int np = P->c->np;
+    if (!p->crossing) {
+        for (int k = 0; k < np; k++) {
+            dt[k] = p->shifted ? p->dt[k] : 0;
+        }
+        return;
+    }
+    double dg[ZP_SCHED_MAX_PARAMS], rate = judged_rate(P, p);
+    derive(P, Q_JUDGED_G, p, dg);
+    *touch |= !(fabs(rate) > 0);
+    for (int k = 0; k < np; k++) {
+        dt[k] = fabs(rate) > 0 ? -dg[k] / rate : 0;
+    }
+}
+
+/* the g envelope's value, the worst level's longest excursion over its allowance, and its
+   derivatives: the excursion's end's shift less its start's, over the allowance */
+static void envelope_result(zp_sens_peaks *P, zp_sens_limits *l) {
+    const zp_model *m = P->c->sim->m;
+    int i = ZP_LIMIT_G_ENVELOPE, w = 0, tie = 0;
+    for (int v = 1; v < m->nenv; v++) {
+        double a = P->longest[v] / m->env_s[v], b = P->longest[w] / m->env_s[w];
+        tie = a > b ? 0 : tie || (a == b && a > 0);
+        w = a > b ? v : w;
+    }
+    l->has[i] = 1;
+    l->value[i] = P->longest[w] / m->env_s[w];
+    memset(l->d[i], 0, sizeof l->d[i]);
+    l->t[i] = P->longest[w] > 0 ? P->pt[PT_ENV + 3 * w + 2].t : NAN;
+    if (!(P->longest[w] > 0)) {
+        return; /* no excursion: 0, and 0 it stays nearby */
+    }
+    double a[ZP_SCHED_MAX_PARAMS], b[ZP_SCHED_MAX_PARAMS];
+    int touch = 0;
+    crossing_shift(P, &P->pt[PT_ENV + 3 * w + 1], a, &touch);
+    crossing_shift(P, &P->pt[PT_ENV + 3 * w + 2], b, &touch);
+    for (int k = 0; k < P->c->np; k++) {
+        l->d[i][k] = (b[k] - a[k]) / m->env_s[w];
+    }
+    snprintf(l->why_not[i], sizeof l->why_not[i], "%s",
+             tie     ? "two levels are worst together (a maximum of two maxima)"
+             : touch ? "felt g touches the level there without crossing it"
+                     : "");
 }
 
 /* the point of limit i (-1: none), or why there is none or it is not differentiable there */
@@ -281,8 +446,7 @@ static int point_of(const zp_sens_peaks *P, int i, const char **why) {
     if (i == ZP_LIMIT_DRIVE_POWER) {
         return PT_POWER;
     }
-    *why = i == ZP_LIMIT_G_ENVELOPE ? "not differentiated: the length of an excursion above a level"
-                                    : "not differentiated";
+    *why = "not differentiated";
     return -1;
 }
 
@@ -292,6 +456,10 @@ void zp_sens_peaks_result(zp_sens_peaks *P, zp_sens_limits *l) {
         if (!l->set[i]) {
             continue;
         }
+        if (i == ZP_LIMIT_G_ENVELOPE && P->env) {
+            envelope_result(P, l);
+            continue;
+        }
         const char *why;
         int q = point_of(P, i, &why);
         snprintf(l->why_not[i], sizeof l->why_not[i], "%s", why);
@@ -299,7 +467,7 @@ void zp_sens_peaks_result(zp_sens_peaks *P, zp_sens_limits *l) {
         l->t[i] = q >= 0 && P->pt[q].value > -INFINITY ? P->pt[q].t : NAN;
         l->has[i] = q >= 0;
         if (q >= 0 && P->pt[q].value > -INFINITY) {
-            derive(P, q, l->d[i]);
+            derive(P, q, &P->pt[q], l->d[i]);
         }
     }
 }

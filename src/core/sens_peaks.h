@@ -1,11 +1,12 @@
 /* The [limits] values of a sensitivity run and their derivatives (sens.h): each value is found
    where the plain run finds it (a peak of a load history or of the drive's power over the run, a
-   kink's speed change, the arrival speed), and its point kept with the sensitivities there. At
-   the end each point's value is differentiated along (s_k, e_k) in (state, parameters); at an
-   interior maximum the point's own shift in time adds nothing (the value's rate is 0 there), at
-   an event (a kink's either side, the finish, the start) the event's time shift dt_e/dp moves
-   the point along the rates of its side: d/dp = D Q (dt_e, s_k + f dt_e, e_k). Internal to the
-   core floor. */
+   kink's speed change, the arrival speed, the g envelope's excursions between their crossings
+   of a level), and its point kept with the sensitivities there. At the end each point's value
+   is differentiated along (s_k, e_k) in (state, parameters); at an interior maximum the
+   point's own shift in time adds nothing (the value's rate is 0 there), at an event (a kink's
+   either side, the finish, the start) the event's time shift dt_e/dp moves the point along the
+   rates of its side: d/dp = D Q (dt_e, s_k + f dt_e, e_k); a crossing of an envelope level
+   moves by -(D g) / (d g / d t). Internal to the core floor. */
 #ifndef ZP_SENS_PEAKS_H
 #define ZP_SENS_PEAKS_H
 
