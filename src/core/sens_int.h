@@ -30,6 +30,9 @@ int zp_sens_rhs_root(double t, const double *ya, double *g, void *user);
    y_out from y_in, on the current section. Nonzero where the mass matrix is not positive
    definite. */
 int zp_sens_rhs_kink_map(zp_sens *c, const double *y_in, int to, double *y_out);
+/* 1 when s (n entries) is 0 in every one: a parameter of a section not reached yet, whose
+   stencil zp_sens_rhs skips. */
+int zp_sens_rhs_zero(const double *s, int n);
 /* m/s: the trolley's speed change |v+ - v-| across that kink, as the plain run's kink_dv. */
 int zp_sens_rhs_kink_dv(zp_sens *c, const double *y_in, int to, double *dv);
 /* m/s: the trolley's speed at y on the current section. */

@@ -328,6 +328,11 @@ static void derive(zp_sens_peaks *P, int q, const point *p, double *d) {
             P->u[i] = sk[i] + (p->shifted ? P->f[i] * tau : 0);
             r = i < s->w0 ? fmax(r, fabs(P->u[i]) / fmax(fabs(p->ya[i]), 1)) : r;
         }
+        if (tau == 0 && zp_drive_param_section(&c->sched, k) != p->sec &&
+            zp_sens_rhs_zero(P->u, n)) {
+            d[k] = 0; /* a section's parameter the run has not felt yet, as sens_rhs.c skips */
+            continue;
+        }
         double h = ZP_SENS_STEP / r, sum = 0;
         for (int j = 0; j < 4; j++) {
             for (int i = 0; i < n; i++) {

@@ -56,8 +56,7 @@ static int rates_at(zp_sens *c, double t, const double *y, const double *s, int 
     return rates(c, t, yp, f);
 }
 
-/* whether s is 0 in every entry */
-static int all_zero(const double *s, int n) {
+int zp_sens_rhs_zero(const double *s, int n) {
     for (int i = 0; i < n; i++) {
         if (s[i] != 0) {
             return 0;
@@ -74,7 +73,7 @@ int zp_sens_rhs(double t, const double *ya, double *yd, void *user) {
     for (int k = 0; k < c->np && !rc; k++) {
         const double *s = ya + n * (k + 1);
         double *ds = yd + n * (k + 1);
-        if (zp_drive_param_section(&c->sched, k) != c->sim->sec && all_zero(s, n)) {
+        if (zp_drive_param_section(&c->sched, k) != c->sim->sec && zp_sens_rhs_zero(s, n)) {
             /* a parameter of a section not reached yet: the rates do not move along (0, e_k),
                and the stencil would only add its round-off (measured: about a third of a
                3-section run's stencil work, two thirds of a 3-knot profile's) */
