@@ -86,7 +86,7 @@ static double sens_cost(const zp_problem *st, const zp_objective *ob, const doub
     }
     double t1 = now();
     for (int i = 0; sr && i < TIMED; i++) {
-        zp_sens_run(st->m, &st->search, &sched, sr);
+        zp_sens_run(st->m, &st->search, &sched, NULL, sr);
     }
     double t2 = now();
     free(sr);

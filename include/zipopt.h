@@ -97,6 +97,22 @@ ZIPOPT_API void zipopt_run_free(zipopt_run *r); /* NULL is fine */
 ZIPOPT_API int zipopt_gradient(zipopt_scene *s, double *dtime, double *dmargin, int n,
                                int *smooth, char *err, size_t errlen);
 
+/* The [limits] keys ("max_g", "max_joint_force", ...: docs/scene-file.md [limits]) in the order
+   zipopt_gradient_limits fills its rows; NULL past the last. */
+ZIPOPT_API const char *zipopt_limit_key(int i);
+/* The derivatives of each [limits] value the scene sets, from the same kind of run as
+   zipopt_gradient (`zipopt simulate --json`'s gradient.limits): row i of d (n numbers each, n at
+   least the parameter count; room for n times the number of keys) for zipopt_limit_key(i), in
+   that limit's unit per parameter unit (g, N, km/h, m/s, W per N); a row of NaN where the scene
+   does not set that limit or it has no derivative there (the arrival speed of a ride that did
+   not finish); smooth[i] (room for the number of keys) 1 where the row is given and
+   differentiable, 0 otherwise (`zipopt simulate --gradient` says why). A peak is
+   differentiated where the run reaches it (the drive's power at its exact peak, which
+   drive_peak_power samples at the steps' ends). Returns the parameter count, or -1 with why in
+   err. */
+ZIPOPT_API int zipopt_gradient_limits(zipopt_scene *s, double *d, int n, int *smooth, char *err,
+                                      size_t errlen);
+
 ZIPOPT_API int zipopt_run_outcome(const zipopt_run *r);  /* ZIPOPT_FINISHED, _DIED, _STALLED */
 ZIPOPT_API const char *zipopt_outcome_name(int outcome); /* "finished", .. ; NULL if unknown */
 /* Why a stalled run stalled ("t_max", "rolled_back", ..), "" for the others. */
@@ -108,8 +124,11 @@ ZIPOPT_API const char *zipopt_run_stall(const zipopt_run *r);
    wall_s (s), w_drag, w_fric (J: drag and friction work taken out, 0 without [physics]),
    peak_g (g: the largest felt acceleration of any link's centre), peak_joint_force (N),
    max_kink_dv (m/s), arrival_kmh (km/h; NaN when the trolley did not arrive), normal_min,
-   normal_max (N: the course's force on the trolley, + pushing up), rejected_steps: the
-   quantities [limits] judge, as `zipopt simulate --json` reports them. */
+   normal_max (N: the course's force on the trolley, + pushing up), rejected_steps,
+   drive_peak_power (W: the largest |F_applied v| at the steps' ends), drive_energy (J: the
+   drive's work, w_drive), drive_time_at_cap (s: the time the drive's power cap bound): the
+   quantities [limits] judge, as `zipopt simulate --json` reports them (the drive's in its
+   `drive` object). */
 ZIPOPT_API double zipopt_run_get(const zipopt_run *r, const char *key);
 ZIPOPT_API const char *zipopt_run_key(int i); /* the i-th name, NULL past the last */
 /* Largest |relative joint angle| of each link over the run (rad) into angle (room for n);

@@ -117,6 +117,53 @@ static zp_status run_given(const zp_problem *p, zp_answer *a, char *err, size_t 
     return st;
 }
 
+/* with a profile, the best constant-per-section schedule of the same scene (answer.h's
+   zp_answer_constant): p with one force per section, the profile's bounds and cap, solved
+   through this same path to its verified answer, silently */
+static zp_status run_constant(const zp_problem *p, const zp_answer_opts *o, zp_answer *a,
+                              char *err, size_t errlen) {
+    const zp_schedule *sh = &p->sched;
+    if (sh->kind != ZP_SCHED_PROFILE || sh->knots < 2) {
+        return ZP_OK;
+    }
+    zp_problem *q = malloc(sizeof *q);
+    zp_answer *c = calloc(1, sizeof *c);
+    if (!q || !c) {
+        free(q);
+        free(c);
+        snprintf(err, errlen, "out of memory for the constant schedule's search");
+        return ZP_ERR_NOMEM;
+    }
+    *q = *p;
+    double mean[ZP_MAX_SECTIONS]; /* each section's knots' mean: the scene's forces, constant */
+    for (int k = 0; k < sh->nsec; k++) {
+        mean[k] = 0;
+        for (int j = 0; j < sh->knots; j++) {
+            mean[k] += sh->p[k * sh->knots + j] / sh->knots;
+        }
+    }
+    q->sched = zp_drive_sections(sh->nsec, mean, sh->lo[0], sh->hi[0]);
+    q->sched.power = sh->power;
+    zp_answer_opts co = {.depth = ZP_ANSWER_VERIFIED, .search = o->search};
+    co.search.max_evals = a->max_evals;
+    co.search.seed = a->seed;
+    co.search.progress = NULL;
+    zp_status st = zp_answer_solve(q, &co, c, err, errlen);
+    if (!st) {
+        zp_answer_constant *k = &a->constant;
+        k->ran = 1;
+        k->found = c->found && !c->res.interrupted;
+        k->time = c->v.run->time;
+        k->nsec = sh->nsec;
+        memcpy(k->force, c->res.force, sizeof *k->force * (size_t)sh->nsec);
+        k->evals = c->res.evals;
+    }
+    zp_answer_free(c);
+    free(c);
+    free(q);
+    return st;
+}
+
 /* the fresh scenarios the answer fails, told apart by what breaks and where: the
    verification's scenarios run again with its options, each verdict kept; without memory no
    diagnosis */
@@ -151,7 +198,7 @@ zp_status zp_answer_solve(const zp_problem *p, const zp_answer_opts *o, zp_answe
     if ((st = verify(p, o, a, err, errlen)) || o->depth == ZP_ANSWER_VERIFIED) {
         return st;
     }
-    if ((st = run_given(p, a, err, errlen))) {
+    if ((st = run_given(p, a, err, errlen)) || (st = run_constant(p, o, a, err, errlen))) {
         return st;
     }
     if (stage(o, ZP_ANSWER_COMPARED, a)) {

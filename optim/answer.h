@@ -28,6 +28,18 @@ typedef enum zp_answer_stage {
 
 typedef struct zp_answer zp_answer;
 
+/* What a profile gains: the best constant-per-section schedule of the same scene, found by the
+   same search (strategy, budget, seed) over one force per section and verified as the answer
+   is (ZP_ANSWER_REPORTED, a profile of more than one knot only). */
+typedef struct zp_answer_constant {
+    int ran;                         /* 1: searched */
+    int found;                       /* it holds, as zp_answer.found says of the answer */
+    double time;                     /* s, its verified run's */
+    int nsec;
+    double force[ZP_MAX_SECTIONS];   /* N per section */
+    long evals;                      /* simulations its search spent */
+} zp_answer_constant;
+
 typedef struct zp_answer_opts {
     zp_answer_depth depth;
     zp_search_opts search;   /* the strategy, budget, seed, wall time, stop flag and progress */
@@ -60,6 +72,7 @@ struct zp_answer {
                              judged at the search's options, ZP_ANSWER_REPORTED */
     zp_diagnosis *diag;   /* owned, NULL: the answer keeps every fresh scenario (or the
                              depth is lower) */
+    zp_answer_constant constant; /* with a profile, what it gains (ZP_ANSWER_REPORTED) */
 };
 
 /* The options of a solve of p to depth: the first strategy, p's budget and seed, no stop, no

@@ -167,6 +167,32 @@ void zp_report_breaks(const zp_problem *p, const zp_result *run, char *out, size
     snprintf(out, cap, "%s", b == ZP_BREAKS_LIMIT ? zp_limits_name(which) : said[b]);
 }
 
+/* a profile's gain over the best constant-per-section schedule of the same scene */
+static void md_profile_gain(FILE *f, const zp_answer *a) {
+    const zp_answer_constant *c = &a->constant;
+    if (!c->ran) {
+        return;
+    }
+    char forces[256] = "";
+    for (int k = 0, len = 0; k < c->nsec && len < (int)sizeof forces; k++) {
+        len += snprintf(forces + len, sizeof forces - (size_t)len, "%s%.3f", k ? ", " : "",
+                        c->force[k]);
+    }
+    if (!c->found) {
+        fprintf(f,
+                "- over the best constant-per-section schedule: missing (the same search over "
+                "one force per section, %ld simulations, found none that holds)\n",
+                c->evals);
+        return;
+    }
+    char what[400];
+    snprintf(what, sizeof what,
+             "the best constant-per-section schedule of the same scene (the same search, budget "
+             "and seed over one force per section: %s N, %.4f s; this profile %.4f s)",
+             forces, c->time, a->v.run->time);
+    md_gain(f, what, a->v.run->time, c->time);
+}
+
 static void md_gains(FILE *f, const zp_answer *a) {
     const zp_search_result *s = &a->res;
     const zp_schedule *shape = &a->pb->sched;
@@ -183,6 +209,7 @@ static void md_gains(FILE *f, const zp_answer *a) {
               "margin)\n",
               f);
     }
+    md_profile_gain(f, a);
     if (!study) {
         return;
     }
@@ -206,6 +233,18 @@ static void md_gains(FILE *f, const zp_answer *a) {
         }
         fputs("\n", f);
     }
+}
+
+/* the drive a motor is bought for: its peak power, its energy, the time its cap bound */
+static void md_drive(FILE *f, const zp_answer *a) {
+    const zp_result *run = a->v.run;
+    const zp_schedule *sh = &a->pb->sched;
+    fputs("\n## Drive\n\n| peak power | energy | time at the power cap |\n|---|---|---|\n", f);
+    char cap[64] = "no cap";
+    if (sh->power > 0) {
+        snprintf(cap, sizeof cap, "%.3f s (cap %.0f W)", run->drive_time_at_cap, sh->power);
+    }
+    fprintf(f, "| %.0f W | %.3f kJ | %s |\n", run->drive_peak_power, run->w_drive / 1000, cap);
 }
 
 static void md_speeds(FILE *f, const zp_result *run) {
@@ -567,10 +606,12 @@ static void md_figures_rerun(FILE *f, const zp_answer *a, const zp_report_place 
         fputs("\n## Figures\n\n"
               "The best run: the course with every centre-of-mass path, the energy account, the\n"
               "relative joint angles against the death angle and the margin, and the loads;\n"
-              "then the angles, the felt g and the loads against distance.\n\n"
+              "then the angles, the felt g and the loads against distance, and the drive's\n"
+              "applied force against distance and against speed.\n\n"
               "![course and paths](course.png)\n\n![energy](energy.png)\n\n"
               "![joint angles](angles.png)\n\n![loads](loads.png)\n\n"
-              "![the ride against distance](along.png)\n",
+              "![the ride against distance](along.png)\n\n"
+              "![the drive against distance and speed](drive.png)\n",
               f);
         if (a->pb->m->nenv > 0) {
             fputs("\n![felt g against the g-duration envelope](envelope.png)\n", f);
@@ -588,6 +629,7 @@ void zp_report_write_md(FILE *f, const zp_answer *a, const zp_report_place *w) {
     md_result(f, a);
     md_margins(f, a);
     md_gains(f, a);
+    md_drive(f, a);
     md_speeds(f, a->v.run);
     if (a->pb->m->narc) {
         md_arcs(f, a);

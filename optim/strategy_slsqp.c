@@ -50,7 +50,7 @@ static int differentiate(grad_run *c, const double *x) {
     zp_leg_params(leg, x, f);
     zp_schedule sched = zp_objective_schedule(S->ob, f);
     zp_sens_result sr;
-    int ok = zp_sens_run(S->ob->m, S->so, &sched, &sr) == ZP_OK;
+    int ok = zp_sens_run(S->ob->m, S->so, &sched, NULL, &sr) == ZP_OK;
     if (zp_leg_charge(leg, sens_charge(&sr, leg->r)) || !ok || !sr.smooth ||
         sr.outcome != ZP_OUTCOME_FINISHED) {
         return -1;

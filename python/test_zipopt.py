@@ -8,7 +8,8 @@ section, N, within min and max), and a search answers with that many. Misuse rai
 ValueError instead of crashing, hanging or being misread (each case in a child interpreter,
 so a crash or a hang fails that case alone): a closed Scene, one closed inside a progress
 function, a scene loaded or searched from inside one, NUL bytes in text, names and paths,
-and whole numbers past a C long.
+and whole numbers past a C long. The drive's figures and the gradient (time, margin and every
+[limits] value's derivatives) are the program's bits.
 
 Run by ctest with PYTHONPATH (the module), ZIPOPT_LIB (the built library), ZIPOPT_EXE (the
 program) and ZIPOPT_SOURCE_DIR (the scenes) set.
@@ -28,6 +29,35 @@ import zipopt
 SRC = os.environ.get("ZIPOPT_SOURCE_DIR", os.path.join(os.path.dirname(__file__), ".."))
 SEED = os.path.join(SRC, "config", "seed.ini")
 K_RTOL = 300.0  # closed forms and audits are met to a few hundred times the requested rtol
+
+
+class DriveAndGradient(unittest.TestCase):
+    def test_equal_the_program(self):
+        # the drive's figures (a capped drive) and every derivative are the program's bits
+        cases = [(os.path.join(SRC, "config", "seed_power.ini"), [60, 500, 500]),
+                 (os.path.join(SRC, "tests", "scenes", "gradient_limits.ini"), None)]
+        for path, forces in cases:
+            with tempfile.TemporaryDirectory() as out:
+                extra = ["--force", ",".join(map(str, forces))] if forces else []
+                js = subprocess.run([os.environ["ZIPOPT_EXE"], "simulate", path, *extra,
+                                     "--gradient", "--json", "--out", out],
+                                    check=True, capture_output=True, text=True).stdout
+            prog = json.loads(js)
+            with zipopt.Scene(path, forces=forces) as s:
+                r = s.simulate()
+                g = s.gradient()
+            self.assertEqual(r.drive_peak_power, prog["drive"]["peak_power"])
+            self.assertEqual(r.drive_energy, prog["drive"]["energy"])
+            self.assertEqual(r.drive_time_at_cap, prog["drive"]["time_at_cap"])
+            pg = prog["gradient"]
+            self.assertEqual(list(g["time"]), pg["time"])
+            self.assertEqual(list(g["margin_angle"]), pg["margin_angle"])
+            self.assertEqual(g["smooth"], pg["smooth"])
+            self.assertEqual(set(g["limits"]), {k for k, v in pg["limits"].items() if v})
+            for k, v in g["limits"].items():
+                self.assertEqual(list(v), pg["limits"][k])
+                self.assertEqual(g["limits_smooth"][k], k not in pg["limits_not_smooth"])
+        self.assertGreater(r.drive_peak_power, 0)
 
 
 class Simulate(unittest.TestCase):

@@ -214,7 +214,7 @@ static void test_gradient(void) {
             zp_sim_opts o = tu_opts(&sc, 1e-11);
             o.formulation = form;
             zp_sens_result g;
-            CHECK(zp_sens_run(m, &o, &s, &g) == ZP_OK && g.smooth &&
+            CHECK(zp_sens_run(m, &o, &s, NULL, &g) == ZP_OK && g.smooth &&
                   g.outcome == ZP_OUTCOME_FINISHED && g.ncross == 1);
             for (int k = 0; k < s.np; k++) {
                 double h = 1e-3 * fabs(s.p[k]), T[4];

@@ -7,7 +7,9 @@
    (not even the interpreted-course notice); NULL handles and output arrays are refused as
    zipopt.h says; scene text without a name loads; a schedule file gives the bits of the same
    forces set by hand; the schedule's parameters are [drive] forces' own: one per section,
-   labelled by section, in N, bounded by [drive] min and max. */
+   labelled by section, in N, bounded by [drive] min and max; the drive's figures (peak power,
+   energy, time at the cap) and the gradient (time, margin and every [limits] value's) are
+   `zipopt simulate --gradient --json`'s bits. */
 #include <math.h>
 #include <pthread.h>
 #include <stdio.h>
@@ -389,6 +391,72 @@ static void check_schedule(void) {
     rmdir(dir);
 }
 
+/* the number after "key": (a number, or a list's first) in the JSON text js from its
+   object `in` on (NaN: not there) */
+static double json_number(const char *js, const char *in, const char *key) {
+    char pat[64];
+    const char *from = strstr(js, in);
+    snprintf(pat, sizeof pat, "\"%s\": ", key);
+    const char *at = from ? strstr(from, pat) : NULL;
+    if (!at) {
+        return NAN;
+    }
+    at += strlen(pat);
+    return strtod(at + (*at == '['), NULL);
+}
+
+/* the drive's figures and the gradient are the program's bits (JSON keeps 17 digits): a
+   capped drive on seed_power, every [limits] value's derivatives on gradient_limits.ini */
+static void check_drive_and_gradient(void) {
+    char err[512], cmd[1024], js[1 << 15], dir[] = "/tmp/zp_lib_XXXXXX";
+    CHECK(mkdtemp(dir) != NULL);
+    static const char *const scenes[2] = {ZP_SOURCE_DIR "/config/seed_power.ini",
+                                          ZP_SOURCE_DIR "/tests/scenes/gradient_limits.ini"};
+    for (int i = 0; i < 2; i++) {
+        snprintf(cmd, sizeof cmd, "%s simulate %s %s --gradient --json --out %s 2>/dev/null",
+                 ZP_EXE, scenes[i], i == 0 ? "--force 60,500,500" : "", dir);
+        FILE *p = popen(cmd, "r");
+        CHECK(p != NULL);
+        size_t n = p ? fread(js, 1, sizeof js - 1, p) : 0;
+        js[n] = '\0';
+        CHECK(p && pclose(p) == 0);
+        zipopt_scene *s = zipopt_scene_load(scenes[i], err, sizeof err);
+        double f0[3] = {60, 500, 500};
+        CHECK(s && (i > 0 || zipopt_scene_set_forces(s, f0, 3, err, sizeof err) == 0));
+        zipopt_run *r = s ? zipopt_simulate(s, err, sizeof err) : NULL;
+        CHECK(r != NULL);
+        if (!r) {
+            zipopt_scene_free(s);
+            continue;
+        }
+        const char *drive = "\"drive\": {";
+        CHECK(zipopt_run_get(r, "drive_peak_power") == json_number(js, drive, "peak_power"));
+        CHECK(zipopt_run_get(r, "drive_energy") == json_number(js, drive, "energy"));
+        CHECK(zipopt_run_get(r, "drive_time_at_cap") == json_number(js, drive, "time_at_cap"));
+        CHECK(i > 0 || zipopt_run_get(r, "drive_time_at_cap") > 0);
+        double dt[3], dm[3], dl[16 * 3];
+        int smooth, lsmooth[16], nkey = 0;
+        while (zipopt_limit_key(nkey)) {
+            nkey++;
+        }
+        CHECK(nkey <= 16 && zipopt_gradient(s, dt, dm, 3, &smooth, err, sizeof err) == 3);
+        CHECK(zipopt_gradient_limits(s, dl, 3, lsmooth, err, sizeof err) == 3);
+        /* the first parameter's derivatives, as the JSON lists them */
+        const char *grad = "\"gradient\": {", *lims = "\"limits\": {";
+        CHECK(dt[0] == json_number(js, grad, "time"));
+        CHECK(dm[0] == json_number(js, grad, "margin_angle"));
+        for (int k = 0; k < nkey; k++) {
+            const char *g = strstr(js, grad);
+            double want = g ? json_number(g, lims, zipopt_limit_key(k)) : NAN;
+            CHECK(isnan(want) ? isnan(dl[k * 3]) : dl[k * 3] == want && lsmooth[k]);
+        }
+        zipopt_run_free(r);
+        zipopt_scene_free(s);
+    }
+    snprintf(cmd, sizeof cmd, "rm -r %s", dir);
+    CHECK(system(cmd) == 0);
+}
+
 int main(void) {
     CHECK(!strcmp(zipopt_version(), "0.1.0") || strchr(zipopt_version(), '.'));
     check_schedule();
@@ -402,5 +470,6 @@ int main(void) {
     check_unnamed();
     check_no_notice();
     check_search();
+    check_drive_and_gradient();
     return CHECK_DONE();
 }

@@ -294,6 +294,14 @@ static void test_figures(void) {
     check_png(dir, "angles.png", 0, 0);
     check_png(dir, "loads.png", 0, 0);
     check_png(dir, "along.png", 0, 0);
+    check_png(dir, "drive.png", 0, 0);
+    /* the drive against distance and speed, from the columns plot_run.dat adds for it */
+    char *drive = slurp(dir, "drive.gp"), *data = slurp(dir, "plot_run.dat");
+    CHECK(drive && strstr(drive, "using 'x':'drive_force'") &&
+          strstr(drive, "using 'drive_speed':'drive_force'"));
+    CHECK(data && strstr(data, " drive_speed drive_force\n"));
+    free(drive);
+    free(data);
     /* against distance: every curve of along.gp is drawn over the run's x */
     char *along = slurp(dir, "along.gp");
     CHECK(along && strstr(along, "using 'x':'phi1'") && strstr(along, "using 'x':'felt_g'") &&

@@ -111,6 +111,9 @@ for _name, _res, _args in [
     ("zipopt_run_columns", _I, [_P]),
     ("zipopt_run_column", _S, [_P, _I]),
     ("zipopt_run_trajectory", _DP, [_P]),
+    ("zipopt_gradient", _I, [_P, _DP, _DP, _I, ctypes.POINTER(_I), _S, _Z]),
+    ("zipopt_gradient_limits", _I, [_P, _DP, _I, ctypes.POINTER(_I), _S, _Z]),
+    ("zipopt_limit_key", _S, [_I]),
     ("zipopt_search_run", _P, [_P, ctypes.c_long, ctypes.c_long, _PROGRESS, _P,
                                ctypes.POINTER(ctypes.c_int), _S, _Z]),
     ("zipopt_search_free", None, [_P]),
@@ -297,6 +300,35 @@ class Scene:
         finally:
             _lib.zipopt_run_free(h)
 
+    def gradient(self):
+        """The exact derivatives of the current forces' run (`zipopt simulate --gradient`),
+        per schedule parameter: a dict with time (s per N), margin_angle (deg per N), smooth
+        (False where the run meets a point where it is not differentiable), limits ({key:
+        derivatives} for each [limits] value the scene sets, in its unit per N; None where it
+        has none there, e.g. the arrival speed of a ride that did not finish) and
+        limits_smooth ({key: whether that one is differentiable there})."""
+        sh = self._handle(changes=True)
+        n = max(self.params, 1)
+        dtime, dmargin = (ctypes.c_double * n)(), (ctypes.c_double * n)()
+        smooth = _I()
+        err = ctypes.create_string_buffer(_ERR)
+        np_ = _lib.zipopt_gradient(sh, dtime, dmargin, n, ctypes.byref(smooth), err, _ERR)
+        if np_ < 0:
+            raise ZipoptError(err.value.decode(errors="replace"))
+        keys = _keys(_lib.zipopt_limit_key)
+        rows, lsmooth = (ctypes.c_double * (n * len(keys)))(), (_I * len(keys))()
+        if _lib.zipopt_gradient_limits(sh, rows, n, lsmooth, err, _ERR) < 0:
+            raise ZipoptError(err.value.decode(errors="replace"))
+        limits, limits_smooth = {}, {}
+        for i, k in enumerate(keys):
+            row = np.array(rows[i * n:i * n + np_], dtype=float)
+            if not np.all(np.isnan(row)):
+                limits[k] = row
+                limits_smooth[k] = bool(lsmooth[i])
+        return {"time": np.array(dtime[:np_], dtype=float),
+                "margin_angle": np.array(dmargin[:np_], dtype=float),
+                "smooth": bool(smooth.value), "limits": limits, "limits_smooth": limits_smooth}
+
     def search(self, max_evals=0, seed=-1, progress=None):
         """The fastest survivable schedule; max_evals <= 0 and seed < 0 take the scene's.
         progress(evals, wall_s, found, time, forces, improved) is called now and then; a true
@@ -344,7 +376,8 @@ class Run:
 
     outcome ("finished", "died", "stalled"), stall (why it stalled, else ""), every number of
     zipopt_run_get as an attribute (time, x, speed, died_link, kinks, e_initial, e_final,
-    w_drive, w_damp, e_impulse, energy_residual, ...), max_angles (rad per link), crossings (a
+    w_drive, w_damp, e_impulse, energy_residual, ..., drive_peak_power, drive_energy,
+    drive_time_at_cap), max_angles (rad per link), crossings (a
     structured array: t, x, from, to, impulse, energy_lost) and trajectory (a dict of numpy
     columns: t, section, x, y, speed, theta1.., omega1.., phi1.., kinetic, potential,
     drive_work, damper_work, impulse_loss).

@@ -38,7 +38,8 @@ static void usage(FILE *f) {
           "                      course.png (course, sections, kinks, every centre-of-mass\n"
           "                      path), energy.png, angles.png (death angle and search\n"
           "                      margin), loads.png, along.png (angles, felt g and loads\n"
-          "                      against distance); each with its .gp script and data\n"
+          "                      against distance), drive.png (the applied force against\n"
+          "                      distance and speed); each with its .gp script and data\n"
           "  --frames-at x=X,..|t=T,..\n"
           "                      still frames of the body: frame_x<X>.png where the trolley\n"
           "                      first reaches x = X (m), or frame_t<T>.png at time T (s)\n"
@@ -252,7 +253,9 @@ static int say_figures(const char *dir, const zp_plot_opts *po, const zp_plot_in
                 dir);
         return ZP_EXIT_FAIL;
     }
-    fprintf(say, "figures in %s: course.png (and .svg) energy.png angles.png loads.png along.png%s",
+    fprintf(say,
+            "figures in %s: course.png (and .svg) energy.png angles.png loads.png along.png "
+            "drive.png%s",
             dir,
             info->envelope ? " envelope.png" : "");
     if (info->nframe) {
@@ -369,7 +372,7 @@ int zp_cmd_simulate(int argc, char **argv) {
         goto done;
     }
     zp_sens_result grad;
-    if (a.gradient && zp_sens_run(st.m, &o, &st.sched, &grad)) {
+    if (a.gradient && zp_sens_run(st.m, &o, &st.sched, &lim, &grad)) {
         fprintf(stderr, "zipopt simulate: --gradient: %s; nothing was written\n", grad.message);
         goto done;
     }

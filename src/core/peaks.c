@@ -38,8 +38,11 @@ void zp_peaks_free(zp_peaks *p) {
     }
 }
 
-static void take(zp_peaks *p, const double *v) {
+static void take(zp_peaks *p, double t, const double *v) {
     for (int q = 0; q < p->nq; q++) {
+        if (v[q] > p->best[q]) {
+            p->best_t[q] = t;
+        }
         p->best[q] = fmax(p->best[q], v[q]);
     }
 }
@@ -47,6 +50,7 @@ static void take(zp_peaks *p, const double *v) {
 void zp_peaks_reset(zp_peaks *p) {
     for (int q = 0; q < p->nq; q++) {
         p->best[q] = -INFINITY;
+        p->best_t[q] = NAN;
         p->gap[q] = 0;
     }
 }
@@ -57,7 +61,7 @@ void zp_peaks_restart(zp_peaks *p, double t, const double *v) {
     for (int q = 0; q < p->nq; q++) {
         p->slope[q] = NAN;
     }
-    take(p, v);
+    take(p, t, v);
 }
 
 /* every history at t on the dense output (0: done), seen by the bests */
@@ -65,7 +69,7 @@ static int eval(zp_peaks *p, double t, double *v) {
     if (p->f(t, 0, v, p->user)) {
         return 1;
     }
-    take(p, v);
+    take(p, t, v);
     return 0;
 }
 
@@ -103,7 +107,7 @@ static void refine(zp_peaks *p, int q, double lo, double vlo, double mid, double
        there, kept per history, widens the bound that skips later maxima */
     double t = gsl_min_fminimizer_x_minimum(p->brent), v[ZP_PEAKS_MAX];
     if (eval(p, t, p->vtmp) == 0 && p->f(t, 1, v, p->user) == 0) {
-        take(p, v);
+        take(p, t, v);
         p->gap[q] = fmax(p->gap[q], fabs(v[q] - p->vtmp[q]));
     }
 }
@@ -113,7 +117,7 @@ void zp_peaks_interval(zp_peaks *p, double b, const double *vb, zp_peaks_fn f, v
     double vm[ZP_PEAKS_MAX], vd[ZP_PEAKS_MAX], vc[ZP_PEAKS_MAX], bend[ZP_PEAKS_MAX];
     p->f = f;
     p->user = user;
-    take(p, vb);
+    take(p, b, vb);
     int have_m = b > a && m > a && m < b && eval(p, m, vm) == 0;
     /* which histories may hold a maximum above their best near either end; the one-sided
        differences there are paid only for them */

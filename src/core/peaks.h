@@ -21,6 +21,7 @@ typedef struct zp_peaks {
     double v[ZP_PEAKS_MAX];     /* their values there */
     double slope[ZP_PEAKS_MAX]; /* their rates there (per s); NAN: unknown (a restart) */
     double best[ZP_PEAKS_MAX];  /* the largest value seen in this run */
+    double best_t[ZP_PEAKS_MAX]; /* s, where it was seen (the first time, on a tie) */
     double gap[ZP_PEAKS_MAX];   /* the largest |exact - dense output| met at a maximum */
     double vtmp[ZP_PEAKS_MAX];  /* scratch */
     int q;                      /* the history Brent's method works on */

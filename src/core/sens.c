@@ -15,6 +15,7 @@
 
 #include "events.h"
 #include "sens_int.h"
+#include "sens_peaks.h"
 #include "sim.h"
 #include "sim_events.h"
 #include "sim_rhs.h"
@@ -31,6 +32,7 @@ typedef struct sens_loop {
     double breaks[ZP_SCHED_MAX_BREAKS];
     int nbreak;
     int roots[ZP_EVENTS_MAX];
+    zp_sens_peaks *pk; /* owned; NULL: no [limits] */
 } sens_loop;
 
 static void not_smooth(zp_sens_result *r, const char *why) {
@@ -148,6 +150,7 @@ static void finish(sens_loop *L, zp_sens_result *r, double t, zp_event ev, int l
     }
     memcpy(r->dtime, L->dt, sizeof r->dtime);
     margin_all(L, r, t, 1);
+    zp_sens_peaks_finish(L->pk, t, L->ya, L->dt, ev == ZP_EVENT_FINISH);
     r->outcome = ev == ZP_EVENT_DEATH ? ZP_OUTCOME_DIED
                  : ev == ZP_EVENT_FINISH ? ZP_OUTCOME_FINISHED
                                          : ZP_OUTCOME_STALLED;
@@ -196,6 +199,7 @@ static int start(sens_loop *L, zp_sens_result *r) {
     memset(L->ya, 0, sizeof *L->ya * L->c.naug);
     memcpy(L->ya, s->y, sizeof *s->y * L->c.n);
     s->arc = zp_model_piece(m, s->sec, L->ya[0]);
+    zp_sens_peaks_restart(L->pk, 0, L->ya, NULL);
     return L->meth->reset(L->mwork, 0, L->ya, stop_after(L, 0, s->o.t_max)) ? -1 : 0;
 }
 
@@ -224,9 +228,11 @@ static int on_root(sens_loop *L, zp_sens_result *r, double t) {
         return -1;
     }
     time_shift_x(L);
+    zp_sens_peaks_event(L->pk, t, L->dt);
     int kink = ev == ZP_EVENT_KINK, dir = to > s->sec ? 1 : -1;
     if (kink) {
         margin_all(L, r, t, 1); /* a corner: the impulse turns the joints' rates */
+        zp_sens_peaks_kink(L->pk, t, L->ya, to, L->dt);
         r->ncross++;
     }
     if (jump(L, t, kink ? to : s->sec, kink)) {
@@ -240,6 +246,7 @@ static int on_root(sens_loop *L, zp_sens_result *r, double t) {
         return 1;
     }
     s->arc = zp_model_piece(m, s->sec, L->ya[0]);
+    zp_sens_peaks_restart(L->pk, t, L->ya, L->dt);
     return L->meth->reset(L->mwork, t, L->ya, stop_after(L, t, s->o.t_max)) ? -1 : 0;
 }
 
@@ -272,6 +279,7 @@ static int loop(sens_loop *L, zp_sens_result *r) {
             r->steps += steps;
             r->rhs_evals += evals;
         }
+        zp_sens_peaks_step(L->pk, t, L->ya);
         if (adv == ZP_ADV_ROOT) {
             end = on_root(L, r, t);
         } else if (adv == ZP_ADV_STOP && t >= s->o.t_max) {
@@ -279,6 +287,7 @@ static int loop(sens_loop *L, zp_sens_result *r) {
             end = 1;
         } else if (adv == ZP_ADV_STOP) {
             /* a break of the schedule: the rates jump at a fixed time, the state does not */
+            zp_sens_peaks_restart(L->pk, t, L->ya, NULL);
             end = L->meth->reset(L->mwork, t, L->ya, stop_after(L, t, s->o.t_max)) ? -1 : 0;
         }
     }
@@ -292,10 +301,11 @@ static void loop_free(sens_loop *L) {
     }
     free(L->ya);
     free(L->c.scratch);
+    zp_sens_peaks_free(L->pk);
 }
 
 zp_status zp_sens_run(const zp_model *m, const zp_sim_opts *o, const zp_schedule *sched,
-                      zp_sens_result *r) {
+                      const zp_limits *lim, zp_sens_result *r) {
     struct timespec t0, t1;
     clock_gettime(CLOCK_MONOTONIC, &t0);
     memset(r, 0, sizeof *r);
@@ -332,7 +342,9 @@ zp_status zp_sens_run(const zp_model *m, const zp_sim_opts *o, const zp_schedule
                                                      zp_sens_rhs_root, c, &mo)
                                      : NULL;
     }
-    if (!L.mwork) {
+    int nomem = 0;
+    L.pk = L.mwork ? zp_sens_peaks_create(c, lim, L.meth, L.mwork, &nomem) : NULL;
+    if (!L.mwork || nomem) {
         loop_free(&L);
         snprintf(r->message, sizeof r->message, "cannot create the sensitivity run");
         return ZP_ERR_NOMEM;
@@ -343,6 +355,9 @@ zp_status zp_sens_run(const zp_model *m, const zp_sim_opts *o, const zp_schedule
     L.ym = L.u + c->n;
     L.nbreak = zp_drive_breaks(sched, L.breaks, ZP_SCHED_MAX_BREAKS);
     int end = loop(&L, r);
+    if (end >= 0) {
+        zp_sens_peaks_result(L.pk, &r->limits);
+    }
     loop_free(&L);
     clock_gettime(CLOCK_MONOTONIC, &t1);
     r->wall_s = (t1.tv_sec - t0.tv_sec) + 1e-9 * (t1.tv_nsec - t0.tv_nsec);

@@ -1,12 +1,15 @@
-/* Exact gradients of a run (zipopt simulate --gradient): the derivatives of the finish time and
-   of the margin angle (the largest relative joint angle reached) with respect to the schedule's
-   parameters, from forward sensitivities s_k = dy/dp_k integrated beside the state, with their
-   jumps (saltation) at every event: kinks (the impulse), section switches, arc tangent points
-   and the run's end. A run of its own beside zp_sim_run; the plain run is untouched. */
+/* Exact gradients of a run (zipopt simulate --gradient): the derivatives of the finish time,
+   of the margin angle (the largest relative joint angle reached) and of each [limits] value
+   with respect to the schedule's parameters, from forward sensitivities s_k = dy/dp_k
+   integrated beside the state, with their jumps (saltation) at every event: kinks (the
+   impulse), section switches, arc tangent points and the run's end. A run of its own beside
+   zp_sim_run; the plain run is untouched. */
 #ifndef ZP_SENS_H
 #define ZP_SENS_H
 
 #include "drive.h"
+#include "limit.h"
+#include "sens_limits.h"
 #include "sim_types.h"
 
 typedef struct zp_sens_result {
@@ -20,6 +23,7 @@ typedef struct zp_sens_result {
     double margin_t;                       /* s, when */
     double dmargin[ZP_SCHED_MAX_PARAMS];   /* rad per parameter unit */
     int ncross;                            /* kink crossings */
+    zp_sens_limits limits;                 /* the [limits] values and theirs */
     int smooth; /* 1: every event met is one whose jump the sensitivities carry exactly; 0: the
                    run met one where the outputs are not differentiable (why_not) */
     char why_not[160];
@@ -29,8 +33,9 @@ typedef struct zp_sens_result {
 } zp_sens_result;
 
 /* The run of sched on m with options o (its trajectory, samples and peaks are not taken), with
-   the sensitivities of the state to each of sched's parameters. */
+   the sensitivities of the state to each of sched's parameters, and the values of the limits
+   lim sets (NULL: none) with theirs. */
 zp_status zp_sens_run(const zp_model *m, const zp_sim_opts *o, const zp_schedule *sched,
-                      zp_sens_result *r);
+                      const zp_limits *lim, zp_sens_result *r);
 
 #endif

@@ -6,6 +6,10 @@
 
 #include "sim_int.h"
 
+/* the relative step of the five-point stencils: O(h^4) truncation against O(eps / h) round-off
+   (sens_rhs.c's design note) */
+#define ZP_SENS_STEP 1e-3
+
 typedef struct zp_sens {
     zp_sim *sim;            /* owned: the equations, course and drive of the plain run */
     zp_rhs_fn rhs;          /* the plain run's rates and roots, user = sim */
@@ -26,6 +30,17 @@ int zp_sens_rhs_root(double t, const double *ya, double *g, void *user);
    y_out from y_in, on the current section. Nonzero where the mass matrix is not positive
    definite. */
 int zp_sens_rhs_kink_map(zp_sens *c, const double *y_in, int to, double *y_out);
+/* 1 when s (n entries) is 0 in every one: a parameter of a section not reached yet, whose
+   stencil zp_sens_rhs skips. */
+int zp_sens_rhs_zero(const double *s, int n);
+/* m/s: the trolley's speed change |v+ - v-| across that kink, as the plain run's kink_dv. */
+int zp_sens_rhs_kink_dv(zp_sens *c, const double *y_in, int to, double *dv);
+/* m/s: the trolley's speed at y on the current section. */
+double zp_sens_rhs_speed(zp_sens *c, const double *y);
+/* The plain run's histories at (t, y), on the integrator's piece: into v (unless NULL) felt g
+   per link then force per joint (zp_row_loads), and into *power the drive's |F_applied v| (W).
+   Uses the scratch's third n. */
+int zp_sens_rhs_histories(zp_sens *c, double t, const double *y, double *v, double *power);
 /* dh: the derivative of the kink map at y along u (n entries). */
 int zp_sens_rhs_kink_deriv(zp_sens *c, const double *y, const double *u, int to, double *dh);
 

@@ -16,9 +16,6 @@
 #include "sens_int.h"
 #include "sim_rhs.h"
 
-/* the relative step of the stencil: O(h^4) truncation against O(eps / h) round-off */
-#define ZP_SENS_H 1e-3
-
 /* the largest of r and |u_i| / max(|y_i|, 1) over the entries of the state that feed back
    into the rates: positions and rates, and the drive's states (not the work integrals) */
 static double fed_back_ratio(const zp_sim *s, const double *y, const double *u, double r) {
@@ -32,9 +29,9 @@ static double fed_back_ratio(const zp_sim *s, const double *y, const double *u, 
 }
 
 /* the step along (s, e_k) that moves no entry of the state that feeds back nor p_k by more
-   than ZP_SENS_H of its scale */
+   than ZP_SENS_STEP of its scale */
 static double step_along(const zp_sens *c, const double *y, const double *s, int k) {
-    return ZP_SENS_H / fed_back_ratio(c->sim, y, s, 1 / fmax(fabs(c->sched.p[k]), 1));
+    return ZP_SENS_STEP / fed_back_ratio(c->sim, y, s, 1 / fmax(fabs(c->sched.p[k]), 1));
 }
 
 /* the plain rates at y, the course read on the piece the integrator restarted on (continued
@@ -65,6 +62,15 @@ static int rates_at(zp_sens *c, double t, const double *y, const double *s, int 
     return rates(c, t, yp, f);
 }
 
+int zp_sens_rhs_zero(const double *s, int n) {
+    for (int i = 0; i < n; i++) {
+        if (s[i] != 0) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
 int zp_sens_rhs(double t, const double *ya, double *yd, void *user) {
     zp_sens *c = user;
     int n = c->n;
@@ -72,7 +78,15 @@ int zp_sens_rhs(double t, const double *ya, double *yd, void *user) {
     double *f2 = c->scratch, *f1 = c->scratch + n, *g = c->scratch + 2 * n;
     for (int k = 0; k < c->np && !rc; k++) {
         const double *s = ya + n * (k + 1);
-        double *ds = yd + n * (k + 1), p_k = c->sched.p[k], h = step_along(c, ya, s, k);
+        double *ds = yd + n * (k + 1);
+        if (zp_drive_param_section(&c->sched, k) != c->sim->sec && zp_sens_rhs_zero(s, n)) {
+            /* a parameter of a section not reached yet: the rates do not move along (0, e_k),
+               and the stencil would only add its round-off (measured: about a third of a
+               3-section run's stencil work, two thirds of a 3-knot profile's) */
+            memset(ds, 0, sizeof *ds * (size_t)n);
+            continue;
+        }
+        double p_k = c->sched.p[k], h = step_along(c, ya, s, k);
         rc = rates_at(c, t, ya, s, k, p_k, 2, h, f2) || rates_at(c, t, ya, s, k, p_k, 1, h, f1);
         for (int i = 0; i < n && !rc; i++) {
             ds[i] = 8 * f1[i] - f2[i];
@@ -92,11 +106,13 @@ int zp_sens_rhs_root(double t, const double *ya, double *g, void *user) {
     return c->root(t, ya, g, c->sim);
 }
 
-int zp_sens_rhs_kink_map(zp_sens *c, const double *y_in, int to, double *y_out) {
+/* the chain across the kink into `to` from y_in, before (*in) and after (*out) the impulse */
+static int kink_chains(zp_sens *c, const double *y_in, int to, zp_chain *in, zp_chain *out) {
     zp_sim *s = c->sim;
     const zp_model *m = s->m;
     double b = m->xb[to > s->sec ? to : s->sec];
-    zp_chain ch = zp_sim_rhs_chain(s, y_in);
+    *in = zp_sim_rhs_chain(s, y_in);
+    zp_chain ch = *in;
     zp_track entered = s->track(m, s->course, to, b);
     ch.q[0] = b;
     ch.q[1] = entered.f;
@@ -106,9 +122,53 @@ int zp_sens_rhs_kink_map(zp_sens *c, const double *y_in, int to, double *y_out) 
     } else if (zp_impulse_apply(m, entered.fp, &ch, &imp)) {
         return 1;
     }
-    s->form->from_chain(m, &ch, y_in + s->w0, y_out);
-    memcpy(y_out + s->wd, y_in + s->wd, sizeof *y_out * (size_t)m->ndrive); /* continuous */
+    *out = ch;
     return 0;
+}
+
+int zp_sens_rhs_kink_map(zp_sens *c, const double *y_in, int to, double *y_out) {
+    zp_chain in, out;
+    if (kink_chains(c, y_in, to, &in, &out)) {
+        return 1;
+    }
+    zp_sim *s = c->sim;
+    s->form->from_chain(s->m, &out, y_in + s->w0, y_out);
+    memcpy(y_out + s->wd, y_in + s->wd, sizeof *y_out * (size_t)s->m->ndrive); /* continuous */
+    return 0;
+}
+
+int zp_sens_rhs_kink_dv(zp_sens *c, const double *y_in, int to, double *dv) {
+    zp_chain in, out;
+    if (kink_chains(c, y_in, to, &in, &out)) {
+        return 1;
+    }
+    *dv = hypot(out.v[0] - in.v[0], out.v[1] - in.v[1]); /* as the plain run's kink_dv */
+    return 0;
+}
+
+double zp_sens_rhs_speed(zp_sens *c, const double *y) {
+    zp_chain ch = zp_sim_rhs_chain(c->sim, y);
+    return hypot(ch.v[0], ch.v[1]);
+}
+
+int zp_sens_rhs_histories(zp_sens *c, double t, const double *y, double *v, double *power) {
+    zp_sim *s = c->sim;
+    const zp_model *m = s->m;
+    double *f = c->scratch + 2 * c->n;
+    zp_track tr = zp_model_track_piece(m, s->course, s->sec, s->arc, y[0]);
+    zp_drive_now dn = zp_sim_rhs_drive_on(s, tr, t, y, f);
+    zp_drive_state st = zp_drive_state_at(m->drive, t, y[0], y[s->w0 / 2], s->sec, tr.fp);
+    *power = fabs(zp_sim_rhs_drive_applied(s, &st, y) * st.v);
+    if (!v) {
+        return 0;
+    }
+    zp_loads loads;
+    int rc = s->form->rhs(m, s->fwork, &dn, y, f, &loads);
+    zp_row_loads(m, &loads, v + m->nlink, v);
+    for (int q = 0; q < 2 * m->nlink; q++) {
+        v[q] = isfinite(v[q]) ? v[q] : 0;
+    }
+    return rc;
 }
 
 int zp_sens_rhs_kink_deriv(zp_sens *c, const double *y, const double *u, int to, double *dh) {
@@ -118,7 +178,7 @@ int zp_sens_rhs_kink_deriv(zp_sens *c, const double *y, const double *u, int to,
     if (r == 0) {
         return 0;
     }
-    double h = ZP_SENS_H / r;
+    double h = ZP_SENS_STEP / r;
     static const double at[4] = {2, 1, -1, -2}, wt[4] = {-1, 8, -8, 1};
     for (int j = 0; j < 4; j++) {
         for (int i = 0; i < n; i++) {

@@ -133,7 +133,7 @@ void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp
 }
 
 /* the "gradient" object (docs/commands.md): per schedule parameter, the derivatives of the
-   time and of the largest joint angle (deg) */
+   time, of the largest joint angle (deg) and of each [limits] value the scene sets (its unit) */
 static void write_gradient(FILE *f, const zp_schedule *sh, const zp_sens_result *g) {
     fputs("  \"gradient\": {\"parameters\": [", f);
     for (int k = 0; k < sh->np; k++) {
@@ -146,8 +146,30 @@ static void write_gradient(FILE *f, const zp_schedule *sh, const zp_sens_result 
     zp_out_json_list(f, g->dtime, g->np, 1.0);
     fputs(", \"margin_angle\": ", f);
     zp_out_json_list(f, g->dmargin, g->np, DEG);
-    fprintf(f, ", \"limits\": {}, \"smooth\": %s, \"not_smooth_because\": ",
-            g->smooth ? "true" : "false");
+    fputs(", \"limits\": {", f);
+    const char *sep = "";
+    for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
+        if (g->limits.set[i]) {
+            fprintf(f, "%s\"%s\": ", sep, zp_limits_name(i));
+            if (g->limits.has[i]) {
+                zp_out_json_list(f, g->limits.d[i], g->np, 1.0);
+            } else {
+                fputs("null", f);
+            }
+            sep = ", ";
+        }
+    }
+    /* why a limit's derivatives are missing or not smooth there; only those */
+    fputs("}, \"limits_not_smooth\": {", f);
+    sep = "";
+    for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
+        if (g->limits.set[i] && g->limits.why_not[i][0]) {
+            fprintf(f, "%s\"%s\": ", sep, zp_limits_name(i));
+            zp_out_json_string(f, g->limits.why_not[i]);
+            sep = ", ";
+        }
+    }
+    fprintf(f, "}, \"smooth\": %s, \"not_smooth_because\": ", g->smooth ? "true" : "false");
     if (g->smooth) {
         fputs("null", f);
     } else {

@@ -105,6 +105,22 @@ static void gradient_text(FILE *f, const zp_schedule *sh, const zp_sens_result *
         fprintf(f, "  %-12s d time %+.9e s, d margin angle %+.9e deg\n", label, g->dtime[k],
                 g->dmargin[k] * 180 / M_PI);
     }
+    for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
+        if (!g->limits.set[i]) {
+            continue;
+        }
+        fprintf(f, "  d %s (%s):", zp_limits_name(i), zp_limits_unit(i));
+        for (int k = 0; g->limits.has[i] && k < g->np; k++) {
+            fprintf(f, " %+.9e", g->limits.d[i][k]);
+        }
+        if (g->limits.has[i] && isfinite(g->limits.t[i])) {
+            fprintf(f, "  (of %.9g at t = %.6g s)", g->limits.value[i], g->limits.t[i]);
+        } else if (g->limits.has[i]) {
+            fprintf(f, "  (of %.9g: nowhere reached, 0 nearby)", g->limits.value[i]);
+        }
+        fprintf(f, "%s%s\n", g->limits.why_not[i][0] ? "  not smooth: " : "",
+                g->limits.why_not[i]);
+    }
     if (!g->smooth) {
         fprintf(f, "  not smooth there: %s\n", g->why_not);
     }

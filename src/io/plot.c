@@ -289,6 +289,44 @@ static void script_envelope(FILE *f, const zp_model *m, const zp_result *r, cons
           f);
 }
 
+/* the drive a designer buys a motor from: the applied force against distance (each section's
+   end dotted) and against the speed along the drive, with the run's peak power (unless it
+   is the cap's), and the cap when the drive has one, as the curves F = P / v */
+static void script_drive(FILE *f, const zp_model *m, const zp_result *r, const zp_plot_opts *o) {
+    zp_plot_script_head_png(f, m, "drive",
+                            "the drive's applied force against distance and against speed", FIG_W,
+                            800, 0);
+    fputs("set multiplot layout 2, 1 title 'The drive'\nset lmargin 12\nset rmargin 4\n"
+          "set key inside right top opaque box lc rgb '#cccccc'\n"
+          "stats 'plot_run.dat' using 'drive_force' name 'F' nooutput\n"
+          "set yrange [F_min < 0 ? 1.15 * F_min : 0 : F_max > 0 ? 1.15 * F_max : 1]\n",
+          f);
+    for (int k = 1; k < m->nsec; k++) {
+        fprintf(f, "set arrow from %.9g, graph 0 to %.9g, graph 1 nohead dt 3 lc rgb '#999999'\n",
+                m->xb[k], m->xb[k]);
+    }
+    fputs("set xlabel 'x (m)'\nset ylabel 'applied force (N)'\n"
+          "plot 'plot_run.dat' using 'x':'drive_force' with lines lw 2 lc rgb '#1f77b4' "
+          "title 'applied force'\n"
+          "unset arrow\nset xlabel 'speed along the drive (m/s)'\nset samples 400\n"
+          "plot 'plot_run.dat' using 'drive_speed':'drive_force' with lines lw 2 "
+          "lc rgb '#1f77b4' title 'applied force'",
+          f);
+    if (r->drive_peak_power > 0 && !(r->drive_peak_power >= 0.999 * o->sched->power)) {
+        fprintf(f,
+                ", (abs(x) > 0 ? %.9g / abs(x) : 1/0) with lines dt 2 lw 1.5 lc rgb '#ff7f0e' "
+                "title 'peak power %.0f W'",
+                r->drive_peak_power, r->drive_peak_power);
+    }
+    if (o->sched->power > 0) {
+        fprintf(f,
+                ", (abs(x) > 0 ? %.9g / abs(x) : 1/0) with lines lw 1.5 lc rgb '#d62728' "
+                "title 'power cap %.0f W'",
+                o->sched->power, o->sched->power);
+    }
+    fputs("\nunset multiplot\n", f);
+}
+
 /* opens name in the transaction and, for a script, lists it to be drawn */
 static FILE *open_file(zp_tx *t, const char *name, const char **scripts, int *nscript, char *err,
                        size_t errlen) {
@@ -319,7 +357,7 @@ zp_status zp_plot_start(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_r
         return ZP_ERR_IO;
     }
     zp_plot_box cb = zp_plot_data_course(course, m);
-    zp_plot_box pb = zp_plot_data_run(run, m, rows);
+    zp_plot_box pb = zp_plot_data_run(run, m, rows, o->sched);
     zp_plot_box both = cb;
     zp_plot_data_grow(&both, pb.x0, pb.y0);
     zp_plot_data_grow(&both, pb.x1, pb.y1);
@@ -345,6 +383,13 @@ zp_status zp_plot_start(zp_tx *t, const zp_model *m, const zp_sim *s, const zp_r
         }
         script_envelope(ge, m, r, &kk);
         info->envelope = 1;
+    }
+    if (o->sched) {
+        FILE *gd = open_file(t, "drive.gp", scripts, &ns, err, errlen);
+        if (!gd) {
+            return ZP_ERR_IO;
+        }
+        script_drive(gd, m, r, o);
     }
     if (o->nframe) {
         FILE *fg = open_file(t, "frames.gp", scripts, &ns, err, errlen);

@@ -11,7 +11,6 @@
 #define COURSE_STEP 0.2 /* m between course samples */
 /* ---- the state at a chosen moment ---- */
 
-
 /* the pose of chain c at time t on section sec */
 static zp_plot_pose pose_of(const zp_model *m, double t, int sec, const zp_chain *c) {
     zp_plot_pose ps;
@@ -50,8 +49,6 @@ zp_plot_pose zp_plot_data_pose_at_t(const zp_model *m, const zp_row_store *rows,
     return pose_of(m, a->t + u * (b->t - a->t), u < 0.5 ? a->sec : b->sec, &c);
 }
 
-
-
 void zp_plot_data_grow(zp_plot_box *b, double x, double y) {
     b->x0 = fmin(b->x0, x);
     b->x1 = fmax(b->x1, x);
@@ -84,9 +81,21 @@ static double balance(double e0, const zp_row *r) {
     return b;
 }
 
+/* the drive at row r: the speed along its direction (m/s; horizontal x', tangent the speed
+   along the course, signed as x') and the force it applies there (N), the schedule's at once
+   with its power cap: a row's chain lies on the course, so its slope is y' / x' */
+static void drive_at_row(const zp_model *m, const zp_schedule *sh, const zp_row *r, double *v,
+                         double *force) {
+    *v =
+        m->drive == ZP_DRIVE_TANGENT ? copysign(hypot(r->c.v[0], r->c.v[1]), r->c.v[0]) : r->c.v[0];
+    *force = m->ndrive ? r->f_applied
+                       : zp_drive_force(sh, &(zp_drive_state){r->t, r->c.q[0], *v, r->sec});
+}
+
 /* plot_run.dat: one line per trajectory row, named columns; returns the extent of the
    centres-of-mass paths */
-zp_plot_box zp_plot_data_run(FILE *f, const zp_model *m, const zp_row_store *rows) {
+zp_plot_box zp_plot_data_run(FILE *f, const zp_model *m, const zp_row_store *rows,
+                             const zp_schedule *sched) {
     zp_plot_box b = {HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL};
     fputs("t section x y speed", f);
     for (int i = 0; i <= m->nlink; i++) {
@@ -103,7 +112,7 @@ zp_plot_box zp_plot_data_run(FILE *f, const zp_model *m, const zp_row_store *row
         fprintf(f, " %s", zp_effect_work_names(k)->plot);
     }
     fputs(" felt_g", f); /* the largest felt g over the judged links ([limits] g_links) */
-    fputc('\n', f);
+    fputs(sched ? " drive_speed drive_force\n" : "\n", f);
     double e0 = 0;
     for (int k = 0; k < rows->n; k++) {
         zp_row row;
@@ -127,9 +136,7 @@ zp_plot_box zp_plot_data_run(FILE *f, const zp_model *m, const zp_row_store *row
             fprintf(f, " %.9g", v.phi[i] * ZP_PLOT_DEG);
         }
         fprintf(f, " %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g", v.e.kinetic, v.e.potential, total,
-                r->w_drive, r->w_damp, r->e_impulse,
-                balance(e0, r),
-                r->loads.normal);
+                r->w_drive, r->w_damp, r->e_impulse, balance(e0, r), r->loads.normal);
         for (int i = 0; i < m->nlink; i++) {
             fprintf(f, " %.9g", v.joint[i]);
         }
@@ -141,6 +148,11 @@ zp_plot_box zp_plot_data_run(FILE *f, const zp_model *m, const zp_row_store *row
             g = m->g_links >> i & 1 ? fmax(g, v.acc_g[i]) : g;
         }
         fprintf(f, " %.9g", g);
+        if (sched) {
+            double dv, force;
+            drive_at_row(m, sched, r, &dv, &force);
+            fprintf(f, " %.9g %.9g", dv, force);
+        }
         fputc('\n', f);
     }
     return b;

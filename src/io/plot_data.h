@@ -31,9 +31,11 @@ zp_plot_pose zp_plot_data_pose_at_t(const zp_model *m, const zp_row_store *rows,
 void zp_plot_data_grow(zp_plot_box *b, double x, double y);
 /* plot_course.dat: the course, one block per section; returns its extent */
 zp_plot_box zp_plot_data_course(FILE *f, const zp_model *m);
-/* plot_run.dat: one line per trajectory row, named columns; returns the extent of the
-   centres-of-mass paths */
-zp_plot_box zp_plot_data_run(FILE *f, const zp_model *m, const zp_row_store *rows);
+/* plot_run.dat: one line per trajectory row, named columns (with sched, the run's schedule,
+   also the drive's speed and applied force: drive_speed, drive_force); returns the extent of
+   the centres-of-mass paths */
+zp_plot_box zp_plot_data_run(FILE *f, const zp_model *m, const zp_row_store *rows,
+                             const zp_schedule *sched);
 /* one block of a pose: a line per link "x0 y0 x1 y1 link com_x com_y" */
 void zp_plot_data_pose(FILE *f, const zp_model *m, const zp_plot_pose *ps);
 

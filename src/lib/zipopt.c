@@ -29,9 +29,10 @@ static const char *const run_head[] = {
     "time",    "x",         "speed",  "died_link", "kinks",           "e_initial",
     "e_final", "w_drive",   "w_damp", "e_impulse", "energy_residual", "constraint_residual",
     "steps",   "rhs_evals", "wall_s"};
-static const char *const run_tail[] = {"peak_g",      "peak_joint_force", "max_kink_dv",
-                                       "arrival_kmh", "normal_min",       "normal_max",
-                                       "rejected_steps"};
+static const char *const run_tail[] = {"peak_g",           "peak_joint_force", "max_kink_dv",
+                                       "arrival_kmh",      "normal_min",       "normal_max",
+                                       "rejected_steps",   "drive_peak_power", "drive_energy",
+                                       "drive_time_at_cap"};
 #define NRUN_HEAD ((int)(sizeof run_head / sizeof *run_head))
 #define NRUN_TAIL ((int)(sizeof run_tail / sizeof *run_tail))
 #define NRUN_KEYS (NRUN_HEAD + ZP_EFFECT_NWORK + NRUN_TAIL)
@@ -342,7 +343,10 @@ static void run_numbers(const zp_model *m, const zp_result *r, double *v) {
                                                                      : NAN,
                            r->peaks.normal_min,
                            r->peaks.normal_max,
-                           (double)r->rejected};
+                           (double)r->rejected,
+                           r->drive_peak_power,
+                           r->w_drive,
+                           r->drive_time_at_cap};
     _Static_assert(sizeof head / sizeof *head == NRUN_HEAD, "one number per key");
     _Static_assert(sizeof tail / sizeof *tail == NRUN_TAIL, "one number per key");
     memcpy(v, head, sizeof head);
@@ -390,7 +394,7 @@ int zipopt_gradient(zipopt_scene *s, double *dtime, double *dmargin, int n, int 
     zp_sens_result g;
     /* its own workspace builds course evaluators, which may be libmatheval's: in turn */
     pthread_mutex_lock(&turn);
-    zp_status st = zp_sens_run(s->st.m, &s->st.sim, sh, &g);
+    zp_status st = zp_sens_run(s->st.m, &s->st.sim, sh, NULL, &g);
     pthread_mutex_unlock(&turn);
     if (st) {
         say(err, errlen, "%s", g.message);
@@ -398,10 +402,50 @@ int zipopt_gradient(zipopt_scene *s, double *dtime, double *dmargin, int n, int 
     }
     for (int k = 0; k < g.np; k++) {
         dtime[k] = g.dtime[k];
-        dmargin[k] = g.dmargin[k] * 180 / M_PI;
+        dmargin[k] = g.dmargin[k] * (180 / M_PI); /* as the JSON scales it: the same bits */
     }
     *smooth = g.smooth;
     return g.np;
+}
+
+const char *zipopt_limit_key(int i) {
+    return i >= 0 && i < ZP_LIMIT_COUNT ? zp_limits_name(i) : NULL;
+}
+
+int zipopt_gradient_limits(zipopt_scene *s, double *d, int n, int *smooth, char *err,
+                           size_t errlen) {
+    if (!s || !d || !smooth) {
+        say(err, errlen, "no scene or no room for the gradient given");
+        return -1;
+    }
+    const zp_schedule *sh = &s->st.sched;
+    if (n < sh->np) {
+        say(err, errlen, "room for %d parameters, the schedule has %d", n, sh->np);
+        return -1;
+    }
+    zp_sens_result *g = malloc(sizeof *g);
+    if (!g) {
+        say(err, errlen, "out of memory");
+        return -1;
+    }
+    pthread_mutex_lock(&turn);
+    zp_status st = zp_sens_run(s->st.m, &s->st.sim, sh, &s->st.lim, g);
+    pthread_mutex_unlock(&turn);
+    if (st) {
+        say(err, errlen, "%s", g->message);
+        free(g);
+        return -1;
+    }
+    for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
+        int given = g->limits.set[i] && g->limits.has[i];
+        for (int k = 0; k < n; k++) {
+            d[(size_t)i * (size_t)n + k] = given && k < g->np ? g->limits.d[i][k] : NAN;
+        }
+        smooth[i] = given && g->smooth && !g->limits.why_not[i][0];
+    }
+    int np = g->np;
+    free(g);
+    return np;
 }
 
 void zipopt_run_free(zipopt_run *r) {
