@@ -24,5 +24,10 @@ typedef struct zp_cable_ride {
    error from the equilibrium with why filled. */
 zp_status zp_cable_ride_over(const zp_cable *c, double load, double x_lo, double x_hi,
                              zp_cable_ride *out, char *why, size_t whylen);
+/* The largest tension at either anchor over the same x into *t_max (NaN on an error): the
+   ta_max and tb_max of zp_cable_ride_over to the bit, without its extrema (the [limits]
+   max_cable_tension a search judges every run by). */
+zp_status zp_cable_ride_anchor_max(const zp_cable *c, double load, double x_lo, double x_hi,
+                                   double *t_max, char *why, size_t whylen);
 
 #endif

@@ -3,13 +3,15 @@
 
 #include <math.h>
 
+#include "cable_ride.h"
+
 #define KMH (3.6) /* km/h per m/s */
 
 static const char *const limit_names[ZP_LIMIT_COUNT] = {
     "max_g", "max_joint_force", "max_arrival_speed", "max_kink_dv", "g_envelope",
-    "min_arrival_speed", "max_drive_power"};
-static const char *const limit_units[ZP_LIMIT_COUNT] = {"g",   "N", "km/h", "m/s",
-                                                        "x its allowance", "km/h", "W"};
+    "min_arrival_speed", "max_drive_power", "max_cable_tension"};
+static const char *const limit_units[ZP_LIMIT_COUNT] = {
+    "g", "N", "km/h", "m/s", "x its allowance", "km/h", "W", "N"};
 
 const char *zp_limits_name(int i) { return limit_names[i]; }
 const char *zp_limits_unit(int i) { return limit_units[i]; }
@@ -22,6 +24,7 @@ void zp_limits_from_scene(const zp_scene *sc, zp_limits *l) {
     l->max[ZP_LIMIT_G_ENVELOPE] = sc->nenv > 0 ? 1 : 0;
     l->max[ZP_LIMIT_MIN_ARRIVAL] = sc->min_arrival_speed;
     l->max[ZP_LIMIT_DRIVE_POWER] = sc->max_drive_power;
+    l->max[ZP_LIMIT_CABLE_TENSION] = sc->max_cable_tension;
 }
 
 int zp_limits_kept(int i, double v, double max) {
@@ -46,7 +49,18 @@ int zp_limits_reached_in(const zp_result *r, int i) {
     return i != ZP_LIMIT_ARRIVAL || r->outcome == ZP_OUTCOME_FINISHED;
 }
 
-void zp_limits_reached(const zp_model *m, const zp_result *r, double v[ZP_LIMIT_COUNT]) {
+/* the largest anchor tension over the x run r visited (NaN when an equilibrium fails) */
+static double anchor_tension(const zp_model *m, const zp_result *r) {
+    double t;
+    char why[256];
+    zp_cable_ride_anchor_max(zp_cable_paths_cable(m->cable_paths), m->g * m->mtot, r->x_min,
+                             r->x_max, &t, why, sizeof why);
+    return t;
+}
+
+/* zp_limits_reached, the anchor tension only when cable is set (it costs hundreds of
+   equilibria: a search computes it only when the limit is set) */
+static void reached(const zp_model *m, const zp_result *r, int cable, double v[ZP_LIMIT_COUNT]) {
     v[ZP_LIMIT_G] = v[ZP_LIMIT_JOINT] = 0;
     for (int i = 0; i < m->nlink; i++) {
         if (m->g_links >> i & 1) {
@@ -58,8 +72,13 @@ void zp_limits_reached(const zp_model *m, const zp_result *r, double v[ZP_LIMIT_
     v[ZP_LIMIT_MIN_ARRIVAL] = v[ZP_LIMIT_ARRIVAL];
     v[ZP_LIMIT_KINK_DV] = r->peaks.kink_dv;
     v[ZP_LIMIT_DRIVE_POWER] = r->drive_peak_power;
+    v[ZP_LIMIT_CABLE_TENSION] = cable && m->cable_paths ? anchor_tension(m, r) : 0;
     int w = zp_limits_envelope_worst(m, r);
     v[ZP_LIMIT_G_ENVELOPE] = w < 0 ? 0 : r->env_longest[w] / m->env_s[w];
+}
+
+void zp_limits_reached(const zp_model *m, const zp_result *r, double v[ZP_LIMIT_COUNT]) {
+    reached(m, r, 1, v);
 }
 
 int zp_limits_envelope_worst(const zp_model *m, const zp_result *r) {
@@ -74,7 +93,7 @@ int zp_limits_envelope_worst(const zp_model *m, const zp_result *r) {
 
 double zp_limits_excess(const zp_limits *l, const zp_model *m, const zp_result *r, int *which) {
     double v[ZP_LIMIT_COUNT];
-    zp_limits_reached(m, r, v);
+    reached(m, r, l->max[ZP_LIMIT_CABLE_TENSION] > 0, v);
     return zp_limits_excess_of(l, v, which);
 }
 
