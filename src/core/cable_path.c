@@ -4,6 +4,7 @@
 #include "cable_path.h"
 
 #include <math.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -29,6 +30,8 @@ typedef struct piece {
 } piece;
 
 struct zp_cable_path {
+    unsigned long id;    /* unique per path built in this process (the memo's key, not the
+                            address, which a later path may reuse) */
     zp_cable cable;
     double load, lo, hi; /* N, m, m */
     int n;               /* pieces */
@@ -175,6 +178,8 @@ zp_cable_path *zp_cable_path_create(const zp_cable *c, double load, double x_lo,
         zp_cable_path_free(p);
         return NULL;
     }
+    static atomic_ulong built;
+    p->id = atomic_fetch_add(&built, 1) + 1;
     p->cable = *c;
     p->load = load, p->lo = x_lo, p->hi = x_hi;
     p->ends[0] = x_lo;
@@ -228,37 +233,58 @@ static void series(const piece *pc, double t, double *out) {
     }
 }
 
-int zp_cable_path_track(const zp_cable_path *p, double x, double *f) {
+/* The equations of motion ask for the course at x (f, f', f'') and then for the cable's force
+   there (H_A, H_B, f'): one pass of the series serves both. A series' Clenshaw chain is
+   latency-bound, so all six side by side cost what three do; the second ask reads this
+   thread's memo of the last x. Each value is the same arithmetic either way, to the bit. */
+typedef struct memo {
+    unsigned long id; /* the path's id; 0: none */
+    double x;
+    double out[NVAL];
+} memo;
+static _Thread_local memo last;
+
+/* every value at x into out (from the memo when x was the last asked of p in this thread): 0,
+   or -1 outside the interval */
+static int values_at(const zp_cable_path *p, double x, double *out) {
+    if (last.id == p->id && last.x == x) {
+        for (int i = 0; i < NVAL; i++) {
+            out[i] = last.out[i];
+        }
+        return 0;
+    }
     double t;
     int k = locate(p, x, &t);
     if (k < 0) {
+        return -1;
+    }
+    series(&p->pieces[k], t, out);
+    last.id = p->id;
+    last.x = x;
+    for (int i = 0; i < NVAL; i++) {
+        last.out[i] = out[i];
+    }
+    return 0;
+}
+
+int zp_cable_path_track(const zp_cable_path *p, double x, double *f) {
+    double out[NVAL];
+    if (values_at(p, x, out)) {
         f[0] = f[1] = f[2] = NAN;
         return -1;
     }
-    /* series() for f, f', f'' alone, each step's c_j - b_(j+2) apart from the chain through
-       b_(j+1), which then costs a product and a sum per term */
-    const double *c0 = p->pieces[k].coef[VAL_F], *c1 = p->pieces[k].coef[VAL_FP];
-    const double *c2 = p->pieces[k].coef[VAL_FPP];
-    double a1 = 0, a2 = 0, b1 = 0, b2 = 0, d1 = 0, d2 = 0, t2 = 2 * t;
-    for (int j = NODES - 1; j >= 1; j--) {
-        double a0 = t2 * a1 + (c0[j] - a2), b0 = t2 * b1 + (c1[j] - b2);
-        double d0 = t2 * d1 + (c2[j] - d2);
-        a2 = a1, a1 = a0, b2 = b1, b1 = b0, d2 = d1, d1 = d0;
-    }
-    f[0] = t * a1 - a2 + c0[0];
-    f[1] = t * b1 - b2 + c1[0];
-    f[2] = t * d1 - d2 + c2[0];
+    f[0] = out[VAL_F];
+    f[1] = out[VAL_FP];
+    f[2] = out[VAL_FPP];
     return 0;
 }
 
 int zp_cable_path_eval(const zp_cable_path *p, double x, zp_cable_path_value *v) {
-    double t, out[NVAL];
-    int k = locate(p, x, &t);
-    if (k < 0) {
+    double out[NVAL];
+    if (values_at(p, x, out)) {
         *v = (zp_cable_path_value){NAN, NAN, NAN, NAN, NAN, NAN, NAN};
         return -1;
     }
-    series(&p->pieces[k], t, out);
     *v = (zp_cable_path_value){.f = out[VAL_F],
                                .fp = out[VAL_FP],
                                .fpp = out[VAL_FPP],
