@@ -200,6 +200,41 @@ with tempfile.TemporaryDirectory() as tmp:
         d = json.loads(p.stdout)
         check(d["runs"] == 7 and d["windows"] == [[0, 150]], "landscape: every push finishes")
 
+    # check --json: the cable's equilibria per rider, the course at the boundaries its path
+    p = run(["check", rob, "--json"])
+    check(p.returncode == 0, "check --json: exit %d: %s" % (p.returncode, p.stderr[-300:]))
+    d = json.loads(p.stdout)
+    cab = d["cable"]
+    check([r["rider"] for r in cab["riders"]] == ["nominal", "lightest", "heaviest"],
+          "check --json: three riders")
+    nom = cab["riders"][0]
+    check(max(nom["anchor_a_tension_max"], nom["anchor_b_tension_max"]) ==
+          lag["cable"]["anchor_tension_max"],
+          "check's nominal anchor tension over the ride is simulate's (the same x)")
+    loads = [r["load"] for r in cab["riders"]]
+    sags = [r["sag_mid"] for r in cab["riders"]]
+    check(loads[1] < loads[0] < loads[2] and sags[1] < sags[0] < sags[2] and
+          cab["unloaded"]["sag_mid"] < sags[1], "heavier riders sag more: %s" % sags)
+    check(all(sec["f"] is None for sec in d["sections"]) and
+          all(not b["kink"] and b["slope_left"] == b["slope_right"] and 2 < b["y"] < 12
+              for b in d["boundaries"]), "check --json: the course is the cable's path")
+
+    # check --plot: the figure of the paths, written whole; none for a scene without a cable
+    out = os.path.join(tmp, "fig")
+    p = run(["check", rob, "--plot", "--out", out])
+    check(p.returncode == 0 and sorted(os.listdir(out)) == ["cable.dat", "cable.gp", "cable.png"],
+          "check --plot: exit %d, %s" % (p.returncode, os.listdir(out) if p.returncode == 0
+                                         else p.stderr))
+    with open(os.path.join(out, "cable.dat")) as f:
+        rows = [line.split() for line in f if not line.startswith("#")]
+    check(len(rows) == 401 and all(len(r) == 5 for r in rows), "cable.dat: 401 x, 4 paths")
+    check(all(float(r[4]) <= float(r[2]) <= float(r[3]) <= float(r[1]) + 1e-12
+              for r in rows), "the heaviest rides lowest, the rope alone highest")
+    out = os.path.join(tmp, "nofig")
+    p = run(["check", os.path.join(src, "config", "seed.ini"), "--plot", "--out", out])
+    check(p.returncode == 2 and not os.path.exists(out), "check --plot without [cable]: exit %d"
+          % p.returncode)
+
     # the scene rules: exit 2, file, line and key named, nothing written
     path = scene(tmp, "kink", "[physics]\nkink_radius = 2\n")
     with open(path) as f:

@@ -157,7 +157,8 @@ static void write_gradient(FILE *f, const zp_schedule *sh, const zp_sens_result 
     fputs("},\n", f);
 }
 
-void zp_out_json_cable(FILE *f, const zp_model *m, const zp_result *r) {
+/* the cable over the x the ride visited (CLI.md `cable`) */
+static void cable_json(FILE *f, const zp_model *m, const zp_result *r) {
     zp_cable_ride cr;
     char why[256];
     const zp_cable *c = zp_cable_paths_cable(m->cable_paths);
@@ -227,7 +228,7 @@ static void energy_json(FILE *f, const zp_model *m, const zp_result *r, const zp
     zp_out_json_key(f, "residual", zp_estimate_energy_residual(r), "},\n  ");
     if (m->cable_paths) {
         fputs("\"cable\": ", f);
-        zp_out_json_cable(f, m, r);
+        cable_json(f, m, r);
         fputs(",\n  ", f);
     }
     zp_out_json_key(f, "constraint_residual", r->constraint_residual, ",\n");

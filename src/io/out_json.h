@@ -38,10 +38,6 @@ void zp_out_json_list(FILE *f, const double *v, int n, double scale);
 /* The [limits] object: for each limit, what r reached and the limit (null when off, lim may
    be NULL), and whether it was kept. */
 void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp_limits *lim);
-/* With [cable]: the cable over the x run r visited (CLI.md `cable`: the largest anchor and
-   trolley tensions, the lowest point's height, the sag at mid-span; null where an equilibrium
-   failed), from exact equilibria under m's load. */
-void zp_out_json_cable(FILE *f, const zp_model *m, const zp_result *r);
 /* The whole object of r, the last run of workspace s (its samples and kink crossings). */
 void zp_out_json_result(FILE *f, const zp_model *m, const zp_result *r, const zp_sim *s,
                         const zp_run_meta *meta);
