@@ -200,6 +200,18 @@ with tempfile.TemporaryDirectory() as tmp:
         d = json.loads(p.stdout)
         check(d["runs"] == 7 and d["windows"] == [[0, 150]], "landscape: every push finishes")
 
+    # the landscape judges the limit as the search does: below the line's tension, no push
+    p = run(["landscape", low, "--force-range", "0:150:4", "--json", "--out",
+             os.path.join(tmp, "land_low")])
+    check(p.returncode == 0 and json.loads(p.stdout)["fastest"] is None and
+          json.loads(p.stdout)["fastest_finish"]["breaks"] == "max_cable_tension",
+          "landscape with a low max_cable_tension: %s" % p.stdout[-300:])
+    with open(os.path.join(tmp, "land_low", "landscape.csv")) as f:
+        rows = list(csv.DictReader(f))
+    check(all(abs(float(r["max_cable_tension_reached_N"]) - nominal) <= 1e-8 * nominal
+              for r in rows),
+          "landscape: each finishing push reaches the nominal rider's anchor tension %r" % nominal)
+
     # check --json: the cable's equilibria per rider, the course at the boundaries its path
     p = run(["check", rob, "--json"])
     check(p.returncode == 0, "check --json: exit %d: %s" % (p.returncode, p.stderr[-300:]))
