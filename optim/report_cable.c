@@ -19,8 +19,7 @@ static int answer_ride(const zp_answer *a, zp_cable_ride *cr, char *why, size_t 
 /* the fresh scenario with the highest anchor tension, NULL when none was checked */
 static const zp_spread_end *population_worst(const zp_answer *a) {
     const zp_robust_check *c = &a->rp.check;
-    return a->rp.robust && c->samples > 0 && c->tension_high.sample >= 0 ? &c->tension_high
-                                                                          : NULL;
+    return a->rp.robust && c->samples > 0 && c->tension_high.sample >= 0 ? &c->tension_high : NULL;
 }
 
 void zp_report_cable_text(FILE *f, const zp_answer *a) {
@@ -39,8 +38,8 @@ void zp_report_cable_text(FILE *f, const zp_answer *a) {
     if (w) {
         fprintf(f, ", the population's worst %.0f N", w->value);
     }
-    fprintf(f, "; lowest point %.3f m at x = %.2f m; sag %.3f m at mid-span\n", cr.y_low,
-            cr.x_low, cr.sag_mid);
+    fprintf(f, "; lowest point %.3f m at x = %.2f m; sag %.3f m at mid-span\n", cr.y_low, cr.x_low,
+            cr.sag_mid);
 }
 
 void zp_report_cable_md(FILE *f, const zp_answer *a) {

@@ -13,7 +13,7 @@
 #define CURVES 4   /* unloaded, and at most three riders */
 
 /* the height of c's path under load at x (NaN when no equilibrium), continued from *near when
-   *have; *near and *have updated */
+ *have; *near and *have updated */
 static double height(const zp_cable *c, double load, double x, zp_cable_state *near, int *have) {
     zp_cable_state st;
     char why[256];
@@ -80,8 +80,7 @@ static void write_script(FILE *f, const zp_model *m, const zp_scene *sc, const z
             name, m->xb[0], m->xb[m->nsec], m->xb[0], m->xb[0], m->xb[m->nsec], m->xb[m->nsec],
             colour[0]);
     for (int k = 0; k < nr; k++) {
-        fprintf(f,
-                ", \\\n     '' using 1:%d with lines lw 2 lc rgb '%s' title '%s rider, %.0f N'",
+        fprintf(f, ", \\\n     '' using 1:%d with lines lw 2 lc rgb '%s' title '%s rider, %.0f N'",
                 k + 3, colour[k + 1], r[k].who, r[k].load);
     }
     fprintf(f,
@@ -90,8 +89,7 @@ static void write_script(FILE *f, const zp_model *m, const zp_scene *sc, const z
             c->xa, c->ya, c->xb, c->yb);
 }
 
-int zp_fig_cable_write(zp_tx *t, const zp_model *m, const zp_scene *sc, char *err,
-                       size_t errlen) {
+int zp_fig_cable_write(zp_tx *t, const zp_model *m, const zp_scene *sc, char *err, size_t errlen) {
     const zp_cable *c = zp_cable_paths_cable(m->cable_paths);
     zp_cable_text_rider r[3];
     int nr = zp_cable_text_riders(m, sc, r);

@@ -12,7 +12,6 @@
 /* cable.dat (x, then the height of each path: unloaded, nominal, lightest, heaviest; NaN where
    a path has no equilibrium) and cable.gp, which draws cable.png from it, into t. 0, or -1 with
    why in err (the caller aborts t). */
-int zp_fig_cable_write(zp_tx *t, const zp_model *m, const zp_scene *sc, char *err,
-                       size_t errlen);
+int zp_fig_cable_write(zp_tx *t, const zp_model *m, const zp_scene *sc, char *err, size_t errlen);
 
 #endif
