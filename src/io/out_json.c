@@ -158,17 +158,17 @@ static void write_gradient(FILE *f, const zp_schedule *sh, const zp_sens_result 
 }
 
 /* the cable over the x the ride visited (CLI.md `cable`) */
-static void cable_json(FILE *f, const zp_model *m, const zp_result *r) {
+static void write_cable(FILE *f, const zp_model *m, const zp_result *r) {
     zp_cable_ride cr;
     char why[256];
     const zp_cable *c = zp_cable_paths_cable(m->cable_paths);
     int ok = zp_cable_ride_over(c, m->g * m->mtot, r->x_min, r->x_max, &cr, why, sizeof why) ==
              ZP_OK;
-    fputs("{", f);
+    fputs("\"cable\": {", f);
     zp_out_json_key(f, "anchor_tension_max", ok ? fmax(cr.ta_max, cr.tb_max) : NAN, ", ");
     zp_out_json_key(f, "trolley_tension_max", ok ? cr.trolley_max : NAN, ", ");
     zp_out_json_key(f, "lowest_y", ok ? cr.y_low : NAN, ", ");
-    zp_out_json_key(f, "sag_mid", ok ? cr.sag_mid : NAN, "}");
+    zp_out_json_key(f, "sag_mid", ok ? cr.sag_mid : NAN, "},\n  ");
 }
 
 /* the error estimate and the accuracy met, when the run has them */
@@ -227,9 +227,7 @@ static void energy_json(FILE *f, const zp_model *m, const zp_result *r, const zp
     }
     zp_out_json_key(f, "residual", zp_estimate_energy_residual(r), "},\n  ");
     if (m->cable_paths) {
-        fputs("\"cable\": ", f);
-        cable_json(f, m, r);
-        fputs(",\n  ", f);
+        write_cable(f, m, r);
     }
     zp_out_json_key(f, "constraint_residual", r->constraint_residual, ",\n");
     if (!zp_drive_plain(meta->sched) || (meta->lim && meta->lim->max[ZP_LIMIT_DRIVE_POWER] > 0)) {
