@@ -43,7 +43,7 @@ typedef struct zp_robust_worst {
     double time;      /* s: finish, death or stall */
     double arrival_kmh; /* km/h at the finish, 0 when it does not finish */
     double anchor_tension; /* N, [cable], in the verification: the largest anchor tension over
-                              the ride (zp_limits_reached); else 0 */
+                              the ride (zp_limits_anchor_tension); else 0 */
 } zp_robust_worst;
 
 #endif

@@ -86,10 +86,8 @@ static double scen_judge(const zp_objective *ob, const zp_box *b, const zp_chain
         w->excess = e.failed ? 1 : zp_limits_excess(&ob->lim, &m, r, &w->limit);
     }
     w->anchor_tension = 0;
-    if (tension && m.cable_paths && !e.failed) {
-        double v[ZP_LIMIT_COUNT];
-        zp_limits_reached(&m, r, v);
-        w->anchor_tension = v[ZP_LIMIT_CABLE_TENSION];
+    if (tension && !e.failed) {
+        w->anchor_tension = zp_limits_anchor_tension(&m, r);
     }
     return w->cons;
 }

@@ -8,10 +8,13 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "cable_ride.h"
 #include "cable_solve.h"
 
 #define NODES 32 /* Chebyshev points per piece: each series' length */
-enum { VAL_F, VAL_FP, VAL_FPP, VAL_ENERGY, VAL_HA, VAL_HB, NVAL };
+/* the path and the cable's force (NVAL of them: they decide where a piece is halved), then the
+   anchor tensions, fitted on the same pieces for the [limits] check (NFIT in all) */
+enum { VAL_F, VAL_FP, VAL_FPP, VAL_ENERGY, VAL_HA, VAL_HB, NVAL, VAL_TA = NVAL, VAL_TB, NFIT };
 /* a value's series on a piece is done when its last two terms are this small beside the
    value's size, */
 #define TAIL_TOL 2e-14
@@ -26,7 +29,7 @@ enum { VAL_F, VAL_FP, VAL_FPP, VAL_ENERGY, VAL_HA, VAL_HB, NVAL };
 #define MAX_PIECES 256 /* past this, pieces are kept whatever their tail (the tail says so) */
 
 typedef struct piece {
-    double coef[NVAL][NODES];
+    double coef[NFIT][NODES];
 } piece;
 
 struct zp_cable_path {
@@ -55,6 +58,7 @@ static double node_t(int k) {
 static void state_values(const zp_cable_state *s, double *v) {
     v[VAL_F] = s->f, v[VAL_FP] = s->fp, v[VAL_FPP] = s->fpp;
     v[VAL_ENERGY] = s->energy, v[VAL_HA] = s->ha, v[VAL_HB] = s->hb;
+    v[VAL_TA] = s->ta, v[VAL_TB] = s->tb;
 }
 
 /* equilibria at the Chebyshev points of [a, b] (each from its left neighbour, the first from
@@ -62,7 +66,7 @@ static void state_values(const zp_cable_state *s, double *v) {
 static int fit(builder *bd, double a, double b, const zp_cable_state *seed, zp_cable_state *st,
                piece *pc) {
     const zp_cable *c = &bd->p->cable;
-    double v[NODES][NVAL];
+    double v[NODES][NFIT];
     const zp_cable_state *near = seed;
     for (int k = NODES - 1; k >= 0; k--) {
         double x = 0.5 * (a + b) + 0.5 * (b - a) * node_t(k);
@@ -76,14 +80,14 @@ static int fit(builder *bd, double a, double b, const zp_cable_state *seed, zp_c
     }
     /* c_j = (2 / N) sum_k v_k cos(j pi (k + 1/2) / N), c_0 halved */
     for (int j = 0; j < NODES; j++) {
-        double sum[NVAL] = {0};
+        double sum[NFIT] = {0};
         for (int k = 0; k < NODES; k++) {
             double cj = cos(M_PI * j * (k + 0.5) / NODES);
-            for (int i = 0; i < NVAL; i++) {
+            for (int i = 0; i < NFIT; i++) {
                 sum[i] += v[k][i] * cj;
             }
         }
-        for (int i = 0; i < NVAL; i++) {
+        for (int i = 0; i < NFIT; i++) {
             pc->coef[i][j] = sum[i] * (j ? 2.0 : 1.0) / NODES;
         }
     }
@@ -143,7 +147,7 @@ static int build_piece(builder *bd, double a, double b, const zp_cable_state *se
         for (int i = 0; i < NVAL; i++) {
             bd->scale[i] = 0;
             for (int k = 0; k < NODES; k++) {
-                double v[NVAL];
+                double v[NFIT];
                 state_values(&st[k], v);
                 bd->scale[i] = fmax(bd->scale[i], fabs(v[i]));
             }
@@ -293,6 +297,31 @@ int zp_cable_path_eval(const zp_cable_path *p, double x, zp_cable_path_value *v)
                                .hb = out[VAL_HB]};
     v->denergy = (v->ha - v->hb) - p->load * v->fp;
     return 0;
+}
+
+/* one series of pc at t (Clenshaw) */
+static double series_one(const double *c, double t) {
+    double b1 = 0, b2 = 0;
+    for (int j = NODES - 1; j >= 1; j--) {
+        double b0 = 2 * t * b1 + (c[j] - b2);
+        b2 = b1;
+        b1 = b0;
+    }
+    return t * b1 - b2 + c[0];
+}
+
+double zp_cable_path_anchor_max(const zp_cable_path *p, double x_lo, double x_hi) {
+    double most = -INFINITY;
+    for (int i = 0; i <= ZP_CABLE_RIDE_SAMPLES; i++) {
+        double x = x_lo + (x_hi - x_lo) * i / ZP_CABLE_RIDE_SAMPLES, t;
+        int k = locate(p, x, &t);
+        if (k < 0) {
+            return NAN;
+        }
+        const piece *pc = &p->pieces[k];
+        most = fmax(most, fmax(series_one(pc->coef[VAL_TA], t), series_one(pc->coef[VAL_TB], t)));
+    }
+    return most;
 }
 
 void zp_cable_path_interval(const zp_cable_path *p, double *lo, double *hi) {

@@ -10,6 +10,10 @@
 #include "cable.h"
 #include "diag.h"
 
+/* intervals of the evenly spaced x the tensions are read at over a ride (tensions vary
+   slowly; the path's extrema are refined) */
+#define ZP_CABLE_RIDE_SAMPLES 400
+
 typedef struct zp_cable_ride {
     double ta_max, tb_max;     /* N, the largest tension at anchor A, at anchor B */
     double trolley_max;        /* N, the largest tension at the trolley */

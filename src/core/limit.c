@@ -3,6 +3,7 @@
 
 #include <math.h>
 
+#include "cable_path.h"
 #include "cable_ride.h"
 
 #define KMH (3.6) /* km/h per m/s */
@@ -49,8 +50,16 @@ int zp_limits_reached_in(const zp_result *r, int i) {
     return i != ZP_LIMIT_ARRIVAL || r->outcome == ZP_OUTCOME_FINISHED;
 }
 
-/* the largest anchor tension over the x run r visited (NaN when an equilibrium fails) */
-static double anchor_tension(const zp_model *m, const zp_result *r) {
+/* within this of max_cable_tension, the exact equilibria decide whether it is kept (the
+   path's fitted tensions agree with them to about 1e-13) */
+#define CABLE_EXACT_BAND 1e-9
+
+/* the largest anchor tension over the x run r visited: from exact equilibria when exact (NaN
+   when one fails), else from the path's fitted series (a hundredth of the cost) */
+static double anchor_tension(const zp_model *m, const zp_result *r, int exact) {
+    if (!exact) {
+        return zp_cable_path_anchor_max(m->cable_path, r->x_min, r->x_max);
+    }
     double t;
     char why[256];
     zp_cable_ride_anchor_max(zp_cable_paths_cable(m->cable_paths), m->g * m->mtot, r->x_min,
@@ -58,8 +67,11 @@ static double anchor_tension(const zp_model *m, const zp_result *r) {
     return t;
 }
 
-/* zp_limits_reached, the anchor tension only when cable is set (it costs hundreds of
-   equilibria: a search computes it only when the limit is set) */
+double zp_limits_anchor_tension(const zp_model *m, const zp_result *r) {
+    return m->cable_paths ? anchor_tension(m, r, 0) : 0;
+}
+
+/* zp_limits_reached, the anchor tension only when cable is set (exact) */
 static void reached(const zp_model *m, const zp_result *r, int cable, double v[ZP_LIMIT_COUNT]) {
     v[ZP_LIMIT_G] = v[ZP_LIMIT_JOINT] = 0;
     for (int i = 0; i < m->nlink; i++) {
@@ -72,7 +84,7 @@ static void reached(const zp_model *m, const zp_result *r, int cable, double v[Z
     v[ZP_LIMIT_MIN_ARRIVAL] = v[ZP_LIMIT_ARRIVAL];
     v[ZP_LIMIT_KINK_DV] = r->peaks.kink_dv;
     v[ZP_LIMIT_DRIVE_POWER] = r->drive_peak_power;
-    v[ZP_LIMIT_CABLE_TENSION] = cable && m->cable_paths ? anchor_tension(m, r) : 0;
+    v[ZP_LIMIT_CABLE_TENSION] = cable && m->cable_paths ? anchor_tension(m, r, 1) : 0;
     int w = zp_limits_envelope_worst(m, r);
     v[ZP_LIMIT_G_ENVELOPE] = w < 0 ? 0 : r->env_longest[w] / m->env_s[w];
 }
@@ -92,8 +104,15 @@ int zp_limits_envelope_worst(const zp_model *m, const zp_result *r) {
 }
 
 double zp_limits_excess(const zp_limits *l, const zp_model *m, const zp_result *r, int *which) {
-    double v[ZP_LIMIT_COUNT];
-    reached(m, r, l->max[ZP_LIMIT_CABLE_TENSION] > 0, v);
+    double v[ZP_LIMIT_COUNT], cable = l->max[ZP_LIMIT_CABLE_TENSION];
+    reached(m, r, 0, v);
+    if (cable > 0 && m->cable_paths) {
+        /* every run of a search is judged: the fitted tensions, exact near the limit */
+        v[ZP_LIMIT_CABLE_TENSION] = anchor_tension(m, r, 0);
+        if (!(fabs(v[ZP_LIMIT_CABLE_TENSION] / cable - 1) > CABLE_EXACT_BAND)) {
+            v[ZP_LIMIT_CABLE_TENSION] = anchor_tension(m, r, 1);
+        }
+    }
     return zp_limits_excess_of(l, v, which);
 }
 

@@ -41,6 +41,11 @@ int zp_limits_reached_in(const zp_result *r, int i);
    for the g envelope the longest excursion above a level over that level's allowance, the
    worst level's (zp_limits_envelope_worst). */
 void zp_limits_reached(const zp_model *m, const zp_result *r, double v[ZP_LIMIT_COUNT]);
+/* With [cable]: the largest anchor tension over the x run r visited from the path's fitted
+   series, to about 1e-13 of zp_limits_reached's exact value at a hundredth of its cost (a
+   population's spread); 0 without a cable. zp_limits_excess judges max_cable_tension with it,
+   and with the exact value within 1e-9 of the limit. */
+double zp_limits_anchor_tension(const zp_model *m, const zp_result *r);
 /* The worst excess over the limits set, reached / limit - 1 (<= 0: all kept; -1 with no
    limit set), and in *which the limit that gave it (-1: none set). */
 double zp_limits_excess(const zp_limits *l, const zp_model *m, const zp_result *r, int *which);
