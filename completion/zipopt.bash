@@ -49,7 +49,7 @@ _zipopt() {
     case $cmd in
     simulate) opts="--force --schedule --json --sample-times --gradient --out --plot --frames-at --animate
                     --fps --size --speedup --help" ;;
-    check) opts="--json --help" ;;
+    check) opts="--json --plot --out --help" ;;
     landscape) opts="--force-range --slice --range --force --schedule --out --json --help" ;;
     sweep) opts="--vary --run --out --resume --json --grid-schedule --no-grid-schedule --max-evals
                  --max-time --schedule --force --help" ;;

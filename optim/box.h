@@ -42,6 +42,8 @@ typedef struct zp_robust_worst {
     double excess;    /* that excess, reached / limit - 1 (> 0: broken; -1: none set) */
     double time;      /* s: finish, death or stall */
     double arrival_kmh; /* km/h at the finish, 0 when it does not finish */
+    double anchor_tension; /* N, [cable], in the verification: the largest anchor tension over
+                              the ride (zp_limits_anchor_tension); else 0 */
 } zp_robust_worst;
 
 #endif

@@ -5,6 +5,7 @@
 #include <math.h>
 
 #include "headroom.h"
+#include "report_cable.h"
 
 #define DEG (180.0 / M_PI)
 #define KMH 3.6
@@ -382,14 +383,15 @@ static void md_spread(FILE *f, const zp_answer *a) {
     if (c->samples == 0 || c->fastest.sample < 0) {
         return;
     }
-    const zp_spread_end *ends[4] = {&c->fastest, &c->slowest, &c->arrival_low,
-                                    &c->arrival_high};
-    const char *what[4] = {"fastest finish", "slowest finish", "lowest arrival speed",
-                           "highest arrival speed"};
-    const char *fmt[4] = {"%.4f s", "%.4f s", "%.2f km/h", "%.2f km/h"};
+    const zp_spread_end *ends[5] = {&c->fastest, &c->slowest, &c->arrival_low,
+                                    &c->arrival_high, &c->tension_high};
+    const char *what[5] = {"fastest finish", "slowest finish", "lowest arrival speed",
+                           "highest arrival speed", "highest anchor tension"};
+    const char *fmt[5] = {"%.4f s", "%.4f s", "%.2f km/h", "%.2f km/h", "%.0f N"};
+    int n = a->pb->m->cable_paths ? 5 : 4;
     fprintf(f, "\nSpread over the %d fresh scenarios that finished (of %d):\n\n", c->survived,
             c->samples);
-    for (int k = 0; k < 4; k++) {
+    for (int k = 0; k < n; k++) {
         char sc[512];
         scenario_text(a, ends[k]->u, sc, sizeof sc);
         fprintf(f, "- %s: ", what[k]);
@@ -637,6 +639,7 @@ void zp_report_write_md(FILE *f, const zp_answer *a, const zp_report_place *w) {
         md_kinks(f, a);
     }
     md_loads(f, a);
+    zp_report_cable_md(f, a);
     md_limits(f, a);
     if (a->rp.robust) {
         md_survivable(f, a);

@@ -4,6 +4,7 @@
 #include <math.h>
 
 #include "report.h"
+#include "report_cable.h"
 
 /* why no schedule was found, when none was */
 static void none_text(FILE *f, const zp_answer *a) {
@@ -79,6 +80,7 @@ void zp_report_text_write(FILE *f, const zp_answer *a) {
     if (a->rp.robust) {
         robust_text(f, a);
     }
+    zp_report_cable_text(f, a);
     char conv[512];
     zp_report_convergence(conv, sizeof conv, a);
     fprintf(f, "convergence: %s\n", conv);

@@ -60,7 +60,7 @@ double zp_robust_clopper_pearson_lower(int k, int n, double alpha) {
 /* sched in the scenario at u, judged in full: *w filled; returns the constraint (deg) */
 static double scen_judge(const zp_objective *ob, const zp_box *b, const zp_chain *c0,
                          zp_sim *s, zp_result *r, const zp_schedule *sched, const double *u,
-                         zp_robust_worst *w) {
+                         int tension, zp_robust_worst *w) {
     zp_scenario sc;
     zp_model m;
     zp_chain start;
@@ -85,6 +85,10 @@ static double scen_judge(const zp_objective *ob, const zp_box *b, const zp_chain
     if (zp_limits_any(&ob->lim)) {
         w->excess = e.failed ? 1 : zp_limits_excess(&ob->lim, &m, r, &w->limit);
     }
+    w->anchor_tension = 0;
+    if (tension && !e.failed) {
+        w->anchor_tension = zp_limits_anchor_tension(&m, r);
+    }
     return w->cons;
 }
 
@@ -105,7 +109,7 @@ static double adv_obj(unsigned n, const double *u, double *grad, void *data) {
     (void)n;
     (void)grad;
     zp_robust_worst w;
-    double c = scen_judge(a->ob, a->b, a->c0, a->s, a->r, a->sched, u, &w);
+    double c = scen_judge(a->ob, a->b, a->c0, a->s, a->r, a->sched, u, 0, &w);
     a->sims++;
     if (c > a->best.cons) {
         a->best = w;
@@ -121,11 +125,13 @@ typedef struct scen_batch {
     const zp_schedule *sched;
     const double *u;
     zp_robust_worst *pw;
+    int tension; /* the verification: each run's anchor tension too ([cable]) */
 } scen_batch;
 
 static void scen_job(void *user, int i, zp_sim *s, zp_result *r) {
     scen_batch *sb = user;
-    scen_judge(sb->ob, sb->b, sb->c0, s, r, sb->sched, sb->u + (size_t)i * sb->b->d, &sb->pw[i]);
+    scen_judge(sb->ob, sb->b, sb->c0, s, r, sb->sched, sb->u + (size_t)i * sb->b->d, sb->tension,
+               &sb->pw[i]);
 }
 
 /* the polishes of the adversary, in parallel: polish k from point top[k] into its own best */
@@ -182,7 +188,7 @@ static void adversary(const zp_objective *ob, const zp_box *b, zp_pool *w, const
     for (int i = 0; i < npt * d; i++) {
         u[i] = 2 * gsl_rng_uniform(rng) - 1;
     }
-    scen_batch sb = {ob, b, &c0, &sched, u, pw};
+    scen_batch sb = {ob, b, &c0, &sched, u, pw, 0};
     zp_pool_map(w, npt, scen_job, &sb, NULL, NULL);
     *sims += npt;
     int top[ADV_POLISH];
@@ -292,8 +298,9 @@ zp_status zp_robust_verify_each(const zp_objective *ob, const zp_box *b, const z
     memset(c, 0, sizeof *c);
     c->samples = n;
     c->worst_margin_deg = INFINITY;
-    zp_spread_end *ends[4] = {&c->fastest, &c->slowest, &c->arrival_low, &c->arrival_high};
-    for (int k = 0; k < 4; k++) {
+    zp_spread_end *ends[5] = {&c->fastest, &c->slowest, &c->arrival_low, &c->arrival_high,
+                              &c->tension_high};
+    for (int k = 0; k < 5; k++) {
         ends[k]->value = NAN;
         ends[k]->sample = -1;
     }
@@ -313,7 +320,7 @@ zp_status zp_robust_verify_each(const zp_objective *ob, const zp_box *b, const z
     }
     zp_chain c0;
     zp_state_start(ob->m, ob->m->course, &c0);
-    scen_batch sb = {ob, b, &c0, &sched, u, pw};
+    scen_batch sb = {ob, b, &c0, &sched, u, pw, 1};
     zp_status st = zp_spread_map(sp, w, n, scen_job, &sb, pw, sizeof *pw, NULL, NULL);
     for (int i = 0; !st && i < n; i++) {
         int fin = pw[i].outcome == ZP_OUTCOME_FINISHED;
@@ -329,6 +336,9 @@ zp_status zp_robust_verify_each(const zp_objective *ob, const zp_box *b, const z
             spread_take(&c->slowest, pw[i].time, i, u, b->d);
             spread_take(&c->arrival_low, -pw[i].arrival_kmh, i, u, b->d);
             spread_take(&c->arrival_high, pw[i].arrival_kmh, i, u, b->d);
+            if (ob->m->cable_paths) {
+                spread_take(&c->tension_high, pw[i].anchor_tension, i, u, b->d);
+            }
         }
     }
     /* two ends were kept as the largest of -value: back to the value */

@@ -35,6 +35,7 @@ typedef struct zp_robust_check {
     /* the population's spread over the finishing fresh scenarios: fastest and slowest finish
        (s), lowest and highest arrival speed (km/h) */
     zp_spread_end fastest, slowest, arrival_low, arrival_high;
+    zp_spread_end tension_high; /* [cable]: the highest anchor tension (N) of those rides */
 } zp_robust_check;
 
 typedef struct zp_robust_info {

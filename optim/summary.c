@@ -6,6 +6,7 @@
 #include "method.h"
 #include "out_json.h"
 #include "report.h"
+#include "report_cable.h"
 
 #define DEG (180.0 / M_PI)
 
@@ -246,6 +247,7 @@ void zp_summary_write_json(FILE *f, const zp_answer *a) {
     json_robust(f, &a->v, &a->pb->sched);
     fputs(",\n  \"limits\": ", f);
     zp_out_json_limits(f, m, run, &a->pb->lim);
+    zp_report_cable_json(f, a);
     if (a->rp.robust) {
         json_scenarios(f, a);
     }

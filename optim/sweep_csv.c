@@ -25,7 +25,8 @@ static const char *zp_sweep_csv_limit_column(int i) {
         [ZP_LIMIT_G] = "peak_g", [ZP_LIMIT_JOINT] = "peak_joint_force_N",
         [ZP_LIMIT_ARRIVAL] = "arrival_kmh", [ZP_LIMIT_KINK_DV] = "max_kink_dv_m_s",
         [ZP_LIMIT_G_ENVELOPE] = "g_envelope_share", [ZP_LIMIT_MIN_ARRIVAL] = "slowest_arrival_kmh",
-        [ZP_LIMIT_DRIVE_POWER] = "drive_peak_power_W"};
+        [ZP_LIMIT_DRIVE_POWER] = "drive_peak_power_W",
+        [ZP_LIMIT_CABLE_TENSION] = "anchor_tension_N"};
     return columns[i];
 }
 

@@ -1,7 +1,8 @@
 /* The loaded-cable path's table (cable_path.h) against the direct solve (cable_solve.h) at
    random x: every value to 1e-13 of its size beyond the direct solve's own round-off; nothing
    evaluated outside the built interval; bad intervals refused; threads sharing one path read
-   the same bits. Build and evaluation times are printed, not asserted. */
+   the same bits; the anchor tensions fitted on the same pieces agree with the exact chain of
+   equilibria (cable_ride.h) to 1e-13. Build and evaluation times are printed, not asserted. */
 #include <math.h>
 #include <pthread.h>
 #include <string.h>
@@ -9,6 +10,7 @@
 
 #include "cable.h"
 #include "cable_path.h"
+#include "cable_ride.h"
 #include "cable_solve.h"
 #include "check.h"
 
@@ -93,6 +95,12 @@ static void check_line(const line *ln) {
         double tol = TOL_PATH * (size[k] > 0 ? size[k] : 1) + ROUNDOFF_FACTOR * noise[k];
         CHECK_NEAR(err[k], 0, tol);
     }
+    /* the anchor tensions fitted on the same pieces: over a stretch, as the exact chain of
+       equilibria at the same x (what max_cable_tension is judged by away from the limit) */
+    double exact, lo = ln->lo + 0.1 * (ln->hi - ln->lo), hi = ln->hi - 0.2 * (ln->hi - ln->lo);
+    CHECK(zp_cable_ride_anchor_max(&c, ln->load, lo, hi, &exact, why, sizeof why) == ZP_OK);
+    CHECK_NEAR(zp_cable_path_anchor_max(p, lo, hi), exact, TOL_PATH * exact);
+    CHECK(isnan(zp_cable_path_anchor_max(p, ln->lo - 1e-3, hi)));
     /* the fast evaluation of f, f', f'' together */
     enum { EVALS = 1000000 };
     double sum = 0, f[3], e0 = cpu_s();

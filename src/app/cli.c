@@ -223,7 +223,7 @@ static void zp_cli_print_registries(FILE *f) {
 void zp_cli_usage(FILE *f) {
     fputs("Usage: zipopt [SCENE.ini] [OPTION]...\n"
           "  or:  zipopt simulate SCENE.ini [OPTION]...\n"
-          "  or:  zipopt check SCENE.ini [--json]\n"
+          "  or:  zipopt check SCENE.ini [--json] [--plot [--out DIR]]\n"
           "  or:  zipopt landscape SCENE.ini [OPTION]...\n"
           "  or:  zipopt tradeoff SCENE.ini [--levels P1,P2,..] [OPTION]...\n"
           "  or:  zipopt sweep SCENE.ini --vary SECTION.KEY=A:B:N [OPTION]...\n"
@@ -242,7 +242,8 @@ void zp_cli_usage(FILE *f) {
           "              JSON. Writes trajectory.csv and summary.json; --plot also draws the\n"
           "              run with gnuplot (course, energy, angles, loads, frames, run.gif).\n"
           "  check       Validate a scene file and print its course (sections, derivatives,\n"
-          "              kinks), body, drive, solver and search settings. Writes nothing.\n"
+          "              kinks), body, drive, solver and search settings. Writes nothing;\n"
+          "              --plot draws a [cable] scene's paths (cable.png).\n"
           "  landscape   The survival landscape: finish time or death over a constant push,\n"
           "              and over two sections' forces through a base schedule (run in\n"
           "              parallel); writes landscape.csv/.png (and landscape_slice.*).\n"

@@ -4,13 +4,17 @@
 #include "cable_path.h"
 
 #include <math.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "cable_ride.h"
 #include "cable_solve.h"
 
 #define NODES 32 /* Chebyshev points per piece: each series' length */
-enum { VAL_F, VAL_FP, VAL_FPP, VAL_ENERGY, VAL_HA, VAL_HB, NVAL };
+/* the path and the cable's force (NVAL of them: they decide where a piece is halved), then the
+   anchor tensions, fitted on the same pieces for the [limits] check (NFIT in all) */
+enum { VAL_F, VAL_FP, VAL_FPP, VAL_ENERGY, VAL_HA, VAL_HB, NVAL, VAL_TA = NVAL, VAL_TB, NFIT };
 /* a value's series on a piece is done when its last two terms are this small beside the
    value's size, */
 #define TAIL_TOL 2e-14
@@ -25,10 +29,12 @@ enum { VAL_F, VAL_FP, VAL_FPP, VAL_ENERGY, VAL_HA, VAL_HB, NVAL };
 #define MAX_PIECES 256 /* past this, pieces are kept whatever their tail (the tail says so) */
 
 typedef struct piece {
-    double coef[NVAL][NODES];
+    double coef[NFIT][NODES];
 } piece;
 
 struct zp_cable_path {
+    unsigned long id;    /* unique per path built in this process (the memo's key, not the
+                            address, which a later path may reuse) */
     zp_cable cable;
     double load, lo, hi; /* N, m, m */
     int n;               /* pieces */
@@ -52,6 +58,7 @@ static double node_t(int k) {
 static void state_values(const zp_cable_state *s, double *v) {
     v[VAL_F] = s->f, v[VAL_FP] = s->fp, v[VAL_FPP] = s->fpp;
     v[VAL_ENERGY] = s->energy, v[VAL_HA] = s->ha, v[VAL_HB] = s->hb;
+    v[VAL_TA] = s->ta, v[VAL_TB] = s->tb;
 }
 
 /* equilibria at the Chebyshev points of [a, b] (each from its left neighbour, the first from
@@ -59,7 +66,7 @@ static void state_values(const zp_cable_state *s, double *v) {
 static int fit(builder *bd, double a, double b, const zp_cable_state *seed, zp_cable_state *st,
                piece *pc) {
     const zp_cable *c = &bd->p->cable;
-    double v[NODES][NVAL];
+    double v[NODES][NFIT];
     const zp_cable_state *near = seed;
     for (int k = NODES - 1; k >= 0; k--) {
         double x = 0.5 * (a + b) + 0.5 * (b - a) * node_t(k);
@@ -73,14 +80,14 @@ static int fit(builder *bd, double a, double b, const zp_cable_state *seed, zp_c
     }
     /* c_j = (2 / N) sum_k v_k cos(j pi (k + 1/2) / N), c_0 halved */
     for (int j = 0; j < NODES; j++) {
-        double sum[NVAL] = {0};
+        double sum[NFIT] = {0};
         for (int k = 0; k < NODES; k++) {
             double cj = cos(M_PI * j * (k + 0.5) / NODES);
-            for (int i = 0; i < NVAL; i++) {
+            for (int i = 0; i < NFIT; i++) {
                 sum[i] += v[k][i] * cj;
             }
         }
-        for (int i = 0; i < NVAL; i++) {
+        for (int i = 0; i < NFIT; i++) {
             pc->coef[i][j] = sum[i] * (j ? 2.0 : 1.0) / NODES;
         }
     }
@@ -140,7 +147,7 @@ static int build_piece(builder *bd, double a, double b, const zp_cable_state *se
         for (int i = 0; i < NVAL; i++) {
             bd->scale[i] = 0;
             for (int k = 0; k < NODES; k++) {
-                double v[NVAL];
+                double v[NFIT];
                 state_values(&st[k], v);
                 bd->scale[i] = fmax(bd->scale[i], fabs(v[i]));
             }
@@ -175,6 +182,8 @@ zp_cable_path *zp_cable_path_create(const zp_cable *c, double load, double x_lo,
         zp_cable_path_free(p);
         return NULL;
     }
+    static atomic_ulong built;
+    p->id = atomic_fetch_add(&built, 1) + 1;
     p->cable = *c;
     p->load = load, p->lo = x_lo, p->hi = x_hi;
     p->ends[0] = x_lo;
@@ -228,37 +237,58 @@ static void series(const piece *pc, double t, double *out) {
     }
 }
 
-int zp_cable_path_track(const zp_cable_path *p, double x, double *f) {
+/* The equations of motion ask for the course at x (f, f', f'') and then for the cable's force
+   there (H_A, H_B, f'): one pass of the series serves both. A series' Clenshaw chain is
+   latency-bound, so all six side by side cost what three do; the second ask reads this
+   thread's memo of the last x. Each value is the same arithmetic either way, to the bit. */
+typedef struct memo {
+    unsigned long id; /* the path's id; 0: none */
+    double x;
+    double out[NVAL];
+} memo;
+static _Thread_local memo last;
+
+/* every value at x into out (from the memo when x was the last asked of p in this thread): 0,
+   or -1 outside the interval */
+static int values_at(const zp_cable_path *p, double x, double *out) {
+    if (last.id == p->id && last.x == x) {
+        for (int i = 0; i < NVAL; i++) {
+            out[i] = last.out[i];
+        }
+        return 0;
+    }
     double t;
     int k = locate(p, x, &t);
     if (k < 0) {
+        return -1;
+    }
+    series(&p->pieces[k], t, out);
+    last.id = p->id;
+    last.x = x;
+    for (int i = 0; i < NVAL; i++) {
+        last.out[i] = out[i];
+    }
+    return 0;
+}
+
+int zp_cable_path_track(const zp_cable_path *p, double x, double *f) {
+    double out[NVAL];
+    if (values_at(p, x, out)) {
         f[0] = f[1] = f[2] = NAN;
         return -1;
     }
-    /* series() for f, f', f'' alone, each step's c_j - b_(j+2) apart from the chain through
-       b_(j+1), which then costs a product and a sum per term */
-    const double *c0 = p->pieces[k].coef[VAL_F], *c1 = p->pieces[k].coef[VAL_FP];
-    const double *c2 = p->pieces[k].coef[VAL_FPP];
-    double a1 = 0, a2 = 0, b1 = 0, b2 = 0, d1 = 0, d2 = 0, t2 = 2 * t;
-    for (int j = NODES - 1; j >= 1; j--) {
-        double a0 = t2 * a1 + (c0[j] - a2), b0 = t2 * b1 + (c1[j] - b2);
-        double d0 = t2 * d1 + (c2[j] - d2);
-        a2 = a1, a1 = a0, b2 = b1, b1 = b0, d2 = d1, d1 = d0;
-    }
-    f[0] = t * a1 - a2 + c0[0];
-    f[1] = t * b1 - b2 + c1[0];
-    f[2] = t * d1 - d2 + c2[0];
+    f[0] = out[VAL_F];
+    f[1] = out[VAL_FP];
+    f[2] = out[VAL_FPP];
     return 0;
 }
 
 int zp_cable_path_eval(const zp_cable_path *p, double x, zp_cable_path_value *v) {
-    double t, out[NVAL];
-    int k = locate(p, x, &t);
-    if (k < 0) {
+    double out[NVAL];
+    if (values_at(p, x, out)) {
         *v = (zp_cable_path_value){NAN, NAN, NAN, NAN, NAN, NAN, NAN};
         return -1;
     }
-    series(&p->pieces[k], t, out);
     *v = (zp_cable_path_value){.f = out[VAL_F],
                                .fp = out[VAL_FP],
                                .fpp = out[VAL_FPP],
@@ -267,6 +297,31 @@ int zp_cable_path_eval(const zp_cable_path *p, double x, zp_cable_path_value *v)
                                .hb = out[VAL_HB]};
     v->denergy = (v->ha - v->hb) - p->load * v->fp;
     return 0;
+}
+
+/* one series of pc at t (Clenshaw) */
+static double series_one(const double *c, double t) {
+    double b1 = 0, b2 = 0;
+    for (int j = NODES - 1; j >= 1; j--) {
+        double b0 = 2 * t * b1 + (c[j] - b2);
+        b2 = b1;
+        b1 = b0;
+    }
+    return t * b1 - b2 + c[0];
+}
+
+double zp_cable_path_anchor_max(const zp_cable_path *p, double x_lo, double x_hi) {
+    double most = -INFINITY;
+    for (int i = 0; i <= ZP_CABLE_RIDE_SAMPLES; i++) {
+        double x = x_lo + (x_hi - x_lo) * i / ZP_CABLE_RIDE_SAMPLES, t;
+        int k = locate(p, x, &t);
+        if (k < 0) {
+            return NAN;
+        }
+        const piece *pc = &p->pieces[k];
+        most = fmax(most, fmax(series_one(pc->coef[VAL_TA], t), series_one(pc->coef[VAL_TB], t)));
+    }
+    return most;
 }
 
 void zp_cable_path_interval(const zp_cable_path *p, double *lo, double *hi) {

@@ -33,6 +33,10 @@ int zp_cable_path_track(const zp_cable_path *p, double x, double *f);
 /* Every value at x: 0, or -1 outside the interval (every field NaN). */
 int zp_cable_path_eval(const zp_cable_path *p, double x, zp_cable_path_value *v);
 
+/* The largest tension at either anchor (N) at the ZP_CABLE_RIDE_SAMPLES + 1 evenly spaced x of
+   [x_lo, x_hi] that zp_cable_ride_anchor_max solves exactly, from the fitted series (their
+   agreement: about 1e-13 of the tension); NaN when the interval leaves the path's. */
+double zp_cable_path_anchor_max(const zp_cable_path *p, double x_lo, double x_hi);
 /* The built interval [*lo, *hi] (m). */
 void zp_cable_path_interval(const zp_cable_path *p, double *lo, double *hi);
 /* The pieces the interval was cut into. */

@@ -7,7 +7,6 @@
 
 #include "cable_solve.h"
 
-#define SAMPLES 400 /* intervals: tensions vary slowly; the path's extrema are refined */
 #define BISECT 60   /* halvings: past round-off on any span */
 
 /* the x in [a, b] where the path's slope crosses target (it does: the caller saw it change
@@ -40,16 +39,42 @@ static void tensions(const zp_cable_state *st, zp_cable_ride *out) {
     out->trolley_max = fmax(out->trolley_max, st->t_trolley);
 }
 
+/* sample i of ZP_CABLE_RIDE_SAMPLES over [x_lo, x_hi] into st, from the one before it (prev,
+   sample 0 from scratch): every reader of the samples walks the same chain, so their values
+   agree to the bit */
+static zp_status sample(const zp_cable *c, double load, double x_lo, double x_hi, int i,
+                        const zp_cable_state *prev, zp_cable_state *st, char *why,
+                        size_t whylen) {
+    double x = x_lo + (x_hi - x_lo) * i / ZP_CABLE_RIDE_SAMPLES;
+    return i ? zp_cable_solve_near(c, prev, x, st, why, whylen)
+             : zp_cable_solve(c, load, x_lo, st, why, whylen);
+}
+
+zp_status zp_cable_ride_anchor_max(const zp_cable *c, double load, double x_lo, double x_hi,
+                                   double *t_max, char *why, size_t whylen) {
+    zp_cable_ride out = {0};
+    zp_cable_state prev, st;
+    zp_status rc = ZP_OK;
+    for (int i = 0; i <= ZP_CABLE_RIDE_SAMPLES && rc == ZP_OK; i++) {
+        rc = sample(c, load, x_lo, x_hi, i, &prev, &st, why, whylen);
+        if (rc == ZP_OK) {
+            tensions(&st, &out);
+            prev = st;
+        }
+    }
+    *t_max = rc == ZP_OK ? fmax(out.ta_max, out.tb_max) : NAN;
+    return rc;
+}
+
 zp_status zp_cable_ride_over(const zp_cable *c, double load, double x_lo, double x_hi,
                              zp_cable_ride *out, char *why, size_t whylen) {
     double chord = (c->yb - c->ya) / (c->xb - c->xa);
     *out = (zp_cable_ride){0, 0, 0, x_lo, INFINITY, -INFINITY, x_lo, NAN, NAN};
     zp_cable_state prev, st, ext;
-    zp_status rc = zp_cable_solve(c, load, x_lo, &prev, why, whylen);
-    for (int i = 0; i <= SAMPLES && rc == ZP_OK; i++) {
-        double x = x_lo + (x_hi - x_lo) * i / SAMPLES;
-        rc = i ? zp_cable_solve_near(c, &prev, x, &st, why, whylen) : ZP_OK;
-        st = i ? st : prev;
+    zp_status rc = ZP_OK;
+    for (int i = 0; i <= ZP_CABLE_RIDE_SAMPLES && rc == ZP_OK; i++) {
+        double x = x_lo + (x_hi - x_lo) * i / ZP_CABLE_RIDE_SAMPLES;
+        rc = sample(c, load, x_lo, x_hi, i, &prev, &st, why, whylen);
         if (rc != ZP_OK) {
             break;
         }

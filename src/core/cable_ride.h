@@ -10,6 +10,10 @@
 #include "cable.h"
 #include "diag.h"
 
+/* intervals of the evenly spaced x the tensions are read at over a ride (tensions vary
+   slowly; the path's extrema are refined) */
+#define ZP_CABLE_RIDE_SAMPLES 400
+
 typedef struct zp_cable_ride {
     double ta_max, tb_max;     /* N, the largest tension at anchor A, at anchor B */
     double trolley_max;        /* N, the largest tension at the trolley */
@@ -24,5 +28,10 @@ typedef struct zp_cable_ride {
    error from the equilibrium with why filled. */
 zp_status zp_cable_ride_over(const zp_cable *c, double load, double x_lo, double x_hi,
                              zp_cable_ride *out, char *why, size_t whylen);
+/* The largest tension at either anchor over the same x into *t_max (NaN on an error): the
+   ta_max and tb_max of zp_cable_ride_over to the bit, without its extrema (the [limits]
+   max_cable_tension a search judges every run by). */
+zp_status zp_cable_ride_anchor_max(const zp_cable *c, double load, double x_lo, double x_hi,
+                                   double *t_max, char *why, size_t whylen);
 
 #endif

@@ -3,13 +3,16 @@
 
 #include <math.h>
 
+#include "cable_path.h"
+#include "cable_ride.h"
+
 #define KMH (3.6) /* km/h per m/s */
 
 static const char *const limit_names[ZP_LIMIT_COUNT] = {
     "max_g", "max_joint_force", "max_arrival_speed", "max_kink_dv", "g_envelope",
-    "min_arrival_speed", "max_drive_power"};
-static const char *const limit_units[ZP_LIMIT_COUNT] = {"g",   "N", "km/h", "m/s",
-                                                        "x its allowance", "km/h", "W"};
+    "min_arrival_speed", "max_drive_power", "max_cable_tension"};
+static const char *const limit_units[ZP_LIMIT_COUNT] = {
+    "g", "N", "km/h", "m/s", "x its allowance", "km/h", "W", "N"};
 
 const char *zp_limits_name(int i) { return limit_names[i]; }
 const char *zp_limits_unit(int i) { return limit_units[i]; }
@@ -22,6 +25,7 @@ void zp_limits_from_scene(const zp_scene *sc, zp_limits *l) {
     l->max[ZP_LIMIT_G_ENVELOPE] = sc->nenv > 0 ? 1 : 0;
     l->max[ZP_LIMIT_MIN_ARRIVAL] = sc->min_arrival_speed;
     l->max[ZP_LIMIT_DRIVE_POWER] = sc->max_drive_power;
+    l->max[ZP_LIMIT_CABLE_TENSION] = sc->max_cable_tension;
 }
 
 int zp_limits_kept(int i, double v, double max) {
@@ -46,7 +50,29 @@ int zp_limits_reached_in(const zp_result *r, int i) {
     return i != ZP_LIMIT_ARRIVAL || r->outcome == ZP_OUTCOME_FINISHED;
 }
 
-void zp_limits_reached(const zp_model *m, const zp_result *r, double v[ZP_LIMIT_COUNT]) {
+/* within this of max_cable_tension, the exact equilibria decide whether it is kept (the
+   path's fitted tensions agree with them to about 1e-13) */
+#define CABLE_EXACT_BAND 1e-9
+
+/* the largest anchor tension over the x run r visited: from exact equilibria when exact (NaN
+   when one fails), else from the path's fitted series (a hundredth of the cost) */
+static double anchor_tension(const zp_model *m, const zp_result *r, int exact) {
+    if (!exact) {
+        return zp_cable_path_anchor_max(m->cable_path, r->x_min, r->x_max);
+    }
+    double t;
+    char why[256];
+    zp_cable_ride_anchor_max(zp_cable_paths_cable(m->cable_paths), m->g * m->mtot, r->x_min,
+                             r->x_max, &t, why, sizeof why);
+    return t;
+}
+
+double zp_limits_anchor_tension(const zp_model *m, const zp_result *r) {
+    return m->cable_paths ? anchor_tension(m, r, 0) : 0;
+}
+
+/* zp_limits_reached, the anchor tension only when cable is set (exact) */
+static void reached(const zp_model *m, const zp_result *r, int cable, double v[ZP_LIMIT_COUNT]) {
     v[ZP_LIMIT_G] = v[ZP_LIMIT_JOINT] = 0;
     for (int i = 0; i < m->nlink; i++) {
         if (m->g_links >> i & 1) {
@@ -58,8 +84,13 @@ void zp_limits_reached(const zp_model *m, const zp_result *r, double v[ZP_LIMIT_
     v[ZP_LIMIT_MIN_ARRIVAL] = v[ZP_LIMIT_ARRIVAL];
     v[ZP_LIMIT_KINK_DV] = r->peaks.kink_dv;
     v[ZP_LIMIT_DRIVE_POWER] = r->drive_peak_power;
+    v[ZP_LIMIT_CABLE_TENSION] = cable && m->cable_paths ? anchor_tension(m, r, 1) : 0;
     int w = zp_limits_envelope_worst(m, r);
     v[ZP_LIMIT_G_ENVELOPE] = w < 0 ? 0 : r->env_longest[w] / m->env_s[w];
+}
+
+void zp_limits_reached(const zp_model *m, const zp_result *r, double v[ZP_LIMIT_COUNT]) {
+    reached(m, r, 1, v);
 }
 
 int zp_limits_envelope_worst(const zp_model *m, const zp_result *r) {
@@ -73,8 +104,15 @@ int zp_limits_envelope_worst(const zp_model *m, const zp_result *r) {
 }
 
 double zp_limits_excess(const zp_limits *l, const zp_model *m, const zp_result *r, int *which) {
-    double v[ZP_LIMIT_COUNT];
-    zp_limits_reached(m, r, v);
+    double v[ZP_LIMIT_COUNT], cable = l->max[ZP_LIMIT_CABLE_TENSION];
+    reached(m, r, 0, v);
+    if (cable > 0 && m->cable_paths) {
+        /* every run of a search is judged: the fitted tensions, exact near the limit */
+        v[ZP_LIMIT_CABLE_TENSION] = anchor_tension(m, r, 0);
+        if (!(fabs(v[ZP_LIMIT_CABLE_TENSION] / cable - 1) > CABLE_EXACT_BAND)) {
+            v[ZP_LIMIT_CABLE_TENSION] = anchor_tension(m, r, 1);
+        }
+    }
     return zp_limits_excess_of(l, v, which);
 }
 

@@ -14,12 +14,13 @@ typedef enum {
     ZP_LIMIT_G_ENVELOPE, /* the longest excursion over its allowance, at the worst level */
     ZP_LIMIT_MIN_ARRIVAL, /* a floor: every rider arrives at least this fast */
     ZP_LIMIT_DRIVE_POWER, /* W, the drive's peak |F_applied v| (at the steps' ends) */
+    ZP_LIMIT_CABLE_TENSION, /* N, [cable]: the largest tension at an anchor over the x visited */
     ZP_LIMIT_COUNT
 } zp_limit_id;
 
 typedef struct zp_limits {
     double max[ZP_LIMIT_COUNT]; /* g, N, km/h, m/s, 1 (its allowance) for the g envelope, km/h,
-                                   W; 0: off */
+                                   W, N; 0: off */
 } zp_limits;
 
 void zp_limits_from_scene(const zp_scene *sc, zp_limits *l);
@@ -34,9 +35,17 @@ const char *zp_limits_unit(int i);
 int zp_limits_reached_in(const zp_result *r, int i);
 /* What run r reached, in each limit's unit: the largest felt acceleration (over the judged
    links, zp_model.g_links) and joint force (over links and the run), the arrival speed (0
-   unless finished), the largest kink dv, the drive's peak power, and for the g envelope the longest excursion above a
-   level over that level's allowance, the worst level's (zp_limits_envelope_worst). */
+   unless finished), the largest kink dv, the drive's peak power, with [cable] the largest
+   anchor tension over the x the run visited (the cable is quasi-static: a function of x alone,
+   from exact equilibria, as simulate --json's cable.anchor_tension_max; 0 without a cable), and
+   for the g envelope the longest excursion above a level over that level's allowance, the
+   worst level's (zp_limits_envelope_worst). */
 void zp_limits_reached(const zp_model *m, const zp_result *r, double v[ZP_LIMIT_COUNT]);
+/* With [cable]: the largest anchor tension over the x run r visited from the path's fitted
+   series, to about 1e-13 of zp_limits_reached's exact value at a hundredth of its cost (a
+   population's spread); 0 without a cable. zp_limits_excess judges max_cable_tension with it,
+   and with the exact value within 1e-9 of the limit. */
+double zp_limits_anchor_tension(const zp_model *m, const zp_result *r);
 /* The worst excess over the limits set, reached / limit - 1 (<= 0: all kept; -1 with no
    limit set), and in *which the limit that gave it (-1: none set). */
 double zp_limits_excess(const zp_limits *l, const zp_model *m, const zp_result *r, int *which);

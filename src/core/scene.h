@@ -95,6 +95,7 @@ typedef struct zp_scene {
     double max_kink_dv;       /* m/s, |v+ - v-| of the trolley at any kink */
     double min_arrival_speed; /* km/h, every rider arrives at least this fast; 0: off */
     double max_drive_power;   /* W, peak |F_applied v| the drive delivers over the ride */
+    double max_cable_tension; /* N, [cable]: the largest anchor tension over the ride */
     int nenv;                 /* g_envelope levels, 0: none */
     double env_g[8], env_s[8]; /* g, s: felt g above env_g[l] for at most env_s[l] at a time */
     unsigned g_links;         /* bit i: link i + 1's felt g is judged (max_g, g_envelope); 0: all */

@@ -14,5 +14,18 @@
    are the nominal one and, with [robust] mass ranges, the lightest and heaviest. Nothing
    without a cable. */
 void zp_cable_text_print(FILE *f, const zp_model *m, const zp_scene *sc);
+/* The same as members of check --json's "cable" object (after its n keys given): the
+   unstretched length, "unloaded" (null for a weightless rope), the ride's x range and
+   "riders", one object per rider. Nothing without a cable. */
+void zp_cable_text_json(FILE *f, const zp_model *m, const zp_scene *sc, int n);
+
+/* A rider check shows: its name and load (N, with the trolley). */
+typedef struct zp_cable_text_rider {
+    const char *who; /* "nominal", "lightest", "heaviest" */
+    double load;
+} zp_cable_text_rider;
+/* The riders into out: the nominal one, and with [robust] mass ranges the lightest and the
+   heaviest; returns how many (0 without a cable). */
+int zp_cable_text_riders(const zp_model *m, const zp_scene *sc, zp_cable_text_rider out[3]);
 
 #endif

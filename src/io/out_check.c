@@ -2,6 +2,7 @@
 #include "out_check.h"
 
 #include <math.h>
+#include <string.h>
 
 #include "cable_text.h"
 #include "formulation.h"
@@ -128,7 +129,7 @@ void zp_out_check_text(FILE *f, const zp_out_check *c) {
     course_text(f, c->m);
     body_text(f, sc, c->m);
     settings_text(f, c);
-    zp_scene_show_optional(sc, f, 0);
+    zp_scene_show_optional(sc, f, 0, NULL, NULL);
     physics_text(f, sc, c->m);
     zp_cable_text_print(f, c->m, sc);
     fprintf(f, "added by zipopt (keys the file does not give, with the values taken):\n");
@@ -142,18 +143,33 @@ static void key_list(FILE *f, const char *key, const double *v, int n, const cha
     fputs(sep, f);
 }
 
+/* the course at the end of section k at x, from the left or the right: a cable's is its
+   nominal rider's path (the scene's expressions are a placeholder it never reads) */
+static zp_track course_at(const zp_model *m, int k, double x) {
+    if (m->cable_path) {
+        double t[3];
+        zp_cable_path_track(m->cable_path, x, t);
+        return (zp_track){t[0], t[1], t[2]};
+    }
+    return zp_course_eval(m->course, k, x);
+}
+
 static void course_json(FILE *f, const zp_model *m) {
     fprintf(f, "\"sections\": [");
     for (int k = 0; k < m->nsec; k++) {
         fprintf(f, "%s{", k ? ", " : "");
         zp_out_json_key(f, "x_start", m->xb[k], ", ");
         zp_out_json_key(f, "x_end", m->xb[k + 1], ", ");
-        zp_out_json_key_string(f, "f", m->expr[k], "}");
+        if (m->cable_paths) { /* no expression: the course is the cable's path ("cable") */
+            fputs("\"f\": null}", f);
+        } else {
+            zp_out_json_key_string(f, "f", m->expr[k], "}");
+        }
     }
     fprintf(f, "], \"boundaries\": [");
     for (int k = 1; k < m->nsec; k++) {
-        zp_track l = zp_course_eval(m->course, k - 1, m->xb[k]);
-        zp_track r = zp_course_eval(m->course, k, m->xb[k]);
+        zp_track l = course_at(m, k - 1, m->xb[k]);
+        zp_track r = course_at(m, k, m->xb[k]);
         fprintf(f, "%s{", k > 1 ? ", " : "");
         zp_out_json_key(f, "x", m->xb[k], ", ");
         zp_out_json_key(f, "y", l.f, ", ");
@@ -162,6 +178,14 @@ static void course_json(FILE *f, const zp_model *m) {
         fprintf(f, "\"kink\": %s}", zp_model_is_kink(m, k - 1) ? "true" : "false");
     }
     fprintf(f, "], ");
+}
+
+/* the cable's equilibria after its keys in check --json's "cable" */
+static void cable_more(FILE *f, const char *section, int n, const void *user) {
+    const zp_out_check *c = user;
+    if (!strcmp(section, "cable")) {
+        zp_cable_text_json(f, c->m, c->sc, n);
+    }
 }
 
 void zp_out_check_json(FILE *f, const zp_out_check *c) {
@@ -191,6 +215,6 @@ void zp_out_check_json(FILE *f, const zp_out_check *c) {
     zp_out_json_key(f, "output_dt", sc->output_dt, ", ");
     zp_out_json_key(f, "margin", sc->margin, ", ");
     fprintf(f, "\"max_evals\": %ld, \"seed\": %lu, ", sc->max_evals, sc->seed);
-    zp_scene_show_optional(sc, f, 1);
+    zp_scene_show_optional(sc, f, 1, cable_more, c);
     fprintf(f, "}\n");
 }

@@ -98,8 +98,9 @@ void zp_out_json_limits(FILE *f, const zp_model *m, const zp_result *r, const zp
     fputs("{", f);
     for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
         double max = lim ? lim->max[i] : 0;
-        /* the drive's power shows in "drive"; here only as a limit set */
-        if (i == ZP_LIMIT_DRIVE_POWER && !(max > 0)) {
+        /* the drive's power shows in "drive", the anchor tension in "cable"; here only as
+           limits set */
+        if ((i == ZP_LIMIT_DRIVE_POWER || i == ZP_LIMIT_CABLE_TENSION) && !(max > 0)) {
             continue;
         }
         fputs(i ? ", " : "", f);

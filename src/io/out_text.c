@@ -3,6 +3,8 @@
 
 #include <math.h>
 
+#include "cable_ride.h"
+
 static void outcome_text(FILE *f, const zp_model *m, const zp_result *r) {
     fprintf(f, "outcome: %s", zp_sim_outcome_name(r->outcome));
     if (r->outcome == ZP_OUTCOME_DIED) {
@@ -27,6 +29,21 @@ static void outcome_text(FILE *f, const zp_model *m, const zp_result *r) {
     fprintf(f, "energy audit residual: %.3g J\n", zp_estimate_energy_residual(r));
     fprintf(f, "steps: %ld (and %ld rejected), rhs evaluations: %ld, wall: %.4f s\n", r->steps,
             r->rejected, r->rhs_evals, r->wall_s);
+}
+
+/* with [cable]: what the line carried over the x the ride visited (simulate --json's `cable`) */
+static void cable_text(FILE *f, const zp_model *m, const zp_result *r) {
+    zp_cable_ride cr;
+    char why[256];
+    if (zp_cable_ride_over(zp_cable_paths_cable(m->cable_paths), m->g * m->mtot, r->x_min,
+                           r->x_max, &cr, why, sizeof why) != ZP_OK) {
+        fprintf(f, "cable: no equilibrium over the ride: %s\n", why);
+        return;
+    }
+    fprintf(f,
+            "cable: tension at most %.0f N at anchor A, %.0f N at anchor B, %.0f N at the "
+            "trolley; lowest point %.3f m at x = %.2f m; sag %.3f m at mid-span\n",
+            cr.ta_max, cr.tb_max, cr.trolley_max, cr.y_low, cr.x_low, cr.sag_mid);
 }
 
 /* each [limits] value set: reached against the limit; then the felt-g levels */
@@ -129,6 +146,9 @@ static void gradient_text(FILE *f, const zp_schedule *sh, const zp_sens_result *
 void zp_out_text_result(FILE *f, const zp_model *m, const zp_result *r, const zp_sim *s,
                         const zp_run_meta *meta) {
     outcome_text(f, m, r);
+    if (m->cable_paths) {
+        cable_text(f, m, r);
+    }
     limits_text(f, m, r, meta->lim);
     samples_text(f, m, r, s, meta);
     if (meta->estimate) {

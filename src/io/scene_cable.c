@@ -43,8 +43,13 @@ static int good(const parse_ctx *c, int k) {
 }
 
 /* what cannot stand beside a cable: [course], whose place it takes, and kink_radius (a cable has
-   no kinks) */
+   no kinks); and the one key that needs a cable */
 static void alone(parse_ctx *c, const zp_scene *sc) {
+    if (!sc->cable && c->key_line[K_MAX_CABLE_TENSION]) {
+        zp_scene_values_bad_key(c, K_MAX_CABLE_TENSION,
+                                "given without [cable]; expected only on a cable scene (the "
+                                "tension at the cable's anchors)");
+    }
     if (sc->cable && c->sec_line[S_COURSE]) {
         zp_scene_lines_bad(c, c->sec_line[S_COURSE], "course", NULL,
                      "given with [cable] on line %d; expected [course] or [cable], not both (the "

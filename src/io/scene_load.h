@@ -39,7 +39,11 @@ int zp_scene_show_added(const zp_scene *sc, FILE *f, const char *indent);
 /* Writes the settings of [limits], [robust] and [physics]: the keys given (every [robust] key
    of a robust scene, defaults included). Text: one line per section, `limits: max_g = 12;
    max_arrival_speed = 90` or `limits: none`. JSON (json != 0): the members `"limits": {..},
-   "robust": {..}, "physics": {..}` of an object, numbers and lists as JSON numbers. */
-void zp_scene_show_optional(const zp_scene *sc, FILE *f, int json);
+   "robust": {..}, "physics": {..}` of an object, numbers and lists as JSON numbers; more (may
+   be NULL) adds members to each section's object after its n keys (what the caller derived from
+   them: the cable's equilibria), s its name ("cable"). */
+typedef void (*zp_scene_show_more)(FILE *f, const char *s, int n, const void *user);
+void zp_scene_show_optional(const zp_scene *sc, FILE *f, int json, zp_scene_show_more more,
+                            const void *user);
 
 #endif

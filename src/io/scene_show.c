@@ -232,7 +232,8 @@ static void json_value(FILE *f, const char *text) {
     fputc('"', f);
 }
 
-void zp_scene_show_optional(const zp_scene *sc, FILE *f, int json) {
+void zp_scene_show_optional(const zp_scene *sc, FILE *f, int json, zp_scene_show_more more,
+                            const void *user) {
     for (int s = 0, first = 1; s < S_COUNT; s++) {
         if (!zp_scene_keys_sections[s].optional) {
             continue;
@@ -257,6 +258,9 @@ void zp_scene_show_optional(const zp_scene *sc, FILE *f, int json) {
                 fprintf(f, "%s %s = %s", n ? ";" : "", zp_scene_keys[k].name, v);
             }
             n++;
+        }
+        if (json && more) {
+            more(f, zp_scene_keys_sections[s].name, n, user);
         }
         if (json) {
             fputc('}', f);
