@@ -41,8 +41,16 @@ void zp_report_convergence(char *buf, size_t n, const zp_answer *a) {
                  "; too few polishes for that many minima to estimate the basins not yet "
                  "visited (Boender and Rinnooy Kan)");
     }
-    char tail[200];
-    if (s->converged) {
+    char tail[300];
+    double cable_max = a->pb->lim.max[ZP_LIMIT_CABLE_TENSION];
+    double floor = cable_max > 0 ? zp_limits_cable_floor(a->pb->m) : 0;
+    if (!a->found && floor > cable_max) {
+        snprintf(tail, sizeof tail,
+                 "; no schedule can keep max_cable_tension = %.0f N: every ride that finishes "
+                 "loads an anchor to %.0f N, which the rider's weight sets, not the drive: a "
+                 "larger budget cannot help",
+                 cable_max, floor);
+    } else if (s->converged) {
         snprintf(tail, sizeof tail, "; the last round found nothing better: a larger budget is "
                                     "unlikely to help");
     } else if (s->interrupted) {

@@ -12,6 +12,7 @@ max_cable_tension without it: exit 2 naming file, line and key, nothing written)
 usage: check_cable_commands.py ZIPOPT_EXE SOURCE_DIR"""
 import csv
 import json
+import re
 import os
 import subprocess
 import sys
@@ -139,6 +140,13 @@ with tempfile.TemporaryDirectory() as tmp:
         s = json.loads(p.stdout)
         check(not s["found"] and s["limits"]["max_cable_tension"]["kept"] is False,
               "the closest candidate breaks max_cable_tension")
+        with open(os.path.join(tmp, "low", "report.md")) as f:
+            md = f.read()
+        # the anchors' load is set by where the rider is, not by the drive: the report says no
+        # budget helps, naming the tension every finishing ride reaches (the nominal's, +/- 1 N)
+        said = re.search(r"loads an anchor to (\d+) N, .*a larger budget cannot help", md)
+        check(said is not None and abs(int(said.group(1)) - nominal) <= 1,
+              "report.md: no schedule can keep it, at the nominal rider's %g N" % nominal)
 
     # the robust search: the population on their own paths; the heaviest loads the anchors most
     rob = scene(tmp, "rob", "[limits]\nmax_cable_tension = %d\n[robust]\nforce_error = 5\n"

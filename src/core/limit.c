@@ -71,6 +71,14 @@ double zp_limits_anchor_tension(const zp_model *m, const zp_result *r) {
     return m->cable_paths ? anchor_tension(m, r, 0) : 0;
 }
 
+double zp_limits_cable_floor(const zp_model *m) {
+    if (!m->cable_paths) {
+        return 0;
+    }
+    zp_result ride = {.x_min = m->xb[0], .x_max = m->xb[m->nsec]}; /* what every finish visits */
+    return anchor_tension(m, &ride, 1);
+}
+
 /* zp_limits_reached, the anchor tension only when cable is set (exact) */
 static void reached(const zp_model *m, const zp_result *r, int cable, double v[ZP_LIMIT_COUNT]) {
     v[ZP_LIMIT_G] = v[ZP_LIMIT_JOINT] = 0;

@@ -46,6 +46,11 @@ void zp_limits_reached(const zp_model *m, const zp_result *r, double v[ZP_LIMIT_
    population's spread); 0 without a cable. zp_limits_excess judges max_cable_tension with it,
    and with the exact value within 1e-9 of the limit. */
 double zp_limits_anchor_tension(const zp_model *m, const zp_result *r);
+/* With [cable]: the anchor tension every finishing ride reaches (N), the largest over the
+   x from the start to the finish, exact; a schedule cannot change it, the cable being
+   quasi-static, so a max_cable_tension below it is kept by no schedule. 0 without a cable,
+   NaN when an equilibrium fails. */
+double zp_limits_cable_floor(const zp_model *m);
 /* The worst excess over the limits set, reached / limit - 1 (<= 0: all kept; -1 with no
    limit set), and in *which the limit that gave it (-1: none set). */
 double zp_limits_excess(const zp_limits *l, const zp_model *m, const zp_result *r, int *which);
