@@ -30,15 +30,14 @@ typedef struct grad_run {
     double dobj[ZP_SCHED_MAX_PARAMS], dcons[ZP_SCHED_MAX_PARAMS];
 } grad_run;
 
-/* design note: a sensitivity run integrates the state with one copy per parameter, at the
-   steps its error test on them all asks for, so it is charged as the integrator's work on
-   1 + np copies: its integrator's rate evaluations over the plain run's at the same point,
-   times 1 + np. Against wall time (bench/polish_compare: a sensitivity run takes 20-60 plain
-   runs' time) this overstates the cost by 1.6-3.2x on seed, multi4 and multi8; docs/search.md
-   gives both counts */
+/* design note: a sensitivity run is charged as the plain runs its work amounts to, counted
+   not estimated: the plain rate evaluations it made (its integrator's, each parameter's
+   stencil, its events') over those of the plain run at the same point, rounded up.
+   Deterministic, so the same bits on any number of threads; bench/polish_compare sets it
+   against the measured wall time (docs/search.md) */
 static long sens_charge(const zp_sens_result *sr, const zp_result *plain) {
     long base = plain->rhs_evals > 0 ? plain->rhs_evals : 1;
-    return 1 + (sr->rhs_evals * (1 + sr->np) - 1) / base;
+    return 1 + (sr->rates - 1) / base;
 }
 
 /* the gradients at the leg's point x, whose plain run (leg->r) finished, into c per NLopt
