@@ -71,8 +71,9 @@ static double end_time(const polished *p) {
 }
 
 /* simulations until polish p (of how from x0) reached t (within SAME), -1: never. From its
-   history of improvements; past the history's last (it keeps ZP_SEARCH_HIST) by bisection on
-   the budget, since a polish with a smaller budget runs what a larger one does first */
+   history of improvements; where that was cut short (a leg keeps its first
+   ZP_LEG_IMPROVEMENTS) by bisection on the budget, since a polish with a smaller budget runs
+   what a larger one does first */
 static long reached(const zp_problem *st, const zp_objective *ob, const zp_strategy *how,
                     const double *x0, const polished *p, double t) {
     for (int i = 0; i < p->nhist; i++) {
@@ -80,11 +81,12 @@ static long reached(const zp_problem *st, const zp_objective *ob, const zp_strat
             return p->hist[i].evals;
         }
     }
-    if (p->nhist < ZP_SEARCH_HIST || !(end_time(p) <= t * (1 + SAME))) {
+    if (!(end_time(p) <= t * (1 + SAME))) {
         return -1;
     }
     static polished q;
-    long lo = p->hist[p->nhist - 1].evals, hi = p->rec.n; /* not yet at lo, there at hi */
+    /* not yet there at lo simulations, there at hi */
+    long lo = p->nhist > 0 ? p->hist[p->nhist - 1].evals : 0, hi = p->rec.n;
     while (hi - lo > 1) {
         long mid = lo + (hi - lo) / 2;
         polish_alone(st, ob, how, x0, mid, &q);
