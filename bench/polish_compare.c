@@ -95,10 +95,16 @@ static long reached(const zp_problem *st, const zp_objective *ob, const zp_strat
     return hi;
 }
 
-/* wall time of a sensitivity run over a plain run's, at parameters f; into *charged what the
-   gradient polish charges for it (its plain rate evaluations over the plain run's) */
-static double sens_cost(const zp_problem *st, const zp_objective *ob, const double *f,
-                        long *charged) {
+/* what a sensitivity run costs at parameters f */
+typedef struct sens_price {
+    long charged;     /* plain runs, as the gradient polish charges it */
+    double evals;     /* its integrator's evaluations over the plain run's */
+    double per_eval;  /* plain rate evaluations per evaluation of its own (the stencils) */
+    double wall;      /* its wall time over a plain run's */
+} sens_price;
+
+static sens_price sens_cost(const zp_problem *st, const zp_objective *ob, const double *f) {
+    sens_price p = {-1, NAN, NAN, NAN};
     zp_schedule sched = zp_objective_schedule(ob, f);
     zp_sim *s = zp_sim_create(st->m, &st->search);
     zp_result *r = calloc(1, sizeof *r);
@@ -113,11 +119,16 @@ static double sens_cost(const zp_problem *st, const zp_objective *ob, const doub
         zp_sens_run(st->m, &st->search, &sched, NULL, sr);
     }
     double t2 = now();
-    *charged = sr && r && r->rhs_evals > 0 ? 1 + (sr->rates - 1) / r->rhs_evals : -1;
+    if (sr && r && r->rhs_evals > 0 && sr->rhs_evals > 0) {
+        p.charged = 1 + (sr->rates - 1) / r->rhs_evals;
+        p.evals = (double)sr->rhs_evals / r->rhs_evals;
+        p.per_eval = (double)sr->rates / sr->rhs_evals;
+        p.wall = (t2 - t1) / (t1 - t0);
+    }
     free(sr);
     free(r);
     zp_sim_free(s);
-    return (t2 - t1) / (t1 - t0);
+    return p;
 }
 
 /* both polishes from x0: a row of the table. The answer both reach is the worse of their
@@ -131,16 +142,15 @@ static void compare(const zp_problem *st, const zp_objective *ob, const double *
     double both = fmax(end_time(&dfree), end_time(&grad));
     long nd = isfinite(both) ? reached(st, ob, &zp_strategy_nlopt_cobyla, x0, &dfree, both) : -1;
     long ng = isfinite(both) ? reached(st, ob, &zp_strategy_slsqp, x0, &grad, both) : -1;
-    long charged;
-    double cost = sens_cost(st, ob, x0, &charged);
+    sens_price c = sens_cost(st, ob, x0);
     printf("| %s | %d | %s | %.9g%s (%ld, %.3g s) | %.9g%s (%ld, %.3g s) | %.9g | %ld | %ld | "
-           "%s%.3g | %ld, %.2g |\n",
+           "%s%.3g | %ld = %.2g x %.3g, %.2g |\n",
            st->sc.name, st->sched.np, start, dfree.rec.e.time,
            zp_objective_feasible(&dfree.rec.e) ? "" : " (not survivable)", dfree.rec.n,
            dfree.wall, grad.rec.e.time,
            zp_objective_feasible(&grad.rec.e) ? "" : " (not survivable)", grad.rec.n, grad.wall,
            both, nd, ng, nd > 0 && ng > 0 ? "" : "n/a ", nd > 0 && ng > 0 ? (double)nd / ng : 0.0,
-           charged, cost);
+           c.charged, c.evals, c.per_eval, c.wall);
     fflush(stdout);
 }
 
@@ -151,7 +161,7 @@ int main(int argc, char **argv) {
     }
     printf("| scene | parameters | start | COBYLA ended (sims, wall) | SLSQP ended (sims, wall) "
            "| answer both reach (s) | COBYLA: sims to it | SLSQP: sims to it | ratio | "
-           "sensitivity run (plain runs: charged, wall) |\n"
+           "sensitivity run (plain runs charged = evaluations x rates per evaluation, wall) |\n"
            "|---|---|---|---|---|---|---|---|---|---|\n");
     for (int a = 1; a < argc; a++) {
         static zp_problem st; /* large: kept off the stack */
