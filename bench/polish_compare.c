@@ -1,9 +1,10 @@
 /* The polish alone, derivative-free (COBYLA) against the gradient polish (SLSQP with the
    sensitivities), from the same starts: the best constant push of the default search's scan,
-   and the default search's answer with its pushes 5 % less. For each, the simulations
-   (sensitivity runs charged as the search charges them) to reach the better survivable end of
-   the two within 1e-6 relative, where each ended and its wall time; and what a sensitivity run
-   costs in plain runs' wall time, measured at the start.
+   and the default search's answer with its pushes 5 % less. For each, where each ended (its
+   simulations, sensitivity runs charged as the search charges them, and wall time), the
+   simulations each took to the answer both reach (the worse survivable end, within 1e-6
+   relative) and their ratio; and what a sensitivity run is charged and costs in plain runs'
+   wall time, measured at the start.
    Usage: polish_compare SCENE.ini...   (prints a markdown table) */
 #include <math.h>
 #include <stdio.h>
@@ -39,10 +40,11 @@ typedef struct polished {
     zp_search_hist hist[ZP_SEARCH_HIST];
 } polished;
 
-/* one polish of `how` from x0 on one thread, alone in a fresh search state */
+/* one polish of `how` from x0 on one thread, alone in a fresh search state, of at most cap
+   simulations */
 static void polish_alone(const zp_problem *st, const zp_objective *ob, const zp_strategy *how,
-                         const double *x0, polished *out) {
-    zp_search_opts o = {.max_evals = CAP, .seed = st->seed, .nthreads = 1};
+                         const double *x0, long cap, polished *out) {
+    zp_search_opts o = {.max_evals = cap, .seed = st->seed, .nthreads = 1};
     zp_search_state S;
     char err[256];
     zp_search_state_begin(&S, ob, st->sched.lo, st->sched.hi, &o, &res);
@@ -50,7 +52,7 @@ static void polish_alone(const zp_problem *st, const zp_objective *ob, const zp_
     for (int k = 0; k < S.n; k++) {
         step[k] = STEP * (st->sched.hi[k] - st->sched.lo[k]);
     }
-    zp_leg_job job = {.x0 = x0, .step = step, .cap = CAP, .out = &out->rec};
+    zp_leg_job job = {.x0 = x0, .step = step, .cap = cap, .out = &out->rec};
     double t0 = now();
     if (zp_search_state_start(&S, &st->search, err, sizeof err) ||
         zp_leg_batch(&S, how->polish, how, &job, 1, err, sizeof err)) {
@@ -63,18 +65,46 @@ static void polish_alone(const zp_problem *st, const zp_objective *ob, const zp_
     zp_search_state_end(&S);
 }
 
-/* simulations until the history reached t (within SAME), -1: never */
-static long reached(const polished *p, double t) {
+/* the polish's end time when survivable, else INFINITY */
+static double end_time(const polished *p) {
+    return zp_objective_feasible(&p->rec.e) ? p->rec.e.time : INFINITY;
+}
+
+/* simulations until polish p (of how from x0) reached t (within SAME), -1: never. From its
+   history of improvements; where that was cut short (a leg keeps its first
+   ZP_LEG_IMPROVEMENTS) by bisection on the budget, since a polish with a smaller budget runs
+   what a larger one does first */
+static long reached(const zp_problem *st, const zp_objective *ob, const zp_strategy *how,
+                    const double *x0, const polished *p, double t) {
     for (int i = 0; i < p->nhist; i++) {
         if (p->hist[i].time <= t * (1 + SAME)) {
             return p->hist[i].evals;
         }
     }
-    return -1;
+    if (!(end_time(p) <= t * (1 + SAME))) {
+        return -1;
+    }
+    static polished q;
+    /* not yet there at lo simulations, there at hi */
+    long lo = p->nhist > 0 ? p->hist[p->nhist - 1].evals : 0, hi = p->rec.n;
+    while (hi - lo > 1) {
+        long mid = lo + (hi - lo) / 2;
+        polish_alone(st, ob, how, x0, mid, &q);
+        *(end_time(&q) <= t * (1 + SAME) ? &hi : &lo) = mid;
+    }
+    return hi;
 }
 
-/* wall time of a sensitivity run over a plain run's, at parameters f */
-static double sens_cost(const zp_problem *st, const zp_objective *ob, const double *f) {
+/* what a sensitivity run costs at parameters f */
+typedef struct sens_price {
+    long charged;     /* plain runs, as the gradient polish charges it */
+    double evals;     /* its integrator's evaluations over the plain run's */
+    double per_eval;  /* plain rate evaluations per evaluation of its own (the stencils) */
+    double wall;      /* its wall time over a plain run's */
+} sens_price;
+
+static sens_price sens_cost(const zp_problem *st, const zp_objective *ob, const double *f) {
+    sens_price p = {-1, NAN, NAN, NAN};
     zp_schedule sched = zp_objective_schedule(ob, f);
     zp_sim *s = zp_sim_create(st->m, &st->search);
     zp_result *r = calloc(1, sizeof *r);
@@ -89,31 +119,38 @@ static double sens_cost(const zp_problem *st, const zp_objective *ob, const doub
         zp_sens_run(st->m, &st->search, &sched, NULL, sr);
     }
     double t2 = now();
+    if (sr && r && r->rhs_evals > 0 && sr->rhs_evals > 0) {
+        p.charged = 1 + (sr->rates - 1) / r->rhs_evals;
+        p.evals = (double)sr->rhs_evals / r->rhs_evals;
+        p.per_eval = (double)sr->rates / sr->rhs_evals;
+        p.wall = (t2 - t1) / (t1 - t0);
+    }
     free(sr);
     free(r);
     zp_sim_free(s);
-    return (t2 - t1) / (t1 - t0);
+    return p;
 }
 
-/* the polish's end time when survivable, else INFINITY */
-static double end_time(const polished *p) {
-    return zp_objective_feasible(&p->rec.e) ? p->rec.e.time : INFINITY;
-}
-
-/* both polishes from x0: a row of the table */
+/* both polishes from x0: a row of the table. The answer both reach is the worse of their
+   survivable ends (one that ends unsurvivable reaches none); the goal is fewer simulations to
+   it, within SAME */
 static void compare(const zp_problem *st, const zp_objective *ob, const double *x0,
                     const char *start) {
     static polished dfree, grad;
-    polish_alone(st, ob, &zp_strategy_nlopt_cobyla, x0, &dfree);
-    polish_alone(st, ob, &zp_strategy_slsqp, x0, &grad);
-    double best = fmin(end_time(&dfree), end_time(&grad));
-    long nd = reached(&dfree, best), ng = reached(&grad, best);
-    double cost = sens_cost(st, ob, x0);
-    printf("| %s | %d | %s | %.9g | %ld | %.9g (%ld, %.3g s) | %ld | %.9g (%ld, %.3g s) | %.2g | "
-           "%s%.3g |\n",
-           st->sc.name, st->sched.np, start, best, nd, dfree.rec.e.time, dfree.rec.n, dfree.wall,
-           ng, grad.rec.e.time, grad.rec.n, grad.wall, cost, nd > 0 && ng > 0 ? "" : "n/a ",
-           nd > 0 && ng > 0 ? (double)nd / ng : 0.0);
+    polish_alone(st, ob, &zp_strategy_nlopt_cobyla, x0, CAP, &dfree);
+    polish_alone(st, ob, &zp_strategy_slsqp, x0, CAP, &grad);
+    double both = fmax(end_time(&dfree), end_time(&grad));
+    long nd = isfinite(both) ? reached(st, ob, &zp_strategy_nlopt_cobyla, x0, &dfree, both) : -1;
+    long ng = isfinite(both) ? reached(st, ob, &zp_strategy_slsqp, x0, &grad, both) : -1;
+    sens_price c = sens_cost(st, ob, x0);
+    printf("| %s | %d | %s | %.9g%s (%ld, %.3g s) | %.9g%s (%ld, %.3g s) | %.9g | %ld | %ld | "
+           "%s%.3g | %ld = %.2g x %.3g, %.2g |\n",
+           st->sc.name, st->sched.np, start, dfree.rec.e.time,
+           zp_objective_feasible(&dfree.rec.e) ? "" : " (not survivable)", dfree.rec.n,
+           dfree.wall, grad.rec.e.time,
+           zp_objective_feasible(&grad.rec.e) ? "" : " (not survivable)", grad.rec.n, grad.wall,
+           both, nd, ng, nd > 0 && ng > 0 ? "" : "n/a ", nd > 0 && ng > 0 ? (double)nd / ng : 0.0,
+           c.charged, c.evals, c.per_eval, c.wall);
     fflush(stdout);
 }
 
@@ -122,9 +159,10 @@ int main(int argc, char **argv) {
         fputs("usage: polish_compare SCENE.ini...\n", stderr);
         return 2;
     }
-    printf("| scene | parameters | start | answer (s) | COBYLA: sims to it | COBYLA "
-           "ended (sims, wall) | SLSQP: sims to it | SLSQP ended (sims, wall) | sensitivity run "
-           "(plain runs) | sims ratio |\n|---|---|---|---|---|---|---|---|---|---|\n");
+    printf("| scene | parameters | start | COBYLA ended (sims, wall) | SLSQP ended (sims, wall) "
+           "| answer both reach (s) | COBYLA: sims to it | SLSQP: sims to it | ratio | "
+           "sensitivity run (plain runs charged = evaluations x rates per evaluation, wall) |\n"
+           "|---|---|---|---|---|---|---|---|---|---|\n");
     for (int a = 1; a < argc; a++) {
         static zp_problem st; /* large: kept off the stack */
         zp_overrides none = ZP_OVERRIDES_NONE;

@@ -52,6 +52,18 @@ void zp_objective_eval_run(const zp_objective *ob, const zp_model *m, zp_sim *s,
     set_score(ob, e);
 }
 
+double zp_objective_margin_cons(const zp_objective *ob, const zp_eval *e) {
+    return (e->angle - ob->limit) * DEG + SLACK;
+}
+
+double zp_objective_limit_cons(const zp_objective *ob, int i, double v, double *per_unit) {
+    double max = ob->lim.max[i], sign = i == ZP_LIMIT_MIN_ARRIVAL ? -1 : 1;
+    /* zp_limits_excess_of's relative excess of this limit alone */
+    double ex = sign * (v / max - 1);
+    *per_unit = sign * LIMIT_DEG / max;
+    return ((isfinite(ex) ? ex : 1) + LIMIT_SLACK) * LIMIT_DEG;
+}
+
 double zp_objective_scenario_cons(const zp_objective *ob, const zp_eval *e) {
     /* a scenario that stalls breaks the schedule too, more the earlier it stops */
     if (e->failed || e->outcome != ZP_OUTCOME_FINISHED) {

@@ -82,6 +82,12 @@ void zp_objective_eval_run(const zp_objective *ob, const zp_model *m, zp_sim *s,
                            const zp_input *in, zp_eval *e, zp_result *r);
 /* e's constraint as a scenario's: a run that does not finish breaks it too. */
 double zp_objective_scenario_cons(const zp_objective *ob, const zp_eval *e);
+/* The parts of a finished nominal run's constraint, each on cons's scale (deg, <= 0: kept;
+   e->cons is the largest of them), for a polish that holds them apart: the margin alone, and
+   [limits] value i (set in ob->lim) alone at the value v it reached (zp_limits_reached's),
+   with in *per_unit its derivative in v. */
+double zp_objective_margin_cons(const zp_objective *ob, const zp_eval *e);
+double zp_objective_limit_cons(const zp_objective *ob, int i, double v, double *per_unit);
 /* 1 when e finished with the margin kept. */
 int zp_objective_feasible(const zp_eval *e);
 /* 1 when a is better than b: feasible before infeasible, then lower score, then lower obj. */

@@ -1,9 +1,9 @@
 /* A gradient polish (strategies.def): NLopt's SLSQP on the finish time under the survival
-   constraint, both with their exact gradients from a sensitivity run (sens.h) beside the plain
-   run the leg counts at each point. The sensitivity run is charged to the budget as the plain
-   runs its work amounts to, so the search's simulation counts stay comparable with the derivative-free
-   polishes. Only the nominal scene's time and margin have gradients: scenes with [limits],
-   robust scenarios or per-joint death angles are refused. */
+   constraints, the margin and each [limits] value the scene sets, all with their exact
+   gradients from a sensitivity run (sens.h) beside the plain run the leg counts at each point.
+   The sensitivity run is charged to the budget as the plain runs its work amounts to, so the
+   search's simulation counts stay comparable with the derivative-free polishes. Only the
+   nominal scene has gradients: robust scenarios and per-joint death angles are refused. */
 #include <math.h>
 #include <nlopt.h>
 #include <stdio.h>
@@ -18,27 +18,51 @@
    is held this far inside, which costs ~1e-7 of the time; a survivable end is the leg's best */
 #define CONS_SHIFT 1e-3
 
+struct grad_run;
+
+/* NLopt's handle on one [limits] constraint */
+typedef struct limit_cons {
+    struct grad_run *c;
+    int id; /* zp_limit_id */
+} limit_cons;
+
 /* one SLSQP run over a leg; NLopt sees the variables in units of the box (x / scale), where
    its first guess of the curvature (the identity) is the same for every parameter */
 typedef struct grad_run {
     zp_leg *leg;
     nlopt_opt opt;
     double scale[ZP_SCHED_MAX_PARAMS];
-    /* the last point differentiated (NLopt asks for the objective and the constraint apart) */
+    int nlim; /* the [limits] set, each a constraint */
+    limit_cons lim[ZP_LIMIT_COUNT];
+    /* the last point differentiated (NLopt asks for the objective and each constraint apart) */
     int have;
     double key[ZP_SCHED_MAX_PARAMS];
     double dobj[ZP_SCHED_MAX_PARAMS], dcons[ZP_SCHED_MAX_PARAMS];
+    double dlim[ZP_LIMIT_COUNT][ZP_SCHED_MAX_PARAMS]; /* by zp_limit_id */
 } grad_run;
 
-/* design note: a sensitivity run integrates the state with one copy per parameter, at the
-   steps its error test on them all asks for, so it is charged as the integrator's work on
-   1 + np copies: its integrator's rate evaluations over the plain run's at the same point,
-   times 1 + np. Against wall time (bench/polish_compare: a sensitivity run takes 20-60 plain
-   runs' time) this overstates the cost by 1.6-3.2x on seed, multi4 and multi8; docs/search.md
-   gives both counts */
+/* design note: a sensitivity run is charged as the plain runs its work amounts to, counted
+   not estimated: the plain rate evaluations it made (its integrator's, each parameter's
+   stencil, its events') over those of the plain run at the same point, rounded up.
+   Deterministic, so the same bits on any number of threads; bench/polish_compare sets it
+   against the measured wall time (docs/search.md) */
 static long sens_charge(const zp_sens_result *sr, const zp_result *plain) {
     long base = plain->rhs_evals > 0 ? plain->rhs_evals : 1;
-    return 1 + (sr->rhs_evals * (1 + sr->np) - 1) / base;
+    return 1 + (sr->rates - 1) / base;
+}
+
+/* 0 when the sensitivity run sr has a smooth gradient of every constraint the polish holds */
+static int smooth_everywhere(const grad_run *c, const zp_sens_result *sr) {
+    if (!sr->smooth || sr->outcome != ZP_OUTCOME_FINISHED) {
+        return -1;
+    }
+    for (int l = 0; l < c->nlim; l++) {
+        int i = c->lim[l].id;
+        if (!sr->limits.has[i] || sr->limits.why_not[i][0]) {
+            return -1; /* a limit's peak at a tie or a switch: no gradient to follow */
+        }
+    }
+    return 0;
 }
 
 /* the gradients at the leg's point x, whose plain run (leg->r) finished, into c per NLopt
@@ -46,25 +70,38 @@ static long sens_charge(const zp_sens_result *sr, const zp_result *plain) {
 static int differentiate(grad_run *c, const double *x) {
     zp_leg *leg = c->leg;
     const zp_search_state *S = leg->S;
+    const zp_objective *ob = S->ob;
     double f[ZP_SCHED_MAX_PARAMS];
     zp_leg_params(leg, x, f);
-    zp_schedule sched = zp_objective_schedule(S->ob, f);
+    zp_schedule sched = zp_objective_schedule(ob, f);
     zp_sens_result sr;
-    int ok = zp_sens_run(S->ob->m, S->so, &sched, NULL, &sr) == ZP_OK;
-    if (zp_leg_charge(leg, sens_charge(&sr, leg->r)) || !ok || !sr.smooth ||
-        sr.outcome != ZP_OUTCOME_FINISHED) {
+    int ok = zp_sens_run(ob->m, S->so, &sched, c->nlim ? &ob->lim : NULL, &sr) == ZP_OK;
+    if (zp_leg_charge(leg, sens_charge(&sr, leg->r)) || !ok || smooth_everywhere(c, &sr)) {
         return -1;
+    }
+    double per_unit[ZP_LIMIT_COUNT];
+    for (int l = 0; l < c->nlim; l++) {
+        int i = c->lim[l].id;
+        zp_objective_limit_cons(ob, i, sr.limits.value[i], &per_unit[i]);
     }
     for (int j = 0; j < leg->nx; j++) {
         /* d parameter k / d variable j: the identity, or the box's width along the pushes */
-        double dt = 0, dm = 0;
+        double dfk[ZP_SCHED_MAX_PARAMS], dt = 0, dm = 0;
         for (int k = 0; k < S->n; k++) {
-            double dfk = leg->diag ? S->hi[k] - S->lo[k] : k == j;
-            dt += sr.dtime[k] * dfk;
-            dm += sr.dmargin[k] * dfk;
+            dfk[k] = leg->diag ? S->hi[k] - S->lo[k] : k == j;
+            dt += sr.dtime[k] * dfk[k];
+            dm += sr.dmargin[k] * dfk[k];
         }
         c->dobj[j] = dt * c->scale[j];
         c->dcons[j] = dm * DEG * c->scale[j];
+        for (int l = 0; l < c->nlim; l++) {
+            int i = c->lim[l].id;
+            double dv = 0;
+            for (int k = 0; k < S->n; k++) {
+                dv += sr.limits.d[i][k] * dfk[k];
+            }
+            c->dlim[i][j] = dv * per_unit[i] * c->scale[j];
+        }
     }
     return 0;
 }
@@ -84,6 +121,7 @@ static const zp_eval *grad_eval(grad_run *c, const double *u, int grad) {
            t_max, which SLSQP's line search refuses, so its gradient is never followed */
         memset(c->dobj, 0, sizeof c->dobj);
         memset(c->dcons, 0, sizeof c->dcons);
+        memset(c->dlim, 0, sizeof c->dlim);
         if (!e->failed && e->outcome == ZP_OUTCOME_FINISHED && differentiate(c, x)) {
             e = NULL;
         }
@@ -105,20 +143,44 @@ static double grad_obj(unsigned n, const double *u, double *grad, void *data) {
     return e ? e->obj : 3 * c->leg->S->ob->t_max;
 }
 
+/* the survival constraint of a finished run holds the margin alone beside the limits' own;
+   one that did not finish breaks them all (its value, cons, has no gradient) */
 static double grad_cons(unsigned n, const double *u, double *grad, void *data) {
     grad_run *c = data;
     const zp_eval *e = grad_eval(c, u, grad != NULL);
     if (grad) {
         memcpy(grad, c->dcons, sizeof *grad * n);
     }
-    return e ? e->cons + CONS_SHIFT : 360;
+    if (!e) {
+        return 360;
+    }
+    int finished = !e->failed && e->outcome == ZP_OUTCOME_FINISHED;
+    return (finished ? zp_objective_margin_cons(c->leg->S->ob, e) : e->cons) + CONS_SHIFT;
+}
+
+/* [limits] value id's constraint, on the margin's scale (objective.h) */
+static double limit_cons_at(unsigned n, const double *u, double *grad, void *data) {
+    const limit_cons *lc = data;
+    grad_run *c = lc->c;
+    const zp_eval *e = grad_eval(c, u, grad != NULL);
+    if (grad) {
+        memcpy(grad, c->dlim[lc->id], sizeof *grad * n);
+    }
+    if (!e) {
+        return 360;
+    }
+    if (e->failed || e->outcome != ZP_OUTCOME_FINISHED) {
+        return e->cons + CONS_SHIFT;
+    }
+    /* the leg's last run is the one at u: zp_leg_eval just ran it or had it */
+    const zp_objective *ob = c->leg->S->ob;
+    double v[ZP_LIMIT_COUNT], per_unit;
+    zp_limits_reached(ob->m, c->leg->r, v);
+    return zp_objective_limit_cons(ob, lc->id, v[lc->id], &per_unit) + CONS_SHIFT;
 }
 
 /* why the scene's constraints have no gradient here; NULL: they all do */
 static const char *refusal(const zp_objective *ob) {
-    if (zp_limits_any(&ob->lim)) {
-        return "[limits] have no gradients yet";
-    }
     if (zp_objective_nscenarios(ob) > 0) {
         return "robust scenarios have no gradients yet";
     }
@@ -147,6 +209,9 @@ static nlopt_result setup(grad_run *c, nlopt_opt opt) {
     if (st > 0) {
         st = nlopt_add_inequality_constraint(opt, grad_cons, c, 0);
     }
+    for (int l = 0; l < c->nlim && st > 0; l++) {
+        st = nlopt_add_inequality_constraint(opt, limit_cons_at, &c->lim[l], 0);
+    }
     double xtol[ZP_SCHED_MAX_PARAMS];
     for (int j = 0; j < leg->nx; j++) {
         xtol[j] = leg->xtol / c->scale[j];
@@ -172,6 +237,11 @@ static void polish(const void *how, zp_leg *leg) {
         return;
     }
     grad_run c = {.leg = leg};
+    for (int i = 0; i < ZP_LIMIT_COUNT; i++) {
+        if (leg->S->ob->lim.max[i] > 0) {
+            c.lim[c.nlim++] = (limit_cons){&c, i};
+        }
+    }
     double u[ZP_SCHED_MAX_PARAMS], fbest;
     for (int j = 0; j < leg->nx; j++) {
         c.scale[j] = leg->hi[j] > leg->lo[j] ? leg->hi[j] - leg->lo[j] : 1;
@@ -183,7 +253,7 @@ static void polish(const void *how, zp_leg *leg) {
         st = setup(&c, c.opt);
         if (st > 0) {
             st = nlopt_optimize(c.opt, u, &fbest);
-                }
+        }
         nlopt_destroy(c.opt);
     }
     if (st == NLOPT_INVALID_ARGS || st == NLOPT_OUT_OF_MEMORY) {

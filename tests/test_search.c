@@ -176,7 +176,8 @@ int main(void) {
         }
     }
     /* the gradient polish on the seed: it polishes, the same bits on 1 and 2 threads, its
-       answer survivable; and it refuses constraints without gradients, saying which */
+       answer survivable; with a [limits] value the same and the answer keeps it; and it
+       refuses constraints without gradients, saying which */
     {
         zp_scene_load_seed(&sc);
         sc.max_evals = 2000;
@@ -194,8 +195,33 @@ int main(void) {
         CHECK(!memcmp(res.force, res2.force, sizeof res.force));
         CHECK(res.evals == res2.evals && res.best.time == res2.best.time);
         CHECK(res.evals <= sc.max_evals);
+        /* a [limits] value is a constraint of its own: the drive's peak power held to 12 kW
+           (the free answer draws ~18 kW), the same bits on 1 and 2 threads, the answer keeping
+           it when simulated alone 100x tighter, and the limit met, not merely kept away from */
         zp_objective held = ob;
-        held.lim.max[0] = 5;
+        held.lim.max[ZP_LIMIT_DRIVE_POWER] = 12000;
+        search_with(&held, &o, &sc, a, 2, &res);
+        search_with(&held, &o, &sc, a, 1, &res2);
+        CHECK(res.found && zp_objective_feasible(&res.best));
+        CHECK(!memcmp(res.force, res2.force, sizeof res.force));
+        CHECK(res.evals == res2.evals && res.best.time == res2.best.time);
+        zp_sim_opts tight = o;
+        tight.rtol = o.rtol / 100;
+        tight.atol = o.atol / 100;
+        zp_schedule sched = zp_objective_schedule(&held, res.force);
+        zp_input in = {.sched = &sched};
+        zp_sim *s = zp_sim_create(m, &tight);
+        static zp_result r;
+        CHECK(s && zp_sim_run(m, s, &in, &r) == ZP_OK);
+        int which;
+        CHECK(zp_limits_broken(m, &held.lim, held.limit, &r, &which) == ZP_BREAKS_NOTHING);
+        double v[ZP_LIMIT_COUNT];
+        zp_limits_reached(m, &r, v);
+        printf("scan-slsqp under max_drive_power 12000 W: %.9g s, peak power %.6f W, %ld sims\n",
+               res.best.time, v[ZP_LIMIT_DRIVE_POWER], res.evals);
+        CHECK(v[ZP_LIMIT_DRIVE_POWER] > 11990);
+        zp_sim_free(s);
+        /* constraints without gradients are refused, saying which */
         zp_search_opts so = {.algo = a, .max_evals = sc.max_evals, .seed = sc.seed};
         char err[256] = "";
         double lo[ZP_MAX_SECTIONS], hi[ZP_MAX_SECTIONS];
@@ -203,8 +229,9 @@ int main(void) {
             lo[k] = sc.force_min;
             hi[k] = sc.force_max;
         }
-        CHECK(zp_search_run(&held, &o, lo, hi, &so, &res, err, sizeof err) == ZP_ERR_INPUT);
-        CHECK(strstr(err, "[limits]") != NULL);
+        m->phi_max_j[0] = m->phi_max / 2;
+        CHECK(zp_search_run(&ob, &o, lo, hi, &so, &res, err, sizeof err) == ZP_ERR_INPUT);
+        CHECK(strstr(err, "death angles") != NULL);
         zp_model_free(m);
     }
     return CHECK_DONE();

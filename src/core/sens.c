@@ -33,6 +33,7 @@ typedef struct sens_loop {
     int nbreak;
     int roots[ZP_EVENTS_MAX];
     zp_sens_peaks *pk; /* owned; NULL: no [limits] */
+    long seen_steps, seen_evals; /* the method's counts since its last reset, already added */
 } sens_loop;
 
 static void not_smooth(zp_sens_result *r, const char *why) {
@@ -49,6 +50,24 @@ static double stop_after(const sens_loop *L, double t, double t_max) {
         }
     }
     return t_max;
+}
+
+/* the integrator starts afresh at t (its counts from 0); 0 on success */
+static int restart(sens_loop *L, double t) {
+    L->seen_steps = L->seen_evals = 0;
+    return L->meth->reset(L->mwork, t, L->ya, stop_after(L, t, L->c.sim->o.t_max));
+}
+
+/* the steps and rate evaluations the method made since the run last looked, into r: its
+   counts run from its last reset, and a root that does not restart it (a joint's extremum)
+   must not add them again */
+static void count(sens_loop *L, zp_sens_result *r) {
+    long steps = 0, evals = 0;
+    L->meth->stats(L->mwork, &steps, &evals);
+    r->steps += steps - L->seen_steps;
+    r->rhs_evals += evals - L->seen_evals;
+    L->seen_steps = steps;
+    L->seen_evals = evals;
 }
 
 /* dt_e/dp of a root of g = x - level at the state now: -s_x / x' */
@@ -200,7 +219,7 @@ static int start(sens_loop *L, zp_sens_result *r) {
     memcpy(L->ya, s->y, sizeof *s->y * L->c.n);
     s->arc = zp_model_piece(m, s->sec, L->ya[0]);
     zp_sens_peaks_restart(L->pk, 0, L->ya, NULL);
-    return L->meth->reset(L->mwork, 0, L->ya, stop_after(L, 0, s->o.t_max)) ? -1 : 0;
+    return restart(L, 0) ? -1 : 0;
 }
 
 /* what a root at t means; 0 to go on, 1 the run ended, -1 it failed (r's message) */
@@ -247,7 +266,7 @@ static int on_root(sens_loop *L, zp_sens_result *r, double t) {
     }
     s->arc = zp_model_piece(m, s->sec, L->ya[0]);
     zp_sens_peaks_restart(L->pk, t, L->ya, L->dt);
-    return L->meth->reset(L->mwork, t, L->ya, stop_after(L, t, s->o.t_max)) ? -1 : 0;
+    return restart(L, t) ? -1 : 0;
 }
 
 static int loop(sens_loop *L, zp_sens_result *r) {
@@ -258,9 +277,8 @@ static int loop(sens_loop *L, zp_sens_result *r) {
     while (!end) {
         char err[256] = "";
         zp_adv adv = L->meth->advance(L->mwork, &t, L->ya, L->roots, err, sizeof err);
-        long steps = 0, evals = 0;
-        L->meth->stats(L->mwork, &steps, &evals);
-        if (adv == ZP_ADV_FAIL || r->steps + steps > s->o.max_steps || !isfinite(L->ya[0])) {
+        count(L, r);
+        if (adv == ZP_ADV_FAIL || r->steps > s->o.max_steps || !isfinite(L->ya[0])) {
             snprintf(r->message, sizeof r->message, "%s at t = %.9g s",
                      err[0] ? err : adv == ZP_ADV_FAIL ? "the integrator failed"
                                     : isfinite(L->ya[0]) ? "the step budget is spent"
@@ -275,10 +293,6 @@ static int loop(sens_loop *L, zp_sens_result *r) {
             not_smooth(r, "a boundary crossed at a step's end, not at its root");
             adv = ZP_ADV_ROOT;
         }
-        if (adv == ZP_ADV_ROOT || adv == ZP_ADV_STOP) {
-            r->steps += steps;
-            r->rhs_evals += evals;
-        }
         zp_sens_peaks_step(L->pk, t, L->ya);
         if (adv == ZP_ADV_ROOT) {
             end = on_root(L, r, t);
@@ -288,7 +302,7 @@ static int loop(sens_loop *L, zp_sens_result *r) {
         } else if (adv == ZP_ADV_STOP) {
             /* a break of the schedule: the rates jump at a fixed time, the state does not */
             zp_sens_peaks_restart(L->pk, t, L->ya, NULL);
-            end = L->meth->reset(L->mwork, t, L->ya, stop_after(L, t, s->o.t_max)) ? -1 : 0;
+            end = restart(L, t) ? -1 : 0;
         }
     }
     return end;
@@ -355,6 +369,7 @@ zp_status zp_sens_run(const zp_model *m, const zp_sim_opts *o, const zp_schedule
     L.ym = L.u + c->n;
     L.nbreak = zp_drive_breaks(sched, L.breaks, ZP_SCHED_MAX_BREAKS);
     int end = loop(&L, r);
+    r->rates = c->rates;
     if (end >= 0) {
         zp_sens_peaks_result(L.pk, &r->limits);
     }

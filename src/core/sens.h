@@ -27,7 +27,9 @@ typedef struct zp_sens_result {
     int smooth; /* 1: every event met is one whose jump the sensitivities carry exactly; 0: the
                    run met one where the outputs are not differentiable (why_not) */
     char why_not[160];
-    long steps, rhs_evals;
+    long steps, rhs_evals; /* the integrator's, of the augmented rates */
+    long rates; /* plain rate evaluations, the stencils' and the events' included: the run's
+                   work in a plain run's units (a plain run makes its rhs_evals of them) */
     double wall_s;
     char message[256]; /* why the run failed (ZP_ERR_NUMERIC) */
 } zp_sens_result;

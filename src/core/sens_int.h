@@ -17,6 +17,7 @@ typedef struct zp_sens {
     zp_schedule sched;      /* the run's schedule; perturbed in place while differentiating */
     int n, np, naug;
     double *scratch;        /* owned, 4 n: perturbed states and their rates */
+    long rates;             /* plain rate evaluations made so far: the run's work */
 } zp_sens;
 
 /* The plain rates at y as the sensitivity run reads them (the course on the integrator's piece). */

@@ -39,6 +39,7 @@ static double step_along(const zp_sens *c, const double *y, const double *s, int
    x, whose f'' jumps at an arc's tangent point inside the stencil */
 static int rates(zp_sens *c, double t, const double *y, double *f) {
     zp_sim *s = c->sim;
+    c->rates++;
     if (!(s->m->physics & ZP_PHYS_ROLLING)) {
         return c->rhs(t, y, f, s);
     }
@@ -163,6 +164,7 @@ int zp_sens_rhs_histories(zp_sens *c, double t, const double *y, double *v, doub
         return 0;
     }
     zp_loads loads;
+    c->rates++;
     int rc = s->form->rhs(m, s->fwork, &dn, y, f, &loads);
     zp_row_loads(m, &loads, v + m->nlink, v);
     for (int q = 0; q < 2 * m->nlink; q++) {
