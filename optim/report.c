@@ -229,6 +229,26 @@ static void md_speeds(FILE *f, const zp_result *run) {
     }
 }
 
+/* the brake zone: what it took out of the best run and how hard it braked */
+static void md_brake(FILE *f, const zp_answer *a) {
+    const zp_model *m = a->pb->m;
+    const zp_result *run = a->v.run;
+    double v = run->brake_speed_in, g = (m->brake_eddy * v + m->brake_friction) / (m->mtot * m->g);
+    fprintf(f,
+            "## Brake zone\n\nx from %g m to %g m: eddy %g N s/m, friction %g N. Brake work "
+            "(energy taken out): %.0f J.\n\n",
+            m->brake_zone[0], m->brake_zone[1], m->brake_eddy, m->brake_friction,
+            run->w_effect[ZP_EFFECT_W_BRAKE]);
+    if (v > 0) {
+        fprintf(f,
+                "Entering it at %.2f m/s = %.1f km/h, the brake decelerates trolley and rider "
+                "at %.2f g on entering (an eddy brake's force falls as the speed does).\n\n",
+                v, v * KMH, g);
+    } else {
+        fputs("The best run does not enter it from its start.\n\n", f);
+    }
+}
+
 /* the rounded kinks: each arc's peak normal force and felt acceleration in the best run */
 static void md_arcs(FILE *f, const zp_answer *a) {
     const zp_model *m = a->pb->m;
@@ -589,6 +609,9 @@ void zp_report_write_md(FILE *f, const zp_answer *a, const zp_report_place *w) {
     md_margins(f, a);
     md_gains(f, a);
     md_speeds(f, a->v.run);
+    if (a->pb->m->physics & ZP_PHYS_BRAKE) {
+        md_brake(f, a);
+    }
     if (a->pb->m->narc) {
         md_arcs(f, a);
     } else {

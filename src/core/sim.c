@@ -10,6 +10,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "effect_brake.h"
 #include "graze.h"
 #include "sim_events.h"
 #include "sim_peaks.h"
@@ -159,8 +160,19 @@ static double stop_after(const zp_sim *s, double t) {
 
 /* the integrator (re)started at (t, s->y), reading the course piece the trolley is on; the
    peak locator (o.peaks) starts a new interval there */
-static int restart(zp_sim *s, double t) {
+/* 1 when the brake zone acts on the trolley at x moving at xd = x' (m/s): inside it, or on an
+   end moving in (a zone's end may be a section's, whose kink takes the root) */
+static int zone_at(const zp_sim *s, double x, double xd) {
+    return s->m->physics & ZP_PHYS_BRAKE && zp_effect_brake_entered(s->m, x, xd);
+}
+
+static int restart(zp_sim *s, zp_result *r, double t) {
     s->arc = zp_model_piece(s->m, s->sec, s->y[0]);
+    s->zone = zone_at(s, s->y[0], s->y[s->w0 / 2]);
+    if (s->zone && r->brake_speed_in == 0) {
+        zp_chain c = zp_sim_rhs_chain(s, s->y);
+        r->brake_speed_in = hypot(c.v[0], c.v[1]); /* the first time in, at its start or later */
+    }
     if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
         return 1;
     }
@@ -202,13 +214,14 @@ static int start(zp_sim *s, const zp_input *in, zp_result *r, zp_sim_output_curs
     double t = 0;
     s->stuck = 0;
     s->slide = (c.v[0] > 0) - (c.v[0] < 0);
+    s->zone = zone_at(s, c.q[0], c.v[0]);
     s->inconsistent_t = NAN;
     s->inconsistent_steps = 0;
     zp_sim_peaks_drive_start(s, t, s->y, r);
     zp_sim_output_emit(s, in, t, 0, oc);
     zp_sim_output_frames_here(s, in, t, s->y[0], oc);
     int dir;
-    if (m->physics & ZP_PHYS_ROLLING && c.v[0] == 0) {
+    if (m->stick && c.v[0] == 0) {
         int end = zp_sim_events_stick(s, t, r, &dir);
         if (end) {
             return end;
@@ -224,7 +237,7 @@ static int start(zp_sim *s, const zp_input *in, zp_result *r, zp_sim_output_curs
     if (s->o.peaks) {
         zp_sim_peaks_start(s, t);
     }
-    return restart(s, t) ? failed(s, r, t, "the integrator could not start") : 0;
+    return restart(s, r, t) ? failed(s, r, t, "the integrator could not start") : 0;
 }
 
 /* advance: one step of the integrator from *t; 0, or -1 when the run failed there (r's
@@ -356,6 +369,9 @@ static int handle(zp_sim *s, const zp_input *in, zp_result *r, double t, step_en
     } else if (e.ev == ZP_EVENT_TANGENT) {
         zp_sim_events_tangent(s);
         cannot = "the integrator could not restart at an arc's end";
+    } else if (e.ev == ZP_EVENT_ZONE) {
+        zp_sim_events_zone(s);
+        cannot = "the integrator could not restart at the brake zone";
     } else if (e.ev == ZP_EVENT_REST) {
         end = zp_sim_events_rest(s, t, r);
         cannot = "the integrator could not restart at rest";
@@ -368,7 +384,7 @@ static int handle(zp_sim *s, const zp_input *in, zp_result *r, double t, step_en
     if (end) {
         return end;
     }
-    return restart(s, t) ? failed(s, r, t, cannot) : 0;
+    return restart(s, r, t) ? failed(s, r, t, cannot) : 0;
 }
 
 /* the run: its start, then step after step until it ends or fails */

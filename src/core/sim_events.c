@@ -158,6 +158,18 @@ void zp_sim_events_tangent(zp_sim *s) {
     s->form->from_chain(m, &c, wk, s->y);
 }
 
+void zp_sim_events_zone(zp_sim *s) {
+    /* the brake's force starts or stops here: restarted as at an arc's tangent point */
+    const zp_model *m = s->m;
+    zp_chain c = zp_sim_rhs_chain(s, s->y);
+    double edge = m->brake_zone[s->roots[zp_events_zone(m)] ? 0 : 1];
+    c.q[0] = nextafter(edge, c.v[0] < 0 ? -INFINITY : INFINITY);
+    c.q[1] = s->track(m, s->course, s->sec, c.q[0]).f;
+    double wk[ZP_W_MAX];
+    memcpy(wk, s->y + s->w0, sizeof *wk * m->nwork);
+    s->form->from_chain(m, &c, wk, s->y);
+}
+
 int zp_sim_events_rest(zp_sim *s, double t, zp_result *r) {
     /* a release (the hold's margin reached 0): off toward -F_t from rest; a stop: the stick
        rule. Either way the equations change and the integrator restarts */

@@ -27,6 +27,8 @@ int zp_sim_events_kink(zp_sim *s, const zp_input *in, zp_result *r, double t, in
                        zp_sim_output_cursor *oc);
 /* An arc's tangent point: the trolley put one bit past it, the way it moves. */
 void zp_sim_events_tangent(zp_sim *s);
+/* An end of the brake zone: the trolley put one bit past it, the way it moves. */
+void zp_sim_events_zone(zp_sim *s);
 /* The trolley's velocity along the course at 0 at t: held, a release; else a stop, judged by
    the stick rule. */
 int zp_sim_events_rest(zp_sim *s, double t, zp_result *r);

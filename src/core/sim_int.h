@@ -45,6 +45,7 @@ struct zp_sim {
     track_fn track; /* the course the model's course provider lays (zp_model_track) */
     int stuck;      /* rolling resistance: 1 while static friction holds the trolley */
     int slide;      /* +1, -1: the way it slides since the last stop, kink or start */
+    int zone;       /* 1: in the brake zone since the start or its last end crossed */
     double hold_t;  /* s, when that hold began */
     double inconsistent_t, inconsistent_x; /* s, m: the last evaluation since the last step
                                               where friction had no solution (NaN: none) */

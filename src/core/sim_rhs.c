@@ -15,7 +15,7 @@ static zp_track plain_track(const zp_model *m, const zp_course *c, int sec, doub
 /* the drive at time t and state y (the trolley's x and x') on the current section, the course
    there being tr */
 static inline zp_drive_now drive_with(const zp_sim *s, zp_track tr, double t, const double *y) {
-    zp_drive_now dn = {tr, 0, 0, 0, 0};
+    zp_drive_now dn = {tr, 0, 0, 0, 0, s->zone};
     zp_drive_push(s->sched, s->m->drive, t, y[0], y[s->w0 / 2], s->sec, tr.fp, &dn.fx, &dn.fy);
     return dn;
 }
@@ -106,8 +106,8 @@ zp_row zp_sim_rhs_row(zp_sim *s, double t, const double *y) {
 
 void zp_sim_rhs_pick(zp_sim *s, const zp_model *m, zp_rhs_fn *rhs, zp_root_fn *root) {
     s->track = zp_model_track;
-    *rhs = m->physics & ZP_PHYS_ROLLING ? zp_sim_rhs_rolling
+    *rhs = m->stick                     ? zp_sim_rhs_rolling
            : m->course_provider         ? sim_rhs_provided
                                         : zp_sim_rhs;
-    *root = m->physics & ZP_PHYS_ROLLING ? sim_root_rolling : sim_root;
+    *root = m->stick ? sim_root_rolling : sim_root;
 }

@@ -99,6 +99,8 @@ typedef struct zp_result {
     double w_drive, w_damp, e_impulse;  /* J: drive work, damper loss, impulse loss */
     double w_effect[ZP_EFFECT_NWORK];   /* J: work taken out by each effect with a work
                                            integral (ZP_EFFECT_W_*; [physics]) */
+    double brake_speed_in;              /* m/s, the trolley's speed on entering the brake zone
+                                           (the first time; 0: never entered) */
     double constraint_residual;         /* m */
     double drive_peak_power;            /* W, largest |F_applied v| at a step's end */
     double drive_time_at_cap;           /* s, time the drive's power cap bound: the trapezoid
