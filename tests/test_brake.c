@@ -50,6 +50,9 @@ static void check_eddy(int formulation) {
     int n;
     const zp_row *smp = zp_sim_samples(*tu_last_sim(), &n);
     CHECK(n == 4 && r->outcome == ZP_OUTCOME_STALLED);
+    CHECK_REL(r->brake_speed_in, V0, NEGLIGIBLE_REL); /* it coasts to the zone */
+    const zp_arc_peaks *zone = zp_sim_zone_peaks(*tu_last_sim());
+    CHECK(zone->visited && zone->acc_g >= r->brake_g_in && r->brake_g_in > 0);
     for (int k = 0; k < n; k++) {
         double s = braked(times[k]), v = V0 - EDDY / MASS * s;
         double x = times[k] <= ZONE / V0 ? V0 * times[k] : ZONE + s;
@@ -147,6 +150,19 @@ static void test_refused(void) {
     check_refused("[brake]\nstart = 150\neddy = -10\n", "brake", 11, "eddy");
     check_refused("[brake]\nstart = 150\nfriction = -1\n", "brake", 11, "friction");
     check_refused("[brake]\neddy = 10\n", "brake", 9, "start");
+    check_refused("[brake]\nstart = 150\nend = 150\neddy = 10\n", "brake", 11, "end");
+    check_refused("[brake]\nstart = 200\neddy = 10\n", "brake", 10, "start");
+    check_refused("[brake]\nstart = 150\neddy = ten\n", "brake", 11, "eddy");
+}
+
+/* a [brake] whose forces are both 0 is off: no work slot, the plain scene's layout */
+static void test_off(void) {
+    zp_scene sc;
+    zp_model *m = tu_model("[course]\nx_start = 0\nsection = 200 : 5\n[trolley]\nmass = 30\n"
+                           "[body]\nlengths = 1\nmasses = 1\n[brake]\nstart = 150\n",
+                           &sc);
+    CHECK(sc.brake && m->physics == 0 && m->nwork == ZP_W_EFFECTS && !m->stick);
+    zp_model_free(m);
 }
 
 int main(void) {
@@ -155,5 +171,6 @@ int main(void) {
         check_friction(zp_formulation_find(forms[f]));
     }
     test_refused();
+    test_off();
     return CHECK_DONE();
 }

@@ -110,6 +110,10 @@ const zp_crossing *zp_sim_crossings(const zp_sim *s, int *n) {
     return s->cross;
 }
 
+const zp_arc_peaks *zp_sim_zone_peaks(const zp_sim *s) {
+    return &s->zone_peaks;
+}
+
 const zp_arc_peaks *zp_sim_arc_peaks(const zp_sim *s, int *n) {
     *n = s->m->narc;
     return s->arc_peaks;
@@ -158,20 +162,31 @@ static double stop_after(const zp_sim *s, double t) {
     return s->o.t_max;
 }
 
-/* the integrator (re)started at (t, s->y), reading the course piece the trolley is on; the
-   peak locator (o.peaks) starts a new interval there */
 /* 1 when the brake zone acts on the trolley at x moving at xd = x' (m/s): inside it, or on an
    end moving in (a zone's end may be a section's, whose kink takes the root) */
 static int zone_at(const zp_sim *s, double x, double xd) {
     return s->m->physics & ZP_PHYS_BRAKE && zp_effect_brake_entered(s->m, x, xd);
 }
 
+/* the trolley's speed and the felt g as it first enters the brake zone (at its start or later),
+   the brake's force already on */
+static void zone_entered(zp_sim *s, zp_result *r, double t) {
+    zp_row row = zp_sim_rhs_row(s, t, s->y);
+    double joint[ZP_MAX_LINKS], acc_g[ZP_MAX_LINKS];
+    zp_row_loads(s->m, &row.loads, joint, acc_g);
+    r->brake_speed_in = hypot(row.c.v[0], row.c.v[1]);
+    for (int i = 0; i < s->m->nlink; i++) {
+        r->brake_g_in = fmax(r->brake_g_in, acc_g[i]);
+    }
+}
+
+/* the integrator (re)started at (t, s->y), reading the course piece the trolley is on; the
+   peak locator (o.peaks) starts a new interval there */
 static int restart(zp_sim *s, zp_result *r, double t) {
     s->arc = zp_model_piece(s->m, s->sec, s->y[0]);
     s->zone = zone_at(s, s->y[0], s->y[s->w0 / 2]);
     if (s->zone && r->brake_speed_in == 0) {
-        zp_chain c = zp_sim_rhs_chain(s, s->y);
-        r->brake_speed_in = hypot(c.v[0], c.v[1]); /* the first time in, at its start or later */
+        zone_entered(s, r, t);
     }
     if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
         return 1;
@@ -425,6 +440,7 @@ zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     s->peaks = (zp_load_peaks){.normal_min = INFINITY, .normal_max = -INFINITY};
     s->env.n = 0;
     memset(s->arc_peaks, 0, sizeof s->arc_peaks);
+    memset(&s->zone_peaks, 0, sizeof s->zone_peaks);
     zp_status st = run(s, in, r);
     clock_gettime(CLOCK_MONOTONIC, &t1);
     r->wall_s = (t1.tv_sec - t0.tv_sec) + 1e-9 * (t1.tv_nsec - t0.tv_nsec);

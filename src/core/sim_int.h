@@ -52,6 +52,7 @@ struct zp_sim {
     int inconsistent_steps; /* steps in a row that met such an evaluation */
     int w0;         /* index of the first work integral in the state */
     zp_arc_peaks arc_peaks[ZP_MAX_SECTIONS]; /* load peaks on each arc */
+    zp_arc_peaks zone_peaks;                 /* load peaks in the brake zone */
     double drive_t;   /* s, the last accepted step's end, where the drive was last looked at */
     int drive_capped; /* 1: the drive's power cap bound there */
     int arc; /* the piece the integrator reads since its last restart: an effect's (an arc),
