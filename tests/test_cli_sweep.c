@@ -192,7 +192,7 @@ static void brake_eddy(void) {
                  braked_scene("one", eddy[p]), dir);
         CHECK(run(cmd) == 0 && strstr(out, "\"brake_work\": "));
         CHECK(field(csv, p + 1, 1) == atof(eddy[p]));
-        CHECK(field(csv, p + 1, 5) == json_num(out, "time")); /* the same bits */
+        CHECK(field(csv, p + 1, 5) == json_num(out, "time"));       /* the same bits */
         CHECK(p == 0 || field(csv, p + 1, 12) < field(csv, p, 12)); /* arrival km/h */
     }
 }

@@ -288,9 +288,10 @@ int main(void) {
     CHECK(sc.masses[0] == 5 && sc.trolley_mass == 30);
     free(t);
     /* the brake's keys: each point's zone and forces as set, the rest of [brake] untouched */
-    static const char *braked = "[scene]\nname = t\n[course]\nx_start = 0\nsection = 20 : 10 - x/10\n"
-                                "[trolley]\nmass = 30\n[body]\nlengths = 1\nmasses = 5\n"
-                                "[brake]\nstart = 10\nend = 18\neddy = 40\n";
+    static const char *braked =
+        "[scene]\nname = t\n[course]\nx_start = 0\nsection = 20 : 10 - x/10\n"
+        "[trolley]\nmass = 30\n[body]\nlengths = 1\nmasses = 5\n"
+        "[brake]\nstart = 10\nend = 18\neddy = 40\n";
     s = grid("brake.eddy=20:120:6", "brake.start=4:12:3");
     CHECK(s.npoint == 18);
     for (int p = 0; p < s.npoint; p++) {

@@ -106,8 +106,6 @@ zp_row zp_sim_rhs_row(zp_sim *s, double t, const double *y) {
 
 void zp_sim_rhs_pick(zp_sim *s, const zp_model *m, zp_rhs_fn *rhs, zp_root_fn *root) {
     s->track = zp_model_track;
-    *rhs = m->stick                     ? zp_sim_rhs_rolling
-           : m->course_provider         ? sim_rhs_provided
-                                        : zp_sim_rhs;
+    *rhs = m->stick ? zp_sim_rhs_rolling : m->course_provider ? sim_rhs_provided : zp_sim_rhs;
     *root = m->stick ? sim_root_rolling : sim_root;
 }

@@ -1,6 +1,7 @@
 /* The scene reader's rules that join keys of several sections (docs/scene-file.md): search bounds,
-   margin against the death angle, the trajectory's size, drag against the body. A rule is
-   judged only when every key it reads was accepted, so one mistake gives one message. */
+   margin against the death angle, the trajectory's size, drag against the body, the brake zone
+   inside the course. A rule is judged only when every key it reads was accepted, so one
+   mistake gives one message. */
 #include <math.h>
 
 #include "scene_parse.h"
@@ -92,14 +93,12 @@ static void brake_zone(parse_ctx *c, zp_scene *sc) {
         return;
     }
     if (!(sc->brake_start >= lo && sc->brake_start < hi)) {
-        zp_scene_values_bad_key(c, K_BRAKE_START,
-                         "%g is outside the course [%g, %g]",
-                         sc->brake_start, lo, hi);
+        zp_scene_values_bad_key(c, K_BRAKE_START, "%g is outside the course [%g, %g]",
+                                sc->brake_start, lo, hi);
     } else if (!(sc->brake_end > sc->brake_start && sc->brake_end <= hi)) {
         int k = c->key_line[K_BRAKE_END] ? K_BRAKE_END : K_BRAKE_START;
-        zp_scene_values_bad_key(c, k,
-                         "the zone [%g, %g] does not fit the course [%g, %g]", sc->brake_start,
-                         sc->brake_end, lo, hi);
+        zp_scene_values_bad_key(c, k, "the zone [%g, %g] does not fit the course [%g, %g]",
+                                sc->brake_start, sc->brake_end, lo, hi);
     }
 }
 
