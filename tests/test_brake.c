@@ -5,12 +5,14 @@
    stops it at a constant deceleration F/m and holds it there on the flat, never driving it
    back; sent up a slope inside the zone it stops where g sin(a) + F/m has taken its speed
    and stays there iff F >= m g sin(a), else slides back at g sin(a) - F/m (the stick rule
-   of rolling resistance); a scene whose zone or forces do not fit is refused naming the file,
+   of rolling resistance); the finish time's gradient through the zone's ends against
+   differences of whole runs; a scene whose zone or forces do not fit is refused naming the file,
    the line and the key. */
 #include <string.h>
 
 #include "check.h"
 #include "estimate.h"
+#include "sens.h"
 #include "testutil.h"
 
 #define MASS 30.0
@@ -123,6 +125,43 @@ static void check_friction(int formulation) {
     }
 }
 
+/* the finish time of sched on m at options o */
+static double finish_time(const zp_model *m, const zp_sim_opts *o, const zp_schedule *sched) {
+    const zp_result *r = tu_run(m, o, &(zp_input){.sched = sched});
+    CHECK(r->outcome == ZP_OUTCOME_FINISHED);
+    return r->time;
+}
+
+/* the finish time's gradient (sens.c) through an eddy brake zone: its ends' events carry the
+   jump of the rates, against four-point differences of whole runs (h = 1e-3 of the force) */
+static void check_gradient(int formulation) {
+    zp_scene sc;
+    zp_model *m = tu_model("[course]\nx_start = 0\nsection = 20 : 10 - x/5\nsection = 60 : 6\n"
+                           "[trolley]\nmass = 30\n[body]\nlengths = 1\nmasses = 20\n"
+                           "[drive]\nforces = 50, 80\n[brake]\nstart = 30\nend = 50\n"
+                           "eddy = 25\n",
+                           &sc);
+    zp_sim_opts o = tu_opts(&sc, 1e-11);
+    o.atol = 1e-13;
+    o.formulation = formulation;
+    zp_schedule sh = zp_drive_of_scene(&sc);
+    zp_sens_result g;
+    CHECK(zp_sens_run(m, &o, &sh, &g) == ZP_OK && g.smooth);
+    CHECK_REL(g.time, finish_time(m, &o, &sh), 1e-8);
+    for (int k = 0; k < sh.np; k++) {
+        double h = 1e-3 * sh.p[k], T[4];
+        static const double at[4] = {2, 1, -1, -2};
+        for (int j = 0; j < 4; j++) {
+            zp_schedule q = sh;
+            q.p[k] += at[j] * h;
+            T[j] = finish_time(m, &o, &q);
+        }
+        double dT = (-T[0] + 8 * T[1] - 8 * T[2] + T[3]) / (12 * h);
+        CHECK_REL(g.dtime[k], dT, 1e-5);
+    }
+    zp_model_free(m);
+}
+
 /* the scene's text with [brake] keys as given: refused with a message
    naming test.ini, line and key */
 static void check_refused(const char *keys, const char *section, int line, const char *key) {
@@ -169,6 +208,7 @@ int main(void) {
     for (int f = 0; f < 2; f++) {
         check_eddy(zp_formulation_find(forms[f]));
         check_friction(zp_formulation_find(forms[f]));
+        check_gradient(zp_formulation_find(forms[f]));
     }
     test_refused();
     test_off();

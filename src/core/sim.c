@@ -10,7 +10,6 @@
 #include <string.h>
 #include <time.h>
 
-#include "effect_brake.h"
 #include "graze.h"
 #include "sim_events.h"
 #include "sim_peaks.h"
@@ -162,12 +161,6 @@ static double stop_after(const zp_sim *s, double t) {
     return s->o.t_max;
 }
 
-/* 1 when the brake zone acts on the trolley at x moving at xd = x' (m/s): inside it, or on an
-   end moving in (a zone's end may be a section's, whose kink takes the root) */
-static int zone_at(const zp_sim *s, double x, double xd) {
-    return s->m->physics & ZP_PHYS_BRAKE && zp_effect_brake_entered(s->m, x, xd);
-}
-
 /* the trolley's speed and the felt g as it first enters the brake zone (at its start or later),
    the brake's force already on */
 static void zone_entered(zp_sim *s, zp_result *r, double t) {
@@ -184,7 +177,7 @@ static void zone_entered(zp_sim *s, zp_result *r, double t) {
    peak locator (o.peaks) starts a new interval there */
 static int restart(zp_sim *s, zp_result *r, double t) {
     s->arc = zp_model_piece(s->m, s->sec, s->y[0]);
-    s->zone = zone_at(s, s->y[0], s->y[s->w0 / 2]);
+    s->zone = zp_sim_events_zone_at(s, s->y[0], s->y[s->w0 / 2]);
     if (s->zone && r->brake_speed_in == 0) {
         zone_entered(s, r, t);
     }
@@ -229,7 +222,7 @@ static int start(zp_sim *s, const zp_input *in, zp_result *r, zp_sim_output_curs
     double t = 0;
     s->stuck = 0;
     s->slide = (c.v[0] > 0) - (c.v[0] < 0);
-    s->zone = zone_at(s, c.q[0], c.v[0]);
+    s->zone = zp_sim_events_zone_at(s, c.q[0], c.v[0]);
     s->inconsistent_t = NAN;
     s->inconsistent_steps = 0;
     zp_sim_peaks_drive_start(s, t, s->y, r);

@@ -1,11 +1,12 @@
 /* Handling a run's events: the kink impulse with its Zeno and trapped tests, the restart past an
-   arc's tangent point, stops and releases under rolling resistance (the stick rule), and the
+   arc's tangent point or a brake zone's end, stops and releases under rolling resistance (the stick rule), and the
    run's end at a death, the finish or a roll-back. */
 #include "sim_events.h"
 
 #include <math.h>
 #include <string.h>
 
+#include "effect_brake.h"
 #include "friction.h"
 #include "impulse.h"
 #include "sim_peaks.h"
@@ -156,6 +157,10 @@ void zp_sim_events_tangent(zp_sim *s) {
     double wk[ZP_W_MAX];
     memcpy(wk, s->y + s->w0, sizeof *wk * m->nwork);
     s->form->from_chain(m, &c, wk, s->y);
+}
+
+int zp_sim_events_zone_at(const zp_sim *s, double x, double xd) {
+    return s->m->physics & ZP_PHYS_BRAKE && zp_effect_brake_entered(s->m, x, xd);
 }
 
 void zp_sim_events_zone(zp_sim *s) {
