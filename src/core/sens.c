@@ -171,7 +171,7 @@ static int start(sens_loop *L, zp_sens_result *r) {
     s->zone = zp_sim_events_zone_at(s, ch.q[0], ch.v[0]);
     s->inconsistent_t = NAN;
     int dir;
-    if (m->physics & ZP_PHYS_ROLLING && ch.v[0] == 0) {
+    if (m->stick && ch.v[0] == 0) {
         zp_result pr;
         memset(&pr, 0, sizeof pr);
         if (zp_sim_events_stick(s, 0, &pr, &dir)) {
