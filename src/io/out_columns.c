@@ -63,6 +63,15 @@ static int skipped(const zp_model *m, const entry *en, int i) {
     return en->per == PER_WORK && !zp_effect_work_shown(m->physics, i);
 }
 
+/* the indices of en that m shows */
+static int shown_count(const zp_model *m, const entry *en) {
+    int k = 0;
+    for (int i = 0; i < count(m, en->per); i++) {
+        k += !skipped(m, en, i);
+    }
+    return k;
+}
+
 /* quantity q of row r (its derived view v) at index i (link i 0-based, body i, work i) */
 static double value(zp_out_quantity q, const zp_row *r, const zp_row_view *v, int i) {
     switch (q) {
@@ -140,7 +149,7 @@ int zp_out_columns_find(const zp_model *m, zp_out_quantity q, int *n) {
     int j = 0;
     for (int e = 0; e < NENTRY; e++) {
         const entry *en = &table[e];
-        int k = count(m, en->per);
+        int k = shown_count(m, en);
         if (en->n == 1 && en->q[0] == q) {
             *n = k;
             return k ? j : -1;
