@@ -250,7 +250,7 @@ static void md_brake(FILE *f, const zp_answer *a) {
                 "zone.\n\n",
                 v, v * KMH, g, run->brake_g_in, zp->visited ? zp->acc_g : run->brake_g_in);
     } else {
-        fputs("The best run does not enter it from its start.\n\n", f);
+        fputs("The best run never enters it.\n\n", f);
     }
 }
 
