@@ -2,10 +2,10 @@
  * At an event time t_e where g(y(t_e, p)) = 0 the time moves by dt_e/dp = -(g_y s) / (g_y f-); a
  * state jump y+ = h(y-) carries the sensitivities as s+ = h_y (s- + f- dt_e/dp) - f+ dt_e/dp
  * (saltation; h the identity where only the rates jump: a section switch on a rounded course,
- * an arc's tangent point, a brake zone's end). Kinks and the finish are roots in x, g_y s = s_x; a death is the
- * root |phi_i| = phi_max, dt_e/dp = -s_phi / phi'. The margin is the largest |phi_i| over the
- * run: at an interior maximum phi' = 0 and its derivative is sgn(phi) s_phi there; at an event
- * (a kink, the end) the time's shift adds sgn(phi) phi' dt_e/dp. */
+ * an arc's tangent point, a brake zone's end). Kinks and the finish are roots in x, g_y s = s_x; a
+ * death is the root |phi_i| = phi_max, dt_e/dp = -s_phi / phi'. The margin is the largest |phi_i|
+ * over the run: at an interior maximum phi' = 0 and its derivative is sgn(phi) s_phi there; at an
+ * event (a kink, the end) the time's shift adds sgn(phi) phi' dt_e/dp. */
 #include "sens.h"
 
 #include <math.h>

@@ -1,6 +1,6 @@
 /* Handling a run's events: the kink impulse with its Zeno and trapped tests, the restart past an
-   arc's tangent point or a brake zone's end, stops and releases under rolling resistance (the stick rule), and the
-   run's end at a death, the finish or a roll-back. */
+   arc's tangent point or a brake zone's end, stops and releases under rolling resistance or a
+   friction brake (the stick rule), and the run's end at a death, the finish or a roll-back. */
 #include "sim_events.h"
 
 #include <math.h>
