@@ -120,8 +120,9 @@ ZIPOPT_API const char *zipopt_run_stall(const zipopt_run *r);
 /* A number of the result by name (zipopt_run_key lists them); NaN for an unknown name:
    time (s), x (m), speed (m/s), died_link (1-based, 0 when alive), kinks (crossings),
    e_initial, e_final, w_drive, w_damp, e_impulse, energy_residual (J: e_final - e_initial -
-   w_drive + w_damp + e_impulse + w_drag + w_fric), constraint_residual (m), steps, rhs_evals,
-   wall_s (s), w_drag, w_fric (J: drag and friction work taken out, 0 without [physics]),
+   w_drive + w_damp + e_impulse + w_drag + w_fric + w_brake), constraint_residual (m), steps,
+   rhs_evals, wall_s (s), w_drag, w_fric (J: drag and friction work taken out, 0 without
+   [physics]), w_brake (J: the brake zone's work taken out, 0 without [brake]),
    peak_g (g: the largest felt acceleration of any link's centre), peak_joint_force (N),
    max_kink_dv (m/s), arrival_kmh (km/h; NaN when the trolley did not arrive), normal_min,
    normal_max (N: the course's force on the trolley, + pushing up), rejected_steps,

@@ -277,6 +277,31 @@ static void md_speeds(FILE *f, const zp_result *run) {
     }
 }
 
+/* the brake zone: what it took out of the best run and how hard it braked: the deceleration
+   of trolley and rider its force gives on entering, and the felt g (any link's centre) there
+   and at its peak in the zone */
+static void md_brake(FILE *f, const zp_answer *a) {
+    const zp_model *m = a->pb->m;
+    const zp_result *run = a->v.run;
+    const zp_arc_peaks *zp = zp_sim_zone_peaks(a->best);
+    double v = run->brake_speed_in, g = (m->brake_eddy * v + m->brake_friction) / (m->mtot * m->g);
+    fprintf(f,
+            "## Brake zone\n\nx from %g m to %g m: eddy %g N s/m, friction %g N. Brake work "
+            "(energy taken out): %.0f J.\n\n",
+            m->brake_zone[0], m->brake_zone[1], m->brake_eddy, m->brake_friction,
+            run->w_effect[ZP_EFFECT_W_BRAKE]);
+    if (v > 0) {
+        fprintf(f,
+                "Entering it at %.2f m/s = %.1f km/h, the brake decelerates trolley and rider "
+                "at %.2f g (an eddy brake's force falls as the speed does). Braking g (felt "
+                "acceleration of any link's centre): %.2f g on entering, peak %.2f g in the "
+                "zone.\n\n",
+                v, v * KMH, g, run->brake_g_in, zp->visited ? zp->acc_g : run->brake_g_in);
+    } else {
+        fputs("The best run never enters it.\n\n", f);
+    }
+}
+
 /* the rounded kinks: each arc's peak normal force and felt acceleration in the best run */
 static void md_arcs(FILE *f, const zp_answer *a) {
     const zp_model *m = a->pb->m;
@@ -641,6 +666,9 @@ void zp_report_write_md(FILE *f, const zp_answer *a, const zp_report_place *w) {
     md_gains(f, a);
     md_drive(f, a);
     md_speeds(f, a->v.run);
+    if (a->pb->m->physics & ZP_PHYS_BRAKE) {
+        md_brake(f, a);
+    }
     if (a->pb->m->narc) {
         md_arcs(f, a);
     } else {

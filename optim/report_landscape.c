@@ -75,6 +75,17 @@ static void write_slice(FILE *f, const zp_report_landscape *L) {
     }
 }
 
+/* 1 when some constant push finished or died: the figure's time panel has a point */
+static int any_timed(const zp_report_landscape *L) {
+    for (int k = 0; k < L->plan->push.n; k++) {
+        const zp_landscape_point *pt = &L->pt[k];
+        if (!pt->failed && (pt->outcome == ZP_OUTCOME_FINISHED || pt->outcome == ZP_OUTCOME_DIED)) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
 int zp_report_landscape_files(zp_tx *t, const zp_report_landscape *L, char *err, size_t errlen) {
     const char *names[] = {"landscape.csv", "landscape.gp", "landscape_slice.csv",
                            "landscape_slice.gp"};
@@ -85,7 +96,7 @@ int zp_report_landscape_files(zp_tx *t, const zp_report_landscape *L, char *err,
         return -1;
     }
     write_pushes(f[0], L);
-    zp_fig_landscape_1d(f[1], L->scene, &p->push);
+    zp_fig_landscape_1d(f[1], L->scene, &p->push, any_timed(L));
     if (slice) {
         write_slice(f[2], L);
         zp_fig_landscape_2d(f[3], L->scene, L->base, p->si, p->sj, &p->rx, &p->ry, L->base_name);

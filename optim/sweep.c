@@ -68,6 +68,10 @@ static const struct {
     {"physics", "wind", ZP_VARY_VALUE, "m/s"},
     {"physics", "rolling", ZP_VARY_VALUE, ""},
     {"physics", "kink_radius", ZP_VARY_VALUE, "m"},
+    {"brake", "start", ZP_VARY_VALUE, "m"},
+    {"brake", "end", ZP_VARY_VALUE, "m"},
+    {"brake", "eddy", ZP_VARY_VALUE, "N s/m"},
+    {"brake", "friction", ZP_VARY_VALUE, "N"},
 };
 #define NKEYS ((int)(sizeof vary_keys / sizeof vary_keys[0]))
 

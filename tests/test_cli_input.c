@@ -72,16 +72,19 @@ static const char *valid = "[course]\n"           /* 1 */
                            "lengths = 1\n"        /* 7 */
                            "masses = 2\n";        /* 8 */
 
-/* each case: the valid scene with one line replaced, and where the message must point */
+/* each case: the valid scene with one line replaced, and where the message must point: line
+   `at` (0: the line replaced) */
 static const struct {
-    int line;
+    int line, at;
     const char *repl, *want; /* want: "[section] key" text after FILE:LINE: */
 } cases[] = {
-    {5, "mass = -10", "[trolley] mass:"},
-    {7, "lenghts = 1", "[body] lenghts: unknown key; did you mean `lengths`?"},
-    {8, "masses = 2, 3", "[body] masses:"},
-    {3, "section = 10 : x/5 + y", "[course] section:"},
-    {3, "section = 10 : x/5\nsection = 20 : x + 1", "[course] section:"}, /* discontinuous */
+    {5, 0, "mass = -10", "[trolley] mass:"},
+    {7, 0, "lenghts = 1", "[body] lenghts: unknown key; did you mean `lengths`?"},
+    {8, 0, "masses = 2, 3", "[body] masses:"},
+    {3, 0, "section = 10 : x/5 + y", "[course] section:"},
+    {3, 4, "section = 10 : x/5\nsection = 20 : x + 1", "[course] section:"}, /* discontinuous */
+    {8, 11, "masses = 2\n[brake]\nstart = 5\nend = 5\neddy = 10", "[brake] end:"}, /* empty zone */
+    {8, 11, "masses = 2\n[brake]\nstart = 5\neddy = -10", "[brake] eddy:"},
 };
 
 static void scene_with(int line, const char *repl, char *text, size_t cap) {
@@ -105,7 +108,8 @@ static void test_bad_scenes(void) {
         scene_with(cases[i].line, cases[i].repl, text, sizeof text);
         snprintf(scene, sizeof scene, "%s/bad%zu.ini", tmp, i);
         write_file(scene, text);
-        snprintf(want, sizeof want, "%s:%d: %s", scene, cases[i].line + (i == 4), cases[i].want);
+        snprintf(want, sizeof want, "%s:%d: %s", scene, cases[i].at ? cases[i].at : cases[i].line,
+                 cases[i].want);
         for (size_t k = 0; k < sizeof commands / sizeof *commands; k++) {
             /* one output folder never made, one made empty: both must stay as they were */
             char fresh[1024], empty[1024], args[4096];

@@ -1,9 +1,10 @@
 /* `zipopt sweep` as a user runs it (docs/commands.md): bad --vary exits 2 writing nothing; each
    point is the same run as `zipopt simulate` (or the search `zipopt SCENE`) of a scene file written
-   here by hand with that value; a study killed mid-way and resumed gives the same sweep.csv
-   as one never stopped; a checkpoint of another study is refused; the schedule that survives
-   across the grid survives each point's scene written by hand, run by `zipopt simulate`, also
-   where the corners do not bound survival (the points an answer breaks searched again). */
+   here by hand with that value (a brake's eddy varied slowing the arrival point by point); a
+   study killed mid-way and resumed gives the same sweep.csv as one never stopped; a
+   checkpoint of another study is refused; the schedule that survives across the grid survives
+   each point's scene written by hand, run by `zipopt simulate`, also where the corners do not
+   bound survival (the points an answer breaks searched again). */
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -157,6 +158,43 @@ static void same_as_simulate(void) {
     CHECK(tu_exists(path));
     snprintf(path, sizeof path, "%s/sim/checkpoint.csv", dir);
     CHECK(!tu_exists(path)); /* sweep.csv holds every row */
+}
+
+/* the small scene with a brake zone over its second section of eddy coefficient eddy */
+static const char *braked_scene(const char *name, const char *eddy) {
+    static char path[2][512];
+    static int k;
+    char *p = path[k++ % 2];
+    snprintf(p, 512, "%s/%s.ini", dir, name);
+    FILE *f = fopen(p, "w");
+    fprintf(f,
+            "[scene]\nname = braked\n[course]\nx_start = 0\nsection = 20 : -x/10 + 10\n"
+            "section = 40 : -x/5 + 12\n[trolley]\nmass = 30\n[body]\nlengths = 1, 0.5\n"
+            "masses = 5, 2\ndamping = 2\n[drive]\nforces = 90, 120\n[brake]\nstart = 20\n"
+            "eddy = %s\n",
+            eddy);
+    fclose(f);
+    return p;
+}
+
+/* --vary brake.eddy: each point `zipopt simulate` of the scene written with that eddy, the
+   arrival slower the stronger the brake */
+static void brake_eddy(void) {
+    char cmd[2048], csv[8192], path[600];
+    snprintf(cmd, sizeof cmd, "%s sweep %s --vary brake.eddy=20:120:6 --run simulate --out %s/brk",
+             ZP_EXE, braked_scene("brk", "40"), dir);
+    CHECK(run(cmd) == 0);
+    snprintf(path, sizeof path, "%s/brk/sweep.csv", dir);
+    CHECK(tu_slurp(path, csv, sizeof csv) > 0 && strstr(csv, "point,brake.eddy,"));
+    const char *eddy[] = {"20", "40", "60", "80", "100", "120"};
+    for (int p = 0; p < 6; p++) {
+        snprintf(cmd, sizeof cmd, "%s simulate %s --json --out %s/one", ZP_EXE,
+                 braked_scene("one", eddy[p]), dir);
+        CHECK(run(cmd) == 0 && strstr(out, "\"brake_work\": "));
+        CHECK(field(csv, p + 1, 1) == atof(eddy[p]));
+        CHECK(field(csv, p + 1, 5) == json_num(out, "time"));       /* the same bits */
+        CHECK(p == 0 || field(csv, p + 1, 12) < field(csv, p, 12)); /* arrival km/h */
+    }
 }
 
 /* a search point is `zipopt SCENE` of the scene written with its value */
@@ -399,6 +437,7 @@ int main(void) {
     bad_files();
     fifo_checkpoint();
     same_as_simulate();
+    brake_eddy();
     same_as_search();
     grid_schedule();
     grid_rounds();

@@ -41,10 +41,20 @@ static void test_table(void) {
         }
     }
     CHECK(zp_effect_nwork(0) == ZP_W_EFFECTS && ZP_W_MAX == ZP_W_EFFECTS + ZP_EFFECT_NWORK);
-    CHECK(zp_effect_nwork(ZP_PHYS_DRAG) == ZP_W_MAX &&
-          zp_effect_nwork(ZP_PHYS_ROLLING) == ZP_W_MAX);
+    /* the [physics] effects' slots together (the layout their answers were made with); the
+       brake's own only with it, the slots before it held at 0 */
+    const int physics_slots = ZP_W_EFFECTS + ZP_EFFECT_W_FRICTION + 1;
+    CHECK(zp_effect_nwork(ZP_PHYS_DRAG) == physics_slots &&
+          zp_effect_nwork(ZP_PHYS_ROLLING) == physics_slots);
     CHECK(zp_effect_nwork(ZP_PHYS_ROUNDED) == ZP_W_EFFECTS);
-    CHECK(!zp_effect_work_shown(0) && zp_effect_work_shown(ZP_PHYS_ROUNDED));
+    CHECK(zp_effect_nwork(ZP_PHYS_BRAKE) == ZP_W_MAX &&
+          zp_effect_nwork(ZP_PHYS_BRAKE | ZP_PHYS_DRAG) == ZP_W_MAX);
+    for (int k = 0; k < ZP_EFFECT_NWORK; k++) {
+        int brake = k == ZP_EFFECT_W_BRAKE;
+        CHECK(!zp_effect_work_shown(0, k));
+        CHECK(zp_effect_work_shown(ZP_PHYS_ROUNDED, k) == !brake);
+        CHECK(zp_effect_work_shown(ZP_PHYS_BRAKE, k) == brake);
+    }
 }
 
 static void test_drag(void) {
@@ -58,7 +68,7 @@ static void test_drag(void) {
     zp_scene sc;
     zp_model *m = tu_model(ini, &sc);
     CHECK(m->physics == ZP_PHYS_DRAG && zp_effect_with_forces(m->physics) == ZP_PHYS_DRAG);
-    CHECK(m->nwork == ZP_W_MAX && m->course_provider == NULL);
+    CHECK(m->nwork == ZP_W_EFFECTS + ZP_EFFECT_W_FRICTION + 1 && m->course_provider == NULL);
     for (int trial = 0; trial < 100; trial++) {
         zp_effect_motion mo = {.nbody = 4};
         for (int b = 0; b < 4; b++) {

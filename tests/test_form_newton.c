@@ -97,7 +97,7 @@ static void check_random_states(const zp_model *m, int drive_tangent) {
     for (int trial = 0; trial < 50; trial++) {
         /* the course (10 sin(x/5): slopes up to 2) under a random x */
         double x = uniform(0, 140);
-        zp_drive_now dn = {zp_course_eval(m->course, 0, x), 0, 0, 0, 0};
+        zp_drive_now dn = {zp_course_eval(m->course, 0, x), 0, 0, 0, 0, 0};
         double F = uniform(-200, 400), norm = sqrt(1 + dn.tr.fp * dn.tr.fp);
         dn.fx = drive_tangent ? F / norm : F;
         dn.fy = drive_tangent ? F * dn.tr.fp / norm : 0;

@@ -1,6 +1,7 @@
 /* out_columns.c: each quantity is found where trajectory.csv's header (docs/commands.md "Files")
    names it, as many columns as it spans, and its value in the CSV's unit is the row's own
-   field, bit for bit: what simulate --json's samples read from the same table. */
+   field, bit for bit: what simulate --json's samples read from the same table; the effects'
+   work columns those the scene shows (a brake's alone, or after drag's and friction's). */
 #include <string.h>
 
 #include "check.h"
@@ -74,5 +75,22 @@ int main(void) {
     check_table(one);
     check_values(one);
     zp_model_free(one);
+    /* the effects' work: a brake's column alone, or after the [physics] ones */
+    static const char *const braked[] = {"", "[physics]\ndrag_area = 0.1, 0.2\n"};
+    for (int k = 0; k < 2; k++) {
+        char ini[512];
+        snprintf(ini, sizeof ini,
+                 "[scene]\nname = braked\n[course]\nx_start = 0\nsection = 100 : 10 - x/10\n"
+                 "[trolley]\nmass = 20\n[body]\nlengths = 2\nmasses = 8\n[drive]\n"
+                 "forces = 0\n[brake]\nstart = 50\neddy = 10\n%s",
+                 braked[k]);
+        zp_model *m = tu_model(ini, &sc);
+        zp_out_column col[ZP_OUT_COLUMNS_MAX];
+        zp_out_columns(m, col);
+        check_table(m);
+        check_values(m);
+        check_found(m, col, ZP_OUT_Q_WORK, k ? "drag_work" : "brake_work", k ? 3 : 1);
+        zp_model_free(m);
+    }
     return CHECK_DONE();
 }

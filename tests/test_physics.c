@@ -266,7 +266,7 @@ static void check_random_states(void) {
     for (int trial = 0; trial < 200; trial++) {
         double x = uniform(0, 140);
         zp_drive_now dn = {zp_course_eval(m->course, 0, x), uniform(-200, 400), 0,
-                           trial % 10 == 0, 0};
+                           trial % 10 == 0, 0, 0};
         zp_chain c = {{0}, {0}};
         c.q[0] = x;
         c.q[1] = dn.tr.f;
@@ -292,7 +292,7 @@ static void check_random_states(void) {
                 CHECK_NEAR(thdd, yd[0][nq + 1 + i], 1e-9 * G);
             }
             int w0 = f == 2 ? 2 * np : 2 * nq;
-            for (int k = ZP_W_EFFECTS; k < ZP_W_MAX; k++) {
+            for (int k = ZP_W_EFFECTS; k < m->nwork; k++) {
                 CHECK_NEAR(yd[f][w0 + k], yd[0][2 * nq + k], 1e-9 * W * 20);
             }
             CHECK_NEAR(ld[f].normal, ld[0].normal, 1e-9 * W);

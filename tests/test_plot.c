@@ -3,7 +3,8 @@
    ends one link length apart); a missing gnuplot still leaves data and scripts, a failing one
    leaves nothing; bad options exit 2 with nothing written; the landscape's points are what
    independent single runs give, and on the seed show docs/model.md's non-monotone survival: a
-   constant push of 5 N dies, 10 finishes, 15 dies, 20 and 25 finish, 30 dies. */
+   constant push of 5 N dies, 10 finishes, 15 dies, 20 and 25 finish, 30 dies; a landscape
+   where nothing finishes or dies still draws. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -557,6 +558,33 @@ static void test_landscape(void) {
     zp_model_free(m);
 }
 
+/* a landscape where no push finishes or dies (every one rolls back up a slope it cannot
+   climb) still draws its figures: the time panel has no point to scale its axis by */
+static void test_landscape_all_stalled(void) {
+    char scene[1024], args[4096], dir[1024];
+    snprintf(scene, sizeof scene, "%s/uphill.ini", tmp);
+    FILE *f = fopen(scene, "w");
+    CHECK(f != NULL);
+    if (!f) {
+        return;
+    }
+    fputs("[scene]\nname = uphill\n[course]\nx_start = 0\nsection = 20 : x/2\n"
+          "section = 40 : y0 + (x - 20)/2\n[trolley]\nmass = 10\n[body]\nlengths = 1\n"
+          "masses = 5\n[drive]\nforces = 10, 10\nmin = 0\nmax = 20\n",
+          f);
+    fclose(f);
+    snprintf(dir, sizeof dir, "%s/land_stalled", tmp);
+    snprintf(args, sizeof args,
+             "landscape '%s' --force-range 0:20:3 --slice 1,2 --range 0:20:3 --out '%s'",
+             scene, dir);
+    CHECK(run("ZIPOPT_TEST=1", args) == 0);
+    check_png(dir, "landscape.png", 0, 0);
+    check_png(dir, "landscape_slice.png", 0, 0);
+    char *csv = slurp(dir, "landscape.csv");
+    CHECK(csv && !strstr(csv, ",finished,") && !strstr(csv, ",died,") && strstr(csv, ",stalled,"));
+    free(csv);
+}
+
 /* scripts drawn several to a gnuplot process: each in a fresh session (nothing one leaves
    behind reaches the next), and a failing one named with its own message */
 static void test_gnuplot_groups(void) {
@@ -613,6 +641,7 @@ int main(void) {
     test_cli();
     test_landscape_plan();
     test_landscape();
+    test_landscape_all_stalled();
     test_gnuplot_groups();
     char cmd[1100];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp);

@@ -287,6 +287,27 @@ int main(void) {
     CHECK(t && load(t, &sc) == ZP_OK && sc.death_angle == 90 && sc.t_max == 33);
     CHECK(sc.masses[0] == 5 && sc.trolley_mass == 30);
     free(t);
+    /* the brake's keys: each point's zone and forces as set, the rest of [brake] untouched */
+    static const char *braked =
+        "[scene]\nname = t\n[course]\nx_start = 0\nsection = 20 : 10 - x/10\n"
+        "[trolley]\nmass = 30\n[body]\nlengths = 1\nmasses = 5\n"
+        "[brake]\nstart = 10\nend = 18\neddy = 40\n";
+    s = grid("brake.eddy=20:120:6", "brake.start=4:12:3");
+    CHECK(s.npoint == 18);
+    for (int p = 0; p < s.npoint; p++) {
+        t = zp_sweep_point_text(&s, braked, p, why, sizeof why);
+        CHECK(t && load(t, &sc) == ZP_OK && sc.brake);
+        CHECK(sc.brake_eddy == zp_sweep_value(&s, 0, p) && sc.brake_eddy == 20 + 20 * (p % 6));
+        CHECK(sc.brake_start == zp_sweep_value(&s, 1, p) && sc.brake_end == 18);
+        CHECK(sc.brake_friction == 0);
+        free(t);
+    }
+    s = grid("brake.friction=0:300:4", "brake.end=15:20:2");
+    t = zp_sweep_point_text(&s, braked, 7, why, sizeof why);
+    CHECK(t && load(t, &sc) == ZP_OK && sc.brake_friction == 300 && sc.brake_end == 20);
+    CHECK(sc.brake_start == 10 && sc.brake_eddy == 40);
+    free(t);
+
     /* a list key that is absent has nothing to scale */
     s = grid("drive.forces=1:2:2", NULL);
     t = zp_sweep_point_text(&s, "[drive]\nmin = 0\n", 0, why, sizeof why);

@@ -14,12 +14,28 @@ static const zp_effect *const registry[ZP_EFFECT_COUNT] = {
 
 /* each effect's work integral (ZP_EFFECT_W_*), -1 for none */
 #define ZP_WORK(name) ZP_EFFECT_W_##name
+#define ZP_OWN_WORK(name) ZP_EFFECT_W_##name
 #define ZP_NO_WORK -1
 static const int work_of[ZP_EFFECT_COUNT] = {
 #define ZP_EFFECT(id, obj, work) [ZP_EFFECT_##id] = work,
 #include "effects.def"
 #undef ZP_EFFECT
 };
+#undef ZP_OWN_WORK
+#undef ZP_WORK
+#undef ZP_NO_WORK
+
+/* 1 for an effect whose work slot the state holds only when it is on (ZP_OWN_WORK), 0 for the
+   [physics] effects */
+#define ZP_WORK(name) 0
+#define ZP_OWN_WORK(name) 1
+#define ZP_NO_WORK 0
+static const int own_slot[ZP_EFFECT_COUNT] = {
+#define ZP_EFFECT(id, obj, work) [ZP_EFFECT_##id] = work,
+#include "effects.def"
+#undef ZP_EFFECT
+};
+#undef ZP_OWN_WORK
 #undef ZP_WORK
 #undef ZP_NO_WORK
 
@@ -37,17 +53,37 @@ int zp_effect_build(zp_model *m, const zp_scene *sc, zp_diag *d) {
     return ok ? physics : -1;
 }
 
-int zp_effect_nwork(unsigned physics) {
+/* the ZP_PHYS_* bits of the [physics] effects (those without a slot of their own; a cable is
+   a course, not [physics]) */
+static unsigned physics_group(void) {
+    unsigned bits = 0;
     for (int e = 0; e < ZP_EFFECT_COUNT; e++) {
-        if (physics >> e & 1 && work_of[e] >= 0) {
-            return ZP_W_MAX;
-        }
+        bits |= own_slot[e] ? 0 : 1u << e;
     }
-    return ZP_W_EFFECTS;
+    return bits & ~(unsigned)ZP_PHYS_CABLE;
 }
 
-int zp_effect_work_shown(unsigned physics) {
-    return (physics & ~(unsigned)ZP_PHYS_CABLE) != 0; /* a cable is a course, not [physics] */
+int zp_effect_nwork(unsigned physics) {
+    int shared = 0, n = ZP_W_EFFECTS; /* the [physics] slots, listed first */
+    for (int e = 0; e < ZP_EFFECT_COUNT; e++) {
+        shared += work_of[e] >= 0 && !own_slot[e];
+    }
+    for (int e = 0; e < ZP_EFFECT_COUNT; e++) {
+        if (physics >> e & 1 && work_of[e] >= 0) {
+            int end = ZP_W_EFFECTS + (own_slot[e] ? work_of[e] + 1 : shared);
+            n = end > n ? end : n;
+        }
+    }
+    return n;
+}
+
+int zp_effect_work_shown(unsigned physics, int k) {
+    for (int e = 0; e < ZP_EFFECT_COUNT; e++) {
+        if (work_of[e] == k) {
+            return own_slot[e] ? (int)(physics >> e & 1) : (physics & physics_group()) != 0;
+        }
+    }
+    return 0;
 }
 
 const zp_effect_work *zp_effect_work_names(int k) {

@@ -11,6 +11,7 @@
 #ifndef ZP_EFFECT_H
 #define ZP_EFFECT_H
 
+#include <math.h>
 #include <stdio.h>
 
 #include "course.h"
@@ -35,6 +36,7 @@ enum {
 
 /* ZP_EFFECT_W_<NAME>: the work integrals of the effects that have one, in effects.def order */
 #define ZP_WORK(name) ZP_EFFECT_W_##name,
+#define ZP_OWN_WORK(name) ZP_EFFECT_W_##name,
 #define ZP_NO_WORK
 enum {
 #define ZP_EFFECT(id, obj, work) work
@@ -42,23 +44,47 @@ enum {
 #undef ZP_EFFECT
     ZP_EFFECT_NWORK
 };
+#undef ZP_OWN_WORK
 #undef ZP_WORK
 #undef ZP_NO_WORK
 
 /* The work integrals at the state's end (zp_model.nwork of them): the drive's work and the
-   dampers' loss, then, when any effect with a work integral is on, every such effect's (J,
-   taken out) at ZP_W_EFFECTS + ZP_EFFECT_W_*. Design note: all of them or none, the layout
-   the answers were made with: the integrator's error norm counts every entry, so one slot
-   more or fewer moves every step. */
+   dampers' loss, then the effects' (J, taken out) at ZP_W_EFFECTS + ZP_EFFECT_W_*: the
+   [physics] effects' slots (ZP_WORK) all of them when any of those effects is on, and an
+   effect with a slot of its own (ZP_OWN_WORK) up to its own slot when it is on, the slots
+   before it held at 0 so that every slot keeps its index. Design note: the integrator's error
+   norm counts every entry, so one slot more or fewer moves every step: a scene keeps the
+   layout its answers were made with whatever effects are added after it. */
 enum { ZP_W_DRIVE, ZP_W_DAMP, ZP_W_EFFECTS, ZP_W_MAX = ZP_W_EFFECTS + ZP_EFFECT_NWORK };
 
 /* The bodies' motion as an effect's forces read it: body 0 the trolley, body i link i's centre
-   of mass, world frame. */
+   of mass, world frame; the trolley's place on the course. */
 typedef struct zp_effect_motion {
+    int zone;                      /* 1: the trolley is in the brake zone (zp_drive_now) */
+    double tangent[2];             /* the course's unit tangent (1, f')/|.| under the trolley
+                                      (set in the brake zone only) */
+    int slide;                     /* the way the trolley slides along the course, which a
+                                      friction opposes: +1, -1, or 0 at rest (held, or not yet
+                                      judged by the stick rule: no friction force then) */
     int nbody;                     /* links + 1 */
     double x;                      /* m, the trolley's x (a conservative force's position) */
     double v[ZP_MAX_LINKS + 1][2]; /* m/s */
 } zp_effect_motion;
+
+/* The trolley's place in mo from the simulator's view (zp_drive_now): zone as it says; slide
+   0 held, else the way it keeps from one stop to the next (so a friction never flips inside a
+   step), else the sign of x' (xd); the tangent of the course of slope fp, set only in the
+   zone, the one place an effect reads it (a scene without one pays nothing for it). */
+static inline void zp_effect_place(zp_effect_motion *mo, int zone, int hold, int slide, double xd,
+                                   double fp) {
+    mo->zone = zone;
+    mo->slide = hold ? 0 : slide ? slide : (xd > 0) - (xd < 0);
+    if (zone) {
+        double sq = sqrt(1 + fp * fp);
+        mo->tangent[0] = 1 / sq;
+        mo->tangent[1] = fp / sq;
+    }
+}
 
 /* A course provider: the course an effect lays under the trolley, read in pieces. f'' may jump
    where the piece changes, so the simulator reads one piece between restarts, and a step that
@@ -107,9 +133,11 @@ const zp_effect *zp_effect_get(int id);
 int zp_effect_build(zp_model *m, const zp_scene *sc, zp_diag *d);
 /* How many work integrals the state ends with when the effects physics are on. */
 int zp_effect_nwork(unsigned physics);
-/* 1 when the outputs show the effects' work: a scene naming any effect shows every effect's
-   (0 for those off), so its columns do not hang on which effects it turns on. */
-int zp_effect_work_shown(unsigned physics);
+/* 1 when the outputs show work integral k (ZP_EFFECT_W_*) with the effects physics on: a
+   scene naming any [physics] effect shows every [physics] effect's (0 for those off), so its
+   columns do not hang on which of them it turns on; an effect with a slot of its own shows
+   it when on. */
+int zp_effect_work_shown(unsigned physics, int k);
 /* The names of work integral k (ZP_EFFECT_W_*). */
 const zp_effect_work *zp_effect_work_names(int k);
 /* The bits of the effects in physics that give forces on the bodies. */

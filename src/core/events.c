@@ -5,11 +5,15 @@
 #include <math.h>
 
 int zp_events_count(const zp_model *m) {
+    return zp_events_zone(m) + (m->physics & ZP_PHYS_BRAKE ? 2 : 0);
+}
+
+int zp_events_zone(const zp_model *m) {
     return zp_events_tangent(m) + (m->physics & ZP_PHYS_ROUNDED ? 2 : 0);
 }
 
 int zp_events_tangent(const zp_model *m) {
-    return 2 + 2 * m->nlink + (m->physics & ZP_PHYS_ROLLING ? 1 : 0);
+    return 2 + 2 * m->nlink + (m->stick ? 1 : 0);
 }
 
 int zp_events_rest(const zp_model *m) {
@@ -23,11 +27,14 @@ void zp_events_directions(const zp_model *m, int *dir) {
         dir[ZP_ROOT_DEATH + i] = -1;
         dir[ZP_ROOT_DEATH + m->nlink + i] = 0;
     }
-    if (m->physics & ZP_PHYS_ROLLING) {
+    if (m->stick) {
         dir[zp_events_rest(m)] = 0;
     }
     if (m->physics & ZP_PHYS_ROUNDED) {
         dir[zp_events_tangent(m)] = dir[zp_events_tangent(m) + 1] = 0;
+    }
+    if (m->physics & ZP_PHYS_BRAKE) {
+        dir[zp_events_zone(m)] = dir[zp_events_zone(m) + 1] = 0;
     }
 }
 
@@ -52,6 +59,11 @@ void zp_events_eval(const zp_model *m, int sec, double x, const double *phi, con
         g[it] = lo >= 0 ? x - m->arc[lo].x2 : 1;
         g[it + 1] = hi >= 0 ? x - m->arc[hi].x1 : 1;
     }
+    /* the brake zone's ends, where its force starts and stops */
+    if (m->physics & ZP_PHYS_BRAKE) {
+        g[zp_events_zone(m)] = x - m->brake_zone[0];
+        g[zp_events_zone(m) + 1] = x - m->brake_zone[1];
+    }
 }
 
 zp_event zp_events_classify(const zp_model *m, int sec, const int *roots, int *link, int *to) {
@@ -75,12 +87,15 @@ zp_event zp_events_classify(const zp_model *m, int sec, const int *roots, int *l
         *to = sec - 1;
         return ZP_EVENT_KINK;
     }
-    if (m->physics & ZP_PHYS_ROLLING && roots[zp_events_rest(m)]) {
+    if (m->stick && roots[zp_events_rest(m)]) {
         return ZP_EVENT_REST;
     }
     if (m->physics & ZP_PHYS_ROUNDED &&
         (roots[zp_events_tangent(m)] || roots[zp_events_tangent(m) + 1])) {
         return ZP_EVENT_TANGENT;
+    }
+    if (m->physics & ZP_PHYS_BRAKE && (roots[zp_events_zone(m)] || roots[zp_events_zone(m) + 1])) {
+        return ZP_EVENT_ZONE;
     }
     return ZP_EVENT_NONE;
 }

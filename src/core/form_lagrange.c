@@ -174,10 +174,12 @@ static inline void forces_start(lagrange_forces *ef, const zp_drive_now *dn) {
    angle rates): each
    body's in ef->fd, their sum added to ef->f, each effect's power in ef->pw, and their
    generalized forces J^T f in Q (x, then each angle) */
-static inline void effect_terms(const zp_model *m, double x, double fp, double xd,
+static inline void effect_terms(const zp_model *m, const zp_drive_now *dn, double x, double xd,
                                 const double *s, const double *c, const double *thd, int n,
                                 lagrange_forces *ef, double *Q) {
+    double fp = dn->tr.fp;
     zp_effect_motion mo;
+    zp_effect_place(&mo, dn->zone, dn->hold, dn->slide, xd, fp);
     mo.nbody = n + 1;
     mo.x = x;
     double px = xd, py = fp * xd; /* velocity of the joint above the current link */
@@ -272,8 +274,8 @@ store_rates(const zp_model *m, const zp_drive_now *dn, int work, int forces, con
     }
     ydot[2 * nq + ZP_W_DRIVE] = (dn->fx + dn->fy * fp) * xd;
     ydot[2 * nq + ZP_W_DAMP] = pdamp;
-    for (int k = 0; work && k < ZP_EFFECT_NWORK; k++) {
-        ydot[2 * nq + ZP_W_EFFECTS + k] = ef->pw[k];
+    for (int k = ZP_W_EFFECTS; work && k < m->nwork; k++) {
+        ydot[2 * nq + k] = ef->pw[k - ZP_W_EFFECTS];
     }
     if (loads) {
         lagrange_loads(m, dn, ef->f[0], ef->f[1], forces ? ef->fd : NULL, y, qdd, s, c, loads);
@@ -314,12 +316,12 @@ static int lagrange_rhs_general(const zp_model *m, void *work, const zp_drive_no
         pdamp += m->damp[j] * wj[j] * wj[j];
     }
     gsl_vector_set(lw->R, 0, Rx);
-    int forces = zp_effect_with_forces(m->physics) != 0, rolling = m->physics & ZP_PHYS_ROLLING;
+    int forces = zp_effect_with_forces(m->physics) != 0, rolling = m->stick;
     lagrange_forces ef;
     forces_start(&ef, dn);
     if (forces) {
         double Q[ZP_MAX_LINKS + 1];
-        effect_terms(m, y[0], fp, xd, s, c, y + nq + 1, n, &ef, Q);
+        effect_terms(m, dn, y[0], xd, s, c, y + nq + 1, n, &ef, Q);
         for (int i = 0; i < nq; i++) {
             gsl_vector_set(lw->R, i, gsl_vector_get(lw->R, i) + Q[i]);
         }
@@ -438,7 +440,7 @@ __attribute__((always_inline)) static inline int fast_rhs(const zp_model *m,
     forces_start(&ef, dn);
     if (forces) {
         double Q[ZP_MAX_LINKS + 1];
-        effect_terms(m, y[0], fp, xd, s, c, y + nq + 1, n, &ef, Q);
+        effect_terms(m, dn, y[0], xd, s, c, y + nq + 1, n, &ef, Q);
         for (int i = 0; i < nq; i++) {
             R[i] += Q[i];
         }
@@ -491,7 +493,7 @@ static fast_fn fast_for(const zp_model *m) {
                                                   FAST_ROW(4), FAST_ROW(5), FAST_ROW(6),
                                                   FAST_ROW(7), FAST_ROW(8)};
     int forces = zp_effect_with_forces(m->physics) != 0;
-    return by_n[m->nlink - 1][forces + 2 * ((m->physics & ZP_PHYS_ROLLING) != 0)];
+    return by_n[m->nlink - 1][forces + 2 * (m->stick != 0)];
 }
 
 static int lagrange_rhs(const zp_model *m, void *work, const zp_drive_now *dn, const double *y,

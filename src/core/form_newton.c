@@ -78,7 +78,7 @@ static void *newton_create(const zp_model *m) {
     w->z = gsl_vector_alloc(nz);
     w->perm = gsl_permutation_alloc(nz);
     w->forces = zp_effect_with_forces(m->physics) != 0;
-    w->rolling = (m->physics & ZP_PHYS_ROLLING) != 0;
+    w->rolling = m->stick != 0;
     if (!w->A || !w->lu || !w->b || !w->z || !w->perm) {
         newton_free(w);
         return NULL;
@@ -165,9 +165,11 @@ static double newton_residual(const zp_model *m, const zp_track *tr, const doubl
 }
 
 /* the effects' forces on every body added to its momentum rows, each effect's power into pw */
-static void newton_effects(const zp_model *m, const double *y, gsl_vector *b, double *pw) {
+static void newton_effects(const zp_model *m, const zp_drive_now *dn, const double *y,
+                           gsl_vector *b, double *pw) {
     int np = npos(m);
     zp_effect_motion mo;
+    zp_effect_place(&mo, dn->zone, dn->hold, dn->slide, y[np], dn->tr.fp);
     mo.nbody = m->nlink + 1;
     mo.x = y[0];
     for (int bd = 0; bd <= m->nlink; bd++) {
@@ -365,8 +367,8 @@ static int newton_store(const zp_model *m, const zp_drive_now *dn, int work, con
         /* friction's power is the course force's tangential part's (0 to round-off without it) */
         double sq = sqrt(1 + fp * fp), ft = (z[rn] + fp * z[rn + 1]) / sq; /* tangential */
         pw[ZP_EFFECT_W_FRICTION] = -ft * (xd + fp * y[np + 1]) / sq;
-        for (int k = 0; k < ZP_EFFECT_NWORK; k++) {
-            ydot[2 * np + ZP_W_EFFECTS + k] = pw[k];
+        for (int k = ZP_W_EFFECTS; k < m->nwork; k++) {
+            ydot[2 * np + k] = pw[k - ZP_W_EFFECTS];
         }
     }
     if (loads) {
@@ -391,7 +393,7 @@ static int newton_rhs(const zp_model *m, void *work, const zp_drive_now *dn, con
     newton_work *nw = work;
     double pdamp = newton_assemble(m, nw, dn, y), pw[ZP_EFFECT_NWORK] = {0};
     if (nw->forces) {
-        newton_effects(m, y, nw->b, pw);
+        newton_effects(m, dn, y, nw->b, pw);
     }
     int sign = 0;
     if (nw->rolling) {

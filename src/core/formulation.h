@@ -36,6 +36,9 @@ typedef struct zp_drive_now {
                        friction opposes whatever the sign of x' (the simulator keeps it from
                        one stop to the next, so friction never flips inside a step); 0: the
                        sign of x', or from rest of the frictionless x'' */
+    int zone;       /* with a brake zone, 1: the trolley is in it. The simulator keeps it from
+                       one end of the zone to the next, so the brake's force never switches
+                       inside a step (the ends are events) */
 } zp_drive_now;
 
 /* Loads, computed on request (outputs, not the hot path). */

@@ -12,7 +12,8 @@ int zp_friction_hold_at(const zp_model *m, const zp_formulation *form, void *fwo
     if (rc == 0) {
         h->tangential = ld.hold;
         h->normal = ld.normal;
-        h->margin = m->mu * fabs(ld.normal) - fabs(ld.hold);
+        /* rolling resistance's grip and the friction brake's hold together */
+        h->margin = m->mu * fabs(ld.normal) + (dn.zone ? m->brake_friction : 0) - fabs(ld.hold);
     }
     return rc;
 }

@@ -1,5 +1,6 @@
-/* docs/model.md's stick rule for rolling resistance ([physics] rolling): at rest the tangential
-   force F_t that keeps the trolley still, against mu |N|; a held trolley's chain settling. */
+/* docs/model.md's stick rule for rolling resistance ([physics] rolling) and the friction brake
+   ([brake] friction): at rest the tangential force F_t that keeps the trolley still, against
+   mu |N| plus the brake's grip in its zone; a held trolley's chain settling. */
 #ifndef ZP_FRICTION_H
 #define ZP_FRICTION_H
 
@@ -12,7 +13,7 @@
 typedef struct zp_friction_hold {
     double tangential; /* N, F_t: the course's force along (1, f')/|.| keeping x'' = 0 */
     double normal;     /* N, the normal force then */
-    double margin;     /* N, mu |N| - |F_t|: >= 0 sticks, < 0 moves off toward -F_t */
+    double margin;     /* N, mu |N| + grip - |F_t|: >= 0 sticks, < 0 moves off toward -F_t */
 } zp_friction_hold;
 
 /* The hold at state y of formulation form (its workspace fwork; ydot: n scratch rates), dn the

@@ -304,6 +304,8 @@ zp_model *zp_model_build(const zp_scene *sc, zp_diag *d) {
         return NULL;
     }
     m->nwork = zp_effect_nwork(m->physics);
+    m->stick =
+        (m->physics & ZP_PHYS_ROLLING) || (m->physics & ZP_PHYS_BRAKE && m->brake_friction > 0);
     m->course_provider = zp_effect_course_of(m->physics);
     return m;
 }

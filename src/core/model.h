@@ -62,6 +62,12 @@ typedef struct zp_model {
     double drag_k[ZP_MAX_LINKS + 1]; /* kg/m, rho CdA / 2 of the trolley, then each link */
     double wind;                     /* m/s, +x */
     double mu;                       /* rolling-resistance coefficient */
+    double brake_zone[2];            /* m, [brake] start and end: the zone's x */
+    double brake_eddy;               /* N s/m, eddy-current brake: force eddy * speed */
+    double brake_friction;           /* N, friction brake: force against the motion */
+    int stick;                       /* 1: a friction holds the trolley at rest (rolling
+                                        resistance, a friction brake): the stick rule's
+                                        stops, holds and releases are simulated */
     int nwork;                       /* work integrals at the state's end (ZP_W_*) */
     int narc;
     zp_arc arc[ZP_MAX_SECTIONS];

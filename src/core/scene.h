@@ -133,6 +133,13 @@ typedef struct zp_scene {
     double cable_weight;         /* N/m, per unstretched metre */
     double cable_ea;             /* N, axial stiffness; 0: inextensible */
 
+    /* [brake] (docs/scene-file.md, docs/model.md "A brake zone"): off when absent */
+    int brake;             /* 1 when the scene has a [brake] section */
+    double brake_start;    /* m, the zone's first x */
+    double brake_end;      /* m, its last x (default: the course's end) */
+    double brake_eddy;     /* N s/m, force eddy * speed against the motion */
+    double brake_friction; /* N, force of this size against the motion; holds at rest */
+
     /* bit k set: the file gave key k of the reader's table (io/scene_keys.def), so `check` can
        show every key zipopt added itself */
     unsigned long long given[ZP_SCENE_GIVEN_WORDS];

@@ -2,10 +2,10 @@
  * At an event time t_e where g(y(t_e, p)) = 0 the time moves by dt_e/dp = -(g_y s) / (g_y f-); a
  * state jump y+ = h(y-) carries the sensitivities as s+ = h_y (s- + f- dt_e/dp) - f+ dt_e/dp
  * (saltation; h the identity where only the rates jump: a section switch on a rounded course,
- * an arc's tangent point). Kinks and the finish are roots in x, g_y s = s_x; a death is the
- * root |phi_i| = phi_max, dt_e/dp = -s_phi / phi'. The margin is the largest |phi_i| over the
- * run: at an interior maximum phi' = 0 and its derivative is sgn(phi) s_phi there; at an event
- * (a kink, the end) the time's shift adds sgn(phi) phi' dt_e/dp. */
+ * an arc's tangent point, a brake zone's end). Kinks and the finish are roots in x, g_y s = s_x; a
+ * death is the root |phi_i| = phi_max, dt_e/dp = -s_phi / phi'. The margin is the largest |phi_i|
+ * over the run: at an interior maximum phi' = 0 and its derivative is sgn(phi) s_phi there; at an
+ * event (a kink, the end) the time's shift adds sgn(phi) phi' dt_e/dp. */
 #include "sens.h"
 
 #include <math.h>
@@ -107,10 +107,10 @@ static void margin_all(sens_loop *L, zp_sens_result *r, double t, int shifted) {
 
 /* the sensitivities across an event at t that moves the state by map (NULL: the identity)
    into section `to`: s+ = h_y (s- + f- dt) - f+ dt */
-static int jump(sens_loop *L, double t, int to, int is_kink) {
+static int jump(sens_loop *L, double t, int to, zp_event ev) {
     zp_sens *c = &L->c;
     zp_sim *s = c->sim;
-    int n = c->n;
+    int n = c->n, is_kink = ev == ZP_EVENT_KINK;
     if (zp_sens_rhs_rates(c, t, L->ya, L->fm)) {
         return 1;
     }
@@ -123,12 +123,13 @@ static int jump(sens_loop *L, double t, int to, int is_kink) {
     } else {
         memcpy(s->y, L->ya, sizeof *s->y * n);
         memcpy(s->roots, L->roots, sizeof *s->roots * s->nroot);
-        zp_sim_events_tangent(s);
+        ev == ZP_EVENT_ZONE ? zp_sim_events_zone(s) : zp_sim_events_tangent(s);
         memcpy(L->ya, s->y, sizeof *s->y * n);
     }
     int from = s->sec;
     s->sec = to;
     s->arc = zp_model_piece(s->m, s->sec, L->ya[0]);
+    s->zone = zp_sim_events_zone_at(s, L->ya[0], L->ya[s->w0 / 2]);
     int rc = zp_sens_rhs_rates(c, t, L->ya, L->fp);
     for (int k = 0; k < c->np && !rc; k++) {
         double *sk = L->ya + n * (k + 1);
@@ -190,9 +191,10 @@ static int start(sens_loop *L, zp_sens_result *r) {
     zp_sim_rhs_drive_start(s, s->y);
     s->stuck = 0;
     s->slide = (ch.v[0] > 0) - (ch.v[0] < 0);
+    s->zone = zp_sim_events_zone_at(s, ch.q[0], ch.v[0]);
     s->inconsistent_t = NAN;
     int dir;
-    if (m->physics & ZP_PHYS_ROLLING && ch.v[0] == 0) {
+    if (m->stick && ch.v[0] == 0) {
         zp_result pr;
         memset(&pr, 0, sizeof pr);
         if (zp_sim_events_stick(s, 0, &pr, &dir)) {
@@ -254,7 +256,7 @@ static int on_root(sens_loop *L, zp_sens_result *r, double t) {
         zp_sens_peaks_kink(L->pk, t, L->ya, to, L->dt);
         r->ncross++;
     }
-    if (jump(L, t, kink ? to : s->sec, kink)) {
+    if (jump(L, t, kink ? to : s->sec, ev)) {
         snprintf(r->message, sizeof r->message, "the mass matrix is not positive definite");
         return -1;
     }

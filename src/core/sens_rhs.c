@@ -35,12 +35,13 @@ static double step_along(const zp_sens *c, const double *y, const double *s, int
 }
 
 /* the plain rates at y, the course read on the piece the integrator restarted on (continued
-   past its ends) as without rolling resistance: with it the plain run reads the piece under
-   x, whose f'' jumps at an arc's tangent point inside the stencil */
+   past its ends) as without a friction (rolling resistance, a friction brake): with one the
+   plain run reads the piece under x, whose f'' jumps at an arc's tangent point inside the
+   stencil */
 static int rates(zp_sens *c, double t, const double *y, double *f) {
     zp_sim *s = c->sim;
     c->rates++;
-    if (!(s->m->physics & ZP_PHYS_ROLLING)) {
+    if (!s->m->stick) {
         return c->rhs(t, y, f, s);
     }
     zp_track tr = zp_model_track_piece(s->m, s->course, s->sec, s->arc, y[0]);

@@ -110,6 +110,10 @@ const zp_crossing *zp_sim_crossings(const zp_sim *s, int *n) {
     return s->cross;
 }
 
+const zp_arc_peaks *zp_sim_zone_peaks(const zp_sim *s) {
+    return &s->zone_peaks;
+}
+
 const zp_arc_peaks *zp_sim_arc_peaks(const zp_sim *s, int *n) {
     *n = s->m->narc;
     return s->arc_peaks;
@@ -158,10 +162,26 @@ static double stop_after(const zp_sim *s, double t) {
     return s->o.t_max;
 }
 
+/* the trolley's speed and the felt g as it first enters the brake zone (at its start or later),
+   the brake's force already on */
+static void zone_entered(zp_sim *s, zp_result *r, double t) {
+    zp_row row = zp_sim_rhs_row(s, t, s->y);
+    double joint[ZP_MAX_LINKS], acc_g[ZP_MAX_LINKS];
+    zp_row_loads(s->m, &row.loads, joint, acc_g);
+    r->brake_speed_in = hypot(row.c.v[0], row.c.v[1]);
+    for (int i = 0; i < s->m->nlink; i++) {
+        r->brake_g_in = fmax(r->brake_g_in, acc_g[i]);
+    }
+}
+
 /* the integrator (re)started at (t, s->y), reading the course piece the trolley is on; the
    peak locator (o.peaks) starts a new interval there */
-static int restart(zp_sim *s, double t) {
+static int restart(zp_sim *s, zp_result *r, double t) {
     s->arc = zp_model_piece(s->m, s->sec, s->y[0]);
+    s->zone = zp_sim_events_zone_at(s, s->y[0], s->y[s->w0 / 2]);
+    if (s->zone && r->brake_speed_in == 0) {
+        zone_entered(s, r, t);
+    }
     if (s->meth->reset(s->mwork, t, s->y, stop_after(s, t))) {
         return 1;
     }
@@ -204,13 +224,14 @@ static int start(zp_sim *s, const zp_input *in, zp_result *r, zp_sim_output_curs
     double t = 0;
     s->stuck = 0;
     s->slide = (c.v[0] > 0) - (c.v[0] < 0);
+    s->zone = zp_sim_events_zone_at(s, c.q[0], c.v[0]);
     s->inconsistent_t = NAN;
     s->inconsistent_steps = 0;
     zp_sim_peaks_drive_start(s, t, s->y, r);
     zp_sim_output_emit(s, in, t, 0, oc);
     zp_sim_output_frames_here(s, in, t, s->y[0], oc);
     int dir;
-    if (m->physics & ZP_PHYS_ROLLING && c.v[0] == 0) {
+    if (m->stick && c.v[0] == 0) {
         int end = zp_sim_events_stick(s, t, r, &dir);
         if (end) {
             return end;
@@ -226,7 +247,7 @@ static int start(zp_sim *s, const zp_input *in, zp_result *r, zp_sim_output_curs
     if (s->o.peaks) {
         zp_sim_peaks_start(s, t);
     }
-    return restart(s, t) ? failed(s, r, t, "the integrator could not start") : 0;
+    return restart(s, r, t) ? failed(s, r, t, "the integrator could not start") : 0;
 }
 
 /* advance: one step of the integrator from *t; 0, or -1 when the run failed there (r's
@@ -358,6 +379,9 @@ static int handle(zp_sim *s, const zp_input *in, zp_result *r, double t, step_en
     } else if (e.ev == ZP_EVENT_TANGENT) {
         zp_sim_events_tangent(s);
         cannot = "the integrator could not restart at an arc's end";
+    } else if (e.ev == ZP_EVENT_ZONE) {
+        zp_sim_events_zone(s);
+        cannot = "the integrator could not restart at the brake zone";
     } else if (e.ev == ZP_EVENT_REST) {
         end = zp_sim_events_rest(s, t, r);
         cannot = "the integrator could not restart at rest";
@@ -370,7 +394,7 @@ static int handle(zp_sim *s, const zp_input *in, zp_result *r, double t, step_en
     if (end) {
         return end;
     }
-    return restart(s, t) ? failed(s, r, t, cannot) : 0;
+    return restart(s, r, t) ? failed(s, r, t, cannot) : 0;
 }
 
 /* the run: its start, then step after step until it ends or fails */
@@ -411,6 +435,7 @@ zp_status zp_sim_run(const zp_model *m, zp_sim *s, const zp_input *in, zp_result
     s->peaks = (zp_load_peaks){.normal_min = INFINITY, .normal_max = -INFINITY};
     s->env.n = 0;
     memset(s->arc_peaks, 0, sizeof s->arc_peaks);
+    memset(&s->zone_peaks, 0, sizeof s->zone_peaks);
     zp_status st = run(s, in, r);
     clock_gettime(CLOCK_MONOTONIC, &t1);
     r->wall_s = (t1.tv_sec - t0.tv_sec) + 1e-9 * (t1.tv_nsec - t0.tv_nsec);

@@ -23,6 +23,8 @@ const zp_row *zp_sim_frames(const zp_sim *s, int *n);
 const zp_crossing *zp_sim_crossings(const zp_sim *s, int *n);
 /* Load peaks of the last run on each arc of a model with rounded kinks (zp_model.narc). */
 const zp_arc_peaks *zp_sim_arc_peaks(const zp_sim *s, int *n);
+/* The load peaks in the brake zone of the last run (visited 0: never in it or no brake). */
+const zp_arc_peaks *zp_sim_zone_peaks(const zp_sim *s);
 
 const char *zp_sim_outcome_name(zp_outcome o);
 const char *zp_sim_stall_name(zp_stall s);

@@ -1,11 +1,12 @@
 /* Handling a run's events: the kink impulse with its Zeno and trapped tests, the restart past an
-   arc's tangent point, stops and releases under rolling resistance (the stick rule), and the
-   run's end at a death, the finish or a roll-back. */
+   arc's tangent point or a brake zone's end, stops and releases under rolling resistance or a
+   friction brake (the stick rule), and the run's end at a death, the finish or a roll-back. */
 #include "sim_events.h"
 
 #include <math.h>
 #include <string.h>
 
+#include "effect_brake.h"
 #include "friction.h"
 #include "impulse.h"
 #include "sim_peaks.h"
@@ -152,6 +153,22 @@ void zp_sim_events_tangent(zp_sim *s) {
     int it = zp_events_tangent(m), lo = m->arc_at[s->sec], hi = m->arc_at[s->sec + 1];
     c.q[0] =
         nextafter(s->roots[it] ? m->arc[lo].x2 : m->arc[hi].x1, c.v[0] < 0 ? -INFINITY : INFINITY);
+    c.q[1] = s->track(m, s->course, s->sec, c.q[0]).f;
+    double wk[ZP_W_MAX];
+    memcpy(wk, s->y + s->w0, sizeof *wk * m->nwork);
+    s->form->from_chain(m, &c, wk, s->y);
+}
+
+int zp_sim_events_zone_at(const zp_sim *s, double x, double xd) {
+    return s->m->physics & ZP_PHYS_BRAKE && zp_effect_brake_entered(s->m, x, xd);
+}
+
+void zp_sim_events_zone(zp_sim *s) {
+    /* the brake's force starts or stops here: restarted as at an arc's tangent point */
+    const zp_model *m = s->m;
+    zp_chain c = zp_sim_rhs_chain(s, s->y);
+    double edge = m->brake_zone[s->roots[zp_events_zone(m)] ? 0 : 1];
+    c.q[0] = nextafter(edge, c.v[0] < 0 ? -INFINITY : INFINITY);
     c.q[1] = s->track(m, s->course, s->sec, c.q[0]).f;
     double wk[ZP_W_MAX];
     memcpy(wk, s->y + s->w0, sizeof *wk * m->nwork);

@@ -45,6 +45,7 @@ struct zp_sim {
     track_fn track; /* the course the model's course provider lays (zp_model_track) */
     int stuck;      /* rolling resistance: 1 while static friction holds the trolley */
     int slide;      /* +1, -1: the way it slides since the last stop, kink or start */
+    int zone;       /* 1: in the brake zone since the start or its last end crossed */
     double hold_t;  /* s, when that hold began */
     double inconsistent_t, inconsistent_x; /* s, m: the last evaluation since the last step
                                               where friction had no solution (NaN: none) */
@@ -53,6 +54,7 @@ struct zp_sim {
     int wd;         /* index of the drive's own states (m->ndrive, after the work integrals:
                        formulation.h) */
     zp_arc_peaks arc_peaks[ZP_MAX_SECTIONS]; /* load peaks on each arc */
+    zp_arc_peaks zone_peaks;                 /* load peaks in the brake zone */
     double drive_t;   /* s, the last accepted step's end, where the drive was last looked at */
     int drive_capped; /* 1: the drive's power cap bound there */
     int arc; /* the piece the integrator reads since its last restart: an effect's (an arc),

@@ -6,6 +6,18 @@
 
 #include "sim_rhs.h"
 
+/* the loads of row r taken into the peaks of a stretch of the course (an arc, the brake zone) */
+static void stretch_peaks(const zp_model *m, const zp_row *r, zp_arc_peaks *ap) {
+    double joint[ZP_MAX_LINKS], acc_g[ZP_MAX_LINKS];
+    zp_row_loads(m, &r->loads, joint, acc_g);
+    ap->normal_min = ap->visited ? fmin(ap->normal_min, r->loads.normal) : r->loads.normal;
+    ap->normal_max = ap->visited ? fmax(ap->normal_max, r->loads.normal) : r->loads.normal;
+    for (int i = 0; i < m->nlink; i++) {
+        ap->acc_g = fmax(ap->acc_g, acc_g[i]);
+    }
+    ap->visited = 1;
+}
+
 zp_row zp_sim_peaks_row(zp_sim *s, double t, const double *y) {
     zp_row r = zp_sim_rhs_row(s, t, y);
     zp_load_peaks *p = &s->peaks;
@@ -13,17 +25,12 @@ zp_row zp_sim_peaks_row(zp_sim *s, double t, const double *y) {
     p->normal_max = fmax(p->normal_max, r.loads.normal);
     zp_row_loads_max(s->m, &r.loads, p->joint, p->acc_g);
     for (int a = 0; a < s->m->narc; a++) {
-        zp_arc_peaks *ap = &s->arc_peaks[a];
         if (r.c.q[0] >= s->m->arc[a].x1 && r.c.q[0] <= s->m->arc[a].x2) {
-            double joint[ZP_MAX_LINKS], acc_g[ZP_MAX_LINKS];
-            zp_row_loads(s->m, &r.loads, joint, acc_g);
-            ap->normal_min = ap->visited ? fmin(ap->normal_min, r.loads.normal) : r.loads.normal;
-            ap->normal_max = ap->visited ? fmax(ap->normal_max, r.loads.normal) : r.loads.normal;
-            for (int i = 0; i < s->m->nlink; i++) {
-                ap->acc_g = fmax(ap->acc_g, acc_g[i]);
-            }
-            ap->visited = 1;
+            stretch_peaks(s->m, &r, &s->arc_peaks[a]);
         }
+    }
+    if (s->zone) {
+        stretch_peaks(s->m, &r, &s->zone_peaks);
     }
     return r;
 }

@@ -30,7 +30,7 @@ static void drive_lagged(const zp_sim *s, double t, const double *y, zp_drive_no
    rates (NULL: not wanted) */
 static inline zp_drive_now drive_with(const zp_sim *s, zp_track tr, double t, const double *y,
                                       double *rates) {
-    zp_drive_now dn = {tr, 0, 0, 0, 0};
+    zp_drive_now dn = {tr, 0, 0, 0, 0, s->zone};
     if (s->m->ndrive) {
         drive_lagged(s, t, y, &dn, rates);
     } else {
@@ -77,7 +77,7 @@ int zp_sim_rhs_drive_settled(const zp_sim *s, double t, const double *y) {
     if (!s->m->ndrive) {
         return 1;
     }
-    zp_drive_now dn = {s->track(s->m, s->course, s->sec, y[0]), 0, 0, 0, 0};
+    zp_drive_now dn = {s->track(s->m, s->course, s->sec, y[0]), 0, 0, 0, 0, s->zone};
     double rate;
     drive_lagged(s, t, y, &dn, &rate);
     return fabs(rate * s->m->drive_response) <= ZP_FRICTION_SETTLED * s->m->mtot * s->m->g;
@@ -166,8 +166,6 @@ zp_row zp_sim_rhs_row(zp_sim *s, double t, const double *y) {
 
 void zp_sim_rhs_pick(zp_sim *s, const zp_model *m, zp_rhs_fn *rhs, zp_root_fn *root) {
     s->track = zp_model_track;
-    *rhs = m->physics & ZP_PHYS_ROLLING ? zp_sim_rhs_rolling
-           : m->course_provider         ? sim_rhs_provided
-                                        : zp_sim_rhs;
-    *root = m->physics & ZP_PHYS_ROLLING ? sim_root_rolling : sim_root;
+    *rhs = m->stick ? zp_sim_rhs_rolling : m->course_provider ? sim_rhs_provided : zp_sim_rhs;
+    *root = m->stick ? sim_root_rolling : sim_root;
 }

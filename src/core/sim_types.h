@@ -75,7 +75,8 @@ typedef struct zp_load_peaks {
     double kink_dv;                /* m/s, largest |v+ - v-| of the trolley at a kink */
 } zp_load_peaks;
 
-/* Extremes of the loads on one rounded kink's arc (x in [x1, x2]), sampled like the peaks. */
+/* Extremes of the loads on one rounded kink's arc (x in [x1, x2]), or in the brake zone,
+   sampled like the peaks. */
 typedef struct zp_arc_peaks {
     int visited;                   /* 1 once a load was sampled on the arc */
     double normal_min, normal_max; /* N */
@@ -99,6 +100,10 @@ typedef struct zp_result {
     double w_drive, w_damp, e_impulse;  /* J: drive work, damper loss, impulse loss */
     double w_effect[ZP_EFFECT_NWORK];   /* J: work taken out by each effect with a work
                                            integral (ZP_EFFECT_W_*; [physics]) */
+    double brake_speed_in;              /* m/s, the trolley's speed on entering the brake zone
+                                           (the first time; 0: never entered) */
+    double brake_g_in;                  /* g, the largest felt acceleration of any link's
+                                           centre then, the brake acting */
     double constraint_residual;         /* m */
     double drive_peak_power;            /* W, largest |F_applied v| at a step's end */
     double drive_time_at_cap;           /* s, time the drive's power cap bound: the trapezoid

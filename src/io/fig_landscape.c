@@ -31,10 +31,13 @@ static void head(FILE *f, const char *name, int w, int h) {
             name, name, name, w, h, name);
 }
 
-void zp_fig_landscape_1d(FILE *f, const char *scene, const zp_fig_axis *r) {
+void zp_fig_landscape_1d(FILE *f, const char *scene, const zp_fig_axis *r, int timed) {
     double step = (r->b - r->a) / (r->n - 1);
     char name[ZP_NAME_MAX];
     head(f, "landscape", 1100, 640);
+    if (!timed) { /* gnuplot refuses to autoscale an axis with no point on it */
+        fputs("set yrange [0:1]\n", f);
+    }
     fprintf(f,
             "set multiplot title 'Survival landscape of %s: one constant push in every section'\n"
             "set lmargin 12\nset rmargin 4\n"

@@ -55,11 +55,25 @@ static int count(const zp_model *m, span per) {
     case PER_BODY:
         return m->nlink + 1;
     case PER_WORK:
-        return zp_effect_work_shown(m->physics) ? ZP_EFFECT_NWORK : 0;
+        return ZP_EFFECT_NWORK; /* those shown: skipped() */
     case PER_DRIVE:
         return m->ndrive;
     }
     return 0;
+}
+
+/* 1 for index i of en that m does not show (an effect's work it leaves out) */
+static int skipped(const zp_model *m, const entry *en, int i) {
+    return en->per == PER_WORK && !zp_effect_work_shown(m->physics, i);
+}
+
+/* the indices of en that m shows */
+static int shown_count(const zp_model *m, const entry *en) {
+    int k = 0;
+    for (int i = 0; i < count(m, en->per); i++) {
+        k += !skipped(m, en, i);
+    }
+    return k;
 }
 
 /* quantity q of row r (its derived view v) at index i (link i 0-based, body i, work i) */
@@ -120,6 +134,9 @@ int zp_out_columns(const zp_model *m, zp_out_column *col) {
     for (int e = 0; e < NENTRY; e++) {
         const entry *en = &table[e];
         for (int i = 0; i < count(m, en->per); i++) {
+            if (skipped(m, en, i)) {
+                continue;
+            }
             /* names count links from 1, bodies from 0 (the trolley) */
             int shown = en->per == PER_LINK ? i + 1 : i;
             for (int c = 0; c < en->n; c++, j++) {
@@ -138,7 +155,7 @@ int zp_out_columns_find(const zp_model *m, zp_out_quantity q, int *n) {
     int j = 0;
     for (int e = 0; e < NENTRY; e++) {
         const entry *en = &table[e];
-        int k = count(m, en->per);
+        int k = shown_count(m, en);
         if (en->n == 1 && en->q[0] == q) {
             *n = k;
             return k ? j : -1;
@@ -156,7 +173,7 @@ void zp_out_columns_values(const zp_model *m, const zp_row *r, double *v) {
     for (int e = 0; e < NENTRY; e++) {
         const entry *en = &table[e];
         for (int i = 0; i < count(m, en->per); i++) {
-            for (int c = 0; c < en->n; c++) {
+            for (int c = 0; c < en->n && !skipped(m, en, i); c++) {
                 v[j++] = value(en->q[c], r, &view, i);
             }
         }

@@ -239,8 +239,10 @@ static void energy_json(FILE *f, const zp_model *m, const zp_result *r, const zp
     zp_out_json_key(f, "drive_work", r->w_drive, ", ");
     zp_out_json_key(f, "damper_work", r->w_damp, ", ");
     zp_out_json_key(f, "impulse_loss", r->e_impulse, ", ");
-    for (int k = 0; zp_effect_work_shown(m->physics) && k < ZP_EFFECT_NWORK; k++) {
-        zp_out_json_key(f, zp_effect_work_names(k)->column, r->w_effect[k], ", ");
+    for (int k = 0; k < ZP_EFFECT_NWORK; k++) {
+        if (zp_effect_work_shown(m->physics, k)) {
+            zp_out_json_key(f, zp_effect_work_names(k)->column, r->w_effect[k], ", ");
+        }
     }
     if (m->cable_paths) {
         fputs("\"cable_potential\": {", f);

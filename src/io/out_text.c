@@ -19,11 +19,14 @@ static void outcome_text(FILE *f, const zp_model *m, const zp_result *r) {
         fprintf(f, " %.3f", r->max_rel_angle[i] * 180.0 / M_PI);
     }
     fprintf(f, "\nkink crossings: %d\n", r->ncross);
-    if (zp_effect_work_shown(m->physics)) {
-        for (int k = 0; k < ZP_EFFECT_NWORK; k++) {
-            fprintf(f, "%s%s: %.6g J", k ? ", " : "", zp_effect_work_names(k)->words,
+    int nwork = 0;
+    for (int k = 0; k < ZP_EFFECT_NWORK; k++) {
+        if (zp_effect_work_shown(m->physics, k)) {
+            fprintf(f, "%s%s: %.6g J", nwork++ ? ", " : "", zp_effect_work_names(k)->words,
                     r->w_effect[k]);
         }
+    }
+    if (nwork) {
         fputc('\n', f);
     }
     fprintf(f, "energy audit residual: %.3g J\n", zp_estimate_energy_residual(r));

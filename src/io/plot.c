@@ -127,10 +127,11 @@ static void script_energy(FILE *f, const zp_model *m, const zp_result *r, const 
     zp_plot_script_head_png(f, m, "energy", "energy terms and cumulative work against time", FIG_W,
                             560, 0);
     /* the title names every term of the balance the figure draws */
-    int shown = zp_effect_work_shown(m->physics);
     fputs("set title 'Energy: kinetic + potential = E(0) + drive work − damper", f);
-    for (int k = 0; shown && k < ZP_EFFECT_NWORK; k++) {
-        fprintf(f, ", %s", zp_effect_work_names(k)->brief);
+    for (int k = 0; k < ZP_EFFECT_NWORK; k++) {
+        if (zp_effect_work_shown(m->physics, k)) {
+            fprintf(f, ", %s", zp_effect_work_names(k)->brief);
+        }
     }
     fputs(" and kink losses'\nset xlabel 't (s)'\nset ylabel 'energy (J)'\n"
           "set key outside right top box lc rgb '#cccccc'\n",
@@ -152,8 +153,11 @@ static void script_energy(FILE *f, const zp_model *m, const zp_result *r, const 
           f);
     /* a colour per effect's work, in effects.def order */
     static const char *const colour[] = {"#17becf", "#8c564b", "#bcbd22", "#e377c2"};
-    for (int k = 0; shown && k < ZP_EFFECT_NWORK; k++) {
+    for (int k = 0; k < ZP_EFFECT_NWORK; k++) {
         const zp_effect_work *w = zp_effect_work_names(k);
+        if (!zp_effect_work_shown(m->physics, k)) {
+            continue;
+        }
         fprintf(f, ", \\\n     '' using 't':'%s' with lines lw 2 lc rgb '%s' title '%s'",
                 w->plot, colour[k % (int)(sizeof colour / sizeof *colour)], w->words);
     }

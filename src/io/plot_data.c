@@ -108,8 +108,10 @@ zp_plot_box zp_plot_data_run(FILE *f, const zp_model *m, const zp_row_store *row
     for (int i = 1; i <= m->nlink; i++) {
         fprintf(f, " joint%d", i);
     }
-    for (int k = 0; zp_effect_work_shown(m->physics) && k < ZP_EFFECT_NWORK; k++) {
-        fprintf(f, " %s", zp_effect_work_names(k)->plot);
+    for (int k = 0; k < ZP_EFFECT_NWORK; k++) {
+        if (zp_effect_work_shown(m->physics, k)) {
+            fprintf(f, " %s", zp_effect_work_names(k)->plot);
+        }
     }
     fputs(" felt_g", f); /* the largest felt g over the judged links ([limits] g_links) */
     fputs(sched ? " drive_speed drive_force\n" : "\n", f);
@@ -140,8 +142,10 @@ zp_plot_box zp_plot_data_run(FILE *f, const zp_model *m, const zp_row_store *row
         for (int i = 0; i < m->nlink; i++) {
             fprintf(f, " %.9g", v.joint[i]);
         }
-        for (int w = 0; zp_effect_work_shown(m->physics) && w < ZP_EFFECT_NWORK; w++) {
-            fprintf(f, " %.9g", r->w_effect[w]);
+        for (int w = 0; w < ZP_EFFECT_NWORK; w++) {
+            if (zp_effect_work_shown(m->physics, w)) {
+                fprintf(f, " %.9g", r->w_effect[w]);
+            }
         }
         double g = 0;
         for (int i = 0; i < m->nlink; i++) {

@@ -99,6 +99,7 @@ static void read_keys(parse_ctx *c, zp_scene *sc) {
         }
     }
     sc->robust = c->sec_line[S_ROBUST] != 0;
+    sc->brake = c->sec_line[S_BRAKE] != 0;
     keep_lines(c, sc);
     zp_scene_rules(c, sc);
 }

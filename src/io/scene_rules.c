@@ -1,6 +1,7 @@
 /* The scene reader's rules that join keys of several sections (docs/scene-file.md): search bounds,
-   margin against the death angle, the trajectory's size, drag against the body. A rule is
-   judged only when every key it reads was accepted, so one mistake gives one message. */
+   margin against the death angle, the trajectory's size, drag against the body, the brake zone
+   inside the course. A rule is judged only when every key it reads was accepted, so one
+   mistake gives one message. */
 #include <math.h>
 
 #include "scene_parse.h"
@@ -73,7 +74,36 @@ static void wind_needs_drag(parse_ctx *c, const zp_scene *sc) {
     }
 }
 
+/* the brake zone lies inside the course, start before end (end defaults to the course's end);
+   its start is required once [brake] is given */
+static void brake_zone(parse_ctx *c, zp_scene *sc) {
+    if (!sc->brake) {
+        return;
+    }
+    if (!c->key_line[K_BRAKE_START]) {
+        zp_scene_values_missing(c, K_BRAKE_START, "where the brake zone begins (m)");
+        return;
+    }
+    int course = all_good(c, K_X_START, K_SECTION, -1) && sc->nsec > 0;
+    double lo = sc->x_start, hi = course ? sc->x_end[sc->nsec - 1] : INFINITY;
+    if (!c->key_line[K_BRAKE_END] && course) {
+        sc->brake_end = hi;
+    }
+    if (!course || !all_good(c, K_BRAKE_START, K_BRAKE_END, -1)) {
+        return;
+    }
+    if (!(sc->brake_start >= lo && sc->brake_start < hi)) {
+        zp_scene_values_bad_key(c, K_BRAKE_START, "%g is outside the course [%g, %g]",
+                                sc->brake_start, lo, hi);
+    } else if (!(sc->brake_end > sc->brake_start && sc->brake_end <= hi)) {
+        int k = c->key_line[K_BRAKE_END] ? K_BRAKE_END : K_BRAKE_START;
+        zp_scene_values_bad_key(c, k, "the zone [%g, %g] does not fit the course [%g, %g]",
+                                sc->brake_start, sc->brake_end, lo, hi);
+    }
+}
+
 void zp_scene_rules(parse_ctx *c, zp_scene *sc) {
+    brake_zone(c, sc);
     wind_needs_drag(c, sc);
     force_bounds(c, sc);
     margin_below_death(c, sc);

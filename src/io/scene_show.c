@@ -119,6 +119,13 @@ static int hand_text(const zp_scene *sc, int k, char *out, size_t cap) {
             snprintf(out, cap, "inextensible");
         }
         return 1;
+    case K_BRAKE_START:
+    case K_BRAKE_END:
+        if (!sc->brake) {
+            snprintf(out, cap, "off");
+            return 1;
+        }
+        return 0;
     case K_G_LINKS:
     case K_SCALE_LINKS:
         links(out, cap, *(const unsigned *)at, sc->nlink);
