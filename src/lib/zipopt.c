@@ -380,17 +380,27 @@ zipopt_run *zipopt_simulate(zipopt_scene *s, char *err, size_t errlen) {
     return u;
 }
 
-int zipopt_gradient(zipopt_scene *s, double *dtime, double *dmargin, int n, int *smooth,
-                    char *err, size_t errlen) {
-    if (!s || !dtime || !dmargin || !smooth) {
+/* 0 when the gradient of s fits room for n parameters (outputs given: outputs_given), else -1
+   with why in err */
+static int gradient_room(const zipopt_scene *s, int outputs_given, int n, char *err,
+                         size_t errlen) {
+    if (!s || !outputs_given) {
         say(err, errlen, "no scene or no room for the gradient given");
         return -1;
     }
-    const zp_schedule *sh = &s->st.sched;
-    if (n < sh->np) {
-        say(err, errlen, "room for %d parameters, the schedule has %d", n, sh->np);
+    if (n < s->st.sched.np) {
+        say(err, errlen, "room for %d parameters, the schedule has %d", n, s->st.sched.np);
         return -1;
     }
+    return 0;
+}
+
+int zipopt_gradient(zipopt_scene *s, double *dtime, double *dmargin, int n, int *smooth,
+                    char *err, size_t errlen) {
+    if (gradient_room(s, dtime && dmargin && smooth, n, err, errlen)) {
+        return -1;
+    }
+    const zp_schedule *sh = &s->st.sched;
     zp_sens_result g;
     /* its own workspace builds course evaluators, which may be libmatheval's: in turn */
     pthread_mutex_lock(&turn);
@@ -414,15 +424,10 @@ const char *zipopt_limit_key(int i) {
 
 int zipopt_gradient_limits(zipopt_scene *s, double *d, int n, int *smooth, char *err,
                            size_t errlen) {
-    if (!s || !d || !smooth) {
-        say(err, errlen, "no scene or no room for the gradient given");
+    if (gradient_room(s, d && smooth, n, err, errlen)) {
         return -1;
     }
     const zp_schedule *sh = &s->st.sched;
-    if (n < sh->np) {
-        say(err, errlen, "room for %d parameters, the schedule has %d", n, sh->np);
-        return -1;
-    }
     zp_sens_result *g = malloc(sizeof *g);
     if (!g) {
         say(err, errlen, "out of memory");
