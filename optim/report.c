@@ -214,8 +214,8 @@ static void md_gains(FILE *f, const zp_answer *a) {
                  s->base.time);
         md_gain(f, what, run->time, s->base.time);
     } else if (fin) {
-        fputs("- over the best constant push: missing (no constant push the search ran kept the "
-              "margin)\n",
+        fputs("- over the best constant push: missing (no constant push the search ran survived: "
+              "finished within the margin, [limits] and held scenarios)\n",
               f);
     }
     md_profile_gain(f, a);

@@ -64,12 +64,14 @@ void zp_report_text_write(FILE *f, const zp_answer *a) {
     if (s->base_found) {
         fprintf(f, "best constant push: %.3f N, %.4f s\n", s->base_force, s->base.time);
     } else {
-        fprintf(f, "best constant push: none found that keeps the margin\n");
+        fprintf(f, "best constant push: none the search ran survived (finished within the margin, "
+                   "[limits] and held scenarios)\n");
     }
     const zp_answer_constant *c = &a->constant;
     if (c->ran && c->found && run->outcome == ZP_OUTCOME_FINISHED) {
-        fprintf(f, "profile gain: %.4f s against %.4f s for the best constant-per-section "
-                   "schedule (the same search), %.4f s (%.1f %%) faster\n",
+        fprintf(f,
+                "profile gain: %.4f s against %.4f s for the best constant-per-section "
+                "schedule (the same search), %.4f s (%.1f %%) faster\n",
                 run->time, c->time, c->time - run->time, 100 * (c->time - run->time) / c->time);
     } else if (c->ran) {
         fprintf(f, "profile gain: the same search over one force per section found none that "
