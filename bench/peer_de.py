@@ -74,12 +74,11 @@ class Problem:
         death = float(vals.get(("body", "death_angle"), "180"))
         self.limit_deg = death - float(vals.get(("optimize", "margin"), "10"))
         self.phi_max_deg = death
-        self.lo = float(vals.get(("drive", "min"), "0"))
-        self.hi = float(vals.get(("drive", "max"), "500"))
         self.path = path
         self.fast = zipopt.Scene(ranking_text(text), text=True, name=path)
         self.exact = zipopt.Scene(path)
-        self.n = self.fast.sections
+        self.n = self.fast.params  # the schedule's: a profile has knots per section
+        self.lo, self.hi = self.fast.bounds
         self.sims = 0
         self.best = (math.inf, None)
 
@@ -114,7 +113,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("scene")
     ap.add_argument("--evals", type=int, default=0,
-                    help="simulations for the evolution (default 5000 per section)")
+                    help="simulations for the evolution (default 5000 per parameter)")
     ap.add_argument("--popsize", type=int, default=15, help="members per parameter (SciPy's)")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--json", action="store_true")
@@ -123,7 +122,7 @@ def main():
     budget = a.evals or 5000 * p.n
     members = a.popsize * p.n
     t0 = time.perf_counter()
-    res = differential_evolution(p.score, [(p.lo, p.hi)] * p.n, popsize=a.popsize,
+    res = differential_evolution(p.score, list(zip(p.lo, p.hi)), popsize=a.popsize,
                                  maxiter=max(budget // members - 1, 1), tol=0, seed=a.seed,
                                  polish=True, init="sobol" if members & (members - 1) == 0
                                  else "latinhypercube")
