@@ -256,16 +256,23 @@ static void md_drive(FILE *f, const zp_answer *a) {
     fprintf(f, "| %.0f W | %.3f kJ | %s |\n", run->drive_peak_power, run->w_drive / 1000, cap);
 }
 
-static void md_speeds(FILE *f, const zp_result *run) {
+/* the arrival judged by zip-line practice; braked: the scene's brake zone already slowed it */
+static void md_speeds(FILE *f, const zp_result *run, int braked) {
     fputs("\n## Speeds\n\n", f);
     fprintf(f, "- arrival: %.2f m/s = %.1f km/h\n- peak: %.2f m/s = %.1f km/h\n\n", run->v,
             run->v * KMH, run->max_speed, run->max_speed * KMH);
     double arr = run->v * KMH;
     if (arr > ACTIVE_KMH) {
         fprintf(f,
-                "Arrival above %d km/h: faster than active zip-line brakes stop (about %d "
-                "km/h); this schedule needs a longer run-out or a braking section.\n\n",
-                ACTIVE_KMH, ACTIVE_KMH);
+                "Arrival above %d km/h%s: faster than active zip-line brakes stop (about %d "
+                "km/h); this schedule needs a longer run-out or %s.\n\n",
+                ACTIVE_KMH, braked ? " after the brake zone" : "", ACTIVE_KMH,
+                braked ? "a stronger or longer brake zone" : "a braking section");
+    } else if (braked) {
+        fprintf(f,
+                "Arrival at %.1f km/h after the brake zone: within what active zip-line "
+                "brakes stop (about %d km/h).\n\n",
+                arr, ACTIVE_KMH);
     } else if (arr > BRAKE_KMH) {
         fprintf(f,
                 "Arrival above %d km/h: zip-line practice calls for a brake (active brakes "
@@ -665,7 +672,7 @@ void zp_report_write_md(FILE *f, const zp_answer *a, const zp_report_place *w) {
     md_margins(f, a);
     md_gains(f, a);
     md_drive(f, a);
-    md_speeds(f, a->v.run);
+    md_speeds(f, a->v.run, (a->pb->m->physics & ZP_PHYS_BRAKE) != 0);
     if (a->pb->m->physics & ZP_PHYS_BRAKE) {
         md_brake(f, a);
     }

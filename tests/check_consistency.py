@@ -63,6 +63,10 @@ def consistent(name, vary):
         if "brake_work" in sim["energy"]:
             work = "Brake work (energy taken out): %.0f J." % sim["energy"]["brake_work"]
             check(work in md and work in html, "report.md/html's brake work: %s" % work)
+            # the arrival is judged as braked: no "calls for a brake" on a line that has one
+            landed = "Arrival at %.1f km/h after the brake zone" % (sim["speed"] * 3.6)
+            check(landed in md and "calls for a brake" not in md,
+                  "report.md judges the arrival after the brake zone: %s" % landed)
         for key, lim in summary["limits"].items():
             if isinstance(lim, dict) and "reached" in lim:
                 check(sim["limits"][key]["reached"] == lim["reached"],
