@@ -191,6 +191,7 @@ static int start(sens_loop *L, zp_sens_result *r) {
     zp_sim_rhs_drive_start(s, s->y);
     s->stuck = 0;
     s->slide = (ch.v[0] > 0) - (ch.v[0] < 0);
+    s->arc = zp_model_piece(m, s->sec, ch.q[0]); /* the stick rule's rates read it */
     s->zone = zp_sim_events_zone_at(s, ch.q[0], ch.v[0]);
     s->inconsistent_t = NAN;
     int dir;
@@ -219,7 +220,6 @@ static int start(sens_loop *L, zp_sens_result *r) {
     }
     memset(L->ya, 0, sizeof *L->ya * L->c.naug);
     memcpy(L->ya, s->y, sizeof *s->y * L->c.n);
-    s->arc = zp_model_piece(m, s->sec, L->ya[0]);
     zp_sens_peaks_restart(L->pk, 0, L->ya, NULL);
     return restart(L, 0) ? -1 : 0;
 }
@@ -327,11 +327,6 @@ zp_status zp_sens_run(const zp_model *m, const zp_sim_opts *o, const zp_schedule
     memset(r, 0, sizeof *r);
     r->smooth = 1;
     r->np = sched->np;
-    if ((m->physics & ZP_PHYS_ROLLING) && m->course_provider) {
-        /* measured: up to 1e-3 apart from central differences on seed_real (each effect alone
-           agrees to 1e-7); not explained yet, so not claimed */
-        not_smooth(r, "not verified with rolling resistance on rounded kinks together");
-    }
     sens_loop L;
     memset(&L, 0, sizeof L);
     zp_sim_opts plain = *o;

@@ -447,6 +447,12 @@ static int point_of(const zp_sens_peaks *P, int i, const char **why) {
         }
         if (second >= 0 && P->pt[second].value >= P->pt[best].value * (1 - TIE_SHARE)) {
             *why = "two links reach the peak together (a maximum of two maxima)";
+        } else if (best >= 0 && m->narc > 0 && P->pt[best].arc >= 0) {
+            /* measured on tower, with or without rolling resistance: up to 9e-5 apart from
+               central differences of plain runs, the derivative moving by 1e-5 between rtol
+               1e-10 and 1e-12 while the differences hold to 2e-9; not explained yet, so not
+               claimed */
+            *why = "a load peak on a rounded kink: its derivative is not verified";
         }
         return best;
     }

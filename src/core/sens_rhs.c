@@ -34,19 +34,11 @@ static double step_along(const zp_sens *c, const double *y, const double *s, int
     return ZP_SENS_STEP / fed_back_ratio(c->sim, y, s, 1 / fmax(fabs(c->sched.p[k]), 1));
 }
 
-/* the plain rates at y, the course read on the piece the integrator restarted on (continued
-   past its ends) as without a friction (rolling resistance, a friction brake): with one the
-   plain run reads the piece under x, whose f'' jumps at an arc's tangent point inside the
-   stencil */
+/* the plain rates at y: the course read on the piece the integrator restarted on (continued
+   past its ends), whose f'' is smooth inside the stencil */
 static int rates(zp_sens *c, double t, const double *y, double *f) {
-    zp_sim *s = c->sim;
     c->rates++;
-    if (!s->m->stick) {
-        return c->rhs(t, y, f, s);
-    }
-    zp_track tr = zp_model_track_piece(s->m, s->course, s->sec, s->arc, y[0]);
-    zp_drive_now dn = zp_sim_rhs_drive_on(s, tr, t, y, f);
-    return s->form->rhs(s->m, s->fwork, &dn, y, f, NULL);
+    return c->rhs(t, y, f, c->sim);
 }
 
 int zp_sens_rhs_rates(zp_sens *c, double t, const double *y, double *f) {

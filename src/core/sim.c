@@ -224,6 +224,7 @@ static int start(zp_sim *s, const zp_input *in, zp_result *r, zp_sim_output_curs
     double t = 0;
     s->stuck = 0;
     s->slide = (c.v[0] > 0) - (c.v[0] < 0);
+    s->arc = zp_model_piece(m, s->sec, c.q[0]); /* the outputs' and stick rule's rates read it */
     s->zone = zp_sim_events_zone_at(s, c.q[0], c.v[0]);
     s->inconsistent_t = NAN;
     s->inconsistent_steps = 0;

@@ -47,9 +47,14 @@ static inline zp_drive_now drive_at(const zp_sim *s, track_fn track, double t, c
     return drive_with(s, track(s->m, s->course, s->sec, y[0]), t, y, rates);
 }
 
-/* the drive now with the simulator's hold and slide */
+/* the drive now with the simulator's hold and slide, the course read on the piece the
+   integrator restarted on (continued past its ends) as sim_rhs_provided reads it: read by x,
+   f'' would jump at an arc's tangent point inside the step that crosses it, and its stages
+   would mix two pieces' equations (under rolling resistance the finish time then moved by
+   1e-8 with a schedule's last digits, and a load peak at the step's end read the next piece) */
 static inline zp_drive_now drive_now(const zp_sim *s, double t, const double *y, double *rates) {
-    zp_drive_now dn = drive_at(s, s->track, t, y, rates);
+    zp_track tr = zp_model_track_piece(s->m, s->course, s->sec, s->arc, y[0]);
+    zp_drive_now dn = drive_with(s, tr, t, y, rates);
     dn.hold = s->stuck;
     dn.slide = s->slide;
     return dn;
