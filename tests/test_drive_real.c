@@ -3,7 +3,8 @@
    whole run; a power P caps the applied force at P / |v|, so a bare trolley on a straight
    incline follows the closed form of m v dv/ds = P / v - m g sin(a) once capped, every row's
    F_applied v stays at or below P, and the energy balance holds with the applied force's work;
-   bad [drive] kind, knots, power and forces exit 2 naming the file, the line and the key. */
+   bad [drive] kind, knots, power, response and forces exit 2 naming the file, the line and
+   the key. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -176,6 +177,8 @@ static void test_bad_input(void) {
         {"power = -100", ":10: [drive] power:"},
         {"kind = profile\nknots = 2\nforces = 1, 2, 3", ":12: [drive] forces:"},
         {"kind = profile\nforces = 1, 2", ":11: [drive] forces:"},
+        {"response = -0.1", ":10: [drive] response:"},
+        {"response = fast", ":10: [drive] response:"},
     };
     char dir[] = "/tmp/zp_drive_real_XXXXXX";
     CHECK(mkdtemp(dir) != NULL);
