@@ -12,7 +12,6 @@
 #include <gsl/gsl_odeiv2.h>
 #include <math.h>
 #include <stdio.h>
-#include <string.h>
 
 #include "check.h"
 #include "sens.h"
