@@ -47,6 +47,15 @@ static inline zp_drive_now drive_at(const zp_sim *s, track_fn track, double t, c
     return drive_with(s, track(s->m, s->course, s->sec, y[0]), t, y, rates);
 }
 
+/* the drive on the course point tr with the simulator's hold and slide */
+static inline zp_drive_now drive_held(const zp_sim *s, zp_track tr, double t, const double *y,
+                                      double *rates) {
+    zp_drive_now dn = drive_with(s, tr, t, y, rates);
+    dn.hold = s->stuck;
+    dn.slide = s->slide;
+    return dn;
+}
+
 /* the drive now with the simulator's hold and slide, the course read on the piece the
    integrator restarted on (continued past its ends) as sim_rhs_provided reads it: read by x,
    f'' would jump at an arc's tangent point inside the step that crosses it, and its stages
@@ -54,10 +63,7 @@ static inline zp_drive_now drive_at(const zp_sim *s, track_fn track, double t, c
    1e-8 with a schedule's last digits, and a load peak at the step's end read the next piece) */
 static inline zp_drive_now drive_now(const zp_sim *s, double t, const double *y, double *rates) {
     zp_track tr = zp_model_track_piece(s->m, s->course, s->sec, s->arc, y[0]);
-    zp_drive_now dn = drive_with(s, tr, t, y, rates);
-    dn.hold = s->stuck;
-    dn.slide = s->slide;
-    return dn;
+    return drive_held(s, tr, t, y, rates);
 }
 
 zp_drive_now zp_sim_rhs_drive_now(const zp_sim *s, double t, const double *y) {
@@ -66,10 +72,7 @@ zp_drive_now zp_sim_rhs_drive_now(const zp_sim *s, double t, const double *y) {
 
 zp_drive_now zp_sim_rhs_drive_on(const zp_sim *s, zp_track tr, double t, const double *y,
                                  double *ydot) {
-    zp_drive_now dn = drive_with(s, tr, t, y, ydot + s->wd);
-    dn.hold = s->stuck;
-    dn.slide = s->slide;
-    return dn;
+    return drive_held(s, tr, t, y, ydot + s->wd);
 }
 
 void zp_sim_rhs_drive_start(const zp_sim *s, double *y) {
@@ -82,9 +85,8 @@ int zp_sim_rhs_drive_settled(const zp_sim *s, double t, const double *y) {
     if (!s->m->ndrive) {
         return 1;
     }
-    zp_drive_now dn = {s->track(s->m, s->course, s->sec, y[0]), 0, 0, 0, 0, s->zone};
     double rate;
-    drive_lagged(s, t, y, &dn, &rate);
+    drive_now(s, t, y, &rate); /* the one drive state's rate */
     return fabs(rate * s->m->drive_response) <= ZP_FRICTION_SETTLED * s->m->mtot * s->m->g;
 }
 
