@@ -128,8 +128,7 @@ static int jump(sens_loop *L, double t, int to, zp_event ev) {
     }
     int from = s->sec;
     s->sec = to;
-    s->arc = zp_model_piece(s->m, s->sec, L->ya[0]);
-    s->zone = zp_sim_events_zone_at(s, L->ya[0], L->ya[s->w0 / 2]);
+    zp_sim_events_place(s, L->ya[0], L->ya[s->w0 / 2]);
     int rc = zp_sens_rhs_rates(c, t, L->ya, L->fp);
     for (int k = 0; k < c->np && !rc; k++) {
         double *sk = L->ya + n * (k + 1);
@@ -189,11 +188,7 @@ static int start(sens_loop *L, zp_sens_result *r) {
     const double zero_work[ZP_W_MAX] = {0};
     s->form->from_chain(m, &ch, zero_work, s->y);
     zp_sim_rhs_drive_start(s, s->y);
-    s->stuck = 0;
-    s->slide = (ch.v[0] > 0) - (ch.v[0] < 0);
-    s->arc = zp_model_piece(m, s->sec, ch.q[0]); /* the stick rule's rates read it */
-    s->zone = zp_sim_events_zone_at(s, ch.q[0], ch.v[0]);
-    s->inconsistent_t = NAN;
+    zp_sim_events_start(s, &ch);
     int dir;
     if (m->stick && ch.v[0] == 0) {
         zp_result pr;

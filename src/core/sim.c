@@ -177,8 +177,7 @@ static void zone_entered(zp_sim *s, zp_result *r, double t) {
 /* the integrator (re)started at (t, s->y), reading the course piece the trolley is on; the
    peak locator (o.peaks) starts a new interval there */
 static int restart(zp_sim *s, zp_result *r, double t) {
-    s->arc = zp_model_piece(s->m, s->sec, s->y[0]);
-    s->zone = zp_sim_events_zone_at(s, s->y[0], s->y[s->w0 / 2]);
+    zp_sim_events_place(s, s->y[0], s->y[s->w0 / 2]);
     if (s->zone && r->brake_speed_in == 0) {
         zone_entered(s, r, t);
     }
@@ -222,11 +221,7 @@ static int start(zp_sim *s, const zp_input *in, zp_result *r, zp_sim_output_curs
     r->x_min = r->x_max = c.q[0];
 
     double t = 0;
-    s->stuck = 0;
-    s->slide = (c.v[0] > 0) - (c.v[0] < 0);
-    s->arc = zp_model_piece(m, s->sec, c.q[0]); /* the outputs' and stick rule's rates read it */
-    s->zone = zp_sim_events_zone_at(s, c.q[0], c.v[0]);
-    s->inconsistent_t = NAN;
+    zp_sim_events_start(s, &c);
     s->inconsistent_steps = 0;
     zp_sim_peaks_drive_start(s, t, s->y, r);
     zp_sim_output_emit(s, in, t, 0, oc);

@@ -159,8 +159,16 @@ void zp_sim_events_tangent(zp_sim *s) {
     s->form->from_chain(m, &c, wk, s->y);
 }
 
-int zp_sim_events_zone_at(const zp_sim *s, double x, double xd) {
-    return s->m->physics & ZP_PHYS_BRAKE && zp_effect_brake_entered(s->m, x, xd);
+void zp_sim_events_place(zp_sim *s, double x, double xd) {
+    s->arc = zp_model_piece(s->m, s->sec, x);
+    s->zone = s->m->physics & ZP_PHYS_BRAKE && zp_effect_brake_entered(s->m, x, xd);
+}
+
+void zp_sim_events_start(zp_sim *s, const zp_chain *c) {
+    s->stuck = 0;
+    s->slide = (c->v[0] > 0) - (c->v[0] < 0);
+    zp_sim_events_place(s, c->q[0], c->v[0]); /* the stick rule's and outputs' rates read it */
+    s->inconsistent_t = NAN;
 }
 
 void zp_sim_events_zone(zp_sim *s) {

@@ -30,10 +30,13 @@ int zp_sim_events_kink(zp_sim *s, const zp_input *in, zp_result *r, double t, in
 void zp_sim_events_tangent(zp_sim *s);
 /* An end of the brake zone: the trolley put one bit past it, the way it moves. */
 void zp_sim_events_zone(zp_sim *s);
-/* 1 when the brake zone acts on the trolley at x moving at xd = x' (m/s): inside it, or on an
-   end moving in (a zone's end may be a section's, whose kink takes the root); the simulator
-   holds it in s->zone from one restart to the next. */
-int zp_sim_events_zone_at(const zp_sim *s, double x, double xd);
+/* Where the trolley at x moving at xd = x' (m/s) is, as the simulator holds it from one
+   restart to the next: the course piece it reads (s->arc) and whether the brake zone acts on
+   it (s->zone: inside it, or on an end moving in; a zone's end may be a section's, whose kink
+   takes the root). */
+void zp_sim_events_place(zp_sim *s, double x, double xd);
+/* A run's start from chain c: not held, sliding the way it moves, placed. */
+void zp_sim_events_start(zp_sim *s, const zp_chain *c);
 /* The trolley's velocity along the course at 0 at t: held, a release; else a stop, judged by
    the stick rule. */
 int zp_sim_events_rest(zp_sim *s, double t, zp_result *r);
