@@ -1,8 +1,8 @@
 /* What a run with gradients (sens.h) costs against a plain run of the same schedule: the best
-   of N wall times of each at the scene's [solver] settings (no trajectory), their ratio, the
-   integrator's steps and rate evaluations of each (the sensitivity run's steps counted once per
-   step), and the share of the sensitivity run's time spent in its equations' stencils: rate
-   evaluations of the plain equations, 1 + 4 np per augmented evaluation, timed alone.
+   of N wall times of each at the scene's [solver] settings (no trajectory), their ratio, and
+   the integrator's steps and rate evaluations of each (the sensitivity run's steps counted once
+   per step; each of its evaluations costs the plain rates 1 + 2 np times, np the parameters
+   the run has felt so far).
    Usage: sens_cost [N] SCENE.ini...   (prints a markdown table) */
 #include <stdio.h>
 #include <stdlib.h>

@@ -9,6 +9,9 @@
 /* the relative step of the five-point stencils: O(h^4) truncation against O(eps / h) round-off
    (sens_rhs.c's design note) */
 #define ZP_SENS_STEP 1e-3
+/* the relative step of the rates' central differences: O(h^2) truncation against the
+   round-off of the rates' own noise over h (sens_rhs.c's design note) */
+#define ZP_SENS_CENTRAL_STEP 1e-4
 
 typedef struct zp_sens {
     zp_sim *sim;            /* owned: the equations, course and drive of the plain run */
