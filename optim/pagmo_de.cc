@@ -16,7 +16,6 @@
 
 namespace {
 
-constexpr unsigned variant = 2u;       // rand/1/exp: no pull to the best, so islands stay apart
 constexpr unsigned adaptation = 1u;    // jDE
 constexpr double ftol = 1e-6;          // s: a population this flat has collapsed ...
 constexpr double xtol = 1e-3;          // N: ... when its members are this close too
@@ -73,13 +72,14 @@ struct zp_pagmo_de {
     context ctx;
     box_problem prob;
     int popsize = 0;
+    unsigned variant = 0;
     unsigned long seed = 0;
     std::optional<pagmo::algorithm> algo;
     std::optional<pagmo::population> pop; // empty: to be drawn at the next evolution
 };
 
 extern "C" zp_pagmo_de *zp_pagmo_de_create(int n, const double *lo, const double *hi, int popsize,
-                                           unsigned long seed)
+                                           int variant, unsigned long seed)
 {
     try {
         auto d = std::make_unique<zp_pagmo_de>();
@@ -87,6 +87,7 @@ extern "C" zp_pagmo_de *zp_pagmo_de_create(int n, const double *lo, const double
         d->prob.lo.assign(lo, lo + n);
         d->prob.hi.assign(hi, hi + n);
         d->popsize = popsize;
+        d->variant = static_cast<unsigned>(variant);
         d->seed = seed;
         return d.release();
     } catch (...) {
@@ -104,7 +105,7 @@ extern "C" int zp_pagmo_de_evolve(zp_pagmo_de *d, int gens, zp_pagmo_de_fitness 
     d->ctx = context{fit, user};
     try {
         if (!d->pop) {
-            d->algo.emplace(pagmo::sade(1u, variant, adaptation, 0, 0, true, seed32(d->seed)));
+            d->algo.emplace(pagmo::sade(1u, d->variant, adaptation, 0, 0, true, seed32(d->seed)));
             d->pop.emplace(pagmo::problem(d->prob), static_cast<pagmo::population::size_type>(d->popsize),
                            seed32(d->seed >> 1));
             d->seed += seed_step;

@@ -7,14 +7,16 @@
    the best of the map and halves after one where they did not. */
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
+#include "islands.h"
 #include "pagmo_de.h"
 #include "strategy.h"
 
 #define NPOP 4            /* populations, whatever the threads */
 #define POP_PER_PARAM 5   /* members per parameter ... */
 #define POP_MIN 16        /* ... at least ... */
-#define POP_MAX 48        /* ... and at most */
+#define POP_MAX 120       /* ... and at most */
 #define SHARE_PER_PARAM 150 /* simulations of the populations together a round, per parameter,
                                at the base share */
 #define SHARE_MAX 4       /* the share grows to this many times the base */
@@ -30,8 +32,17 @@ typedef struct population {
     zp_eval *e; /* owned, cap */
 } population;
 
+/* the near-survivable spots the populations mapped: one point per ZP_DISTINCT of the box,
+   the best there so far */
+typedef struct spots {
+    int n, cap;
+    double *f;  /* owned, cap x n parameters */
+    zp_eval *e; /* owned, cap */
+} spots;
+
 typedef struct portfolio {
     void *scan; /* owned: the scan's sequence */
+    spots sp;
     int popsize;
     int share; /* times the base share, 1 .. SHARE_MAX */
     population pop[NPOP];
@@ -43,6 +54,8 @@ static void portfolio_free(void *state) {
         return;
     }
     zp_strategy_scan.free(P->scan);
+    free(P->sp.f);
+    free(P->sp.e);
     for (int i = 0; i < NPOP; i++) {
         zp_pagmo_de_free(P->pop[i].de);
         free(P->pop[i].f);
@@ -58,12 +71,12 @@ static void *portfolio_create(const zp_strategy *self, const zp_search_state *S)
         portfolio_free(P);
         return NULL;
     }
-    int np = POP_PER_PARAM * S->n;
+    int np = (getenv("ZP_PF_POP") ? atoi(getenv("ZP_PF_POP")) : POP_PER_PARAM) * S->n;
     P->popsize = np < POP_MIN ? POP_MIN : np > POP_MAX ? POP_MAX : np;
     P->share = 1;
     for (int i = 0; i < NPOP; i++) {
         unsigned long seed = (S->o->seed ^ SEED_STREAM) * NPOP + (unsigned long)i;
-        if (!(P->pop[i].de = zp_pagmo_de_create(S->n, S->lo, S->hi, P->popsize, seed))) {
+        if (!(P->pop[i].de = zp_pagmo_de_create(S->n, S->lo, S->hi, P->popsize, getenv("ZP_PF_VARIANT") ? atoi(getenv("ZP_PF_VARIANT")) : 2, seed))) {
             portfolio_free(P);
             return NULL;
         }
@@ -115,6 +128,42 @@ static int make_room(portfolio *P, const zp_search_state *S, int cap) {
     return 0;
 }
 
+/* design note: a population gathers around its best, and its near-survivable points would
+   fill the map's NEAR_MAX best with one island and push every other island off it; so a near
+   point of a population joins the map only where it is the first or the best so far within
+   ZP_DISTINCT of the box. Its other points all join: they separate islands */
+/* point f (evaluated e) of a population joins the map; 0: it adds nothing to the map */
+static int joins(spots *sp, const zp_search_state *S, const double *f, const zp_eval *e) {
+    if (!zp_islands_near(e)) {
+        return 1;
+    }
+    for (int j = 0; j < sp->n; j++) {
+        double *g = sp->f + (size_t)j * S->n;
+        if (!zp_search_state_distinct(S, f, g)) {
+            if (!zp_search_state_ahead(e, f, &sp->e[j], g, S->n)) {
+                return 0;
+            }
+            memcpy(g, f, sizeof *f * S->n);
+            sp->e[j] = *e;
+            return 1;
+        }
+    }
+    if (sp->n == sp->cap) {
+        int cap = sp->cap ? 2 * sp->cap : 64;
+        double *nf = realloc(sp->f, sizeof *nf * (size_t)cap * S->n);
+        sp->f = nf ? nf : sp->f;
+        zp_eval *ne = nf ? realloc(sp->e, sizeof *ne * cap) : NULL;
+        sp->e = ne ? ne : sp->e;
+        if (!ne) {
+            return 1; /* out of memory: it joins unremembered */
+        }
+        sp->cap = cap;
+    }
+    memcpy(sp->f + (size_t)sp->n * S->n, f, sizeof *f * S->n);
+    sp->e[sp->n++] = *e;
+    return 1;
+}
+
 static zp_status portfolio_explore(void *state, zp_search_state *S, int round, char *err,
                                    size_t errlen) {
     portfolio *P = state;
@@ -122,7 +171,7 @@ static zp_status portfolio_explore(void *state, zp_search_state *S, int round, c
     if (st || zp_search_state_halted(S)) {
         return st;
     }
-    long share = (long)P->share * SHARE_PER_PARAM * S->n / NPOP;
+    long share = (long)P->share * (getenv("ZP_PF_SHARE") ? atoi(getenv("ZP_PF_SHARE")) : SHARE_PER_PARAM) * S->n / NPOP;
     int gens = share > P->popsize ? (int)(share / P->popsize) : 1;
     /* a population drawn afresh (the first round, or after it collapsed) spends popsize more */
     int cap = (gens + 1) * P->popsize;
@@ -141,7 +190,10 @@ static zp_status portfolio_explore(void *state, zp_search_state *S, int round, c
     for (int i = 0; i < NPOP; i++) {
         const population *p = &P->pop[i];
         for (int j = 0; j < p->npts; j++) {
-            zp_search_state_add(S, p->f + (size_t)j * S->n, &p->e[j]);
+            const double *f = p->f + (size_t)j * S->n;
+            if (joins(&P->sp, S, f, &p->e[j])) {
+                S->nclustered += zp_search_state_add(S, f, &p->e[j]) >= 0;
+            }
         }
     }
     int gained = S->res->found && (!had || S->res->best.time < before);
