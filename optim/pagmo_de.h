@@ -17,8 +17,8 @@ typedef double (*zp_pagmo_de_fitness)(void *user, const double *x);
 /* a population of popsize members over the box [lo, hi] (n values each, copied), evolved by
    sade's mutation variant (1 to 18, as pagmo numbers them), with its seed; nothing evaluated
    yet. NULL when out of memory. */
-zp_pagmo_de *zp_pagmo_de_create(int n, const double *lo, const double *hi, int popsize,
-                                int variant, unsigned long seed);
+zp_pagmo_de *zp_pagmo_de_create(int n, const double *lo, const double *hi, int popsize, int variant,
+                                unsigned long seed);
 void zp_pagmo_de_free(zp_pagmo_de *d);
 
 /* gens generations (popsize evaluations each) through fit; the first call first draws the

@@ -13,13 +13,15 @@
 #include "pagmo_de.h"
 #include "strategy.h"
 
-#define NPOP 4            /* populations, whatever the threads */
-#define POP_PER_PARAM 5   /* members per parameter ... */
-#define POP_MIN 16        /* ... at least ... */
-#define POP_MAX 120       /* ... and at most */
-#define SHARE_PER_PARAM 150 /* simulations of the populations together a round, per parameter,
-                               at the base share */
-#define SHARE_MAX 4       /* the share grows to this many times the base */
+#define NPOP 4          /* populations, whatever the threads */
+#define VARIANT 6       /* sade's best/1/bin (SciPy's best1bin), with jDE's adaptation */
+#define POP_PER_PARAM 5 /* members per parameter ... */
+#define POP_MIN 16      /* ... at least ... */
+#define POP_MAX 120     /* ... and at most */
+#define SHARE_PER_PARAM                                                                            \
+    600                        /* simulations of the populations together a round, per parameter,  \
+                                  at the base share */
+#define SHARE_MAX 4            /* the share grows to this many times the base */
 #define SEED_STREAM 0xde5eedUL /* the populations' seeds: a stream apart from the scan's shift */
 
 /* one population and the points it ran in its last leg, to join the archive in order */
@@ -28,7 +30,7 @@ typedef struct population {
     zp_leg *leg;     /* the leg evolving it now */
     int gens;        /* generations of this round */
     int npts, cap;
-    double *f; /* owned, cap x n parameters */
+    double *f;  /* owned, cap x n parameters */
     zp_eval *e; /* owned, cap */
 } population;
 
@@ -71,12 +73,12 @@ static void *portfolio_create(const zp_strategy *self, const zp_search_state *S)
         portfolio_free(P);
         return NULL;
     }
-    int np = (getenv("ZP_PF_POP") ? atoi(getenv("ZP_PF_POP")) : POP_PER_PARAM) * S->n;
+    int np = POP_PER_PARAM * S->n;
     P->popsize = np < POP_MIN ? POP_MIN : np > POP_MAX ? POP_MAX : np;
     P->share = 1;
     for (int i = 0; i < NPOP; i++) {
         unsigned long seed = (S->o->seed ^ SEED_STREAM) * NPOP + (unsigned long)i;
-        if (!(P->pop[i].de = zp_pagmo_de_create(S->n, S->lo, S->hi, P->popsize, getenv("ZP_PF_VARIANT") ? atoi(getenv("ZP_PF_VARIANT")) : 2, seed))) {
+        if (!(P->pop[i].de = zp_pagmo_de_create(S->n, S->lo, S->hi, P->popsize, VARIANT, seed))) {
             portfolio_free(P);
             return NULL;
         }
@@ -171,7 +173,7 @@ static zp_status portfolio_explore(void *state, zp_search_state *S, int round, c
     if (st || zp_search_state_halted(S)) {
         return st;
     }
-    long share = (long)P->share * (getenv("ZP_PF_SHARE") ? atoi(getenv("ZP_PF_SHARE")) : SHARE_PER_PARAM) * S->n / NPOP;
+    long share = (long)P->share * SHARE_PER_PARAM * S->n / NPOP;
     int gens = share > P->popsize ? (int)(share / P->popsize) : 1;
     /* a population drawn afresh (the first round, or after it collapsed) spends popsize more */
     int cap = (gens + 1) * P->popsize;
