@@ -16,9 +16,9 @@
 
 namespace {
 
-constexpr unsigned adaptation = 1u;    // jDE
-constexpr double ftol = 1e-6;          // s: a population this flat has collapsed ...
-constexpr double xtol = 1e-3;          // N: ... when its members are this close too
+constexpr unsigned adaptation = 1u; // jDE
+constexpr double ftol = 1e-6;       // s: a population this flat has collapsed ...
+constexpr double xtol = 1e-3;       // N: ... when its members are this close too
 constexpr unsigned long seed_step = 0x9e3779b97f4a7c15UL; // the next seed after a collapse
 
 // what fitness calls, set before each evolution
@@ -32,20 +32,15 @@ struct box_problem {
     const context *ctx = nullptr;
     pagmo::vector_double lo, hi;
 
-    pagmo::vector_double fitness(const pagmo::vector_double &x) const
-    {
+    pagmo::vector_double fitness(const pagmo::vector_double &x) const {
         return {ctx->fit(ctx->user, x.data())};
     }
-    std::pair<pagmo::vector_double, pagmo::vector_double> get_bounds() const
-    {
-        return {lo, hi};
-    }
+    std::pair<pagmo::vector_double, pagmo::vector_double> get_bounds() const { return {lo, hi}; }
 };
 
 // every member within ftol of the best value and xtol of the others in each parameter: no
 // difference left to evolve with
-bool collapsed(const pagmo::population &pop)
-{
+bool collapsed(const pagmo::population &pop) {
     const auto &f = pop.get_f();
     const auto &x = pop.get_x();
     for (std::size_t i = 1; i < f.size(); i++) {
@@ -61,8 +56,7 @@ bool collapsed(const pagmo::population &pop)
     return true;
 }
 
-unsigned seed32(unsigned long s)
-{
+unsigned seed32(unsigned long s) {
     return static_cast<unsigned>(s ^ (s >> 32));
 }
 
@@ -79,8 +73,7 @@ struct zp_pagmo_de {
 };
 
 extern "C" zp_pagmo_de *zp_pagmo_de_create(int n, const double *lo, const double *hi, int popsize,
-                                           int variant, unsigned long seed)
-{
+                                           int variant, unsigned long seed) {
     try {
         auto d = std::make_unique<zp_pagmo_de>();
         d->prob.ctx = &d->ctx;
@@ -95,18 +88,17 @@ extern "C" zp_pagmo_de *zp_pagmo_de_create(int n, const double *lo, const double
     }
 }
 
-extern "C" void zp_pagmo_de_free(zp_pagmo_de *d)
-{
+extern "C" void zp_pagmo_de_free(zp_pagmo_de *d) {
     delete d;
 }
 
-extern "C" int zp_pagmo_de_evolve(zp_pagmo_de *d, int gens, zp_pagmo_de_fitness fit, void *user)
-{
+extern "C" int zp_pagmo_de_evolve(zp_pagmo_de *d, int gens, zp_pagmo_de_fitness fit, void *user) {
     d->ctx = context{fit, user};
     try {
         if (!d->pop) {
             d->algo.emplace(pagmo::sade(1u, d->variant, adaptation, 0, 0, true, seed32(d->seed)));
-            d->pop.emplace(pagmo::problem(d->prob), static_cast<pagmo::population::size_type>(d->popsize),
+            d->pop.emplace(pagmo::problem(d->prob),
+                           static_cast<pagmo::population::size_type>(d->popsize),
                            seed32(d->seed >> 1));
             d->seed += seed_step;
         }

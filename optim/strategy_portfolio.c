@@ -2,9 +2,10 @@
    then a share of differential evolution (pagmo2's sade, pagmo_de.h) in NPOP independent
    populations, each evolved serially on a leg of its own with its own seed from the search's,
    the legs in parallel: a fixed count, so the same seed gives the same bits on any thread
-   count. Every point a population runs joins the map, so the islands it finds are polished with
-   the others. The map decides the share: it doubles after a round whose populations improved
-   the best of the map and halves after one where they did not. */
+   count. The points a population runs join the map (its near-survivable ones thinned, below),
+   so the islands it finds are polished with the others. The map decides the share: it doubles
+   after a round whose populations improved the best of the map and halves after one where they
+   did not. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,9 +19,8 @@
 #define POP_PER_PARAM 5 /* members per parameter ... */
 #define POP_MIN 16      /* ... at least ... */
 #define POP_MAX 120     /* ... and at most */
-#define SHARE_PER_PARAM                                                                            \
-    600                        /* simulations of the populations together a round, per parameter,  \
-                                  at the base share */
+/* simulations of the populations together a round, per parameter, at the base share */
+#define SHARE_PER_PARAM 600
 #define SHARE_MAX 4            /* the share grows to this many times the base */
 #define SEED_STREAM 0xde5eedUL /* the populations' seeds: a stream apart from the scan's shift */
 
