@@ -116,7 +116,7 @@ int zp_islands_map(const zp_search_state *S, zp_islands *m) {
         return -1;
     }
     m->nnear = nnear < NEAR_MAX ? nnear : NEAR_MAX;
-    double rc2 = pow(critical(n, na - S->nclustered), 2);
+    double rc2 = pow(critical(n, na), 2);
     for (int j = 0; j < m->nnear; j++) {
         m->pt[j] = near[j];
         unit(S, near[j], u + (size_t)j * n);

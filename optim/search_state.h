@@ -29,8 +29,6 @@ typedef struct zp_search_state {
     zp_pool *pool;         /* owned */
     zp_search_result *res;
     zp_archive a;
-    int nclustered;    /* archive points from a population that gathers around its best: not
-                          a spread sample, so the islands' critical distance leaves them out */
     long spent;        /* simulations in the serial order: what the budget counts */
     int exhausted;     /* some unit of work was cut short by the budget */
     double running;    /* s, the best time in the serial history */

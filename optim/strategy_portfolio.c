@@ -2,10 +2,11 @@
    then a share of differential evolution (pagmo2's sade, pagmo_de.h) in NPOP independent
    populations, each evolved serially on a leg of its own with its own seed from the search's,
    the legs in parallel: a fixed count, so the same seed gives the same bits on any thread
-   count. The points a population runs join the map (its near-survivable ones thinned, below),
+   count. The points a population runs join the map (of its near-survivable ones the best, below),
    so the islands it finds are polished with the others. The map decides the share: it doubles
-   after a round whose populations improved the best of the map and halves after one where they
-   did not. */
+   after a round whose populations improved the best of the map more than the lines and the
+   polishes after them did, and halves otherwise. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -19,9 +20,11 @@
 #define POP_PER_PARAM 5 /* members per parameter ... */
 #define POP_MIN 16      /* ... at least ... */
 #define POP_MAX 120     /* ... and at most */
-/* simulations of the populations together a round, per parameter, at the base share */
-#define SHARE_PER_PARAM 600
-#define SHARE_MAX 4            /* the share grows to this many times the base */
+/* simulations of the populations together a round, per point of the scan's sequence in that
+   round, at the base share: the two global phases grow together, round by round, and a small
+   budget keeps its rounds of lines and polishes */
+#define PER_SCANNED 4
+#define SHARE_MAX 8            /* the share grows to this many times the base */
 #define SEED_STREAM 0xde5eedUL /* the populations' seeds: a stream apart from the scan's shift */
 
 /* one population and the points it ran in its last leg, to join the archive in order */
@@ -34,19 +37,12 @@ typedef struct population {
     zp_eval *e; /* owned, cap */
 } population;
 
-/* the near-survivable spots the populations mapped: one point per ZP_DISTINCT of the box,
-   the best there so far */
-typedef struct spots {
-    int n, cap;
-    double *f;  /* owned, cap x n parameters */
-    zp_eval *e; /* owned, cap */
-} spots;
-
 typedef struct portfolio {
     void *scan; /* owned: the scan's sequence */
-    spots sp;
     int popsize;
-    int share; /* times the base share, 1 .. SHARE_MAX */
+    int share;      /* times the base share, 1 .. SHARE_MAX */
+    double de_gain; /* the populations' relative improvement of the best, last round */
+    double after;   /* s, the best after them (INFINITY: none yet) */
     population pop[NPOP];
 } portfolio;
 
@@ -56,8 +52,6 @@ static void portfolio_free(void *state) {
         return;
     }
     zp_strategy_scan.free(P->scan);
-    free(P->sp.f);
-    free(P->sp.e);
     for (int i = 0; i < NPOP; i++) {
         zp_pagmo_de_free(P->pop[i].de);
         free(P->pop[i].f);
@@ -131,49 +125,55 @@ static int make_room(portfolio *P, const zp_search_state *S, int cap) {
 }
 
 /* design note: a population gathers around its best, and its near-survivable points would
-   fill the map's NEAR_MAX best with one island and push every other island off it; so a near
-   point of a population joins the map only where it is the first or the best so far within
-   ZP_DISTINCT of the box. Its other points all join: they separate islands */
-/* point f (evaluated e) of a population joins the map; 0: it adds nothing to the map */
-static int joins(spots *sp, const zp_search_state *S, const double *f, const zp_eval *e) {
-    if (!zp_islands_near(e)) {
-        return 1;
-    }
-    for (int j = 0; j < sp->n; j++) {
-        double *g = sp->f + (size_t)j * S->n;
-        if (!zp_search_state_distinct(S, f, g)) {
-            if (!zp_search_state_ahead(e, f, &sp->e[j], g, S->n)) {
-                return 0;
-            }
-            memcpy(g, f, sizeof *f * S->n);
-            sp->e[j] = *e;
-            return 1;
+   fill the map's NEAR_MAX best with its one island, push every other island off the map and
+   send every polish there (on multi8 all 12 polishes then ended in one island, and the
+   estimate claimed convergence at 7.47 s where the islands of the scan hold 6.79 s); so of a
+   population's round only its best near-survivable point joins the map, and all its others,
+   which separate islands */
+/* the index of population p's best near-survivable point of the round, -1: none */
+static int best_near(const population *p, const zp_search_state *S) {
+    int b = -1;
+    for (int j = 0; j < p->npts; j++) {
+        const double *f = p->f + (size_t)j * S->n;
+        if (zp_islands_near(&p->e[j]) &&
+            (b < 0 ||
+             zp_search_state_ahead(&p->e[j], f, &p->e[b], p->f + (size_t)b * S->n, S->n))) {
+            b = j;
         }
     }
-    if (sp->n == sp->cap) {
-        int cap = sp->cap ? 2 * sp->cap : 64;
-        double *nf = realloc(sp->f, sizeof *nf * (size_t)cap * S->n);
-        sp->f = nf ? nf : sp->f;
-        zp_eval *ne = nf ? realloc(sp->e, sizeof *ne * cap) : NULL;
-        sp->e = ne ? ne : sp->e;
-        if (!ne) {
-            return 1; /* out of memory: it joins unremembered */
-        }
-        sp->cap = cap;
-    }
-    memcpy(sp->f + (size_t)sp->n * S->n, f, sizeof *f * S->n);
-    sp->e[sp->n++] = *e;
-    return 1;
+    return b;
 }
 
+static double best_time(const zp_search_state *S) {
+    return S->res->found ? S->res->best.time : INFINITY;
+}
+
+/* the relative improvement from a best time to a later one */
+static double gain(double from, double to) {
+    return isfinite(to) ? (isfinite(from) ? (from - to) / to : 1) : 0;
+}
+
+/* design note: the share follows what won the last round: the populations' improvement of the
+   best against what the lines and the island polishes added after them. Where differential
+   evolution finds the fast islands (m5-m7 of docs/search.md) it takes up to SHARE_MAX times
+   the base; where the polishes do (m8, m10) it falls back to the base and never to nothing */
 static zp_status portfolio_explore(void *state, zp_search_state *S, int round, char *err,
                                    size_t errlen) {
     portfolio *P = state;
+    double start = best_time(S);
+    int n0 = S->a.n;
     zp_status st = zp_strategy_scan.explore(P->scan, S, round, err, errlen);
-    if (st || zp_search_state_halted(S)) {
+    /* the first round is the scan's alone: its lines and polishes map the islands before a
+       population's best can draw every line through itself */
+    if (st || round == 0 || zp_search_state_halted(S)) {
         return st;
     }
-    long share = (long)P->share * SHARE_PER_PARAM * S->n / NPOP;
+    if (round > 1) {
+        P->share = P->de_gain > gain(P->after, start)
+                       ? (P->share * 2 < SHARE_MAX ? P->share * 2 : SHARE_MAX)
+                       : (P->share > 1 ? P->share / 2 : 1);
+    }
+    long share = (long)P->share * PER_SCANNED * (S->a.n - n0) / NPOP;
     int gens = share > P->popsize ? (int)(share / P->popsize) : 1;
     /* a population drawn afresh (the first round, or after it collapsed) spends popsize more */
     int cap = (gens + 1) * P->popsize;
@@ -186,21 +186,19 @@ static zp_status portfolio_explore(void *state, zp_search_state *S, int round, c
         P->pop[i].gens = gens;
         jobs[i] = (zp_leg_job){.x0 = S->lo, .cap = cap, .user = &P->pop[i]};
     }
-    int had = S->res->found;
-    double before = S->res->best.time;
+    double before = best_time(S);
     st = zp_leg_batch(S, evolve_leg, NULL, jobs, NPOP, err, errlen);
     for (int i = 0; i < NPOP; i++) {
         const population *p = &P->pop[i];
+        int b = best_near(p, S);
         for (int j = 0; j < p->npts; j++) {
-            const double *f = p->f + (size_t)j * S->n;
-            if (joins(&P->sp, S, f, &p->e[j])) {
-                S->nclustered += zp_search_state_add(S, f, &p->e[j]) >= 0;
+            if (j == b || !zp_islands_near(&p->e[j])) {
+                zp_search_state_add(S, p->f + (size_t)j * S->n, &p->e[j]);
             }
         }
     }
-    int gained = S->res->found && (!had || S->res->best.time < before);
-    P->share = gained ? (P->share * 2 < SHARE_MAX ? P->share * 2 : SHARE_MAX)
-                      : (P->share > 1 ? P->share / 2 : 1);
+    P->after = best_time(S);
+    P->de_gain = gain(before, P->after);
     return st;
 }
 
