@@ -38,7 +38,7 @@ struct box_problem {
     std::pair<pagmo::vector_double, pagmo::vector_double> get_bounds() const { return {lo, hi}; }
 };
 
-// every member within ftol of the best value and xtol of the others in each parameter: no
+// every member within ftol of the first's value and xtol of it in each parameter: no
 // difference left to evolve with
 bool collapsed(const pagmo::population &pop) {
     const auto &f = pop.get_f();
@@ -96,6 +96,8 @@ extern "C" int zp_pagmo_de_evolve(zp_pagmo_de *d, int gens, zp_pagmo_de_fitness 
     d->ctx = context{fit, user};
     try {
         if (!d->pop) {
+            // sade's own tolerances off: collapse is judged here after every generation; memory
+            // on: F and CR carry over from one call to the next
             d->algo.emplace(pagmo::sade(1u, d->variant, adaptation, 0, 0, true, seed32(d->seed)));
             d->pop.emplace(pagmo::problem(d->prob),
                            static_cast<pagmo::population::size_type>(d->popsize),

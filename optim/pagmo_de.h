@@ -21,9 +21,11 @@ zp_pagmo_de *zp_pagmo_de_create(int n, const double *lo, const double *hi, int p
                                 unsigned long seed);
 void zp_pagmo_de_free(zp_pagmo_de *d);
 
-/* gens generations (popsize evaluations each) through fit; the first call first draws the
-   population (popsize evaluations), and so does the call after the population has collapsed
-   (its spread below sade's tolerances), with the next seed. 0, or -1 when pagmo refused. */
+/* up to gens generations (popsize evaluations each) through fit; the first call first draws
+   the population (popsize evaluations), and so does the call after the population has
+   collapsed (every member within 1e-6 of the first's value and 1e-3 of it in each parameter:
+   the generation that found it so ends the call), with the next seed. 0, or -1 when pagmo
+   refused. */
 int zp_pagmo_de_evolve(zp_pagmo_de *d, int gens, zp_pagmo_de_fitness fit, void *user);
 
 #ifdef __cplusplus
