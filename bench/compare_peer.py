@@ -3,8 +3,8 @@
 differential evolution with its polish, bench/peer_de.py): answer, simulations, wall time, and
 whether the default is within 0.1 % of the best of the three (docs/search.md, "Against a peer").
 
-    /usr/bin/python3 bench/compare_peer.py [--build build] [--peer-evals N] [--skip-10x]
-                                           [--skip-peer] SCENE.ini..
+    /usr/bin/python3 bench/compare_peer.py [--build build] [--algorithm NAME] [--peer-evals N]
+                                           [--skip-10x] [--skip-peer] SCENE.ini..
 
 The zipopt runs use the command line (--no-plot --json, into a temporary folder); the peer runs
 through the Python module of the same build. One line per run as it ends, then the table.
@@ -65,21 +65,24 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("scenes", nargs="+")
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
+    ap.add_argument("--algorithm", default=None,
+                    help="zipopt's --algorithm for its runs (default: zipopt's default)")
     ap.add_argument("--peer-evals", type=int, default=0,
                     help="the peer's simulations (default: zipopt's default budget)")
     ap.add_argument("--skip-10x", action="store_true")
     ap.add_argument("--skip-peer", action="store_true")
     a = ap.parse_args()
+    alg = ["--algorithm", a.algorithm] if a.algorithm else []
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         for scene in a.scenes:
             row = {"scene": os.path.basename(scene)}
-            row["default"] = zipopt(a.build, scene, [], tmp)
+            row["default"] = zipopt(a.build, scene, alg, tmp)
             print(row["scene"], "default", fmt(row["default"]), flush=True)
             row["10x"] = None
             if not a.skip_10x:
                 budget = 10 * default_budget(a.build, scene)
-                row["10x"] = zipopt(a.build, scene, ["--max-evals", str(budget)], tmp)
+                row["10x"] = zipopt(a.build, scene, alg + ["--max-evals", str(budget)], tmp)
                 print(row["scene"], "10x", fmt(row["10x"]), flush=True)
             row["peer"] = None if a.skip_peer else peer(a.build, scene, a.peer_evals)
             if row["peer"]:

@@ -11,7 +11,7 @@
 #define SIGMA 2      /* the critical distance's sigma (Rinnooy Kan and Timmer's MLSL) */
 #define LINK_TRIES 4 /* nearest better points tried as a point's link */
 
-static int is_near(const zp_eval *e) {
+int zp_islands_near(const zp_eval *e) {
     return !e->failed && e->outcome == ZP_OUTCOME_FINISHED && e->cons <= NEAR_DEG;
 }
 
@@ -101,7 +101,7 @@ int zp_islands_map(const zp_search_state *S, zp_islands *m) {
     m->isl = malloc(sizeof *m->isl * NEAR_MAX);
     /* the near points, best first; every other point can break a link */
     for (int i = 0; near && blk && i < na; i++) {
-        if (is_near(&S->a.e[i])) {
+        if (zp_islands_near(&S->a.e[i])) {
             near[nnear++] = i;
         } else {
             unit(S, i, blk + (size_t)nblk++ * n);

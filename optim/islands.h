@@ -21,6 +21,9 @@ typedef struct zp_islands {
     zp_island *isl; /* owned, n */
 } zp_islands;
 
+/* a run the map keeps as near-survivable: it finished within a few degrees past the margin */
+int zp_islands_near(const zp_eval *e);
+
 /* 0, or -1 when out of memory (m empty) */
 int zp_islands_map(const zp_search_state *S, zp_islands *m);
 void zp_islands_free(zp_islands *m);

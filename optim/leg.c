@@ -60,6 +60,7 @@ static void leg_init(zp_leg *leg, zp_search_state *S, const zp_leg_job *j, long 
                     .step = j->step,
                     .xtol = j->diag ? DIAG_XTOL : XTOL,
                     .budget = budget,
+                    .user = j->user,
                     .S = S,
                     .diag = j->diag,
                     .archive = j->archive};

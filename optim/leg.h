@@ -28,6 +28,7 @@ typedef struct zp_leg {
     const double *step; /* first steps per variable, NULL: the strategy's own */
     double xtol;        /* the variables' resolution: a polish may stop once they settle to it */
     long budget;        /* simulations it may spend */
+    void *user;         /* the job's own, for the strategy that runs it */
     zp_search_state *S;
     /* set by a strategy that could not run the leg */
     int refused;
@@ -68,6 +69,7 @@ typedef struct zp_leg_job {
     int diag;           /* one variable: the same share of the box for every parameter */
     int archive;        /* every point it evaluates joins the archive (a leg run alone) */
     long cap;           /* simulations it may spend */
+    void *user;         /* passed on to the leg */
     zp_leg_rec *out;    /* the record filled, may be NULL */
 } zp_leg_job;
 

@@ -175,6 +175,42 @@ int main(void) {
             zp_model_free(m);
         }
     }
+    /* the portfolio (the scan beside pagmo's differential evolution in seeded populations):
+       a larger budget runs everything a smaller one does, with budgets that cut the
+       populations' legs in the first round and in later ones, and the same bits on 1 and 2
+       threads */
+    {
+        zp_scene_load_seed(&sc);
+        zp_diag d;
+        zp_diag_init(&d);
+        zp_model *m = zp_model_build(&sc, &d);
+        zp_sim_opts o = tu_opts(&sc, 1e-5);
+        zp_objective ob = tu_objective(m, &sc, &o);
+        int a = zp_search_algo_find("portfolio-cobyla");
+        CHECK(a >= 0);
+        double prev = INFINITY;
+        for (long b = 400; b <= 3200; b *= 2) {
+            sc.max_evals = b;
+            search_with(&ob, &o, &sc, a, 2, &res);
+            CHECK(res.evals <= b);
+            double t = res.found ? res.best.time : INFINITY;
+            CHECK(t <= prev * (1 + 1e-9));
+            prev = t;
+            if (b > 400) {
+                CHECK(res.nhist >= res2.nhist);
+                for (int i = 0; i < res2.nhist && i < res.nhist; i++) {
+                    CHECK(res.hist[i].evals == res2.hist[i].evals &&
+                          res.hist[i].time == res2.hist[i].time);
+                }
+            }
+            res2 = res;
+        }
+        search_with(&ob, &o, &sc, a, 1, &res2);
+        CHECK(!memcmp(res.force, res2.force, sizeof res.force));
+        CHECK(res.evals == res2.evals && res.best.time == res2.best.time &&
+              res.nhist == res2.nhist);
+        zp_model_free(m);
+    }
     /* the gradient polish on the seed: it polishes, the same bits on 1 and 2 threads, its
        answer survivable; with a [limits] value the same and the answer keeps it; and it
        refuses constraints without gradients, saying which */

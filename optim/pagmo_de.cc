@@ -1,0 +1,119 @@
+// pagmo2's sade behind pagmo_de.h: the population and the algorithm (whose adapted F and CR
+// and random engine carry over from one call to the next) live as long as the handle.
+#include "pagmo_de.h"
+
+#include <cmath>
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include <pagmo/algorithm.hpp>
+#include <pagmo/algorithms/sade.hpp>
+#include <pagmo/population.hpp>
+#include <pagmo/problem.hpp>
+
+namespace {
+
+constexpr unsigned adaptation = 1u; // jDE
+constexpr double ftol = 1e-6;       // s: a population this flat has collapsed ...
+constexpr double xtol = 1e-3;       // N: ... when its members are this close too
+constexpr unsigned long seed_step = 0x9e3779b97f4a7c15UL; // the next seed after a collapse
+
+// what fitness calls, set before each evolution
+struct context {
+    zp_pagmo_de_fitness fit = nullptr;
+    void *user = nullptr;
+};
+
+// the box and the fitness as pagmo sees a problem; ctx outlives every copy pagmo makes
+struct box_problem {
+    const context *ctx = nullptr;
+    pagmo::vector_double lo, hi;
+
+    pagmo::vector_double fitness(const pagmo::vector_double &x) const {
+        return {ctx->fit(ctx->user, x.data())};
+    }
+    std::pair<pagmo::vector_double, pagmo::vector_double> get_bounds() const { return {lo, hi}; }
+};
+
+// every member within ftol of the first's value and xtol of it in each parameter: no
+// difference left to evolve with
+bool collapsed(const pagmo::population &pop) {
+    const auto &f = pop.get_f();
+    const auto &x = pop.get_x();
+    for (std::size_t i = 1; i < f.size(); i++) {
+        if (std::fabs(f[i][0] - f[0][0]) > ftol) {
+            return false;
+        }
+        for (std::size_t k = 0; k < x[i].size(); k++) {
+            if (std::fabs(x[i][k] - x[0][k]) > xtol) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+unsigned seed32(unsigned long s) {
+    return static_cast<unsigned>(s ^ (s >> 32));
+}
+
+} // namespace
+
+struct zp_pagmo_de {
+    context ctx;
+    box_problem prob;
+    int popsize = 0;
+    unsigned variant = 0;
+    unsigned long seed = 0;
+    std::optional<pagmo::algorithm> algo;
+    std::optional<pagmo::population> pop; // empty: to be drawn at the next evolution
+};
+
+extern "C" zp_pagmo_de *zp_pagmo_de_create(int n, const double *lo, const double *hi, int popsize,
+                                           int variant, unsigned long seed) {
+    try {
+        auto d = std::make_unique<zp_pagmo_de>();
+        d->prob.ctx = &d->ctx;
+        d->prob.lo.assign(lo, lo + n);
+        d->prob.hi.assign(hi, hi + n);
+        d->popsize = popsize;
+        d->variant = static_cast<unsigned>(variant);
+        d->seed = seed;
+        return d.release();
+    } catch (...) {
+        return nullptr;
+    }
+}
+
+extern "C" void zp_pagmo_de_free(zp_pagmo_de *d) {
+    delete d;
+}
+
+extern "C" int zp_pagmo_de_evolve(zp_pagmo_de *d, int gens, zp_pagmo_de_fitness fit, void *user) {
+    d->ctx = context{fit, user};
+    try {
+        if (!d->pop) {
+            // sade's own tolerances off: collapse is judged here after every generation; memory
+            // on: F and CR carry over from one call to the next
+            d->algo.emplace(pagmo::sade(1u, d->variant, adaptation, 0, 0, true, seed32(d->seed)));
+            d->pop.emplace(pagmo::problem(d->prob),
+                           static_cast<pagmo::population::size_type>(d->popsize),
+                           seed32(d->seed >> 1));
+            d->seed += seed_step;
+        }
+        for (int g = 0; g < gens && d->pop; g++) {
+            *d->pop = d->algo->evolve(*d->pop);
+            if (collapsed(*d->pop)) {
+                d->pop.reset(); // the next evolution draws a fresh one
+            }
+        }
+    } catch (...) {
+        d->ctx = context{};
+        return -1;
+    }
+    d->ctx = context{};
+    return 0;
+}

@@ -1,0 +1,200 @@
+/* The portfolio's global phase (strategies.def): each round the scan's low-discrepancy points,
+   then a share of differential evolution (pagmo2's sade, pagmo_de.h) in NPOP independent
+   populations, each evolved serially on a leg of its own with its own seed from the search's,
+   the legs in parallel: a fixed count, so the same seed gives the same bits on any thread
+   count. The points a population runs join the map (of its near-survivable ones the best, below),
+   so the islands it finds are polished with the others. The map decides the share: it doubles
+   after a round whose populations improved the best of the map and halves after one where they
+   did not. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "islands.h"
+#include "pagmo_de.h"
+#include "strategy.h"
+
+#define NPOP 4          /* populations, whatever the threads */
+#define VARIANT 6       /* sade's best/1/bin (SciPy's best1bin), with jDE's adaptation */
+#define POP_PER_PARAM 5 /* members per parameter ... */
+#define POP_MIN 16      /* ... at least ... */
+#define POP_MAX 120     /* ... and at most */
+/* simulations of the populations together a round, per point of the scan's sequence in that
+   round, at the base share: the two global phases grow together, round by round, and a small
+   budget keeps its rounds of lines and polishes */
+#define PER_SCANNED 4
+#define SHARE_MAX 8            /* the share grows to this many times the base */
+#define SEED_STREAM 0xde5eedUL /* the populations' seeds: a stream apart from the scan's shift */
+
+/* one population and the points it ran in its last leg, to join the archive in order */
+typedef struct population {
+    zp_pagmo_de *de; /* owned */
+    zp_leg *leg;     /* the leg evolving it now */
+    int gens;        /* generations of this round */
+    int npts, cap;
+    double *f;  /* owned, cap x n parameters */
+    zp_eval *e; /* owned, cap */
+} population;
+
+typedef struct portfolio {
+    void *scan; /* owned: the scan's sequence */
+    int popsize;
+    int share;  /* times the base share, 1 .. SHARE_MAX */
+    int gained; /* the populations improved the best of the map last round */
+    population pop[NPOP];
+} portfolio;
+
+static void portfolio_free(void *state) {
+    portfolio *P = state;
+    if (!P) {
+        return;
+    }
+    zp_strategy_scan.free(P->scan);
+    for (int i = 0; i < NPOP; i++) {
+        zp_pagmo_de_free(P->pop[i].de);
+        free(P->pop[i].f);
+        free(P->pop[i].e);
+    }
+    free(P);
+}
+
+static void *portfolio_create(const zp_strategy *self, const zp_search_state *S) {
+    (void)self;
+    portfolio *P = calloc(1, sizeof *P);
+    if (!P || !(P->scan = zp_strategy_scan.create(&zp_strategy_scan, S))) {
+        portfolio_free(P);
+        return NULL;
+    }
+    int np = POP_PER_PARAM * S->n;
+    P->popsize = np < POP_MIN ? POP_MIN : np > POP_MAX ? POP_MAX : np;
+    P->share = 1;
+    for (int i = 0; i < NPOP; i++) {
+        unsigned long seed = (S->o->seed ^ SEED_STREAM) * NPOP + (unsigned long)i;
+        if (!(P->pop[i].de = zp_pagmo_de_create(S->n, S->lo, S->hi, P->popsize, VARIANT, seed))) {
+            portfolio_free(P);
+            return NULL;
+        }
+    }
+    return P;
+}
+
+/* the penalised score at x through the leg (dying runs by how far they got), the point kept
+   for the archive when it was simulated */
+static double fitness(void *user, const double *x) {
+    population *p = user;
+    zp_leg *leg = p->leg;
+    long n0 = leg->n;
+    const zp_eval *e = zp_leg_eval(leg, x);
+    if (!e) {
+        return 3 * leg->S->ob->t_max; /* the budget is spent: worse than any run */
+    }
+    if (leg->n > n0 && p->npts < p->cap) {
+        zp_leg_params(leg, x, p->f + (size_t)p->npts * leg->S->n);
+        p->e[p->npts++] = *e;
+    }
+    return e->score;
+}
+
+static void evolve_leg(const void *how, zp_leg *leg) {
+    (void)how;
+    population *p = leg->user;
+    p->leg = leg;
+    if (zp_pagmo_de_evolve(p->de, p->gens, fitness, p)) {
+        leg->refused = 1;
+        snprintf(leg->why, sizeof leg->why, "pagmo's sade refused the search");
+    }
+}
+
+/* room for what each population may run in the round: cap simulations */
+static int make_room(portfolio *P, const zp_search_state *S, int cap) {
+    for (int i = 0; i < NPOP; i++) {
+        population *p = &P->pop[i];
+        free(p->f);
+        free(p->e);
+        p->f = malloc(sizeof *p->f * (size_t)cap * S->n);
+        p->e = malloc(sizeof *p->e * (size_t)cap);
+        p->npts = 0;
+        p->cap = cap;
+        if (!p->f || !p->e) {
+            return -1;
+        }
+    }
+    return 0;
+}
+
+/* design note: a population gathers around its best, and its near-survivable points would
+   fill the map's NEAR_MAX best with its one island and push the other islands off the map; so
+   of a population's round only its best near-survivable point joins the map, with every point
+   of it that is not near-survivable (those separate islands) */
+/* the index of population p's best near-survivable point of the round, -1: none */
+static int best_near(const population *p, const zp_search_state *S) {
+    int b = -1;
+    for (int j = 0; j < p->npts; j++) {
+        const double *f = p->f + (size_t)j * S->n;
+        if (zp_islands_near(&p->e[j]) &&
+            (b < 0 ||
+             zp_search_state_ahead(&p->e[j], f, &p->e[b], p->f + (size_t)b * S->n, S->n))) {
+            b = j;
+        }
+    }
+    return b;
+}
+
+static double best_time(const zp_search_state *S) {
+    return S->res->found ? S->res->best.time : INFINITY;
+}
+
+/* design note: the share follows the map: while the populations keep improving its best (m5-m7
+   of docs/search.md) it grows to SHARE_MAX times the base; where the faster islands come from
+   the lines and polishes instead (m8, m10) it falls back to the base, never to nothing. Measured
+   against crediting the populations only when they gained more than the polishes after them
+   (docs/search.md): neither wins on every scene */
+static zp_status portfolio_explore(void *state, zp_search_state *S, int round, char *err,
+                                   size_t errlen) {
+    portfolio *P = state;
+    int n0 = S->a.n;
+    zp_status st = zp_strategy_scan.explore(P->scan, S, round, err, errlen);
+    /* the first round is the scan's alone: its lines and polishes map the islands before a
+       population's best draws the lines through itself (on multi8 a population's 7.47 s
+       island otherwise drew the lines and all 12 polishes of three rounds, and the estimate
+       claimed convergence there, where the scan's islands hold 6.79 s) */
+    if (st || round == 0 || zp_search_state_halted(S)) {
+        return st;
+    }
+    if (round > 1) {
+        P->share = P->gained ? (P->share * 2 < SHARE_MAX ? P->share * 2 : SHARE_MAX)
+                             : (P->share > 1 ? P->share / 2 : 1);
+    }
+    long share = (long)P->share * PER_SCANNED * (S->a.n - n0) / NPOP;
+    int gens = share > P->popsize ? (int)(share / P->popsize) : 1;
+    /* a population drawn afresh (the first round, or after it collapsed) spends popsize more */
+    int cap = (gens + 1) * P->popsize;
+    if (make_room(P, S, cap)) {
+        snprintf(err, errlen, "out of memory for the populations");
+        return ZP_ERR_NOMEM;
+    }
+    zp_leg_job jobs[NPOP];
+    for (int i = 0; i < NPOP; i++) {
+        P->pop[i].gens = gens;
+        jobs[i] = (zp_leg_job){.x0 = S->lo, .cap = cap, .user = &P->pop[i]};
+    }
+    double before = best_time(S);
+    st = zp_leg_batch(S, evolve_leg, NULL, jobs, NPOP, err, errlen);
+    for (int i = 0; i < NPOP; i++) {
+        const population *p = &P->pop[i];
+        int b = best_near(p, S);
+        for (int j = 0; j < p->npts; j++) {
+            if (j == b || !zp_islands_near(&p->e[j])) {
+                zp_search_state_add(S, p->f + (size_t)j * S->n, &p->e[j]);
+            }
+        }
+    }
+    P->gained = best_time(S) < before;
+    return st;
+}
+
+const zp_strategy zp_strategy_portfolio = {.name = "portfolio",
+                                           .phase = ZP_STRATEGY_GLOBAL,
+                                           .create = portfolio_create,
+                                           .free = portfolio_free,
+                                           .explore = portfolio_explore};
