@@ -2,7 +2,9 @@
 """The report's drive: on seed_profile at its default budget the search's report says what the
 profile gains over the best constant-per-section schedule of the same scene, and that is true:
 the same search over one force per section (the seed with the profile's budget and seed) finds
-the constant optimum 9.0459 s, the profile 6.8351 s, both rerun through simulate; report.md's
+the constant optimum 9.0459 s (the seed's, known from 10x and the brute force), the profile
+faster than that (the issue's floor), both rerun through simulate and the stated times and gain
+equal to the reruns'; report.md's
 drive table shows the answer's peak power, energy and time at the cap as `zipopt simulate
 --json` gives them, and links drive.png, which is drawn; the seed (a constant kind) searches no
 constant schedule beside its own.
@@ -39,20 +41,23 @@ with tempfile.TemporaryDirectory() as tmp:
     md = open(os.path.join(out, "report.md")).read()
     summary = json.load(open(os.path.join(out, "summary.json")))
     run = simulate(profile, summary["forces"], os.path.join(tmp, "s"))
-    check(abs(run["time"] - 6.8351) < 5e-5, "the profile's answer: %.6f s" % run["time"])
+    check(run["outcome"] == "finished" and run["time"] < 9.0459 - 1e-3,
+          "the profile's answer: %.6f s, not faster than the constant optimum" % run["time"])
     gain = re.search(r"^- over the best constant-per-section schedule of the same scene \(the "
                      r"same search, budget and seed over one force per section: ([0-9., ]+) N, "
                      r"([0-9.]+) s; this profile ([0-9.]+) s\): ([0-9.]+) s faster", md, re.M)
     check(gain is not None, "report.md states the profile's gain:\n" + md[:2000])
-    check("profile gain: 6.8351 s against 9.0459 s" in text, "the text summary:\n" + text)
+    check("profile gain: %.4f s against 9.0459 s" % run["time"] in text,
+          "the text summary:\n" + text)
     if gain:
         forces = [float(x) for x in gain.group(1).split(",")]
         const = simulate(os.path.join(src, "config", "seed.ini"), forces, os.path.join(tmp, "c"))
         check(const["outcome"] == "finished" and abs(const["time"] - 9.0459) < 5e-5,
               "the constant schedule %s reruns to %s at %.6f s" % (forces, const["outcome"],
                                                                   const["time"]))
-        check(gain.group(2) == "9.0459" and gain.group(3) == "6.8351" and
-              gain.group(4) == "2.211", "the times: %s" % (gain.groups(),))
+        check(gain.group(2) == "9.0459" and gain.group(3) == "%.4f" % run["time"] and
+              abs(float(gain.group(4)) - (const["time"] - run["time"])) < 1.5e-3,
+              "the times: %s" % (gain.groups(),))
     # the drive table against the program's run of the answer (the search's answer profile)
     row = re.search(r"^\| ([0-9]+) W \| ([0-9.]+) kJ \| (.*) \|$", md, re.M)
     check(row is not None, "report.md's drive table")
