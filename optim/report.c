@@ -51,8 +51,12 @@ void zp_report_convergence(char *buf, size_t n, const zp_answer *a) {
                  "larger budget cannot help",
                  cable_max, floor);
     } else if (s->converged) {
-        snprintf(tail, sizeof tail, "; the last round found nothing better: a larger budget is "
-                                    "unlikely to help");
+        /* the estimate counts the basins the polishes' starts can reach, which come from the
+           map: an island the map never touched is not in it (docs/search.md, m4_8link) */
+        snprintf(tail, sizeof tail,
+                 "; the last round found nothing better: a larger budget of this search is "
+                 "unlikely to help (islands its map never reached are not counted: another "
+                 "--algorithm may find one)");
     } else if (s->interrupted) {
         snprintf(tail, sizeof tail, "; interrupted before the search converged");
     } else if (s->timed_out || s->budget_out) {
