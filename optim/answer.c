@@ -11,7 +11,11 @@
 #define NROBUST 200 /* robustness runs per perturbation level (ZP_ANSWER_REPORTED) */
 
 zp_answer_opts zp_answer_opts_of(const zp_problem *p, zp_answer_depth depth) {
-    return (zp_answer_opts){.depth = depth, .search = {.max_evals = p->max_evals, .seed = p->seed}};
+    return (zp_answer_opts){
+        .depth = depth,
+        .search = {.max_evals = p->max_evals,
+                   .seed = p->seed,
+                   .algo = zp_search_algo_default(p->m->nsec, p->sc.robust)}};
 }
 
 static int stage(const zp_answer_opts *o, zp_answer_stage s, const zp_answer *a) {

@@ -41,6 +41,11 @@ int zp_search_algo_find(const char *name) {
     return -1;
 }
 
+int zp_search_algo_default(int nsec, int robust) {
+    return nsec >= ZP_SEARCH_PORTFOLIO_SECTIONS && !robust ? zp_search_algo_find("portfolio-cobyla")
+                                                          : zp_search_algo_find("scan-cobyla");
+}
+
 long zp_search_default_budget(int n) {
     return ZP_SCENE_EVALS_PER_SECTION * (long)(n > 0 ? n : 1);
 }

@@ -17,6 +17,14 @@ typedef struct zp_search_algo {
 int zp_search_algo_count(void);
 const zp_search_algo *zp_search_algo_get(int i);
 int zp_search_algo_find(const char *name); /* -1 if unknown */
+/* The strategy a search runs when none is named: portfolio-cobyla on a box of
+   ZP_SEARCH_PORTFOLIO_SECTIONS sections or more held to no [robust] scenarios, where its
+   populations found islands the scan's map missed (up to 6 % faster on the multi-section scenes
+   measured), scan-cobyla otherwise: on smaller boxes the map covers the box and the
+   populations only take budget from the polishes (the seed at +/-2 % fell to a 10.7 % slower
+   island). docs/search.md has the measurements. */
+#define ZP_SEARCH_PORTFOLIO_SECTIONS 4
+int zp_search_algo_default(int nsec, int robust);
 
 /* The default budget for n parameters: ZP_SCENE_EVALS_PER_SECTION simulations each. */
 long zp_search_default_budget(int n);

@@ -211,6 +211,15 @@ int main(void) {
               res.nhist == res2.nhist);
         zp_model_free(m);
     }
+    /* the default by the scene: the portfolio from 4 sections without [robust], the scan on
+       fewer sections and in every robust search */
+    {
+        int scan = zp_search_algo_find("scan-cobyla"), pf = zp_search_algo_find("portfolio-cobyla");
+        CHECK(scan >= 0 && pf >= 0 && scan != pf);
+        CHECK(zp_search_algo_default(1, 0) == scan && zp_search_algo_default(3, 0) == scan);
+        CHECK(zp_search_algo_default(4, 0) == pf && zp_search_algo_default(12, 0) == pf);
+        CHECK(zp_search_algo_default(4, 1) == scan && zp_search_algo_default(3, 1) == scan);
+    }
     /* the gradient polish on the seed: it polishes, the same bits on 1 and 2 threads, its
        answer survivable; with a [limits] value the same and the answer keeps it; and it
        refuses constraints without gradients, saying which */

@@ -40,7 +40,8 @@ static void usage(FILE *f) {
           "While it runs, the best so far is kept in DIR/checkpoint.ini; Ctrl-C stops the\n"
           "search and writes the best so far, marked interrupted.\n"
           "  --out DIR         output folder\n"
-          "  --algorithm NAME  the search strategy (below; default scan-cobyla)\n"
+          "  --algorithm NAME  the search strategy (below; default portfolio-cobyla on 4\n"
+          "                    sections or more without [robust], scan-cobyla otherwise)\n"
           "  --seed N          overrides [optimize] seed\n"
           "  --max-evals N     overrides [optimize] max_evals (simulations; default 5000 per\n"
           "                    section)\n"
@@ -340,7 +341,9 @@ static int search(int argc, char **argv, const zp_spread *sp) {
                        .tty = isatty(STDERR_FILENO), .plot = !a.no_plot,
                        .early = !a.no_plot && !(st.sc.accuracy > 0)};
     zp_answer_opts o = zp_answer_opts_of(&st, ZP_ANSWER_REPORTED);
-    o.search.algo = a.algo ? zp_search_algo_find(a.algo) : 0;
+    if (a.algo) {
+        o.search.algo = zp_search_algo_find(a.algo);
+    }
     o.search.max_time = a.max_time;
     o.search.stop = &interrupted;
     o.search.progress = on_progress;
