@@ -54,17 +54,16 @@ static void every_scene(void) {
         char path[1024];
         snprintf(path, sizeof path, "%s/config/%s", ZP_SOURCE_DIR, de->d_name);
         static zp_scene sc;
-        zp_diag d;
-        zp_diag_init(&d);
-        zp_model *m = zp_scene_load(path, &sc, &d) == ZP_OK ? zp_model_build(&sc, &d) : NULL;
+        zp_model *m = tu_model_file(path, &sc);
         CHECK(m != NULL);
         if (!m) {
-            zp_diag_print(&d, stderr);
             continue;
         }
         sc.accuracy = REQUEST; /* as if the file said accuracy instead of method, rtol, atol */
         sc.line_method = 0;
         zp_sim_opts o = tu_opts(&sc, 1); /* tolerances replaced by the pick below */
+        zp_diag d;
+        zp_diag_init(&d);
         zp_sim_opts_from_scene(&sc, &o, &d);
         o.output_dt = 0;
         zp_schedule sched = zp_drive_of_scene(&sc);

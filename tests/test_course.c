@@ -15,6 +15,7 @@
 #include "course.h"
 #include "model.h"
 #include "scene_load.h"
+#include "testutil.h"
 
 /* the derivatives are symbolic, so only round-off separates them from the closed forms */
 static double round_off(double v) {
@@ -168,9 +169,7 @@ static void test_scenes_compiled(void) {
         zp_course_err err;
         snprintf(path, sizeof path, "%s/config/%s.ini", ZP_SOURCE_DIR, scenes[i]);
         zp_scene sc;
-        zp_diag d;
-        zp_diag_init(&d);
-        zp_model *m = zp_scene_load(path, &sc, &d) == ZP_OK ? zp_model_build(&sc, &d) : NULL;
+        zp_model *m = tu_model_file(path, &sc);
         zp_course *c = m ? zp_model_course(m, &err) : NULL;
         CHECK(c && zp_course_compiled(c));
         for (int k = 0; c && k < m->nsec; k++) {

@@ -149,10 +149,7 @@ static void compare(const char *what, const zp_model *m, const zp_sim_opts *o,
 static void scene_path(const char *path, unsigned *seed) {
     const char *name = strrchr(path, '/') ? strrchr(path, '/') + 1 : path;
     zp_scene sc;
-    zp_diag d;
-    zp_diag_init(&d);
-    CHECK(zp_scene_load(path, &sc, &d) == ZP_OK);
-    zp_model *m = zp_model_build(&sc, &d);
+    zp_model *m = tu_model_file(path, &sc);
     CHECK(m != NULL);
     if (!m) {
         return;

@@ -24,10 +24,7 @@ static void scene(const char *name) {
     char path[512];
     snprintf(path, sizeof path, "%s/config/%s", ZP_SOURCE_DIR, name);
     zp_scene sc;
-    zp_diag d;
-    zp_diag_init(&d);
-    CHECK(zp_scene_load(path, &sc, &d) == ZP_OK);
-    zp_model *m = zp_model_build(&sc, &d);
+    zp_model *m = tu_model_file(path, &sc);
     CHECK(m != NULL);
     if (!m) {
         return;

@@ -42,6 +42,18 @@ static inline zp_model *tu_seed_model(zp_scene *sc) {
     return m;
 }
 
+/* A scene file and its model; NULL (its diagnostics printed) where it does not load or build,
+   for the test to check. */
+static inline zp_model *tu_model_file(const char *path, zp_scene *sc) {
+    zp_diag d;
+    zp_diag_init(&d);
+    zp_model *m = zp_scene_load(path, sc, &d) == ZP_OK ? zp_model_build(sc, &d) : NULL;
+    if (!m) {
+        zp_diag_print(&d, stderr);
+    }
+    return m;
+}
+
 /* Options of the scene with the given tolerance (atol = rtol / 100) and no trajectory. */
 static inline zp_sim_opts tu_opts(const zp_scene *sc, double rtol) {
     zp_sim_opts o;
