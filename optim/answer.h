@@ -6,6 +6,7 @@
 
 #include "diagnose.h"
 #include "problem.h"
+#include "push_scan.h"
 #include "robust.h"
 #include "verify.h"
 
@@ -73,6 +74,9 @@ struct zp_answer {
     zp_diagnosis *diag;   /* owned, NULL: the answer keeps every fresh scenario (or the
                              depth is lower) */
     zp_answer_constant constant; /* with a profile, what it gains (ZP_ANSWER_REPORTED) */
+    zp_push_scan push; /* without [robust], the best constant push's own scan
+                          (ZP_ANSWER_REPORTED; push.npts 0: not run); res.base is the faster
+                          of it and the search's pushes */
 };
 
 /* The options of a solve of p to depth: the first strategy, p's budget and seed, no stop, no

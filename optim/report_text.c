@@ -62,7 +62,13 @@ void zp_report_text_write(FILE *f, const zp_answer *a) {
             p->sc.death_angle - angle * 180 / M_PI,
             a->v.agree ? ", verified" : ", NOT verified at the tighter tolerance");
     if (s->base_found) {
-        fprintf(f, "best constant push: %.3f N, %.4f s\n", s->base_force, s->base.time);
+        fprintf(f, "best constant push: %.3f N, %.4f s", s->base_force, s->base.time);
+        if (a->push.npts > 0) {
+            fprintf(f, " (%ld runs besides the search: %d pushes on a grid, then the fastest "
+                       "bands' edges)",
+                    a->push.evals, a->push.npts);
+        }
+        fputc('\n', f);
     } else {
         fprintf(f, "best constant push: none the search ran survived (finished within the margin, "
                    "[limits] and held scenarios)\n");

@@ -227,7 +227,7 @@ void zp_summary_write_json(FILE *f, const zp_answer *a) {
         zp_out_json_number(f, s->base_force);
         fputs(", \"time\": ", f);
         zp_out_json_number(f, s->base.time);
-        fputc('}', f);
+        fprintf(f, ", \"pushes_run\": %ld}", a->push.evals); /* besides the search's */
     } else {
         fputs("null", f);
     }
