@@ -1,6 +1,7 @@
 /* Verification of the best schedule: the same run at a 100x tighter tolerance, seeded random
    perturbations of every parameter and, parameter by parameter, the smallest change that kills,
-   in one parallel batch (the tighter run in it, or first alone when the caller judges by it); and the answer rerun tighter when [solver] accuracy asks for more. */
+   in one parallel batch (the tighter run in it, or first alone when the caller judges by it);
+   and the answer rerun tighter when [solver] accuracy asks for more. */
 #include "verify.h"
 
 #include <gsl/gsl_rng.h>
@@ -194,9 +195,8 @@ static zp_status check(const zp_objective *ob, const zp_sim_opts *so, const doub
     /* the tighter run alone: no pool of workspaces for one job */
     zp_pool *pool = nrobust > 0 ? zp_pool_create(m, &fast, nthreads) : NULL;
     gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
-    zp_status ret = (b.tight_sim || !with_tight) && b.pf && b.pe && b.kill && (pool || !nrobust) && g
-                        ? ZP_OK
-                        : ZP_ERR_NOMEM;
+    int made = (b.tight_sim || !with_tight) && b.pf && b.pe && b.kill && (pool || !nrobust) && g;
+    zp_status ret = made ? ZP_OK : ZP_ERR_NOMEM;
     if (ret == ZP_OK && pool) {
         perturb(force, np, seed, nrobust, v->level, b.pf, g);
         zp_pool_map(pool, b.nkill + with_tight + ntot, check_job, &b, progress, user);
