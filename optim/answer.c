@@ -1,12 +1,15 @@
 /* Problem -> answer (answer.h): the robust search with its fresh-scenario check, then the
-   answer rerun and verified, [solver] accuracy, the held verdict, the scene's own forces and
-   the diagnosis, each step at most once, in this order, for every caller. */
+   answer rerun, [solver] accuracy and the held verdict (again for the search's next
+   candidates only when its best does not hold), the robustness runs, the scene's own forces
+   and the diagnosis, each step at most once, in this order, for every caller. */
 #include "answer.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "search_state.h"
 
 #define NROBUST 200 /* robustness runs per perturbation level (ZP_ANSWER_REPORTED) */
 
@@ -22,11 +25,11 @@ static int stage(const zp_answer_opts *o, zp_answer_stage s, const zp_answer *a)
     return o->stage ? o->stage(o->user, s, a) : 0;
 }
 
-/* the (robust) search over p's bounds and, with [robust], its answer on fresh scenarios */
-static zp_status search(const zp_problem *p, const zp_answer_opts *o, zp_answer *a, char *err,
-                        size_t errlen) {
-    zp_sim_opts fast;
-    if (zp_robust_setup(&a->rp, &p->sc, p->m, p->limit, &p->sched, &p->sim, &p->search, &fast)) {
+/* the (robust) search over p's bounds (its runs' options in fast) and, with [robust], its answer
+   on fresh scenarios */
+static zp_status search(const zp_problem *p, const zp_answer_opts *o, zp_answer *a,
+                        zp_sim_opts *fast, char *err, size_t errlen) {
+    if (zp_robust_setup(&a->rp, &p->sc, p->m, p->limit, &p->sched, &p->sim, &p->search, fast)) {
         snprintf(err, errlen, "out of memory building the scenarios");
         if (!o->spread || o->spread->rank == 0) {
             zp_robust_release(o->spread); /* the other ranks wait for rank 0's answer */
@@ -34,7 +37,7 @@ static zp_status search(const zp_problem *p, const zp_answer_opts *o, zp_answer 
         return ZP_ERR_NOMEM;
     }
     a->rp.spread = o->spread;
-    return zp_robust_solve(&a->rp, &p->sc, &fast, p->sched.lo, p->sched.hi, &o->search, &a->res,
+    return zp_robust_solve(&a->rp, &p->sc, fast, p->sched.lo, p->sched.hi, &o->search, &a->res,
                            err, errlen);
 }
 
@@ -63,17 +66,143 @@ static int holds(const zp_problem *p, const zp_verify *v, char *why, size_t n) {
     return 0;
 }
 
-/* the answer rerun with p->answer on the nominal scene (the scenarios were checked above),
-   100x tighter and, reported, perturbed at the scene's force error and twice it and rerun to
-   [solver] accuracy; then whether it holds */
-static zp_status verify(const zp_problem *p, const zp_answer_opts *o, zp_answer *a, char *err,
-                        size_t errlen) {
+/* one candidate rerun and judged: what the answer keeps of it */
+typedef struct trial {
+    int ran;              /* v.run and best are made */
+    zp_verify v;
+    zp_sim *best;         /* owned */
+    zp_sim_opts run_opts; /* v.run's options */
+    zp_accuracy acc;
+} trial;
+
+static void trial_free(trial *t) {
+    zp_verify_free(&t->v);
+    zp_sim_free(t->best);
+    t->best = NULL;
+}
+
+/* force rerun with p->answer on the nominal scene (the scenarios were checked above), 100x
+   tighter and, reported, to [solver] accuracy: all that holds() judges */
+static zp_status rerun(const zp_problem *p, const zp_objective *ob, const double *force,
+                       int reported, trial *t, char *err, size_t errlen) {
+    t->run_opts = p->answer;
+    zp_status rc = zp_verify_begin(ob, &p->answer, force, &t->best, &t->v, err, errlen);
+    t->ran = !rc;
+    if (!rc) {
+        rc = zp_verify_tight(ob, &p->answer, force, &t->v, err, errlen);
+    }
+    if (!rc && reported && p->sc.accuracy > 0) {
+        rc = zp_verify_accuracy(ob, &p->answer, force, p->sc.accuracy, &t->best, &t->v,
+                                &t->run_opts, &t->acc, err, errlen);
+    }
+    return rc;
+}
+
+/* the next candidates the search kept after its best, in x[] (borrowed from r) by ranked time:
+   its islands' bests and polish ends, each distinct from the best and from those before it
+   (as the search tells points apart); how many, ZP_ANSWER_FALLBACKS at most */
+static int candidates(const zp_problem *p, const zp_search_result *r, const double **x) {
+    const double *pt[ZP_SEARCH_ISLANDS + ZP_SEARCH_ENDS];
+    double time[ZP_SEARCH_ISLANDS + ZP_SEARCH_ENDS];
+    int n = 0, np = p->sched.np;
+    for (int i = 0; i < r->nshown; i++, n++) {
+        pt[n] = r->island_force[i];
+        time[n] = r->island_time[i];
+    }
+    for (int i = 0; i < r->nends; i++, n++) {
+        pt[n] = r->ends[i];
+        time[n] = r->ends_time[i];
+    }
+    int nx = 0;
+    while (nx < ZP_ANSWER_FALLBACKS) {
+        int b = -1; /* the fastest left; ties to the first listed */
+        for (int j = 0; j < n; j++) {
+            if (pt[j] && (b < 0 || time[j] < time[b])) {
+                b = j;
+            }
+        }
+        if (b < 0) {
+            break;
+        }
+        int distinct = 1;
+        for (int i = -1; distinct && i < nx; i++) {
+            const double *y = i < 0 ? r->force : x[i];
+            distinct = 0;
+            for (int k = 0; !distinct && k < np; k++) {
+                distinct = fabs(pt[b][k] - y[k]) > ZP_DISTINCT * (p->sched.hi[k] - p->sched.lo[k]);
+            }
+        }
+        if (distinct) {
+            x[nx++] = pt[b];
+        }
+        pt[b] = NULL;
+    }
+    return nx;
+}
+
+/* the search's best t does not hold (why in a->unheld): the next candidates rerun alike, the
+   first that holds replacing it in t and as a->res's best (scored again at the search's
+   options fast, as the search scored it); none holding, t and a are left as they were */
+static zp_status fall_back(const zp_problem *p, const zp_objective *ob, const zp_sim_opts *fast,
+                           int reported, zp_answer *a, trial *t) {
+    const double *x[ZP_ANSWER_FALLBACKS];
+    int n = candidates(p, &a->res, x);
+    zp_answer_fallback *fb = &a->fallback;
+    if (n > 0) {
+        fb->first_time = a->res.best.time;
+        memcpy(fb->first_force, a->res.force, sizeof fb->first_force);
+        snprintf(fb->why, sizeof fb->why, "%s", a->unheld);
+    }
+    for (int i = 0; i < n && !fb->taken; i++) {
+        trial c = {0};
+        char why[256];
+        fb->tried++;
+        if (rerun(p, ob, x[i], reported, &c, why, sizeof why) ||
+            !holds(p, &c.v, why, sizeof why)) {
+            trial_free(&c);
+            continue;
+        }
+        zp_sim *s = zp_sim_create(p->m, fast);
+        zp_result *r = malloc(sizeof *r);
+        if (!s || !r) {
+            zp_sim_free(s);
+            free(r);
+            trial_free(&c);
+            return ZP_ERR_NOMEM;
+        }
+        fb->taken = 1;
+        a->unheld[0] = '\0';
+        memcpy(a->res.force, x[i], sizeof *x[i] * (size_t)p->sched.np);
+        zp_objective_eval(ob, s, a->res.force, &a->res.best, r);
+        zp_sim_free(s);
+        free(r);
+        trial_free(t);
+        *t = c;
+    }
+    return ZP_OK;
+}
+
+/* the answer rerun and judged (with its fallbacks when the search's best does not hold), then,
+   reported, perturbed at the scene's force error and twice it */
+static zp_status verify(const zp_problem *p, const zp_answer_opts *o, const zp_sim_opts *fast,
+                        zp_answer *a, char *err, size_t errlen) {
     int reported = o->depth == ZP_ANSWER_REPORTED;
     zp_objective ob = a->rp.ob;
     ob.set = NULL;
-    a->run_opts = p->answer;
-    zp_status rc = zp_verify_begin(&ob, &p->answer, a->res.force, &a->best, &a->v, err, errlen);
-    if ((!rc && stage(o, ZP_ANSWER_RERUN, a)) || stage(o, ZP_ANSWER_CHECKING, a)) {
+    trial t = {0};
+    zp_status rc = rerun(p, &ob, a->res.force, reported, &t, err, errlen);
+    int judged = a->found && !a->res.interrupted;
+    if (!rc && judged && !holds(p, &t.v, a->unheld, sizeof a->unheld) && !a->rp.robust) {
+        rc = fall_back(p, &ob, fast, reported, a, &t);
+        if (rc) {
+            snprintf(err, errlen, "out of memory for the next candidate");
+        }
+    }
+    a->v = t.v;
+    a->best = t.best;
+    a->run_opts = t.run_opts;
+    a->acc = t.acc;
+    if ((t.ran && stage(o, ZP_ANSWER_RERUN, a)) || stage(o, ZP_ANSWER_CHECKING, a)) {
         return ZP_ERR_IO;
     }
     if (p->sc.force_error > 0) { /* the level the scene holds the answer to, and twice it */
@@ -82,12 +211,8 @@ static zp_status verify(const zp_problem *p, const zp_answer_opts *o, zp_answer 
     }
     int nrobust = reported && !a->res.interrupted ? NROBUST : 0;
     if (!rc) {
-        rc = zp_verify_finish(&ob, &p->answer, a->res.force, a->seed, nrobust, 0, &a->v, o->checked,
-                              o->user, err, errlen);
-    }
-    if (!rc && reported && p->sc.accuracy > 0) {
-        rc = zp_verify_accuracy(&ob, &p->answer, a->res.force, p->sc.accuracy, &a->best, &a->v,
-                                &a->run_opts, &a->acc, err, errlen);
+        rc = zp_verify_robustness(&ob, &p->answer, a->res.force, a->seed, nrobust, 0, &a->v,
+                                  o->checked, o->user, err, errlen);
     }
     if (stage(o, ZP_ANSWER_CHECKED, a)) {
         return ZP_ERR_IO;
@@ -96,10 +221,8 @@ static zp_status verify(const zp_problem *p, const zp_answer_opts *o, zp_answer 
         return rc;
     }
     a->verified = 1;
-    /* not found unless it holds with [solver] */
-    if (a->found && !a->res.interrupted && !holds(p, &a->v, a->unheld, sizeof a->unheld)) {
-        a->found = 0;
-    }
+    /* not found unless it (or a fallback) holds with [solver] */
+    a->found = a->found && !a->unheld[0];
     return ZP_OK;
 }
 
@@ -221,12 +344,13 @@ zp_status zp_answer_solve(const zp_problem *p, const zp_answer_opts *o, zp_answe
     a->algo = zp_search_algo_get(o->search.algo)->name;
     a->max_evals = o->search.max_evals;
     a->seed = o->search.seed;
-    zp_status st = search(p, o, a, err, errlen);
+    zp_sim_opts fast;
+    zp_status st = search(p, o, a, &fast, err, errlen);
     a->found = a->res.found;
     if (st || o->depth == ZP_ANSWER_SEARCHED || (o->spread && o->spread->rank != 0)) {
         return st; /* another rank's share of the fresh scenarios is rank 0's too */
     }
-    if ((st = verify(p, o, a, err, errlen)) || o->depth == ZP_ANSWER_VERIFIED) {
+    if ((st = verify(p, o, &fast, a, err, errlen)) || o->depth == ZP_ANSWER_VERIFIED) {
         return st;
     }
     if ((st = run_given(p, a, err, errlen)) || (st = push_best(p, o, a, err, errlen)) ||

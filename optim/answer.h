@@ -41,6 +41,19 @@ typedef struct zp_answer_constant {
     long evals;                      /* simulations its search spent */
 } zp_answer_constant;
 
+#define ZP_ANSWER_FALLBACKS 4 /* candidates tried after the search's best when it does not hold */
+
+/* When the search's best does not hold with [solver] (scenes without [robust] scenarios): the
+   next candidates the search kept (its islands' bests and polish ends, distinct, by ranked
+   time) rerun and judged alike, the first that holds the answer. */
+typedef struct zp_answer_fallback {
+    int tried;        /* candidates after the best rerun; 0: the best held or none was kept */
+    int taken;        /* 1: the answer is the tried-th, which holds; 0: none held */
+    double first_time; /* s, the best's ranked time (at [optimize]'s tolerance) */
+    double first_force[ZP_SCHED_MAX_PARAMS]; /* its parameters */
+    char why[256];    /* why the best does not hold with [solver] */
+} zp_answer_fallback;
+
 typedef struct zp_answer_opts {
     zp_answer_depth depth;
     zp_search_opts search;   /* the strategy, budget, seed, wall time, stop flag and progress */
@@ -60,10 +73,13 @@ struct zp_answer {
                              and the fresh-scenario check (rp.check) */
     long max_evals;       /* the search's budget and seed, as they ran */
     unsigned long seed;
-    zp_search_result res; /* the search's, res.found its own verdict */
+    zp_search_result res; /* the search's, res.found its own verdict; with a fallback taken
+                             res.force and res.best are the answer's (fallback.first_*: the
+                             search's best) */
     int found;            /* res.found, and from ZP_ANSWER_VERIFIED on (not interrupted):
                              the answer holds with [solver] */
     char unheld[256];     /* why res.found is not found, "" */
+    zp_answer_fallback fallback; /* tried 0: nothing was tried after the search's best */
     int verified;         /* 1: v, best and run_opts are filled (rank 0, ZP_ANSWER_VERIFIED on) */
     zp_verify v;          /* v.run: the answer at the answer profile; v.tight 100x tighter */
     zp_sim *best;         /* owned: v.run's workspace (its rows and kink crossings) */

@@ -107,6 +107,20 @@ static void md_head(FILE *f, const zp_answer *a) {
               "that came closest.\n\n",
               f);
     }
+    const zp_answer_fallback *fb = &a->fallback;
+    if (fb->taken) {
+        fprintf(f,
+                "**Fallback**: the fastest ranked schedule (%.4f s at [optimize]'s tolerance) "
+                "failed the rerun with [solver]: %s; the answer below is the search's next "
+                "candidate by ranked time (its island's best or a polish end; %d rejected), "
+                "which holds.\n\n",
+                fb->first_time, fb->why, fb->tried);
+    } else if (fb->tried > 0) {
+        fprintf(f,
+                "The search's best (%.4f s at [optimize]'s tolerance) failed the rerun with "
+                "[solver]: %s; the next %d candidate%s it kept failed it too.\n\n",
+                fb->first_time, fb->why, fb->tried, fb->tried == 1 ? "" : "s");
+    }
 }
 
 /* one row per parameter: the section it acts on, where on the course, its value */

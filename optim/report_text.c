@@ -6,13 +6,26 @@
 #include "report.h"
 #include "report_cable.h"
 
-/* why no schedule was found, when none was */
+/* why no schedule was found, when none was, or why the answer is not the search's best */
 static void none_text(FILE *f, const zp_answer *a) {
-    if (a->unheld[0]) {
+    const zp_answer_fallback *fb = &a->fallback;
+    if (a->unheld[0] && fb->tried > 0) {
+        fprintf(f,
+                "no schedule found: the search's best (ranked with [optimize]'s tolerance) does "
+                "not hold: %s; nor do the next %d candidate%s it kept; the best is written as the "
+                "closest candidate (tighten [optimize] rtol)\n",
+                a->unheld, fb->tried, fb->tried == 1 ? "" : "s");
+    } else if (a->unheld[0]) {
         fprintf(f,
                 "no schedule found: the search's best (ranked with [optimize]'s tolerance) does "
                 "not hold: %s; it is written as the closest candidate (tighten [optimize] rtol)\n",
                 a->unheld);
+    } else if (fb->taken) {
+        fprintf(f,
+                "fallback: the fastest ranked schedule (%.4f s) failed the rerun with [solver]: "
+                "%s; the answer is the search's next candidate by ranked time (%d rejected), "
+                "which holds\n",
+                fb->first_time, fb->why, fb->tried);
     } else if (!a->found) {
         fprintf(f,
                 "no schedule keeps the margin%s: none of %ld simulations survived with it; the "

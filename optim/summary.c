@@ -66,6 +66,23 @@ static void json_islands(FILE *f, const zp_search_result *s, int nparam) {
     fputs("]}", f);
 }
 
+/* the search's best did not hold with [solver] and the next candidates were tried: how many
+   failed (the best among them), whether one holds (the answer), and the best's ranked time,
+   forces and why */
+static void json_fallback(FILE *f, const zp_answer_fallback *fb, int nparam) {
+    fprintf(f, ",\n  \"fallback\": {\"rejected\": %d, \"taken\": %s, \"first_time\": ",
+            fb->tried + !fb->taken, fb->taken ? "true" : "false");
+    zp_out_json_number(f, fb->first_time);
+    fputs(", \"first_forces\": [", f);
+    for (int k = 0; k < nparam; k++) {
+        fputs(k ? ", " : "", f);
+        zp_out_json_number(f, fb->first_force[k]);
+    }
+    fputs("], \"why\": ", f);
+    zp_out_json_string(f, fb->why);
+    fputc('}', f);
+}
+
 /* the smallest kill names the parameter as the kind calls it ("section": 2) */
 static void json_robust(FILE *f, const zp_verify *v, const zp_schedule *shape) {
     if (!v->robust_done) {
@@ -221,6 +238,9 @@ void zp_summary_write_json(FILE *f, const zp_answer *a) {
     zp_out_json_number(f, s->wall_s);
     fprintf(f, ",\n  \"algorithm\": \"%s\",\n  \"seed\": %lu,\n  \"interrupted\": %s", a->algo,
             a->seed, s->interrupted ? "true" : "false");
+    if (a->fallback.tried > 0) {
+        json_fallback(f, &a->fallback, a->pb->sched.np);
+    }
     fputs(",\n  \"baseline\": ", f);
     if (s->base_found) {
         fputs("{\"force\": ", f);

@@ -1,6 +1,7 @@
 /* Verification of the best schedule: the same run at a 100x tighter tolerance, seeded random
    perturbations of every parameter and, parameter by parameter, the smallest change that kills,
-   all in one parallel batch; and the answer rerun tighter when [solver] accuracy asks for more. */
+   in one parallel batch (the tighter run in it, or first alone when the caller judges by it);
+   and the answer rerun tighter when [solver] accuracy asks for more. */
 #include "verify.h"
 
 #include <gsl/gsl_rng.h>
@@ -54,12 +55,13 @@ static double kill_of(const zp_objective *ob, zp_sim *s, zp_result *r, const dou
 }
 
 /* The checks of one batch, longest first so no long job is left to run alone at the end: the
-   bisections (chains of runs), the tighter run, then the perturbed schedules. */
+   bisections (chains of runs), the tighter run (with_tight), then the perturbed schedules. */
 typedef struct check_batch {
     const zp_objective *ob;
     const double *force;
     int nkill, ntot;   /* bisections (0 without robustness) and perturbed runs */
-    zp_sim *tight_sim; /* borrowed: the tighter run's workspace */
+    int with_tight;    /* 1: job nkill is the tighter run */
+    zp_sim *tight_sim; /* owned: the tighter run's workspace, NULL without it */
     const zp_input *in;
     zp_verify *v;
     zp_status tight_st;
@@ -73,10 +75,10 @@ static void check_job(void *user, int i, zp_sim *s, zp_result *r) {
     int np = zp_objective_nparams(b->ob);
     if (i < b->nkill) {
         b->kill[i] = kill_of(b->ob, s, r, b->force, i, b->v->level[ZP_VERIFY_LEVELS - 1]);
-    } else if (i == b->nkill) {
+    } else if (b->with_tight && i == b->nkill) {
         b->tight_st = zp_sim_run(b->ob->m, b->tight_sim, b->in, b->v->tight);
     } else {
-        int k = i - b->nkill - 1;
+        int k = i - b->nkill - b->with_tight;
         zp_objective_eval(b->ob, s, b->pf + (size_t)k * np, &b->pe[k], r);
     }
 }
@@ -162,38 +164,43 @@ zp_status zp_verify_begin(const zp_objective *ob, const zp_sim_opts *so, const d
     return ZP_OK;
 }
 
-zp_status zp_verify_finish(const zp_objective *ob, const zp_sim_opts *so, const double *force,
-                           unsigned long seed, int nrobust, int nthreads, zp_verify *v,
-                           zp_pool_done progress, void *user, char *err, size_t errlen) {
+/* the checks of force in one parallel batch: with_tight, the tighter run (v->rtol, atol and
+   agree); nrobust > 0, the robustness runs and bisections (v->rob, kill) */
+static zp_status check(const zp_objective *ob, const zp_sim_opts *so, const double *force,
+                       unsigned long seed, int nrobust, int with_tight, int nthreads, zp_verify *v,
+                       zp_pool_done progress, void *user, char *err, size_t errlen) {
     const zp_model *m = ob->m;
     int np = zp_objective_nparams(ob), ntot = ZP_VERIFY_LEVELS * nrobust;
     if (!(v->level[0] > 0)) {
         memcpy(v->level, default_levels, sizeof v->level);
     }
     zp_sim_opts to = zp_estimate_tighter(so), fast = zp_problem_verdict(so);
-    v->rtol = to.rtol;
-    v->atol = to.atol;
+    if (with_tight) {
+        v->rtol = to.rtol;
+        v->atol = to.atol;
+    }
     zp_schedule sched = zp_objective_schedule(ob, force);
     zp_input in = {.sched = &sched};
     check_batch b = {.ob = ob,
                      .force = force,
                      .nkill = nrobust > 0 ? np : 0,
                      .ntot = ntot,
-                     .tight_sim = zp_sim_create(m, &to),
+                     .with_tight = with_tight,
+                     .tight_sim = with_tight ? zp_sim_create(m, &to) : NULL,
                      .in = &in,
                      .v = v};
     b.pf = malloc(sizeof *b.pf * (ntot + 1) * np);
     b.pe = malloc(sizeof *b.pe * (ntot + 1));
     b.kill = calloc(np, sizeof *b.kill);
-    /* without robustness the tighter run alone: no pool of workspaces for one job */
+    /* the tighter run alone: no pool of workspaces for one job */
     zp_pool *pool = nrobust > 0 ? zp_pool_create(m, &fast, nthreads) : NULL;
     gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
-    zp_status ret =
-        b.tight_sim && b.pf && b.pe && b.kill && (pool || !nrobust) && g ? ZP_OK : ZP_ERR_NOMEM;
+    int made = (b.tight_sim || !with_tight) && b.pf && b.pe && b.kill && (pool || !nrobust) && g;
+    zp_status ret = made ? ZP_OK : ZP_ERR_NOMEM;
     if (ret == ZP_OK && pool) {
         perturb(force, np, seed, nrobust, v->level, b.pf, g);
-        zp_pool_map(pool, b.nkill + 1 + ntot, check_job, &b, progress, user);
-    } else if (ret == ZP_OK) {
+        zp_pool_map(pool, b.nkill + with_tight + ntot, check_job, &b, progress, user);
+    } else if (ret == ZP_OK && with_tight) {
         check_job(&b, 0, NULL, NULL);
     }
     if (ret == ZP_OK) {
@@ -206,7 +213,7 @@ zp_status zp_verify_finish(const zp_objective *ob, const zp_sim_opts *so, const 
     } else {
         snprintf(err, errlen, "out of memory for the verification");
     }
-    if (ret == ZP_OK) {
+    if (ret == ZP_OK && with_tight) {
         agree(ob, v);
     }
     gsl_rng_free(g);
@@ -218,13 +225,25 @@ zp_status zp_verify_finish(const zp_objective *ob, const zp_sim_opts *so, const 
     return ret;
 }
 
+zp_status zp_verify_tight(const zp_objective *ob, const zp_sim_opts *so, const double *force,
+                          zp_verify *v, char *err, size_t errlen) {
+    return check(ob, so, force, 0, 0, 1, 0, v, NULL, NULL, err, errlen);
+}
+
+zp_status zp_verify_robustness(const zp_objective *ob, const zp_sim_opts *so, const double *force,
+                               unsigned long seed, int nrobust, int nthreads, zp_verify *v,
+                               zp_pool_done progress, void *user, char *err, size_t errlen) {
+    return nrobust > 0 ? check(ob, so, force, seed, nrobust, 0, nthreads, v, progress, user, err,
+                               errlen)
+                       : ZP_OK;
+}
+
 zp_status zp_verify_run(const zp_objective *ob, const zp_sim_opts *so, const double *force,
                         unsigned long seed, int nrobust, int nthreads, zp_sim **sim_out,
                         zp_verify *v, zp_pool_done progress, void *user, char *err, size_t errlen) {
     zp_status st = zp_verify_begin(ob, so, force, sim_out, v, err, errlen);
     return st ? st
-              : zp_verify_finish(ob, so, force, seed, nrobust, nthreads, v, progress, user, err,
-                                 errlen);
+              : check(ob, so, force, seed, nrobust, 1, nthreads, v, progress, user, err, errlen);
 }
 
 /* the answer rerun from one step tighter than so until its estimate meets acc; then the
