@@ -244,24 +244,41 @@ static zp_status run_given(const zp_problem *p, zp_answer *a, char *err, size_t 
     return st;
 }
 
+/* 1 when every parameter of f lies at the same share of its range */
+static int is_push(const zp_problem *p, const double *f) {
+    const zp_schedule *sh = &p->sched;
+    for (int k = 1; k < sh->np; k++) {
+        double u0 = (f[0] - sh->lo[0]) / (sh->hi[0] - sh->lo[0]);
+        if (fabs((f[k] - sh->lo[k]) / (sh->hi[k] - sh->lo[k]) - u0) > 1e-12) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
 /* without [robust], the best constant push by its own scan (push_scan.h), at the search's
    options: the search's 49 pushes and zooms miss bands narrower than their spacing. With
    [robust] the baseline stays the search's, held to the scenarios (a scan would run them
    for every push). */
 static zp_status push_best(const zp_problem *p, const zp_answer_opts *o, zp_answer *a,
                            char *err, size_t errlen) {
+    zp_search_result *res = &a->res;
     if (a->rp.robust) {
         return ZP_OK;
     }
-    zp_objective ob = a->rp.ob;
-    ob.set = NULL;
     zp_push_scan *ps = &a->push;
-    if (zp_push_scan_run(&ob, &p->search, p->sched.lo, p->sched.hi,
-                         zp_push_scan_points(a->max_evals), o->search.nthreads, ps)) {
-        snprintf(err, errlen, "out of memory for the constant pushes' scan");
-        return ZP_ERR_NOMEM;
+    if (res->found && is_push(p, res->force)) { /* the fastest schedule is a push: no scan */
+        *ps = (zp_push_scan){.found = 1, .e = res->best};
+        memcpy(ps->p, res->force, sizeof ps->p);
+    } else {
+        zp_objective ob = a->rp.ob;
+        ob.set = NULL;
+        if (zp_push_scan_run(&ob, &p->search, p->sched.lo, p->sched.hi,
+                             zp_push_scan_points(a->max_evals), o->search.nthreads, ps)) {
+            snprintf(err, errlen, "out of memory for the constant pushes' scan");
+            return ZP_ERR_NOMEM;
+        }
     }
-    zp_search_result *res = &a->res;
     if (ps->found && (!res->base_found || ps->e.time < res->base.time)) {
         res->base_found = 1;
         res->base = ps->e;

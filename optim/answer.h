@@ -91,8 +91,9 @@ struct zp_answer {
                              depth is lower) */
     zp_answer_constant constant; /* with a profile, what it gains (ZP_ANSWER_REPORTED) */
     zp_push_scan push; /* without [robust], the best constant push's own scan
-                          (ZP_ANSWER_REPORTED; push.npts 0: not run); res.base is the faster
-                          of it and the search's pushes */
+                          (ZP_ANSWER_REPORTED; push.npts 0: not run, the answer being a push
+                          or the scene robust); res.base is the faster of it and the
+                          search's pushes */
 };
 
 /* The options of a solve of p to depth: the first strategy, p's budget and seed, no stop, no

@@ -33,8 +33,8 @@ static void take(zp_push_scan *out, int n, double u, const double *p, const zp_e
     }
 }
 
-/* the survivable bands of the grid with a dying neighbour, the ZP_PUSH_SCAN_ISLANDS fastest
-   first, each set up to bisect towards the neighbour on its faster end; how many */
+/* the survivable bands of the grid whose faster end has a dying neighbour, the
+   ZP_PUSH_SCAN_ISLANDS fastest first, each set up to bisect towards that neighbour; how many */
 static int fast_islands(const zp_eval *e, int npts, island *isl) {
     int n = 0;
     for (int i = 0; i < npts;) {
@@ -47,10 +47,9 @@ static int fast_islands(const zp_eval *e, int npts, island *isl) {
             c.b = i;
             c.best = fmin(c.best, e[i].time);
         }
-        int right = c.b + 1 < npts && (c.a == 0 || e[c.b].time <= e[c.a].time);
-        int left = c.a > 0 && !right;
-        if (!right && !left) {
-            continue; /* the whole range survives: no edge to refine */
+        int right = e[c.b].time <= e[c.a].time; /* the faster end, refined if a run dies past it */
+        if (right ? c.b + 1 == npts : c.a == 0) {
+            continue;
         }
         c.u_ok = (double)(right ? c.b : c.a) / (npts - 1);
         c.u_dead = (double)(right ? c.b + 1 : c.a - 1) / (npts - 1);
