@@ -49,6 +49,29 @@ static double nl_cons(unsigned n, const double *x, double *grad, void *data) {
     return e ? e->cons : 360;
 }
 
+/* with [limits], COBYLA holds the margin and the limits apart: their max kinks where both
+   bind, and a linear model of it cannot follow the edge where they meet */
+static void nl_mcons(unsigned m, double *result, unsigned n, const double *x, double *grad,
+                     void *data) {
+    (void)m;
+    (void)n;
+    (void)grad;
+    nl_run *c = data;
+    const zp_eval *e = nl_eval(c, x);
+    if (!e) {
+        result[0] = result[1] = 360;
+        return;
+    }
+    int judged = !e->failed && e->outcome == ZP_OUTCOME_FINISHED;
+    result[0] = judged ? zp_objective_margin_cons(c->leg->S->ob, e) : e->cons;
+    result[1] = e->lcons;
+}
+
+static int split_limits(const nl_run *c) {
+    const zp_objective *ob = c->leg->S->ob;
+    return c->alg == NLOPT_LN_COBYLA && zp_limits_any(&ob->lim) && !ob->set;
+}
+
 /* bounds, objective, constraint, tolerances and steps of opt */
 static nlopt_result setup(nl_run *c, nlopt_opt opt) {
     const zp_leg *leg = c->leg;
@@ -59,7 +82,10 @@ static nlopt_result setup(nl_run *c, nlopt_opt opt) {
     if (st > 0) {
         st = nlopt_set_min_objective(opt, nl_obj, c);
     }
-    if (st > 0 && !c->penalty) {
+    if (st > 0 && !c->penalty && split_limits(c)) {
+        const double tol[2] = {0, 0};
+        st = nlopt_add_inequality_mconstraint(opt, 2, nl_mcons, c, tol);
+    } else if (st > 0 && !c->penalty) {
         st = nlopt_add_inequality_constraint(opt, nl_cons, c, 0);
     }
     if (st > 0 && c->alg == NLOPT_G_MLSL_LDS) {
