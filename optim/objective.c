@@ -42,14 +42,12 @@ void zp_objective_eval_run(const zp_objective *ob, const zp_model *m, zp_sim *s,
         e->obj = ob->t_max * (1 + behind);
     }
     e->cons = (angle - ob->limit) * DEG + SLACK;
-    e->lcons = e->cons;
     if (failed || r->outcome == ZP_OUTCOME_DIED) {
-        e->cons = e->lcons = (m->phi_max - ob->limit) * DEG + 180 * behind;
+        e->cons = (m->phi_max - ob->limit) * DEG + 180 * behind;
     } else if (zp_limits_any(&ob->lim)) {
         int which;
         double ex = zp_limits_excess(&ob->lim, m, r, &which);
-        e->lcons = (ex + LIMIT_SLACK) * LIMIT_DEG;
-        e->cons = fmax(e->cons, e->lcons);
+        e->cons = fmax(e->cons, (ex + LIMIT_SLACK) * LIMIT_DEG);
     }
     set_score(ob, e);
 }

@@ -17,8 +17,6 @@ typedef struct zp_eval {
     double angle;   /* rad, largest |relative joint angle| over all joints and the run */
     double obj;     /* s: the finish time; past t_max for runs that do not finish */
     double cons;    /* deg: <= 0 when the run finishes with the margin kept */
-    double lcons;   /* deg: the [limits]' part of cons alone (their worst), cons where the
-                       limits were not judged (a run that did not finish, a scenario's) */
     double score;   /* s: obj plus a penalty for cons > 0, for algorithms without constraints */
     int scenario;   /* the scenario (index in the set) that broke the run, -1: none did */
 } zp_eval;

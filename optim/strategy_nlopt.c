@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "cons_parts.h"
 #include "strategy.h"
 
 #define FTOL 1e-6            /* s: a polish stops when the finish time settles to this */
@@ -49,27 +50,19 @@ static double nl_cons(unsigned n, const double *x, double *grad, void *data) {
     return e ? e->cons : 360;
 }
 
-/* with [limits], COBYLA holds the margin and the limits apart: their max kinks where both
-   bind, and a linear model of it cannot follow the edge where they meet */
-static void nl_mcons(unsigned m, double *result, unsigned n, const double *x, double *grad,
+/* COBYLA holds the constraint's parts apart (cons_parts.h); each a point's, of its one run */
+static void nl_parts(unsigned m, double *result, unsigned n, const double *x, double *grad,
                      void *data) {
-    (void)m;
     (void)n;
     (void)grad;
     nl_run *c = data;
     const zp_eval *e = nl_eval(c, x);
-    if (!e) {
-        result[0] = result[1] = 360;
-        return;
+    for (unsigned k = 0; !e && k < m; k++) {
+        result[k] = 360;
     }
-    int judged = !e->failed && e->outcome == ZP_OUTCOME_FINISHED;
-    result[0] = judged ? zp_objective_margin_cons(c->leg->S->ob, e) : e->cons;
-    result[1] = e->lcons;
-}
-
-static int split_limits(const nl_run *c) {
-    const zp_objective *ob = c->leg->S->ob;
-    return c->alg == NLOPT_LN_COBYLA && zp_limits_any(&ob->lim) && !ob->set;
+    if (e) {
+        zp_cons_parts_eval(c->leg->S->ob, e, c->leg->r, result);
+    }
 }
 
 /* bounds, objective, constraint, tolerances and steps of opt */
@@ -82,9 +75,10 @@ static nlopt_result setup(nl_run *c, nlopt_opt opt) {
     if (st > 0) {
         st = nlopt_set_min_objective(opt, nl_obj, c);
     }
-    if (st > 0 && !c->penalty && split_limits(c)) {
-        const double tol[2] = {0, 0};
-        st = nlopt_add_inequality_mconstraint(opt, 2, nl_mcons, c, tol);
+    int parts = c->alg == NLOPT_LN_COBYLA ? zp_cons_parts_count(leg->S->ob) : 1;
+    if (st > 0 && !c->penalty && parts > 1) {
+        const double tol[ZP_CONS_PARTS_MAX] = {0};
+        st = nlopt_add_inequality_mconstraint(opt, (unsigned)parts, nl_parts, c, tol);
     } else if (st > 0 && !c->penalty) {
         st = nlopt_add_inequality_constraint(opt, nl_cons, c, 0);
     }
