@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "cons_parts.h"
 #include "strategy.h"
 
 #define FTOL 1e-6            /* s: a polish stops when the finish time settles to this */
@@ -49,6 +50,21 @@ static double nl_cons(unsigned n, const double *x, double *grad, void *data) {
     return e ? e->cons : 360;
 }
 
+/* COBYLA holds the constraint's parts apart (cons_parts.h); each a point's, of its one run */
+static void nl_parts(unsigned m, double *result, unsigned n, const double *x, double *grad,
+                     void *data) {
+    (void)n;
+    (void)grad;
+    nl_run *c = data;
+    const zp_eval *e = nl_eval(c, x);
+    for (unsigned k = 0; !e && k < m; k++) {
+        result[k] = 360;
+    }
+    if (e) {
+        zp_cons_parts_eval(c->leg->S->ob, e, c->leg->r, result);
+    }
+}
+
 /* bounds, objective, constraint, tolerances and steps of opt */
 static nlopt_result setup(nl_run *c, nlopt_opt opt) {
     const zp_leg *leg = c->leg;
@@ -59,7 +75,11 @@ static nlopt_result setup(nl_run *c, nlopt_opt opt) {
     if (st > 0) {
         st = nlopt_set_min_objective(opt, nl_obj, c);
     }
-    if (st > 0 && !c->penalty) {
+    int parts = c->alg == NLOPT_LN_COBYLA ? zp_cons_parts_count(leg->S->ob) : 1;
+    if (st > 0 && !c->penalty && parts > 1) {
+        const double tol[ZP_CONS_PARTS_MAX] = {0};
+        st = nlopt_add_inequality_mconstraint(opt, (unsigned)parts, nl_parts, c, tol);
+    } else if (st > 0 && !c->penalty) {
         st = nlopt_add_inequality_constraint(opt, nl_cons, c, 0);
     }
     if (st > 0 && c->alg == NLOPT_G_MLSL_LDS) {
