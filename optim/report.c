@@ -24,11 +24,15 @@ void zp_report_convergence(char *buf, size_t n, const zp_answer *a) {
     } else if (s->nstarts == 0) {
         k = snprintf(buf, n, "the scan found this schedule; no local polish ran");
     } else {
+        /* with a fallback taken the polishes' count is of the rejected fastest schedule */
         k = snprintf(buf, n,
-                     "%d of %d polishes reached this schedule (within %g %% of its "
+                     "%d of %d polishes reached %s (within %g %% of its "
                      "time); they ended at %d distinct survivable schedule%s, in %d "
                      "basin%s (the map's islands, or apart from them)",
-                     s->nreached, s->nstarts, 100 * ZP_SEARCH_REACH, s->nbasins,
+                     s->nreached, s->nstarts,
+                     a->fallback.taken ? "the fastest ranked schedule, which failed its rerun"
+                                       : "this schedule",
+                     100 * ZP_SEARCH_REACH, s->nbasins,
                      s->nbasins == 1 ? "" : "s", s->nminima, s->nminima == 1 ? "" : "s");
     }
     char unseen[160] = "";
