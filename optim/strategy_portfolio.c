@@ -21,16 +21,16 @@
 #define POP_MAX 120     /* ... and at most */
 /* design note: from this many parameters one population of POP_MAX members (SciPy's 15 per
    parameter, capped) takes the four's share: four of 5 per parameter gather on the first
-   islands they meet there (with one, m10 3.1 % faster, m12 0.8 %, multi8 1.0 %, m9 0.4 %; m8
-   the same: docs/search.md), while below it the four's separate islands win (m7 0.8 % slower
-   with one, m6 the same) */
+   islands they meet there (m8 to m12 and multi8 of docs/search.md gained 0.2 % to 4.6 % from
+   one, and on a second seed all but m12), while below it the four's separate islands win (m6
+   and m7 lost 1 % with one) */
 #define ONE_POP_FROM 8
 /* simulations of the populations together a round, per point of the scan's sequence in that
    round, at the base share: the two global phases grow together, round by round, and a small
-   budget keeps its rounds of lines and polishes. Measured 4 and 16 on m4 to m12 and multi4 to
-   multi8 (8 and 32 on some, docs/search.md): at 16 m6, m7, m9, m10, m12 and multi8 gained and
-   no scene lost more than 0.01 % (m8); 32 cost m8 0.15 % */
-#define PER_SCANNED 16
+   budget keeps its rounds of lines and polishes. 16 won every multi-section scene of
+   docs/search.md on seed 1 but lost m8 6.5 % and multi8 1.4 % on seed 2, whose faster islands
+   the lines and polishes find */
+#define PER_SCANNED 4
 #define SHARE_MAX 8            /* the share grows to this many times the base */
 #define SEED_STREAM 0xde5eedUL /* the populations' seeds: a stream apart from the scan's shift */
 
