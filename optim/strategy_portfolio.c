@@ -22,8 +22,8 @@
 /* design note: from this many parameters one population of POP_MAX members (SciPy's 15 per
    parameter, capped) takes the four's share: four of 5 per parameter gather on the first
    islands they meet there (m8 to m12 and multi8 of docs/search.md gained 0.2 % to 4.6 % from
-   one, and on a second seed all but m12), while below it the four's separate islands win (m6
-   and m7 lost 1 % with one) */
+   one; on a second seed m9, m10 and multi8 gained, m8 held and m12 lost 0.9 %), while below
+   it the four's separate islands win (m6 and m7 lost 1 % with one) */
 #define ONE_POP_FROM 8
 /* simulations of the populations together a round, per point of the scan's sequence in that
    round, at the base share: the two global phases grow together, round by round, and a small
