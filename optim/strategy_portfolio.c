@@ -1,11 +1,11 @@
 /* The portfolio's global phase (strategies.def): each round the scan's low-discrepancy points,
    then a share of differential evolution (pagmo2's sade, pagmo_de.h) in NPOP independent
-   populations, each evolved serially on a leg of its own with its own seed from the search's,
-   the legs in parallel: a fixed count, so the same seed gives the same bits on any thread
-   count. The points a population runs join the map (of its near-survivable ones the best, below),
-   so the islands it finds are polished with the others. The map decides the share: it doubles
-   after a round whose populations improved the best of the map and halves after one where they
-   did not. */
+   populations (one of POP_MAX members from ONE_POP_FROM parameters), each evolved serially on
+   a leg of its own with its own seed from the search's, the legs in parallel: a count fixed by
+   the scene, so the same seed gives the same bits on any thread count. The points a population runs
+   join the map (of its near-survivable ones the best, below), so the islands it finds are polished
+   with the others. The map decides the share: it doubles after a round whose populations improved
+   the best of the map and halves after one where they did not. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,14 +14,22 @@
 #include "pagmo_de.h"
 #include "strategy.h"
 
-#define NPOP 4          /* populations, whatever the threads */
+#define NPOP 4          /* populations below ONE_POP_FROM parameters, whatever the threads */
 #define VARIANT 6       /* sade's best/1/bin (SciPy's best1bin), with jDE's adaptation */
 #define POP_PER_PARAM 5 /* members per parameter ... */
 #define POP_MIN 16      /* ... at least ... */
 #define POP_MAX 120     /* ... and at most */
+/* design note: from this many parameters one population of POP_MAX members (SciPy's 15 per
+   parameter, capped) takes the four's share: four of 5 per parameter gather on the first
+   islands they meet there (m8 to m12 and multi8 of docs/search.md gained 0.2 % to 4.6 % from
+   one; on a second seed m9, m10 and multi8 gained, m8 held and m12 lost 0.9 %), while below
+   it the four's separate islands win (m6 and m7 lost 1 % with one) */
+#define ONE_POP_FROM 8
 /* simulations of the populations together a round, per point of the scan's sequence in that
    round, at the base share: the two global phases grow together, round by round, and a small
-   budget keeps its rounds of lines and polishes */
+   budget keeps its rounds of lines and polishes. 16 won every multi-section scene of
+   docs/search.md on seed 1 but lost m8 6.5 % and multi8 1.4 % on seed 2, whose faster islands
+   the lines and polishes find */
 #define PER_SCANNED 4
 #define SHARE_MAX 8            /* the share grows to this many times the base */
 #define SEED_STREAM 0xde5eedUL /* the populations' seeds: a stream apart from the scan's shift */
@@ -38,6 +46,7 @@ typedef struct population {
 
 typedef struct portfolio {
     void *scan; /* owned: the scan's sequence */
+    int npop;   /* populations: NPOP, or one from ONE_POP_FROM parameters */
     int popsize;
     int share;  /* times the base share, 1 .. SHARE_MAX */
     int gained; /* the populations improved the best of the map last round */
@@ -65,11 +74,12 @@ static void *portfolio_create(const zp_strategy *self, const zp_search_state *S)
         portfolio_free(P);
         return NULL;
     }
-    int np = POP_PER_PARAM * S->n;
+    int np = S->n < ONE_POP_FROM ? POP_PER_PARAM * S->n : POP_MAX;
+    P->npop = S->n < ONE_POP_FROM ? NPOP : 1;
     P->popsize = np < POP_MIN ? POP_MIN : np > POP_MAX ? POP_MAX : np;
     P->share = 1;
-    for (int i = 0; i < NPOP; i++) {
-        unsigned long seed = (S->o->seed ^ SEED_STREAM) * NPOP + (unsigned long)i;
+    for (int i = 0; i < P->npop; i++) {
+        unsigned long seed = (S->o->seed ^ SEED_STREAM) * (unsigned long)P->npop + (unsigned long)i;
         if (!(P->pop[i].de = zp_pagmo_de_create(S->n, S->lo, S->hi, P->popsize, VARIANT, seed))) {
             portfolio_free(P);
             return NULL;
@@ -107,7 +117,7 @@ static void evolve_leg(const void *how, zp_leg *leg) {
 
 /* room for what each population may run in the round: cap simulations */
 static int make_room(portfolio *P, const zp_search_state *S, int cap) {
-    for (int i = 0; i < NPOP; i++) {
+    for (int i = 0; i < P->npop; i++) {
         population *p = &P->pop[i];
         free(p->f);
         free(p->e);
@@ -165,7 +175,7 @@ static zp_status portfolio_explore(void *state, zp_search_state *S, int round, c
         P->share = P->gained ? (P->share * 2 < SHARE_MAX ? P->share * 2 : SHARE_MAX)
                              : (P->share > 1 ? P->share / 2 : 1);
     }
-    long share = (long)P->share * PER_SCANNED * (S->a.n - n0) / NPOP;
+    long share = (long)P->share * PER_SCANNED * (S->a.n - n0) / P->npop;
     int gens = share > P->popsize ? (int)(share / P->popsize) : 1;
     /* a population drawn afresh (the first round, or after it collapsed) spends popsize more */
     int cap = (gens + 1) * P->popsize;
@@ -174,13 +184,13 @@ static zp_status portfolio_explore(void *state, zp_search_state *S, int round, c
         return ZP_ERR_NOMEM;
     }
     zp_leg_job jobs[NPOP];
-    for (int i = 0; i < NPOP; i++) {
+    for (int i = 0; i < P->npop; i++) {
         P->pop[i].gens = gens;
         jobs[i] = (zp_leg_job){.x0 = S->lo, .cap = cap, .user = &P->pop[i]};
     }
     double before = best_time(S);
-    st = zp_leg_batch(S, evolve_leg, NULL, jobs, NPOP, err, errlen);
-    for (int i = 0; i < NPOP; i++) {
+    st = zp_leg_batch(S, evolve_leg, NULL, jobs, P->npop, err, errlen);
+    for (int i = 0; i < P->npop; i++) {
         const population *p = &P->pop[i];
         int b = best_near(p, S);
         for (int j = 0; j < p->npts; j++) {

@@ -17,19 +17,18 @@
 /* s: the search polishes forces to ~1e-3 N; near the optimum dT/dF ~ 1e-3 s/N */
 #define BOUND_TOL 2e-3
 
-static const char *bare =
-    "[course]\nx_start = 0\nsection = 40 : -x/10 + 10\n"
-    "[trolley]\nmass = 30\n"
-    "[body]\nlengths = 0.2\nmasses = 0.001\ndamping = 0\n"
-    "[drive]\nmin = 0\nmax = 50\n"
-    "[optimize]\nmargin = 10\nmax_evals = 300\n";
+static const char *bare = "[course]\nx_start = 0\nsection = 40 : -x/10 + 10\n"
+                          "[trolley]\nmass = 30\n"
+                          "[body]\nlengths = 0.2\nmasses = 0.001\ndamping = 0\n"
+                          "[drive]\nmin = 0\nmax = 50\n"
+                          "[optimize]\nmargin = 10\nmax_evals = 300\n";
 
 static zp_search_result res, res2;
 
-static void search_with(const zp_objective *ob, const zp_sim_opts *o, const zp_scene *sc,
-                        int algo, int nthreads, zp_search_result *r) {
-    zp_search_opts so = {.algo = algo, .max_evals = sc->max_evals, .seed = sc->seed,
-                         .nthreads = nthreads};
+static void search_with(const zp_objective *ob, const zp_sim_opts *o, const zp_scene *sc, int algo,
+                        int nthreads, zp_search_result *r) {
+    zp_search_opts so = {
+        .algo = algo, .max_evals = sc->max_evals, .seed = sc->seed, .nthreads = nthreads};
     char err[256];
     double lo[ZP_MAX_SECTIONS], hi[ZP_MAX_SECTIONS];
     for (int k = 0; k < sc->nsec; k++) {
@@ -39,9 +38,38 @@ static void search_with(const zp_objective *ob, const zp_sim_opts *o, const zp_s
     CHECK(zp_search_run(ob, o, lo, hi, &so, r, err, sizeof err) == ZP_OK);
 }
 
-static void search(const zp_objective *ob, const zp_sim_opts *o, const zp_scene *sc,
-                   int nthreads, zp_search_result *r) {
+static void search(const zp_objective *ob, const zp_sim_opts *o, const zp_scene *sc, int nthreads,
+                   zp_search_result *r) {
     search_with(ob, o, sc, 0, nthreads, r);
+}
+
+/* the portfolio at budgets lo, 2 lo, .. hi on 2 threads: each runs everything the smaller one
+   did (its history a prefix), never slower; then hi on 1 thread: the same bits */
+static void portfolio_budgets(const zp_model *m, zp_scene *sc, long lo, long hi) {
+    zp_sim_opts o = tu_opts(sc, 1e-5);
+    zp_objective ob = tu_objective(m, sc, &o);
+    int a = zp_search_algo_find("portfolio-cobyla");
+    CHECK(a >= 0);
+    double prev = INFINITY;
+    for (long b = lo; b <= hi; b *= 2) {
+        sc->max_evals = b;
+        search_with(&ob, &o, sc, a, 2, &res);
+        CHECK(res.evals <= b);
+        double t = res.found ? res.best.time : INFINITY;
+        CHECK(t <= prev * (1 + 1e-9));
+        prev = t;
+        if (b > lo) {
+            CHECK(res.nhist >= res2.nhist);
+            for (int i = 0; i < res2.nhist && i < res.nhist; i++) {
+                CHECK(res.hist[i].evals == res2.hist[i].evals &&
+                      res.hist[i].time == res2.hist[i].time);
+            }
+        }
+        res2 = res;
+    }
+    search_with(&ob, &o, sc, a, 1, &res2);
+    CHECK(!memcmp(res.force, res2.force, sizeof res.force));
+    CHECK(res.evals == res2.evals && res.best.time == res2.best.time && res.nhist == res2.nhist);
 }
 
 int main(void) {
@@ -178,37 +206,20 @@ int main(void) {
     /* the portfolio (the scan beside pagmo's differential evolution in seeded populations):
        a larger budget runs everything a smaller one does, with budgets that cut the
        populations' legs in the first round and in later ones, and the same bits on 1 and 2
-       threads */
+       threads; on the seed (four populations) and on multi8 (8 parameters: one population,
+       its leg cut in its third round at 9000) */
     {
         zp_scene_load_seed(&sc);
         zp_diag d;
         zp_diag_init(&d);
         zp_model *m = zp_model_build(&sc, &d);
-        zp_sim_opts o = tu_opts(&sc, 1e-5);
-        zp_objective ob = tu_objective(m, &sc, &o);
-        int a = zp_search_algo_find("portfolio-cobyla");
-        CHECK(a >= 0);
-        double prev = INFINITY;
-        for (long b = 400; b <= 3200; b *= 2) {
-            sc.max_evals = b;
-            search_with(&ob, &o, &sc, a, 2, &res);
-            CHECK(res.evals <= b);
-            double t = res.found ? res.best.time : INFINITY;
-            CHECK(t <= prev * (1 + 1e-9));
-            prev = t;
-            if (b > 400) {
-                CHECK(res.nhist >= res2.nhist);
-                for (int i = 0; i < res2.nhist && i < res.nhist; i++) {
-                    CHECK(res.hist[i].evals == res2.hist[i].evals &&
-                          res.hist[i].time == res2.hist[i].time);
-                }
-            }
-            res2 = res;
+        portfolio_budgets(m, &sc, 400, 3200);
+        zp_model_free(m);
+        m = tu_model_file(ZP_SOURCE_DIR "/config/multi8.ini", &sc);
+        CHECK(m != NULL && sc.nsec >= 8);
+        if (m) {
+            portfolio_budgets(m, &sc, 2250, 9000);
         }
-        search_with(&ob, &o, &sc, a, 1, &res2);
-        CHECK(!memcmp(res.force, res2.force, sizeof res.force));
-        CHECK(res.evals == res2.evals && res.best.time == res2.best.time &&
-              res.nhist == res2.nhist);
         zp_model_free(m);
     }
     /* the default by the scene: the portfolio from 4 sections without [robust], the scan on
