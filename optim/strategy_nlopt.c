@@ -57,11 +57,12 @@ static void nl_parts(unsigned m, double *result, unsigned n, const double *x, do
     (void)grad;
     nl_run *c = data;
     const zp_eval *e = nl_eval(c, x);
-    for (unsigned k = 0; !e && k < m; k++) {
-        result[k] = 360;
-    }
     if (e) {
         zp_cons_parts_eval(c->leg->S->ob, e, c->leg->r, result);
+        return;
+    }
+    for (unsigned k = 0; k < m; k++) { /* no run: NLopt is stopping (nl_eval) */
+        result[k] = 360;
     }
 }
 
