@@ -247,8 +247,8 @@ static zp_status run_given(const zp_problem *p, zp_answer *a, char *err, size_t 
 /* 1 when every parameter of f lies at the same share of its range */
 static int is_push(const zp_problem *p, const double *f) {
     const zp_schedule *sh = &p->sched;
+    double u0 = (f[0] - sh->lo[0]) / (sh->hi[0] - sh->lo[0]);
     for (int k = 1; k < sh->np; k++) {
-        double u0 = (f[0] - sh->lo[0]) / (sh->hi[0] - sh->lo[0]);
         if (fabs((f[k] - sh->lo[k]) / (sh->hi[k] - sh->lo[k]) - u0) > 1e-12) {
             return 0;
         }
