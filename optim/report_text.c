@@ -80,6 +80,8 @@ void zp_report_text_write(FILE *f, const zp_answer *a) {
             fprintf(f, " (%ld runs besides the search: %d pushes on a grid, then the fastest "
                        "bands' edges)",
                     a->push.evals, a->push.npts);
+        } else if (a->rp.robust) { /* no scan of its own: it would run the scenarios per push */
+            fputs(" (the fastest of the search's pushes that held the scenarios)", f);
         }
         fputc('\n', f);
     } else {
