@@ -12,7 +12,7 @@
 /* a band of survivable grid points [a, b] and the bisection of its fast edge */
 typedef struct island {
     int a, b;
-    double best; /* s, its fastest grid point's time */
+    double best;         /* s, its fastest grid point's time */
     double u_ok, u_dead; /* shares: the survivable end and the dying one being bisected */
 } island;
 
@@ -69,7 +69,9 @@ static int fast_islands(const zp_eval *e, int npts, island *isl) {
 
 int zp_push_scan_points(long max_evals) {
     long n = max_evals / 4;
-    return (int)(n < ZP_PUSH_SCAN_MIN ? ZP_PUSH_SCAN_MIN : n > ZP_PUSH_SCAN_MAX ? ZP_PUSH_SCAN_MAX : n);
+    return (int)(n < ZP_PUSH_SCAN_MIN   ? ZP_PUSH_SCAN_MIN
+                 : n > ZP_PUSH_SCAN_MAX ? ZP_PUSH_SCAN_MAX
+                                        : n);
 }
 
 zp_status zp_push_scan_run(const zp_objective *ob, const zp_sim_opts *so, const double *lo,

@@ -19,9 +19,9 @@ typedef struct zp_push_scan {
     int found;    /* a push survived with the margin and [limits] */
     double share; /* of every parameter's range: p_k = lo_k + share (hi_k - lo_k) */
     double p[ZP_SCHED_MAX_PARAMS];
-    zp_eval e;    /* its evaluation */
-    int npts;     /* grid points */
-    long evals;   /* simulations spent */
+    zp_eval e;  /* its evaluation */
+    int npts;   /* grid points */
+    long evals; /* simulations spent */
 } zp_push_scan;
 
 /* Grid points for a search budget of max_evals simulations. */

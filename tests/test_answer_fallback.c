@@ -100,12 +100,12 @@ static void check_taken(void) {
     /* the answer is one the search kept, its time as the search ranked it */
     int kept_by_search = 0;
     for (int i = 0; i < a.res.nshown; i++) {
-        kept_by_search |= same(a.res.island_force[i], a.res.force, np) &&
-                          a.res.island_time[i] == a.res.best.time;
+        kept_by_search |=
+            same(a.res.island_force[i], a.res.force, np) && a.res.island_time[i] == a.res.best.time;
     }
     for (int i = 0; i < a.res.nends; i++) {
-        kept_by_search |= same(a.res.ends[i], a.res.force, np) &&
-                          a.res.ends_time[i] == a.res.best.time;
+        kept_by_search |=
+            same(a.res.ends[i], a.res.force, np) && a.res.ends_time[i] == a.res.best.time;
     }
     CHECK(kept_by_search && zp_objective_feasible(&a.res.best));
     zp_objective_eval(&ob, s, a.res.force, &e, r);
@@ -188,8 +188,8 @@ static void check_unchanged(void) {
     zp_sim_opts fast;
     CHECK(zp_robust_setup(&rp, &p.sc, p.m, p.limit, &p.sched, &p.sim, &p.search, &fast) == ZP_OK);
     zp_search_opts so = {.max_evals = p.max_evals, .seed = p.seed};
-    CHECK(zp_robust_solve(&rp, &p.sc, &fast, p.sched.lo, p.sched.hi, &so, &res, err,
-                          sizeof err) == ZP_OK);
+    CHECK(zp_robust_solve(&rp, &p.sc, &fast, p.sched.lo, p.sched.hi, &so, &res, err, sizeof err) ==
+          ZP_OK);
     zp_objective ob = rp.ob;
     zp_verify v;
     zp_sim *best = NULL;

@@ -12,8 +12,8 @@
 #include "testutil.h"
 
 /* the fastest survivable push of the brute force, every step N over [lo, hi]; its push */
-static double brute(const zp_objective *ob, const zp_sim_opts *o, double lo, double hi,
-                    double step, double *push) {
+static double brute(const zp_objective *ob, const zp_sim_opts *o, double lo, double hi, double step,
+                    double *push) {
     zp_sim *s = zp_sim_create(ob->m, o);
     CHECK(s != NULL);
     double best = INFINITY;
@@ -51,8 +51,8 @@ static void check_scene(zp_model *m, const zp_scene *sc, double hi, long budget)
     CHECK(one.found && !memcmp(&one, &two, sizeof one));
     CHECK(one.evals >= npts && one.evals <= npts + ZP_PUSH_SCAN_ISLANDS * ZP_PUSH_SCAN_BISECT);
     double push = NAN, t = brute(&ob, &o, 0, hi, 0.05, &push);
-    printf("push scan %.4f N %.6f s (%ld runs); brute force %.2f N %.6f s\n", one.p[0],
-           one.e.time, one.evals, push, t);
+    printf("push scan %.4f N %.6f s (%ld runs); brute force %.2f N %.6f s\n", one.p[0], one.e.time,
+           one.evals, push, t);
     CHECK(one.e.time <= t + 1e-9);
     /* its push, run again alone, survives at the time stated */
     zp_sim *s = zp_sim_create(m, &o);
