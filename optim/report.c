@@ -12,6 +12,15 @@
 #define BRAKE_KMH 10  /* zip-line practice: arriving faster than this needs a brake */
 #define ACTIVE_KMH 24 /* ... and active brakes stop riders up to about this */
 
+void zp_report_fallback(char *buf, size_t n, const zp_answer *a) {
+    const zp_answer_fallback *fb = &a->fallback;
+    snprintf(buf, n,
+             "the fastest ranked schedule (%.4f s at [optimize]'s tolerance) failed the rerun "
+             "with [solver]: %s; the answer is the search's next candidate by ranked time (its "
+             "island's best or a polish end; %d rejected), which holds",
+             fb->first_time, fb->why, fb->tried);
+}
+
 static const char *rerun_scene(const zp_report_place *w) {
     return w->scene_arg ? w->scene_arg : "config/seed.ini";
 }
@@ -113,12 +122,9 @@ static void md_head(FILE *f, const zp_answer *a) {
     }
     const zp_answer_fallback *fb = &a->fallback;
     if (fb->taken) {
-        fprintf(f,
-                "**Fallback**: the fastest ranked schedule (%.4f s at [optimize]'s tolerance) "
-                "failed the rerun with [solver]: %s; the answer below is the search's next "
-                "candidate by ranked time (its island's best or a polish end; %d rejected), "
-                "which holds.\n\n",
-                fb->first_time, fb->why, fb->tried);
+        char why[512];
+        zp_report_fallback(why, sizeof why, a);
+        fprintf(f, "**Fallback**: %s.\n\n", why);
     } else if (fb->tried > 0) {
         fprintf(f,
                 "The search's best (%.4f s at [optimize]'s tolerance) failed the rerun with "

@@ -25,6 +25,9 @@ void zp_summary_headroom_json(FILE *f, const zp_headroom *h);
 /* The plain sentence on convergence: how many polishes reached the best, and whether a larger
    budget is likely to help. */
 void zp_report_convergence(char *buf, size_t n, const zp_answer *a);
+/* The sentence on a fallback taken (a->fallback.taken): which ranked schedule failed its
+   rerun, why, and what the answer is instead; report.md and the text summary both say it. */
+void zp_report_fallback(char *buf, size_t n, const zp_answer *a);
 /* report.md: a solved to ZP_ANSWER_REPORTED, its files at w. */
 void zp_report_write_md(FILE *f, const zp_answer *a, const zp_report_place *w);
 /* What run (of p's model) breaks first: "death", "a stall", "the margin", a [limits] key, or

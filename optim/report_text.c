@@ -21,11 +21,9 @@ static void none_text(FILE *f, const zp_answer *a) {
                 "not hold: %s; it is written as the closest candidate (tighten [optimize] rtol)\n",
                 a->unheld);
     } else if (fb->taken) {
-        fprintf(f,
-                "fallback: the fastest ranked schedule (%.4f s) failed the rerun with [solver]: "
-                "%s; the answer is the search's next candidate by ranked time (%d rejected), "
-                "which holds\n",
-                fb->first_time, fb->why, fb->tried);
+        char why[512];
+        zp_report_fallback(why, sizeof why, a);
+        fprintf(f, "fallback: %s\n", why);
     } else if (!a->found) {
         fprintf(f,
                 "no schedule keeps the margin%s: none of %ld simulations survived with it; the "
