@@ -158,10 +158,20 @@ void zp_search_state_eval(zp_search_state *S, zp_sim *s, zp_result *r, const dou
 
 void zp_search_state_record(zp_search_state *S, long at, const zp_eval *e) {
     zp_search_result *res = S->res;
-    if (zp_objective_feasible(e) && e->time < S->running && res->nhist < ZP_SEARCH_HIST) {
-        S->running = e->time;
-        res->hist[res->nhist++] = (zp_search_hist){at, e->time};
+    if (!zp_objective_feasible(e) || e->time >= S->running) {
+        return;
     }
+    S->running = e->time;
+    if (res->nhist == ZP_SEARCH_HIST) {
+        /* full: keep the later of each pair, so the history still spans the whole search and
+           ends at its best (every entry kept is a true point of it) */
+        for (int i = 0; i < ZP_SEARCH_HIST / 2; i++) {
+            res->hist[i] = res->hist[2 * i + 1];
+        }
+        res->nhist = ZP_SEARCH_HIST / 2;
+        res->hist_halvings++;
+    }
+    res->hist[res->nhist++] = (zp_search_hist){at, e->time};
 }
 
 void zp_search_state_base(zp_search_state *S, const double *f, const zp_eval *e) {

@@ -8,7 +8,7 @@
 
 #include "objective.h"
 
-#define ZP_SEARCH_HIST 256   /* improvements kept in the history */
+#define ZP_SEARCH_HIST 1024  /* improvements kept in the history, thinned by half when full */
 #define ZP_SEARCH_REACH 1e-4 /* a polish ending this close (relative time) reached the best */
 #define ZP_SEARCH_CONV 1e-6  /* a round improving the best less than this (relative) converged */
 #define ZP_SEARCH_ENDS 4     /* survivable polish ends kept for a warm restart */
@@ -86,6 +86,7 @@ typedef struct zp_search_result {
     double island_force[ZP_SEARCH_ISLANDS][ZP_SCHED_MAX_PARAMS];
     int island_pts[ZP_SEARCH_ISLANDS]; /* survivable points mapped in it: its size */
     int nhist;
+    int hist_halvings; /* times the full history kept only the later of each pair */
     zp_search_hist hist[ZP_SEARCH_HIST];
 } zp_search_result;
 

@@ -111,6 +111,7 @@ static void keep_evidence(zp_search_result *res, const zp_search_result *prev) {
     memcpy(res->island_force, prev->island_force, sizeof res->island_force);
     memcpy(res->island_pts, prev->island_pts, sizeof res->island_pts);
     res->nhist = prev->nhist;
+    res->hist_halvings = prev->hist_halvings;
     memcpy(res->hist, prev->hist, sizeof *res->hist * prev->nhist);
 }
 

@@ -58,7 +58,11 @@ static void portfolio_budgets(const zp_model *m, zp_scene *sc, long lo, long hi)
         double t = res.found ? res.best.time : INFINITY;
         CHECK(t <= prev * (1 + 1e-9));
         prev = t;
+        /* the history ends at the answer, however many improvements came before it */
+        CHECK(!res.found || (res.nhist > 0 && res.hist[res.nhist - 1].time == t));
         if (b > lo) {
+            /* every improvement kept, so the comparison below sees them all */
+            CHECK(res.hist_halvings == 0);
             CHECK(res.nhist >= res2.nhist);
             for (int i = 0; i < res2.nhist && i < res.nhist; i++) {
                 CHECK(res.hist[i].evals == res2.hist[i].evals &&
@@ -72,8 +76,35 @@ static void portfolio_budgets(const zp_model *m, zp_scene *sc, long lo, long hi)
     CHECK(res.evals == res2.evals && res.best.time == res2.best.time && res.nhist == res2.nhist);
 }
 
+/* a history of many more improvements than it keeps: thinned, it still spans the search, in
+   order, every entry one of the improvements, and ends at the last */
+static void history_thinning(void) {
+    static zp_search_result r;
+    memset(&r, 0, sizeof r);
+    zp_search_state S = {.res = &r, .running = INFINITY};
+    const long nimp = 5 * ZP_SEARCH_HIST + 3;
+    for (long k = 0; k < nimp; k++) {
+        zp_eval e = {.outcome = ZP_OUTCOME_FINISHED, .time = 100.0 - 1e-3 * (double)k};
+        zp_search_state_record(&S, 10 * k + 7, &e);
+        zp_eval worse = e;
+        worse.time += 1e-4; /* not an improvement: not recorded */
+        zp_search_state_record(&S, 10 * k + 8, &worse);
+    }
+    CHECK(r.hist_halvings > 0 && r.nhist > ZP_SEARCH_HIST / 2 && r.nhist <= ZP_SEARCH_HIST);
+    CHECK(r.hist[r.nhist - 1].evals == 10 * (nimp - 1) + 7);
+    CHECK(r.hist[r.nhist - 1].time == 100.0 - 1e-3 * (double)(nimp - 1));
+    CHECK(r.hist[0].evals < 10 * (1L << r.hist_halvings) + 7); /* it still opens the search */
+    for (int i = 0; i < r.nhist; i++) {
+        long k = (r.hist[i].evals - 7) / 10;
+        CHECK(r.hist[i].evals == 10 * k + 7 && r.hist[i].time == 100.0 - 1e-3 * (double)k);
+        CHECK(i == 0 || r.hist[i].evals > r.hist[i - 1].evals);
+    }
+}
+
 int main(void) {
     zp_scene sc;
+
+    history_thinning();
 
     /* a bare trolley: the largest push wins, at the closed-form time */
     {
@@ -191,6 +222,7 @@ int main(void) {
                 /* the smaller budget's improvements, at the same simulation counts, open the
                    larger one's history: the same runs in the same order */
                 if (b > 100) {
+                    CHECK(res.hist_halvings == 0);
                     CHECK(res.nhist >= res2.nhist);
                     for (int i = 0; i < res2.nhist && i < res.nhist; i++) {
                         CHECK(res.hist[i].evals == res2.hist[i].evals &&
