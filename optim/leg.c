@@ -30,7 +30,7 @@ const zp_eval *zp_leg_eval(zp_leg *leg, const double *x) {
     }
     double f[ZP_SCHED_MAX_PARAMS];
     zp_leg_params(leg, x, f);
-    zp_search_state_eval(S, leg->sim, leg->r, f, &leg->e);
+    zp_search_state_eval(S, leg->sim, leg->r, f, &leg->e, leg->nparts > 1 ? leg->parts : NULL);
     memcpy(leg->key, x, sizeof *x * leg->nx);
     leg->have = 1;
     leg->n++;

@@ -39,9 +39,11 @@ typedef struct zp_leg {
     int diag;    /* the one variable is a share of the box */
     int archive; /* every point evaluated joins the archive */
     long n;      /* simulations so far */
-    int have;    /* the last point evaluated: key, e */
+    int have;    /* the last point evaluated: key, e (and its constraint's parts) */
     double key[ZP_SCHED_MAX_PARAMS];
     zp_eval e;
+    int nparts; /* set by a strategy that holds the constraint's parts apart, before any run */
+    double parts[ZP_OBJECTIVE_PARTS_MAX];
     double bestf[ZP_SCHED_MAX_PARAMS]; /* the best so far, parameters */
     zp_eval best;
     int nimp;

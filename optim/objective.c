@@ -6,7 +6,6 @@
 
 #include <math.h>
 
-
 #define DEG (180.0 / M_PI)
 /* deg kept below the limit besides the margin, so that the margin also holds when the run is
    verified at a 100x tighter tolerance (angles move by ~1e-5 deg between the two) */
@@ -22,7 +21,7 @@ static void set_score(const zp_objective *ob, zp_eval *e) {
 }
 
 void zp_objective_eval_run(const zp_objective *ob, const zp_model *m, zp_sim *s, const zp_input *in,
-                     zp_eval *e, zp_result *r) {
+                           zp_eval *e, zp_result *r) {
     int failed = zp_sim_run(m, s, in, r) != ZP_OK;
     double angle = zp_model_angle_used(m, r->max_rel_angle);
     double span = m->xb[m->nsec] - m->xb[0];
@@ -31,8 +30,12 @@ void zp_objective_eval_run(const zp_objective *ob, const zp_model *m, zp_sim *s,
         progress = 0;
         angle = m->phi_max;
     }
-    *e = (zp_eval){.outcome = r->outcome, .failed = failed, .time = r->time, .x = r->x,
-                   .angle = angle, .scenario = -1};
+    *e = (zp_eval){.outcome = r->outcome,
+                   .failed = failed,
+                   .time = r->time,
+                   .x = r->x,
+                   .angle = angle,
+                   .scenario = -1};
     /* a run that does not finish ranks after every finish (T <= t_max), nearer the end better;
        one that dies or breaks down also violates the constraint, more the earlier it stops */
     double behind = 1 - progress;
@@ -87,7 +90,7 @@ int zp_objective_eval_nominal(const zp_objective *ob, zp_sim *s, const zp_schedu
 }
 
 double zp_objective_scenario(const zp_objective *ob, int i, const zp_schedule *sched, zp_sim *s,
-                             zp_result *r, double *obj) {
+                             zp_result *r, double *obj, double *parts) {
     const zp_scen_set *set = ob->set;
     int j = set->order[i];
     const zp_objective *oj = set->judge && set->judge[j].m ? &set->judge[j] : ob;
@@ -97,7 +100,14 @@ double zp_objective_scenario(const zp_objective *ob, int i, const zp_schedule *s
     if (obj) {
         *obj = ej.obj;
     }
-    return zp_objective_scenario_cons(oj, &ej);
+    double cons = zp_objective_scenario_cons(oj, &ej);
+    if (parts) {
+        zp_objective_parts_of(ob, &set->m[j], &ej, r, parts);
+        for (int k = 0, n = zp_objective_parts_count(ob); k < n && cons > ej.cons; k++) {
+            parts[k] = cons; /* it stalled: every part broken as the whole */
+        }
+    }
+    return cons;
 }
 
 void zp_objective_eval_close(const zp_objective *ob, int nrun, int broke, zp_eval *e) {
@@ -114,14 +124,26 @@ void zp_objective_eval_close(const zp_objective *ob, int nrun, int broke, zp_eva
 
 void zp_objective_eval(const zp_objective *ob, zp_sim *s, const double *p, zp_eval *e,
                        zp_result *r) {
+    zp_objective_eval_parts(ob, s, p, e, r, NULL);
+}
+
+void zp_objective_eval_parts(const zp_objective *ob, zp_sim *s, const double *p, zp_eval *e,
+                             zp_result *r, double *parts) {
     zp_schedule sched = zp_objective_schedule(ob, p);
-    if (!zp_objective_eval_nominal(ob, s, &sched, e, r)) {
+    int survivor = zp_objective_eval_nominal(ob, s, &sched, e, r);
+    if (parts) {
+        zp_objective_parts_of(ob, ob->m, e, r, parts);
+    }
+    if (!survivor) {
         return;
     }
     int i = 0, broke = 0;
     while (i < ob->set->n && !broke) {
-        double obj;
-        double cons = zp_objective_scenario(ob, i++, &sched, s, r, &obj);
+        double obj, sp[ZP_OBJECTIVE_PARTS_MAX];
+        double cons = zp_objective_scenario(ob, i++, &sched, s, r, &obj, parts ? sp : NULL);
+        if (parts) {
+            zp_objective_parts_fold(ob, parts, sp);
+        }
         e->cons = fmax(e->cons, cons);
         e->obj = ob->slowest ? fmax(e->obj, obj) : e->obj;
         broke = cons > 0;
@@ -143,4 +165,38 @@ int zp_objective_better(const zp_eval *a, const zp_eval *b) {
         return fa;
     }
     return a->score < b->score;
+}
+
+int zp_objective_parts_count(const zp_objective *ob) {
+    int n = 1;
+    for (int i = 0; !(ob->set && ob->set->judge) && i < ZP_LIMIT_COUNT; i++) {
+        n += ob->lim.max[i] > 0;
+    }
+    return n;
+}
+
+void zp_objective_parts_fold(const zp_objective *ob, double *acc, const double *c) {
+    for (int k = 0, n = zp_objective_parts_count(ob); k < n; k++) {
+        acc[k] = fmax(acc[k], c[k]);
+    }
+}
+
+void zp_objective_parts_of(const zp_objective *ob, const zp_model *m, const zp_eval *e,
+                           const zp_result *r, double *c) {
+    int n = zp_objective_parts_count(ob);
+    if (n == 1 || e->failed || e->outcome != ZP_OUTCOME_FINISHED) {
+        for (int k = 0; k < n; k++) {
+            c[k] = e->cons;
+        }
+        return;
+    }
+    double v[ZP_LIMIT_COUNT];
+    zp_limits_judged(&ob->lim, m, r, v); /* what e->cons judged, at its cost */
+    c[0] = zp_objective_margin_cons(ob, e);
+    for (int i = 0, k = 1; i < ZP_LIMIT_COUNT; i++) {
+        double per_unit;
+        if (ob->lim.max[i] > 0) {
+            c[k++] = zp_objective_limit_cons(ob, i, v[i], &per_unit);
+        }
+    }
 }

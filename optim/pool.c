@@ -90,7 +90,7 @@ typedef struct eval_batch {
 static void eval_job(void *user, int i, zp_sim *s, zp_result *r) {
     eval_batch *b = user;
     zp_pool_objective_eval(b->p, b->ob, s, r, b->f + (size_t)i * zp_objective_nparams(b->ob),
-                           &b->e[i]);
+                           &b->e[i], NULL);
 }
 
 void zp_pool_eval(zp_pool *p, const zp_objective *ob, int n, const double *f, zp_eval *e,
@@ -110,6 +110,7 @@ typedef struct scen_share {
     atomic_int next; /* the next position to take */
     atomic_int stop; /* the first position that broke so far (it only falls); n: none */
     double *cons;    /* owned, 2n: the constraint of each position run, then its objective */
+    double *parts;   /* owned, n x ZP_OBJECTIVE_PARTS_MAX: each position's parts, or NULL: none */
 } scen_share;
 
 static void share_work(scen_share *sh, zp_sim *s, zp_result *r) {
@@ -118,7 +119,9 @@ static void share_work(scen_share *sh, zp_sim *s, zp_result *r) {
         if (i >= sh->n || i > atomic_load(&sh->stop)) {
             return;
         }
-        sh->cons[i] = zp_objective_scenario(sh->ob, i, sh->sched, s, r, &sh->cons[sh->n + i]);
+        double *parts = sh->parts ? sh->parts + (size_t)i * ZP_OBJECTIVE_PARTS_MAX : NULL;
+        sh->cons[i] =
+            zp_objective_scenario(sh->ob, i, sh->sched, s, r, &sh->cons[sh->n + i], parts);
         int stop = atomic_load(&sh->stop);
         while (sh->cons[i] > 0 && i < stop && !atomic_compare_exchange_weak(&sh->stop, &stop, i)) {
         }
@@ -126,20 +129,28 @@ static void share_work(scen_share *sh, zp_sim *s, zp_result *r) {
 }
 
 void zp_pool_objective_eval(zp_pool *p, const zp_objective *ob, zp_sim *s, zp_result *r,
-                            const double *f, zp_eval *e) {
+                            const double *f, zp_eval *e, double *parts) {
     int nt = omp_get_num_threads();
     if (!p->help || nt < 2 || nt > p->nw) {
-        zp_objective_eval(ob, s, f, e, r);
+        zp_objective_eval_parts(ob, s, f, e, r, parts);
         return;
     }
     zp_schedule sched = zp_objective_schedule(ob, f);
-    if (!zp_objective_eval_nominal(ob, s, &sched, e, r)) {
+    int survivor = zp_objective_eval_nominal(ob, s, &sched, e, r);
+    if (parts) {
+        zp_objective_parts_of(ob, ob->m, e, r, parts);
+    }
+    if (!survivor) {
         return;
     }
     int n = zp_objective_nscenarios(ob);
-    scen_share sh = {ob, &sched, n, 0, n, malloc(sizeof *sh.cons * 2 * n)};
-    if (!sh.cons) {
-        zp_objective_eval(ob, s, f, e, r);
+    scen_share sh = {.ob = ob, .sched = &sched, .n = n, .next = 0, .stop = n};
+    sh.cons = malloc(sizeof *sh.cons * 2 * n);
+    sh.parts = parts ? malloc(sizeof *sh.parts * ZP_OBJECTIVE_PARTS_MAX * n) : NULL;
+    if (!sh.cons || (parts && !sh.parts)) {
+        free(sh.cons);
+        free(sh.parts);
+        zp_objective_eval_parts(ob, s, f, e, r, parts);
         return;
     }
     /* helpers for the threads idle at the batch's end; a task runs only on a thread waiting at
@@ -158,9 +169,13 @@ void zp_pool_objective_eval(zp_pool *p, const zp_objective *ob, zp_sim *s, zp_re
     int stop = atomic_load(&sh.stop);
     int nrun = stop < n ? stop + 1 : n;
     for (int i = 0; i < nrun; i++) {
+        if (parts) {
+            zp_objective_parts_fold(ob, parts, sh.parts + (size_t)i * ZP_OBJECTIVE_PARTS_MAX);
+        }
         e->cons = fmax(e->cons, sh.cons[i]);
         e->obj = ob->slowest ? fmax(e->obj, sh.cons[n + i]) : e->obj;
     }
     zp_objective_eval_close(ob, nrun, stop < n, e);
     free(sh.cons);
+    free(sh.parts);
 }

@@ -31,11 +31,11 @@ void zp_pool_map(zp_pool *p, int n, zp_pool_job job, void *user, zp_pool_done do
 void zp_pool_eval(zp_pool *p, const zp_objective *ob, int n, const double *f, zp_eval *e,
                   zp_pool_done done, void *done_user);
 
-/* zp_objective_eval of parameters f from inside a job of p (s and r: its workspace), the
+/* zp_objective_eval_parts of parameters f from inside a job of p (s and r: its workspace), the
    survivor's scenarios run in parallel by the threads idle at the batch's end when p has
-   helpers: e, the set's counts and fails come out bit for bit as the serial loop gives them
-   (r then holds some run of the schedule). */
+   helpers: e, parts (may be NULL), the set's counts and fails come out bit for bit as the
+   serial loop gives them (r then holds some run of the schedule). */
 void zp_pool_objective_eval(zp_pool *p, const zp_objective *ob, zp_sim *s, zp_result *r,
-                            const double *f, zp_eval *e);
+                            const double *f, zp_eval *e, double *parts);
 
 #endif

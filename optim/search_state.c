@@ -56,7 +56,6 @@ void zp_search_state_end(zp_search_state *S) {
     free(S->a.e);
 }
 
-
 int zp_search_state_stopped(const zp_search_state *S) {
     return (S->o->stop && *S->o->stop) ||
            (S->o->max_time > 0 && zp_search_state_since(S) > S->o->max_time);
@@ -137,9 +136,9 @@ static void zp_search_state_report(zp_search_state *S, int improved) {
     S->o->progress(S->o->user, &p, improved);
 }
 
-void zp_search_state_eval(zp_search_state *S, zp_sim *s, zp_result *r, const double *f,
-                          zp_eval *e) {
-    zp_pool_objective_eval(S->pool, S->ob, s, r, f, e);
+void zp_search_state_eval(zp_search_state *S, zp_sim *s, zp_result *r, const double *f, zp_eval *e,
+                          double *parts) {
+    zp_pool_objective_eval(S->pool, S->ob, s, r, f, e, parts);
 #pragma omp critical
     {
         zp_search_result *res = S->res;
@@ -216,7 +215,7 @@ typedef struct batch {
 static void batch_job(void *user, int i, zp_sim *s, zp_result *r) {
     batch *b = user;
     if (i < b->left && !zp_search_state_stopped(b->S)) {
-        zp_search_state_eval(b->S, s, r, b->pts + (size_t)i * b->S->n, &b->e[i]);
+        zp_search_state_eval(b->S, s, r, b->pts + (size_t)i * b->S->n, &b->e[i], NULL);
         b->done[i] = 1;
     }
 }

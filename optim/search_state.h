@@ -62,9 +62,10 @@ int zp_search_state_rank(const zp_search_state *S, int *idx, int n);
 /* a and b differ by more than ZP_DISTINCT of the box in some parameter */
 int zp_search_state_distinct(const zp_search_state *S, const double *a, const double *b);
 
-/* one simulation of parameters f from any thread (s, r: its workspace): the shared counts and
-   the best so far */
-void zp_search_state_eval(zp_search_state *S, zp_sim *s, zp_result *r, const double *f, zp_eval *e);
+/* one simulation of parameters f from any thread (s, r: its workspace), with the constraint's
+   parts when parts is not NULL (zp_objective_parts_count): the shared counts and the best so far */
+void zp_search_state_eval(zp_search_state *S, zp_sim *s, zp_result *r, const double *f, zp_eval *e,
+                          double *parts);
 /* npt points (rows of n parameters) in parallel, cut at the budget in their serial order, into
    the archive; how many ran */
 int zp_search_state_batch(zp_search_state *S, const double *pts, int npt);

@@ -6,8 +6,8 @@
 #include <nlopt.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
-#include "cons_parts.h"
 #include "strategy.h"
 
 #define FTOL 1e-6            /* s: a polish stops when the finish time settles to this */
@@ -50,15 +50,15 @@ static double nl_cons(unsigned n, const double *x, double *grad, void *data) {
     return e ? e->cons : 360;
 }
 
-/* COBYLA holds the constraint's parts apart (cons_parts.h); each a point's, of its one run */
+/* COBYLA holds the constraint's parts apart (zp_objective_parts_count); each a point's, of its one
+   evaluation */
 static void nl_parts(unsigned m, double *result, unsigned n, const double *x, double *grad,
                      void *data) {
     (void)n;
     (void)grad;
     nl_run *c = data;
-    const zp_eval *e = nl_eval(c, x);
-    if (e) {
-        zp_cons_parts_eval(c->leg->S->ob, e, c->leg->r, result);
+    if (nl_eval(c, x)) {
+        memcpy(result, c->leg->parts, sizeof *result * m);
         return;
     }
     for (unsigned k = 0; k < m; k++) { /* no run: NLopt is stopping (nl_eval) */
@@ -76,9 +76,10 @@ static nlopt_result setup(nl_run *c, nlopt_opt opt) {
     if (st > 0) {
         st = nlopt_set_min_objective(opt, nl_obj, c);
     }
-    int parts = c->alg == NLOPT_LN_COBYLA ? zp_cons_parts_count(leg->S->ob) : 1;
+    int parts = c->alg == NLOPT_LN_COBYLA ? zp_objective_parts_count(leg->S->ob) : 1;
     if (st > 0 && !c->penalty && parts > 1) {
-        const double tol[ZP_CONS_PARTS_MAX] = {0};
+        const double tol[ZP_OBJECTIVE_PARTS_MAX] = {0};
+        c->leg->nparts = parts;
         st = nlopt_add_inequality_mconstraint(opt, (unsigned)parts, nl_parts, c, tol);
     } else if (st > 0 && !c->penalty) {
         st = nlopt_add_inequality_constraint(opt, nl_cons, c, 0);

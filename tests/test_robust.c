@@ -334,12 +334,107 @@ static void shared_scenarios(void) {
     zp_model_free(m);
 }
 
+/* one schedule's evaluation with its constraint's parts, from inside a job of the pool */
+typedef struct parts_job {
+    zp_pool *p;
+    const zp_objective *ob;
+    const double *f;
+    zp_eval *e;
+    double *parts;
+} parts_job;
+
+static void eval_parts_job(void *user, int i, zp_sim *s, zp_result *r) {
+    parts_job *b = user;
+    zp_pool_objective_eval(b->p, b->ob, s, r, &b->f[i], &b->e[i],
+                           b->parts + (size_t)i * ZP_OBJECTIVE_PARTS_MAX);
+}
+
+/* the constraint's parts under a scenario set with [limits] (the margin, the highest and the
+   lowest arrival speed, each the worst over the runs): what a brute-force loop over the set's
+   order gives, part by part, from each run's own parts up to the first scenario that breaks;
+   their largest is the whole constraint; the same bits serially and shared over 3 threads; and
+   on pushes where the fastest scenario breaks the one limit while the slowest keeps the other
+   (and the other way round), the two limits' parts differ in sign (what a polish holds apart) */
+static void scenario_parts(void) {
+    zp_scene sc;
+    zp_model *m = tu_model(tu_swing, &sc);
+    zp_sim_opts o = tu_opts(&sc, 1e-8);
+    zp_objective ob = tu_objective(m, &sc, &o);
+    zp_sim *s = zp_sim_create(m, &o);
+    zp_result r;
+    double f0 = 40, v[ZP_LIMIT_COUNT]; /* N: the margin slack there */
+    zp_schedule sch = tu_sched(m, &f0);
+    zp_input in = {.sched = &sch};
+    zp_eval e0;
+    zp_objective_eval_run(&ob, m, s, &in, &e0, &r);
+    CHECK(e0.outcome == ZP_OUTCOME_FINISHED);
+    zp_limits_reached(m, &r, v);
+    /* km/h: a band about the arrival at f0 that +/-5 % of pushes near it cross on one side */
+    ob.lim.max[ZP_LIMIT_ARRIVAL] = 1.02 * v[ZP_LIMIT_ARRIVAL];
+    ob.lim.max[ZP_LIMIT_MIN_ARRIVAL] = 0.98 * v[ZP_LIMIT_ARRIVAL];
+    sc.force_error = 5;
+    zp_box b;
+    zp_box_from_scene(&sc, m, &b);
+    zp_scen_set set;
+    CHECK(zp_scen_set_build(&set, &b, m, 8, 3) == ZP_OK);
+    ob.set = &set;
+    int np = zp_objective_parts_count(&ob);
+    CHECK(np == 3);
+    zp_pool *p = zp_pool_create(m, &o, 3);
+    CHECK(p && zp_pool_help(p, m, &o) == 0);
+    enum { NF = 41 };
+    double f[NF], shared[NF * ZP_OBJECTIVE_PARTS_MAX];
+    zp_eval es[NF];
+    for (int k = 0; k < NF; k++) {
+        f[k] = f0 - 10 + 0.5 * k; /* N: about f0, to pushes every scenario breaks */
+    }
+    parts_job job = {p, &ob, f, es, shared};
+    zp_pool_map(p, NF, eval_parts_job, &job, NULL, NULL);
+    int apart = 0, apart_low = 0;
+    for (int k = 0; k < NF; k++) {
+        double serial[ZP_OBJECTIVE_PARTS_MAX], want[ZP_OBJECTIVE_PARTS_MAX];
+        zp_eval e;
+        zp_objective_eval_parts(&ob, s, &f[k], &e, &r, serial);
+        sch = tu_sched(m, &f[k]);
+        in = (zp_input){.sched = &sch};
+        zp_eval ej;
+        zp_objective_eval_run(&ob, m, s, &in, &ej, &r);
+        zp_objective_parts_of(&ob, m, &ej, &r, want);
+        int broke = 0;
+        for (int i = 0; zp_objective_feasible(&ej) && i < set.n && !broke; i++) {
+            int j = set.order[i];
+            in = (zp_input){.sched = &sch, .force_scale = set.sc[j].force, .start = &set.start[j]};
+            zp_eval es_j;
+            zp_objective_eval_run(&ob, &set.m[j], s, &in, &es_j, &r);
+            double one[ZP_OBJECTIVE_PARTS_MAX];
+            zp_objective_parts_of(&ob, &set.m[j], &es_j, &r, one);
+            for (int q = 0; q < np; q++) {
+                want[q] = fmax(want[q], one[q]);
+            }
+            broke = zp_objective_scenario_cons(&ob, &es_j) > 0;
+        }
+        double largest = -INFINITY;
+        for (int q = 0; q < np; q++) {
+            CHECK(serial[q] == want[q] && shared[k * ZP_OBJECTIVE_PARTS_MAX + q] == want[q]);
+            largest = fmax(largest, want[q]);
+        }
+        CHECK(largest == e.cons && es[k].cons == e.cons);
+        apart += zp_objective_feasible(&ej) && want[1] > 0 && want[2] < 0;
+        apart_low += zp_objective_feasible(&ej) && want[1] < 0 && want[2] > 0;
+    }
+    CHECK(apart > 0 && apart_low > 0);
+    zp_pool_free(p);
+    zp_sim_free(s);
+    zp_scen_set_free(&set);
+    zp_model_free(m);
+}
+
 /* P(X >= k) for X ~ Binomial(n, p), summed term by term in long double */
 static long double binomial_tail(int k, int n, double p) {
     long double sum = 0;
     for (int i = k; i <= n; i++) {
-        sum += expl(lgammal(n + 1.0L) - lgammal(i + 1.0L) - lgammal(n - i + 1.0L) +
-                    i * logl(p) + (n - i) * log1pl(-(long double)p));
+        sum += expl(lgammal(n + 1.0L) - lgammal(i + 1.0L) - lgammal(n - i + 1.0L) + i * logl(p) +
+                    (n - i) * log1pl(-(long double)p));
     }
     return sum;
 }
@@ -347,8 +442,8 @@ static long double binomial_tail(int k, int n, double p) {
 /* the one-sided 95 % lower bound L: P(X >= k | L) = 0.05, including where GSL's own beta
    inverse fails to converge (k near n, n large) */
 static void clopper_pearson(void) {
-    const int cases[][2] = {{1943, 2000}, {1999, 2000}, {1500, 2000}, {10, 2000}, {7, 10},
-                            {1, 1}, {63, 64}};
+    const int cases[][2] = {{1943, 2000}, {1999, 2000}, {1500, 2000}, {10, 2000},
+                            {7, 10},      {1, 1},       {63, 64}};
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         int k = cases[i][0], n = cases[i][1];
         double lo = zp_robust_clopper_pearson_lower(k, n, 0.05);
@@ -367,6 +462,7 @@ int main(void) {
     exact_peaks();
     monotone();
     shared_scenarios();
+    scenario_parts();
     threads();
     return CHECK_DONE();
 }

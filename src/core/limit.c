@@ -111,8 +111,9 @@ int zp_limits_envelope_worst(const zp_model *m, const zp_result *r) {
     return w;
 }
 
-double zp_limits_excess(const zp_limits *l, const zp_model *m, const zp_result *r, int *which) {
-    double v[ZP_LIMIT_COUNT], cable = l->max[ZP_LIMIT_CABLE_TENSION];
+void zp_limits_judged(const zp_limits *l, const zp_model *m, const zp_result *r,
+                      double v[ZP_LIMIT_COUNT]) {
+    double cable = l->max[ZP_LIMIT_CABLE_TENSION];
     reached(m, r, 0, v);
     if (cable > 0 && m->cable_paths) {
         /* every run of a search is judged: the fitted tensions, exact near the limit */
@@ -121,6 +122,11 @@ double zp_limits_excess(const zp_limits *l, const zp_model *m, const zp_result *
             v[ZP_LIMIT_CABLE_TENSION] = anchor_tension(m, r, 1);
         }
     }
+}
+
+double zp_limits_excess(const zp_limits *l, const zp_model *m, const zp_result *r, int *which) {
+    double v[ZP_LIMIT_COUNT];
+    zp_limits_judged(l, m, r, v);
     return zp_limits_excess_of(l, v, which);
 }
 

@@ -51,6 +51,11 @@ double zp_limits_anchor_tension(const zp_model *m, const zp_result *r);
    quasi-static, so a max_cable_tension below it is kept by no schedule. 0 without a cable,
    NaN when an equilibrium fails. */
 double zp_limits_cable_floor(const zp_model *m);
+/* What run r reached as l's limits judge it: zp_limits_reached's values, but with a
+   max_cable_tension set the anchor tension fitted (zp_limits_anchor_tension), exact within
+   1e-9 of the limit, and 0 without one: what zp_limits_excess compares, at a search's cost. */
+void zp_limits_judged(const zp_limits *l, const zp_model *m, const zp_result *r,
+                      double v[ZP_LIMIT_COUNT]);
 /* The worst excess over the limits set, reached / limit - 1 (<= 0: all kept; -1 with no
    limit set), and in *which the limit that gave it (-1: none set). */
 double zp_limits_excess(const zp_limits *l, const zp_model *m, const zp_result *r, int *which);
