@@ -47,8 +47,11 @@ static void robust_text(FILE *f, const zp_answer *a) {
     if (L->range >= 0 && isfinite(L->breaks)) {
         fprintf(f,
                 "headroom: holds to %.4fx the stated ranges along the worst direction found, "
-                "breaks at %.4fx (%s)\n",
-                L->holds, L->breaks, L->limited_by);
+                "breaks at %.4fx (%s)%s\n",
+                L->holds, L->breaks, L->limited_by,
+                L->breaks < 1 ? ": inside the stated ranges, so not every scenario in them is "
+                                "survivable"
+                              : "");
     } else if (L->range >= 0) {
         fprintf(f,
                 "headroom: holds to %.4fx the stated ranges or more along the worst "
