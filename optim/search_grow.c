@@ -29,8 +29,16 @@ zp_status zp_search_grow(const zp_objective *ob, const zp_sim_opts *so, const do
            constant push (tower at 10x: the polishes from the answer, its ends and islands all
            still broke the grown set, and the answer fell from 14.46 s to the push's 16.05 s) */
         if (!st && (!k || ((!res->found || lost) && !res->interrupted))) {
+            /* the counts and the time go on from the searches before it */
+            long evals = k ? res->evals : 0, feasible = k ? res->nfeasible : 0;
+            long failed = k ? res->nfailed : 0;
+            double wall = k ? res->wall_s : 0;
             st = zp_search_run(ob, so, lo, hi, &ro, res, err, errlen);
             info->evals += res->evals;
+            res->evals += evals;
+            res->nfeasible += feasible;
+            res->nfailed += failed;
+            res->wall_s += wall;
         }
         info->searches++;
         grown = 0;
