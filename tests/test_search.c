@@ -43,6 +43,20 @@ static void search(const zp_objective *ob, const zp_sim_opts *o, const zp_scene 
     search_with(ob, o, sc, 0, nthreads, r);
 }
 
+/* big, a search at a larger budget than small: the history ends at its answer, however many
+   improvements came before it, and small's improvements, at the same simulation counts, open
+   it: the same runs in the same order (every improvement kept, so the comparison sees them
+   all) */
+static void history_extends(const zp_search_result *big, const zp_search_result *small) {
+    CHECK(!big->found || (big->nhist > 0 && big->hist[big->nhist - 1].time == big->best.time));
+    CHECK(big->hist_halvings == 0);
+    CHECK(big->nhist >= small->nhist);
+    for (int i = 0; i < small->nhist && i < big->nhist; i++) {
+        CHECK(big->hist[i].evals == small->hist[i].evals &&
+              big->hist[i].time == small->hist[i].time);
+    }
+}
+
 /* the portfolio at budgets lo, 2 lo, .. hi on 2 threads: each runs everything the smaller one
    did (its history a prefix), never slower; then hi on 1 thread: the same bits */
 static void portfolio_budgets(const zp_model *m, zp_scene *sc, long lo, long hi) {
@@ -58,16 +72,8 @@ static void portfolio_budgets(const zp_model *m, zp_scene *sc, long lo, long hi)
         double t = res.found ? res.best.time : INFINITY;
         CHECK(t <= prev * (1 + 1e-9));
         prev = t;
-        /* the history ends at the answer, however many improvements came before it */
-        CHECK(!res.found || (res.nhist > 0 && res.hist[res.nhist - 1].time == t));
         if (b > lo) {
-            /* every improvement kept, so the comparison below sees them all */
-            CHECK(res.hist_halvings == 0);
-            CHECK(res.nhist >= res2.nhist);
-            for (int i = 0; i < res2.nhist && i < res.nhist; i++) {
-                CHECK(res.hist[i].evals == res2.hist[i].evals &&
-                      res.hist[i].time == res2.hist[i].time);
-            }
+            history_extends(&res, &res2);
         }
         res2 = res;
     }
@@ -219,15 +225,8 @@ int main(void) {
                 double t = res.found ? res.best.time : INFINITY;
                 CHECK(t <= prev * (1 + 1e-9));
                 prev = t;
-                /* the smaller budget's improvements, at the same simulation counts, open the
-                   larger one's history: the same runs in the same order */
                 if (b > 100) {
-                    CHECK(res.hist_halvings == 0);
-                    CHECK(res.nhist >= res2.nhist);
-                    for (int i = 0; i < res2.nhist && i < res.nhist; i++) {
-                        CHECK(res.hist[i].evals == res2.hist[i].evals &&
-                              res.hist[i].time == res2.hist[i].time);
-                    }
+                    history_extends(&res, &res2);
                 }
                 res2 = res;
                 CHECK(!res.base_found || (res.base.time > 0 && zp_objective_feasible(&res.base)));
