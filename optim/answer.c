@@ -126,11 +126,8 @@ static int candidates(const zp_problem *p, const zp_search_result *r, const doub
         }
         int distinct = 1;
         for (int i = -1; distinct && i < nx; i++) {
-            const double *y = i < 0 ? r->force : x[i];
-            distinct = 0;
-            for (int k = 0; !distinct && k < np; k++) {
-                distinct = fabs(pt[b][k] - y[k]) > ZP_DISTINCT * (p->sched.hi[k] - p->sched.lo[k]);
-            }
+            distinct = zp_search_state_apart(np, p->sched.lo, p->sched.hi, pt[b],
+                                             i < 0 ? r->force : x[i]);
         }
         if (distinct) {
             x[nx++] = pt[b];

@@ -24,6 +24,11 @@ const char *zp_headroom_range_name(int range) {
     return range >= 0 && range < ZP_HEADROOM_LINES ? range_names[range] : "";
 }
 
+const zp_headroom_line *zp_headroom_inside(const zp_headroom *h) {
+    const zp_headroom_line *L = &h->line[ZP_HEADROOM_LINES - 1];
+    return L->range >= 0 && L->breaks < 1 ? L : NULL;
+}
+
 /* a deviation from the nominal: coordinate k of the force, 4 factors - 1, nlink angles (rad),
    the wind (m/s) */
 typedef struct dev {

@@ -35,5 +35,8 @@ void zp_headroom_find(const zp_objective *ob, const zp_box *b, const zp_box *hol
                       const zp_sim_opts *so, const double *p, zp_headroom *h);
 /* The range's name as report.md writes it ("force error", ..., "the whole box"). */
 const char *zp_headroom_range_name(int range);
+/* The whole box's line when it breaks inside the stated ranges (a factor below 1: a scenario
+   they hold that the answer does not survive), else NULL. */
+const zp_headroom_line *zp_headroom_inside(const zp_headroom *h);
 
 #endif

@@ -554,11 +554,11 @@ static void md_survivable(FILE *f, const zp_answer *a) {
     }
     /* the ranges are what the search held, not a proof: say so where the headroom found a
        scenario inside them that breaks */
-    const zp_headroom_line *L = &c->headroom.line[ZP_HEADROOM_LINES - 1];
-    if (c->samples > 0 && L->range >= 0 && L->breaks < 1) {
+    const zp_headroom_line *in = zp_headroom_inside(&c->headroom);
+    if (c->samples > 0 && in) {
         fprintf(f, "\n**Not everywhere in these ranges**: along the worst direction found the "
                    "answer breaks (%s) at %.4fx the stated ranges (headroom below).\n",
-                L->limited_by, L->breaks);
+                in->limited_by, in->breaks);
     }
     fprintf(f, "\nHeld during the search to %d scenarios (%d corners of the ranges, %d "
                "quasi-random, %d added where the answer broke) besides the nominal scene: %ld "

@@ -49,9 +49,9 @@ static void robust_text(FILE *f, const zp_answer *a) {
                 "headroom: holds to %.4fx the stated ranges along the worst direction found, "
                 "breaks at %.4fx (%s)%s\n",
                 L->holds, L->breaks, L->limited_by,
-                L->breaks < 1 ? ": inside the stated ranges, so not every scenario in them is "
-                                "survivable"
-                              : "");
+                zp_headroom_inside(&c->headroom) ? ": inside the stated ranges, so not every "
+                                                   "scenario in them is survivable"
+                                                 : "");
     } else if (L->range >= 0) {
         fprintf(f,
                 "headroom: holds to %.4fx the stated ranges or more along the worst "

@@ -115,13 +115,18 @@ int zp_search_state_rank(const zp_search_state *S, int *idx, int n) {
     return 0;
 }
 
-int zp_search_state_distinct(const zp_search_state *S, const double *a, const double *b) {
-    for (int k = 0; k < S->n; k++) {
-        if (fabs(a[k] - b[k]) > ZP_DISTINCT * (S->hi[k] - S->lo[k])) {
+int zp_search_state_apart(int n, const double *lo, const double *hi, const double *a,
+                          const double *b) {
+    for (int k = 0; k < n; k++) {
+        if (fabs(a[k] - b[k]) > ZP_DISTINCT * (hi[k] - lo[k])) {
             return 1;
         }
     }
     return 0;
+}
+
+int zp_search_state_distinct(const zp_search_state *S, const double *a, const double *b) {
+    return zp_search_state_apart(S->n, S->lo, S->hi, a, b);
 }
 
 static void zp_search_state_report(zp_search_state *S, int improved) {

@@ -59,8 +59,11 @@ int zp_search_state_ahead(const zp_eval *a, const double *fa, const zp_eval *b, 
 /* archive indices idx[n] sorted best first by that order (ties: the lower index); 0, or -1 when
    out of memory (idx unchanged) */
 int zp_search_state_rank(const zp_search_state *S, int *idx, int n);
-/* a and b differ by more than ZP_DISTINCT of the box in some parameter */
+/* a and b differ by more than ZP_DISTINCT of the box in some parameter: S's box, or the box
+   [lo, hi] of n parameters */
 int zp_search_state_distinct(const zp_search_state *S, const double *a, const double *b);
+int zp_search_state_apart(int n, const double *lo, const double *hi, const double *a,
+                          const double *b);
 
 /* one simulation of parameters f from any thread (s, r: its workspace), with the constraint's
    parts when parts is not NULL (zp_objective_parts_count): the shared counts and the best so far */
