@@ -54,6 +54,19 @@ void zp_report_convergence(char *buf, size_t n, const zp_answer *a) {
                  "; too few polishes for that many minima to estimate the basins not yet "
                  "visited (Boender and Rinnooy Kan)");
     }
+    char pops[160] = "";
+    if (a->found && s->npops > 0 && s->pops_best <= s->best.time * (1 + ZP_SEARCH_REACH)) {
+        snprintf(pops, sizeof pops, "; the %d population%s reached it too", s->npops,
+                 s->npops == 1 ? "" : "s");
+    } else if (a->found && s->npops > 0 && isfinite(s->pops_best)) {
+        snprintf(pops, sizeof pops,
+                 "; the %d population%s had not reached it (their fastest: %.4f s), so the "
+                 "search has not converged",
+                 s->npops, s->npops == 1 ? "" : "s", s->pops_best);
+    } else if (a->found && s->npops > 0) {
+        snprintf(pops, sizeof pops, "; the %d population%s had found nothing survivable", s->npops,
+                 s->npops == 1 ? "" : "s");
+    }
     char tail[300];
     double cable_max = a->pb->lim.max[ZP_LIMIT_CABLE_TENSION];
     double floor = cable_max > 0 ? zp_limits_cable_floor(a->pb->m) : 0;
@@ -82,7 +95,7 @@ void zp_report_convergence(char *buf, size_t n, const zp_answer *a) {
                  s->nrounds);
     }
     if (k >= 0 && (size_t)k < n) {
-        snprintf(buf + k, n - k, "%s%s", unseen, tail);
+        snprintf(buf + k, n - k, "%s%s%s", unseen, pops, tail);
     }
 }
 

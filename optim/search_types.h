@@ -79,6 +79,8 @@ typedef struct zp_search_result {
     double unseen;    /* Boender-Rinnooy Kan: expected basins not yet found (INFINITY: too few
                          polishes to say) */
     long help_evals;  /* simulations, about the budget that would let the search converge */
+    int npops;        /* populations the global strategy evolves beside the polishes (0: none) */
+    double pops_best; /* s, the fastest survivable run of those populations (INFINITY: none) */
     int nislands;     /* islands of the map (the best near-survivable points, islands.c) */
     int npolished;    /* of them, islands a polish ended in */
     int nshown;       /* survivable islands below, best first */

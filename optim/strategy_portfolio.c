@@ -1,21 +1,21 @@
 /* The portfolio's global phase (strategies.def): each round the scan's low-discrepancy points,
-   then a share of differential evolution (pagmo2's sade, pagmo_de.h) in NPOP independent
-   populations (one of POP_MAX members from ONE_POP_FROM parameters), each evolved serially on
-   a leg of its own with its own seed from the search's, the legs in parallel: a count fixed by
-   the scene, so the same seed gives the same bits on any thread count. The points a population runs
-   join the map (of its near-survivable ones the best, below), so the islands it finds are polished
-   with the others. The map decides the share: it doubles after a round whose populations improved
-   the best of the map and halves after one where they did not. */
+   then a share of pagmo2's CMA-ES or differential evolution (sade; the strategy's variant,
+   pagmo_pop.h) in NPOP independent populations (one of POP_MAX members from ONE_POP_FROM
+   parameters), each evolved serially on a leg of its own with its own seed from the search's,
+   the legs in parallel: a count fixed by the scene, so the same seed gives the same bits on any
+   thread count. The points a population runs join the map (of its near-survivable ones the
+   best, below), so the islands it finds are polished with the others. The map decides the
+   share: it doubles after a round whose populations improved the best of the map and halves
+   after one where they did not. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
 #include "islands.h"
-#include "pagmo_de.h"
+#include "pagmo_pop.h"
 #include "strategy.h"
 
 #define NPOP 4          /* populations below ONE_POP_FROM parameters, whatever the threads */
-#define VARIANT 6       /* sade's best/1/bin (SciPy's best1bin), with jDE's adaptation */
 #define POP_PER_PARAM 5 /* members per parameter ... */
 #define POP_MIN 16      /* ... at least ... */
 #define POP_MAX 120     /* ... and at most */
@@ -25,6 +25,12 @@
    one; on a second seed m9, m10 and multi8 gained, m8 held and m12 lost 0.9 %), while below
    it the four's separate islands win (m6 and m7 lost 1 % with one) */
 #define ONE_POP_FROM 8
+/* the variant of portfolio-cobyla: CMA-ES below ONE_POP_FROM parameters, sade from it (the other
+   portfolios name their algorithm). Over seeds 1 to 5 of docs/search.md's scenes below 8
+   parameters CMA-ES's four populations left m6 and m7 7.7 % and 2.5 % behind the best known in
+   all, sade's 11.0 % and 5.2 % (CMA-ES lost m4 0.4 % twice); from 8 one CMA-ES population lost
+   m8, m9 and multi8 1.8 % to 86 % and won m12 0.9 % */
+#define BY_DIMENSION (-1)
 /* simulations of the populations together a round, per point of the scan's sequence in that
    round, at the base share: the two global phases grow together, round by round, and a small
    budget keeps its rounds of lines and polishes. 16 won every multi-section scene of
@@ -36,17 +42,18 @@
 
 /* one population and the points it ran in its last leg, to join the archive in order */
 typedef struct population {
-    zp_pagmo_de *de; /* owned */
-    zp_leg *leg;     /* the leg evolving it now */
-    int gens;        /* generations of this round */
+    zp_pagmo_pop *evo; /* owned */
+    zp_leg *leg;       /* the leg evolving it now */
+    int gens;          /* generations of this round */
     int npts, cap;
     double *f;  /* owned, cap x n parameters */
     zp_eval *e; /* owned, cap */
 } population;
 
 typedef struct portfolio {
-    void *scan; /* owned: the scan's sequence */
-    int npop;   /* populations: NPOP, or one from ONE_POP_FROM parameters */
+    void *scan;         /* owned: the scan's sequence */
+    zp_pagmo_algo algo; /* what evolves the populations */
+    int npop;           /* populations: NPOP, or one from ONE_POP_FROM parameters */
     int popsize;
     int share;  /* times the base share, 1 .. SHARE_MAX */
     int gained; /* the populations improved the best of the map last round */
@@ -60,7 +67,7 @@ static void portfolio_free(void *state) {
     }
     zp_strategy_scan.free(P->scan);
     for (int i = 0; i < NPOP; i++) {
-        zp_pagmo_de_free(P->pop[i].de);
+        zp_pagmo_pop_free(P->pop[i].evo);
         free(P->pop[i].f);
         free(P->pop[i].e);
     }
@@ -68,19 +75,21 @@ static void portfolio_free(void *state) {
 }
 
 static void *portfolio_create(const zp_strategy *self, const zp_search_state *S) {
-    (void)self;
     portfolio *P = calloc(1, sizeof *P);
     if (!P || !(P->scan = zp_strategy_scan.create(&zp_strategy_scan, S))) {
         portfolio_free(P);
         return NULL;
     }
     int np = S->n < ONE_POP_FROM ? POP_PER_PARAM * S->n : POP_MAX;
+    P->algo = self->variant != BY_DIMENSION ? (zp_pagmo_algo)self->variant
+              : S->n < ONE_POP_FROM         ? ZP_PAGMO_CMAES
+                                            : ZP_PAGMO_SADE;
     P->npop = S->n < ONE_POP_FROM ? NPOP : 1;
     P->popsize = np < POP_MIN ? POP_MIN : np > POP_MAX ? POP_MAX : np;
     P->share = 1;
     for (int i = 0; i < P->npop; i++) {
         unsigned long seed = (S->o->seed ^ SEED_STREAM) * (unsigned long)P->npop + (unsigned long)i;
-        if (!(P->pop[i].de = zp_pagmo_de_create(S->n, S->lo, S->hi, P->popsize, VARIANT, seed))) {
+        if (!(P->pop[i].evo = zp_pagmo_pop_create(P->algo, S->n, S->lo, S->hi, P->popsize, seed))) {
             portfolio_free(P);
             return NULL;
         }
@@ -109,9 +118,9 @@ static void evolve_leg(const void *how, zp_leg *leg) {
     (void)how;
     population *p = leg->user;
     p->leg = leg;
-    if (zp_pagmo_de_evolve(p->de, p->gens, fitness, p)) {
+    if (zp_pagmo_pop_evolve(p->evo, p->gens, fitness, p)) {
         leg->refused = 1;
-        snprintf(leg->why, sizeof leg->why, "pagmo's sade refused the search");
+        snprintf(leg->why, sizeof leg->why, "pagmo refused to evolve a population");
     }
 }
 
@@ -190,12 +199,20 @@ static zp_status portfolio_explore(void *state, zp_search_state *S, int round, c
     }
     double before = best_time(S);
     st = zp_leg_batch(S, evolve_leg, NULL, jobs, P->npop, err, errlen);
+    zp_search_result *res = S->res;
+    if (res->npops == 0) {
+        res->npops = P->npop;
+        res->pops_best = INFINITY;
+    }
     for (int i = 0; i < P->npop; i++) {
         const population *p = &P->pop[i];
         int b = best_near(p, S);
         for (int j = 0; j < p->npts; j++) {
             if (j == b || !zp_islands_near(&p->e[j])) {
                 zp_search_state_add(S, p->f + (size_t)j * S->n, &p->e[j]);
+            }
+            if (zp_objective_feasible(&p->e[j]) && p->e[j].time < res->pops_best) {
+                res->pops_best = p->e[j].time;
             }
         }
     }
@@ -205,6 +222,21 @@ static zp_status portfolio_explore(void *state, zp_search_state *S, int round, c
 
 const zp_strategy zp_strategy_portfolio = {.name = "portfolio",
                                            .phase = ZP_STRATEGY_GLOBAL,
+                                           .variant = BY_DIMENSION,
                                            .create = portfolio_create,
                                            .free = portfolio_free,
                                            .explore = portfolio_explore};
+
+const zp_strategy zp_strategy_portfolio_de = {.name = "portfolio with differential evolution",
+                                              .phase = ZP_STRATEGY_GLOBAL,
+                                              .variant = ZP_PAGMO_SADE,
+                                              .create = portfolio_create,
+                                              .free = portfolio_free,
+                                              .explore = portfolio_explore};
+
+const zp_strategy zp_strategy_portfolio_cmaes = {.name = "portfolio with CMA-ES",
+                                                 .phase = ZP_STRATEGY_GLOBAL,
+                                                 .variant = ZP_PAGMO_CMAES,
+                                                 .create = portfolio_create,
+                                                 .free = portfolio_free,
+                                                 .explore = portfolio_explore};

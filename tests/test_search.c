@@ -234,11 +234,11 @@ int main(void) {
             zp_model_free(m);
         }
     }
-    /* the portfolio (the scan beside pagmo's differential evolution in seeded populations):
-       a larger budget runs everything a smaller one does, with budgets that cut the
-       populations' legs in the first round and in later ones, and the same bits on 1 and 2
-       threads; on the seed (four populations) and on multi8 (8 parameters: one population,
-       its leg cut in its third round at 9000) */
+    /* the portfolio (the scan beside pagmo's seeded populations): a larger budget runs
+       everything a smaller one does, with budgets that cut the populations' legs in the first
+       round and in later ones, and the same bits on 1 and 2 threads; on the seed (four CMA-ES
+       populations) and on multi8 (8 parameters: one of differential evolution, its leg cut in
+       its third round at 9000) */
     {
         zp_scene_load_seed(&sc);
         zp_diag d;

@@ -1,6 +1,7 @@
-// pagmo2's sade behind pagmo_de.h: the population and the algorithm (whose adapted F and CR
-// and random engine carry over from one call to the next) live as long as the handle.
-#include "pagmo_de.h"
+// pagmo2's sade and cmaes behind pagmo_pop.h: the population and the algorithm (whose adapted
+// state, sade's F and CR or CMA-ES's mean, step size and covariance, and random engine carry
+// over from one call to the next) live as long as the handle.
+#include "pagmo_pop.h"
 
 #include <cmath>
 #include <cstddef>
@@ -10,20 +11,22 @@
 #include <vector>
 
 #include <pagmo/algorithm.hpp>
+#include <pagmo/algorithms/cmaes.hpp>
 #include <pagmo/algorithms/sade.hpp>
 #include <pagmo/population.hpp>
 #include <pagmo/problem.hpp>
 
 namespace {
 
-constexpr unsigned adaptation = 1u; // jDE
-constexpr double ftol = 1e-6;       // s: a population this flat has collapsed ...
-constexpr double xtol = 1e-3;       // N: ... when its members are this close too
+constexpr unsigned sade_variant = 6u; // best/1/bin (SciPy's best1bin)
+constexpr unsigned adaptation = 1u;   // jDE
+constexpr double ftol = 1e-6;         // s: a population this flat has collapsed ...
+constexpr double xtol = 1e-3;         // N: ... when its members are this close too
 constexpr unsigned long seed_step = 0x9e3779b97f4a7c15UL; // the next seed after a collapse
 
 // what fitness calls, set before each evolution
 struct context {
-    zp_pagmo_de_fitness fit = nullptr;
+    zp_pagmo_pop_fitness fit = nullptr;
     void *user = nullptr;
 };
 
@@ -60,27 +63,38 @@ unsigned seed32(unsigned long s) {
     return static_cast<unsigned>(s ^ (s >> 32));
 }
 
+// one generation a call, with pagmo's own tolerances off: collapse is judged here after every
+// generation; memory on: the adapted state carries over from one call to the next
+pagmo::algorithm make_algorithm(zp_pagmo_algo kind, unsigned seed) {
+    if (kind == ZP_PAGMO_CMAES) {
+        // sigma0 0.5 of the box and the learning rates pagmo derives from the dimension (its
+        // defaults); bounds forced, as the simulator only knows the box
+        return pagmo::algorithm(pagmo::cmaes(1u, -1, -1, -1, -1, 0.5, 0, 0, true, true, seed));
+    }
+    return pagmo::algorithm(pagmo::sade(1u, sade_variant, adaptation, 0, 0, true, seed));
+}
+
 } // namespace
 
-struct zp_pagmo_de {
+struct zp_pagmo_pop {
     context ctx;
     box_problem prob;
+    zp_pagmo_algo kind = ZP_PAGMO_SADE;
     int popsize = 0;
-    unsigned variant = 0;
     unsigned long seed = 0;
     std::optional<pagmo::algorithm> algo;
     std::optional<pagmo::population> pop; // empty: to be drawn at the next evolution
 };
 
-extern "C" zp_pagmo_de *zp_pagmo_de_create(int n, const double *lo, const double *hi, int popsize,
-                                           int variant, unsigned long seed) {
+extern "C" zp_pagmo_pop *zp_pagmo_pop_create(zp_pagmo_algo algo, int n, const double *lo,
+                                             const double *hi, int popsize, unsigned long seed) {
     try {
-        auto d = std::make_unique<zp_pagmo_de>();
+        auto d = std::make_unique<zp_pagmo_pop>();
         d->prob.ctx = &d->ctx;
         d->prob.lo.assign(lo, lo + n);
         d->prob.hi.assign(hi, hi + n);
+        d->kind = algo;
         d->popsize = popsize;
-        d->variant = static_cast<unsigned>(variant);
         d->seed = seed;
         return d.release();
     } catch (...) {
@@ -88,17 +102,16 @@ extern "C" zp_pagmo_de *zp_pagmo_de_create(int n, const double *lo, const double
     }
 }
 
-extern "C" void zp_pagmo_de_free(zp_pagmo_de *d) {
+extern "C" void zp_pagmo_pop_free(zp_pagmo_pop *d) {
     delete d;
 }
 
-extern "C" int zp_pagmo_de_evolve(zp_pagmo_de *d, int gens, zp_pagmo_de_fitness fit, void *user) {
+extern "C" int zp_pagmo_pop_evolve(zp_pagmo_pop *d, int gens, zp_pagmo_pop_fitness fit,
+                                   void *user) {
     d->ctx = context{fit, user};
     try {
         if (!d->pop) {
-            // sade's own tolerances off: collapse is judged here after every generation; memory
-            // on: F and CR carry over from one call to the next
-            d->algo.emplace(pagmo::sade(1u, d->variant, adaptation, 0, 0, true, seed32(d->seed)));
+            d->algo.emplace(make_algorithm(d->kind, seed32(d->seed)));
             d->pop.emplace(pagmo::problem(d->prob),
                            static_cast<pagmo::population::size_type>(d->popsize),
                            seed32(d->seed >> 1));
