@@ -220,23 +220,13 @@ static zp_status portfolio_explore(void *state, zp_search_state *S, int round, c
     return st;
 }
 
-const zp_strategy zp_strategy_portfolio = {.name = "portfolio",
-                                           .phase = ZP_STRATEGY_GLOBAL,
-                                           .variant = BY_DIMENSION,
-                                           .create = portfolio_create,
-                                           .free = portfolio_free,
-                                           .explore = portfolio_explore};
-
-const zp_strategy zp_strategy_portfolio_de = {.name = "portfolio with differential evolution",
-                                              .phase = ZP_STRATEGY_GLOBAL,
-                                              .variant = ZP_PAGMO_SADE,
-                                              .create = portfolio_create,
-                                              .free = portfolio_free,
-                                              .explore = portfolio_explore};
-
-const zp_strategy zp_strategy_portfolio_cmaes = {.name = "portfolio with CMA-ES",
-                                                 .phase = ZP_STRATEGY_GLOBAL,
-                                                 .variant = ZP_PAGMO_CMAES,
-                                                 .create = portfolio_create,
-                                                 .free = portfolio_free,
-                                                 .explore = portfolio_explore};
+/* the portfolios differ only in what evolves their populations */
+#define PORTFOLIO(label, algo)                                                                     \
+    {                                                                                              \
+        .name = label, .phase = ZP_STRATEGY_GLOBAL, .variant = algo, .create = portfolio_create,   \
+        .free = portfolio_free, .explore = portfolio_explore                                       \
+    }
+const zp_strategy zp_strategy_portfolio = PORTFOLIO("portfolio", BY_DIMENSION);
+const zp_strategy zp_strategy_portfolio_de =
+    PORTFOLIO("portfolio with differential evolution", ZP_PAGMO_SADE);
+const zp_strategy zp_strategy_portfolio_cmaes = PORTFOLIO("portfolio with CMA-ES", ZP_PAGMO_CMAES);
