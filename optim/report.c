@@ -54,18 +54,17 @@ void zp_report_convergence(char *buf, size_t n, const zp_answer *a) {
                  "; too few polishes for that many minima to estimate the basins not yet "
                  "visited (Boender and Rinnooy Kan)");
     }
-    char pops[160] = "";
+    char pops[160] = "", who[32];
+    snprintf(who, sizeof who, s->npops == 1 ? "the population" : "the %d populations", s->npops);
     if (a->found && s->npops > 0 && s->pops_best <= s->best.time * (1 + ZP_SEARCH_REACH)) {
-        snprintf(pops, sizeof pops, "; the %d population%s reached it too", s->npops,
-                 s->npops == 1 ? "" : "s");
+        snprintf(pops, sizeof pops, "; %s reached it too", who);
     } else if (a->found && s->npops > 0 && isfinite(s->pops_best)) {
         snprintf(pops, sizeof pops,
-                 "; the %d population%s had not reached it (their fastest: %.4f s), so the "
-                 "search has not converged",
-                 s->npops, s->npops == 1 ? "" : "s", s->pops_best);
+                 "; %s had not reached it (%s fastest: %.4f s), so the search has not "
+                 "converged",
+                 who, s->npops == 1 ? "its" : "their", s->pops_best);
     } else if (a->found && s->npops > 0) {
-        snprintf(pops, sizeof pops, "; the %d population%s had found nothing survivable", s->npops,
-                 s->npops == 1 ? "" : "s");
+        snprintf(pops, sizeof pops, "; %s had found nothing survivable", who);
     }
     char tail[300];
     double cable_max = a->pb->lim.max[ZP_LIMIT_CABLE_TENSION];
