@@ -83,9 +83,12 @@ zp_schedule zp_objective_schedule(const zp_objective *ob, const double *p) {
 }
 
 int zp_objective_eval_nominal(const zp_objective *ob, zp_sim *s, const zp_schedule *sched,
-                              zp_eval *e, zp_result *r) {
+                              zp_eval *e, zp_result *r, double *parts) {
     zp_input in = {.sched = sched};
     zp_objective_eval_run(ob, ob->m, s, &in, e, r);
+    if (parts) {
+        zp_objective_parts_of(ob, ob->m, e, r, parts);
+    }
     return ob->set && ob->set->n > 0 && zp_objective_feasible(e);
 }
 
@@ -130,11 +133,7 @@ void zp_objective_eval(const zp_objective *ob, zp_sim *s, const double *p, zp_ev
 void zp_objective_eval_parts(const zp_objective *ob, zp_sim *s, const double *p, zp_eval *e,
                              zp_result *r, double *parts) {
     zp_schedule sched = zp_objective_schedule(ob, p);
-    int survivor = zp_objective_eval_nominal(ob, s, &sched, e, r);
-    if (parts) {
-        zp_objective_parts_of(ob, ob->m, e, r, parts);
-    }
-    if (!survivor) {
+    if (!zp_objective_eval_nominal(ob, s, &sched, e, r, parts)) {
         return;
     }
     int i = 0, broke = 0;

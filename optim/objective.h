@@ -70,14 +70,15 @@ void zp_objective_eval_parts(const zp_objective *ob, zp_sim *s, const double *p,
 /* The scenarios a survivor is held to: ob->set's, 0 without a set. */
 int zp_objective_nscenarios(const zp_objective *ob);
 /* The parts of zp_objective_eval, for a caller that shares a survivor's scenarios out: the
-   nominal run of sched scored into e (1: a survivor with a set, the scenarios follow); the
+   nominal run of sched scored into e, and its parts into parts when not NULL (1: a survivor
+   with a set, the scenarios follow); the
    constraint of the scenario at position i of the set's order (and in *obj, may be NULL, its
    objective: its finish time, or past t_max; in parts, may be NULL, its parts); and, once positions
    [0, nrun) ran with their constraints folded into e->cons in order (and with ob->slowest their
    objectives into e->obj; broke: the last one broke), the counts and the score as the serial loop
    leaves them. */
 int zp_objective_eval_nominal(const zp_objective *ob, zp_sim *s, const zp_schedule *sched,
-                              zp_eval *e, zp_result *r);
+                              zp_eval *e, zp_result *r, double *parts);
 double zp_objective_scenario(const zp_objective *ob, int i, const zp_schedule *sched, zp_sim *s,
                              zp_result *r, double *obj, double *parts);
 void zp_objective_eval_close(const zp_objective *ob, int nrun, int broke, zp_eval *e);

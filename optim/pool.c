@@ -136,11 +136,7 @@ void zp_pool_objective_eval(zp_pool *p, const zp_objective *ob, zp_sim *s, zp_re
         return;
     }
     zp_schedule sched = zp_objective_schedule(ob, f);
-    int survivor = zp_objective_eval_nominal(ob, s, &sched, e, r);
-    if (parts) {
-        zp_objective_parts_of(ob, ob->m, e, r, parts);
-    }
-    if (!survivor) {
+    if (!zp_objective_eval_nominal(ob, s, &sched, e, r, parts)) {
         return;
     }
     int n = zp_objective_nscenarios(ob);

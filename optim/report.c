@@ -56,7 +56,7 @@ void zp_report_convergence(char *buf, size_t n, const zp_answer *a) {
     }
     char pops[160] = "", who[32];
     snprintf(who, sizeof who, s->npops == 1 ? "the population" : "the %d populations", s->npops);
-    if (a->found && s->npops > 0 && s->pops_best <= s->best.time * (1 + ZP_SEARCH_REACH)) {
+    if (a->found && zp_search_populations_reached(s)) {
         snprintf(pops, sizeof pops, "; %s reached it too", who);
     } else if (a->found && s->npops > 0 && isfinite(s->pops_best)) {
         snprintf(pops, sizeof pops,

@@ -46,6 +46,10 @@ int zp_search_algo_default(int nsec, int robust) {
                                                           : zp_search_algo_find("scan-cobyla");
 }
 
+int zp_search_populations_reached(const zp_search_result *res) {
+    return res->found && res->npops > 0 && res->pops_best <= res->best.time * (1 + ZP_SEARCH_REACH);
+}
+
 long zp_search_default_budget(int n) {
     return ZP_SCENE_EVALS_PER_SECTION * (long)(n > 0 ? n : 1);
 }
@@ -235,7 +239,7 @@ static void close_round(rounds *R, int r, long spent0, double before) {
     zp_polishes_evidence(&R->pol, S, R->round_cost);
     res->converged = r >= 1 && res->found && res->last_gain < ZP_SEARCH_CONV &&
                      res->unseen < ZP_SEARCH_UNSEEN && res->nreached >= 2 &&
-                     (res->npops == 0 || res->pops_best <= res->best.time * (1 + ZP_SEARCH_REACH));
+                     (res->npops == 0 || zp_search_populations_reached(res));
 }
 
 static zp_status run_rounds(rounds *R, char *err, size_t errlen) {

@@ -26,6 +26,10 @@ int zp_search_algo_find(const char *name); /* -1 if unknown */
 #define ZP_SEARCH_PORTFOLIO_SECTIONS 4
 int zp_search_algo_default(int nsec, int robust);
 
+/* Whether a search's populations (the portfolio's; res->npops > 0) ran a survivable schedule
+   within ZP_SEARCH_REACH of its best: 0 too when it evolves none. */
+int zp_search_populations_reached(const zp_search_result *res);
+
 /* The default budget for n parameters: ZP_SCENE_EVALS_PER_SECTION simulations each. */
 long zp_search_default_budget(int n);
 

@@ -51,9 +51,8 @@ typedef struct population {
 } population;
 
 typedef struct portfolio {
-    void *scan;         /* owned: the scan's sequence */
-    zp_pagmo_algo algo; /* what evolves the populations */
-    int npop;           /* populations: NPOP, or one from ONE_POP_FROM parameters */
+    void *scan; /* owned: the scan's sequence */
+    int npop;   /* populations: NPOP, or one from ONE_POP_FROM parameters */
     int popsize;
     int share;  /* times the base share, 1 .. SHARE_MAX */
     int gained; /* the populations improved the best of the map last round */
@@ -81,15 +80,15 @@ static void *portfolio_create(const zp_strategy *self, const zp_search_state *S)
         return NULL;
     }
     int np = S->n < ONE_POP_FROM ? POP_PER_PARAM * S->n : POP_MAX;
-    P->algo = self->variant != BY_DIMENSION ? (zp_pagmo_algo)self->variant
-              : S->n < ONE_POP_FROM         ? ZP_PAGMO_CMAES
-                                            : ZP_PAGMO_SADE;
+    zp_pagmo_algo algo = self->variant != BY_DIMENSION ? (zp_pagmo_algo)self->variant
+                         : S->n < ONE_POP_FROM         ? ZP_PAGMO_CMAES
+                                                       : ZP_PAGMO_SADE;
     P->npop = S->n < ONE_POP_FROM ? NPOP : 1;
     P->popsize = np < POP_MIN ? POP_MIN : np > POP_MAX ? POP_MAX : np;
     P->share = 1;
     for (int i = 0; i < P->npop; i++) {
         unsigned long seed = (S->o->seed ^ SEED_STREAM) * (unsigned long)P->npop + (unsigned long)i;
-        if (!(P->pop[i].evo = zp_pagmo_pop_create(P->algo, S->n, S->lo, S->hi, P->popsize, seed))) {
+        if (!(P->pop[i].evo = zp_pagmo_pop_create(algo, S->n, S->lo, S->hi, P->popsize, seed))) {
             portfolio_free(P);
             return NULL;
         }

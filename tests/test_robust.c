@@ -278,6 +278,19 @@ static void threads(void) {
     zp_model_free(m);
 }
 
+/* the objective judged over n scenarios of sc's box (seed 3), and a pool of 3 threads helping
+   with them: the setting of the shared-scenario tests below */
+static zp_pool *with_scenarios(zp_objective *ob, const zp_scene *sc, const zp_sim_opts *o,
+                               zp_scen_set *set, int n) {
+    zp_box b;
+    zp_box_from_scene(sc, ob->m, &b);
+    CHECK(zp_scen_set_build(set, &b, ob->m, n, 3) == ZP_OK);
+    ob->set = set;
+    zp_pool *p = zp_pool_create(ob->m, o, 3);
+    CHECK(p && zp_pool_help(p, ob->m, o) == 0);
+    return p;
+}
+
 /* a survivor's scenarios shared out over 3 threads give what a brute-force loop over the set's
    order gives: the constraint folded up to the first scenario that breaks, that scenario, and
    the runs and fails counted up to it */
@@ -288,13 +301,8 @@ static void shared_scenarios(void) {
     zp_objective ob = tu_objective(m, &sc, &o);
     sc.force_error = 5;
     sc.start_angle = 3;
-    zp_box b;
-    zp_box_from_scene(&sc, m, &b);
     zp_scen_set set;
-    CHECK(zp_scen_set_build(&set, &b, m, 24, 3) == ZP_OK);
-    ob.set = &set;
-    zp_pool *p = zp_pool_create(m, &o, 3);
-    CHECK(p && zp_pool_help(p, m, &o) == 0);
+    zp_pool *p = with_scenarios(&ob, &sc, &o, &set, 24);
     zp_sim *s = zp_sim_create(m, &o);
     zp_result r;
     int broke_late = 0, survived = 0;
@@ -373,15 +381,10 @@ static void scenario_parts(void) {
     ob.lim.max[ZP_LIMIT_ARRIVAL] = 1.02 * v[ZP_LIMIT_ARRIVAL];
     ob.lim.max[ZP_LIMIT_MIN_ARRIVAL] = 0.98 * v[ZP_LIMIT_ARRIVAL];
     sc.force_error = 5;
-    zp_box b;
-    zp_box_from_scene(&sc, m, &b);
     zp_scen_set set;
-    CHECK(zp_scen_set_build(&set, &b, m, 8, 3) == ZP_OK);
-    ob.set = &set;
+    zp_pool *p = with_scenarios(&ob, &sc, &o, &set, 8);
     int np = zp_objective_parts_count(&ob);
     CHECK(np == 3);
-    zp_pool *p = zp_pool_create(m, &o, 3);
-    CHECK(p && zp_pool_help(p, m, &o) == 0);
     enum { NF = 41 };
     double f[NF], shared[NF * ZP_OBJECTIVE_PARTS_MAX];
     zp_eval es[NF];
