@@ -78,6 +78,45 @@ static void leg_init(zp_leg *leg, zp_search_state *S, const zp_leg_job *j, long 
     }
 }
 
+int zp_leg_polish_within(zp_leg *leg, zp_leg_run run, const void *how, const double *x0,
+                         const double *step, long cap, zp_leg_rec *out) {
+    zp_search_state *S = leg->S;
+    long left = leg->budget - leg->n;
+    if (left <= 0 || zp_search_state_stopped(S)) {
+        return -1;
+    }
+    zp_leg_job job = {.x0 = x0, .step = step, .user = leg->user};
+    zp_leg sub;
+    leg_init(&sub, S, &job, cap < left ? cap : left);
+    sub.sim = leg->sim;
+    sub.r = leg->r;
+    run(how, &sub);
+    for (int j = 0; j < sub.nimp && leg->nimp < ZP_LEG_IMPROVEMENTS; j++) {
+        if (!zp_objective_better(&sub.imp[j], &leg->best) && leg->n > 0) {
+            continue;
+        }
+        leg->imp_at[leg->nimp] = leg->n + sub.imp_at[j];
+        leg->imp[leg->nimp++] = sub.imp[j];
+    }
+    if (sub.n > 0 && (leg->n == 0 ||
+                      zp_search_state_ahead(&sub.best, sub.bestf, &leg->best, leg->bestf, S->n))) {
+        leg->best = sub.best;
+        memcpy(leg->bestf, sub.bestf, sizeof *leg->bestf * S->n);
+    }
+    leg->n += sub.n;
+    leg->have = 0; /* the workspace ran the polish's points since */
+    if (sub.refused) {
+        leg->refused = 1;
+        memcpy(leg->why, sub.why, sizeof leg->why);
+    }
+    memcpy(out->start, x0, sizeof *out->start * S->n);
+    memcpy(out->end, sub.n > 0 ? sub.bestf : x0, sizeof *out->end * S->n);
+    out->e = sub.best;
+    out->n = sub.n;
+    out->at = -1;
+    return 0;
+}
+
 typedef struct leg_batch {
     zp_leg_run run;
     const void *how;

@@ -81,4 +81,12 @@ typedef struct zp_leg_job {
 zp_status zp_leg_batch(zp_search_state *S, zp_leg_run run, const void *how, const zp_leg_job *jobs,
                        int njob, char *err, size_t errlen);
 
+/* A polish inside a running leg (a global strategy's own, on the leg's workspace): run(how)
+   from x0 (parameters) with first steps `step`, of at most cap simulations of what the leg
+   has left. Its simulations and the improvements on the leg's best are the leg's, in order,
+   so a smaller budget still cuts the same runs short; what it came to into out. 0, or -1 when
+   the leg had nothing left to spend (out untouched). */
+int zp_leg_polish_within(zp_leg *leg, zp_leg_run run, const void *how, const double *x0,
+                         const double *step, long cap, zp_leg_rec *out);
+
 #endif

@@ -3,6 +3,7 @@
 // over from one call to the next) live as long as the handle.
 #include "pagmo_pop.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <memory>
@@ -128,5 +129,20 @@ extern "C" int zp_pagmo_pop_evolve(zp_pagmo_pop *d, int gens, zp_pagmo_pop_fitne
         return -1;
     }
     d->ctx = context{};
+    return 0;
+}
+
+extern "C" int zp_pagmo_pop_best(const zp_pagmo_pop *d, double *x, double *value) {
+    if (!d->pop) {
+        return -1;
+    }
+    try {
+        const auto i = d->pop->best_idx();
+        const auto &best = d->pop->get_x()[i];
+        std::copy(best.begin(), best.end(), x);
+        *value = d->pop->get_f()[i][0];
+    } catch (...) {
+        return -1;
+    }
     return 0;
 }

@@ -32,6 +32,10 @@ void zp_pagmo_pop_free(zp_pagmo_pop *p);
    refused. */
 int zp_pagmo_pop_evolve(zp_pagmo_pop *p, int gens, zp_pagmo_pop_fitness fit, void *user);
 
+/* the population's best member into x (its n values) and its value into *value: 0, or -1 when
+   none is drawn (before the first evolution, or after a collapse) */
+int zp_pagmo_pop_best(const zp_pagmo_pop *p, double *x, double *value);
+
 #ifdef __cplusplus
 }
 #endif

@@ -6,10 +6,12 @@
    thread count. The points a population runs join the map (of its near-survivable ones the
    best, below), so the islands it finds are polished with the others. The map decides the
    share: it doubles after a round whose populations improved the best of the map and halves
-   after one where they did not. */
+   after one where they did not. The one population (from ONE_POP_FROM parameters) has its best
+   polished inside its leg every POLISH_EVERY generations where it improved. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "islands.h"
 #include "pagmo_pop.h"
@@ -39,6 +41,17 @@
 #define PER_SCANNED 4
 #define SHARE_MAX 8            /* the share grows to this many times the base */
 #define SEED_STREAM 0xde5eedUL /* the populations' seeds: a stream apart from the scan's shift */
+/* design note: the search's polishes follow a round's populations, so what the one population
+   found in the round the budget ends was never polished: multi8's 6.67967 s came at 33999 of
+   its 40000 simulations and the population spent the rest; COBYLA from it reaches 6.6705 s in
+   243 (10x: 6.67013 s). Polished inside the leg (a polish of the search's kind, COBYLA, of its
+   size and first steps), the population's best reaches the map within POLISH_EVERY generations
+   of being found. The polish's end joins the map, not the population: put in its place of the
+   worst member it drew the differential evolution onto its island (m8 and multi8 0.2-0.9 %
+   slower, docs/search.md). Below ONE_POP_FROM (four CMA-ES populations) it lost m7 0.3 %. */
+#define POLISH_EVERY 10  /* generations between polishes of the one population's best */
+#define POLISH_SIMS 150  /* simulations per polish: the search's */
+#define POLISH_STEP 0.02 /* first steps, share of the box: the search's */
 
 /* one population and the points it ran in its last leg, to join the archive in order */
 typedef struct population {
@@ -46,8 +59,9 @@ typedef struct population {
     zp_leg *leg;       /* the leg evolving it now */
     int gens;          /* generations of this round */
     int npts, cap;
-    double *f;  /* owned, cap x n parameters */
-    zp_eval *e; /* owned, cap */
+    double *f;       /* owned, cap x n parameters */
+    zp_eval *e;      /* owned, cap */
+    double polished; /* the value of the best member last polished from (or what that reached) */
 } population;
 
 typedef struct portfolio {
@@ -88,6 +102,7 @@ static void *portfolio_create(const zp_strategy *self, const zp_search_state *S)
     P->share = 1;
     for (int i = 0; i < P->npop; i++) {
         unsigned long seed = (S->o->seed ^ SEED_STREAM) * (unsigned long)P->npop + (unsigned long)i;
+        P->pop[i].polished = INFINITY;
         if (!(P->pop[i].evo = zp_pagmo_pop_create(algo, S->n, S->lo, S->hi, P->popsize, seed))) {
             portfolio_free(P);
             return NULL;
@@ -113,13 +128,45 @@ static double fitness(void *user, const double *x) {
     return e->score;
 }
 
+/* COBYLA from the population's best where it is better than the last start polished from
+   (or that polish's end), the end kept for the map where it gained */
+static void polish_best(population *p, zp_leg *leg) {
+    const zp_search_state *S = leg->S;
+    double x[ZP_SCHED_MAX_PARAMS], step[ZP_SCHED_MAX_PARAMS], value;
+    if (zp_pagmo_pop_best(p->evo, x, &value) || !(value < p->polished)) {
+        return;
+    }
+    p->polished = value;
+    for (int k = 0; k < S->n; k++) {
+        step[k] = POLISH_STEP * (S->hi[k] - S->lo[k]);
+    }
+    zp_leg_rec rec;
+    const zp_strategy *cobyla = &zp_strategy_nlopt_cobyla;
+    if (zp_leg_polish_within(leg, cobyla->polish, cobyla, x, step, POLISH_SIMS, &rec) == 0 &&
+        rec.n > 0 && rec.e.score < value && p->npts < p->cap) {
+        p->polished = rec.e.score;
+        memcpy(p->f + (size_t)p->npts * S->n, rec.end, sizeof *rec.end * S->n);
+        p->e[p->npts++] = rec.e;
+    }
+}
+
+/* the generations between polishes of its best: all of the round's where it is not polished */
+static int polish_every(const portfolio *P, int gens) {
+    return P->npop == 1 ? POLISH_EVERY : gens;
+}
+
 static void evolve_leg(const void *how, zp_leg *leg) {
-    (void)how;
+    const portfolio *P = how;
     population *p = leg->user;
     p->leg = leg;
-    if (zp_pagmo_pop_evolve(p->evo, p->gens, fitness, p)) {
-        leg->refused = 1;
-        snprintf(leg->why, sizeof leg->why, "pagmo refused to evolve a population");
+    int every = polish_every(P, p->gens);
+    for (int g = 0; g < p->gens && !leg->refused; g += every) {
+        if (zp_pagmo_pop_evolve(p->evo, p->gens - g < every ? p->gens - g : every, fitness, p)) {
+            leg->refused = 1;
+            snprintf(leg->why, sizeof leg->why, "pagmo refused to evolve a population");
+        } else if (P->npop == 1) {
+            polish_best(p, leg);
+        }
     }
 }
 
@@ -185,9 +232,11 @@ static zp_status portfolio_explore(void *state, zp_search_state *S, int round, c
     }
     long share = (long)P->share * PER_SCANNED * (S->a.n - n0) / P->npop;
     int gens = share > P->popsize ? (int)(share / P->popsize) : 1;
-    /* a population drawn afresh (the first round, or after it collapsed) spends popsize more */
-    int cap = (gens + 1) * P->popsize;
-    if (make_room(P, S, cap)) {
+    /* a population drawn afresh (the first round, or after it collapsed) spends popsize more;
+       the one population's polishes their own */
+    int npolish = P->npop == 1 ? (gens + polish_every(P, gens) - 1) / polish_every(P, gens) : 0;
+    long cap = (long)(gens + 1) * P->popsize + (long)npolish * POLISH_SIMS;
+    if (make_room(P, S, (gens + 1) * P->popsize + npolish)) {
         snprintf(err, errlen, "out of memory for the populations");
         return ZP_ERR_NOMEM;
     }
@@ -197,7 +246,7 @@ static zp_status portfolio_explore(void *state, zp_search_state *S, int round, c
         jobs[i] = (zp_leg_job){.x0 = S->lo, .cap = cap, .user = &P->pop[i]};
     }
     double before = best_time(S);
-    st = zp_leg_batch(S, evolve_leg, NULL, jobs, P->npop, err, errlen);
+    st = zp_leg_batch(S, evolve_leg, P, jobs, P->npop, err, errlen);
     zp_search_result *res = S->res;
     if (res->npops == 0) {
         res->npops = P->npop;
