@@ -107,6 +107,71 @@ static void history_thinning(void) {
     }
 }
 
+/* one leg that runs a point and then, inside, a COBYLA polish */
+typedef struct inside {
+    const double *x0, *step;
+    long cap;
+    int rc;
+    zp_leg_rec rec;
+} inside;
+
+static void point_then_polish(const void *how, zp_leg *leg) {
+    inside *w = leg->user;
+    CHECK(zp_leg_eval(leg, leg->S->lo) != NULL);
+    w->rc = zp_leg_polish_within(leg, zp_strategy_nlopt_cobyla.polish, how, w->x0, w->step, w->cap,
+                                 &w->rec);
+}
+
+/* a leg of cap simulations on a fresh state of ob: one polish from x0 as the leg itself
+   (within == NULL) or a point and then the polish inside it; what the leg came to into out */
+static void leg_alone(const zp_objective *ob, const zp_sim_opts *o, const double *lo,
+                      const double *hi, inside *within, const double *x0, const double *step,
+                      long cap, zp_leg_rec *out, long *spent) {
+    static zp_search_result r;
+    zp_search_opts so = {.max_evals = 100000, .seed = 1, .nthreads = 1};
+    zp_search_state S;
+    char err[256];
+    zp_search_state_begin(&S, ob, lo, hi, &so, &r);
+    CHECK(zp_search_state_start(&S, o, err, sizeof err) == ZP_OK);
+    const zp_strategy *cobyla = &zp_strategy_nlopt_cobyla;
+    zp_leg_job job = {.x0 = x0, .step = step, .cap = cap, .user = within, .out = out};
+    CHECK(zp_leg_batch(&S, within ? point_then_polish : cobyla->polish, cobyla, &job, 1, err,
+                       sizeof err) == ZP_OK);
+    *spent = S.spent;
+    zp_search_state_end(&S);
+}
+
+/* a polish inside a leg runs what the same polish runs as a leg of its own, to the same end,
+   every simulation counted in the leg; a leg that has less left cuts it short at that, and one
+   with nothing left runs none */
+static void polish_within_leg(const zp_model *m, const zp_scene *sc) {
+    zp_sim_opts o = tu_opts(sc, 1e-5);
+    zp_objective ob = tu_objective(m, sc, &o);
+    double lo[ZP_MAX_SECTIONS], hi[ZP_MAX_SECTIONS], x0[ZP_MAX_SECTIONS], step[ZP_MAX_SECTIONS];
+    for (int k = 0; k < sc->nsec; k++) {
+        lo[k] = sc->force_min;
+        hi[k] = sc->force_max;
+        x0[k] = lo[k] + 0.3 * (hi[k] - lo[k]);
+        step[k] = 0.02 * (hi[k] - lo[k]);
+    }
+    const long cap = 150;
+    zp_leg_rec solo, outer;
+    long spent;
+    leg_alone(&ob, &o, lo, hi, NULL, x0, step, cap, &solo, &spent);
+    CHECK(solo.n > 10 && spent == solo.n);
+    inside w = {.x0 = x0, .step = step, .cap = cap};
+    leg_alone(&ob, &o, lo, hi, &w, lo, NULL, 10 * cap, &outer, &spent);
+    CHECK(w.rc == 0 && w.rec.n == solo.n && w.rec.e.time == solo.e.time);
+    CHECK(!memcmp(w.rec.end, solo.end, sizeof *solo.end * (size_t)sc->nsec));
+    CHECK(outer.n == 1 + solo.n && spent == outer.n);
+    CHECK(!zp_objective_better(&w.rec.e, &outer.e)); /* the leg's best counts the polish's */
+    leg_alone(&ob, &o, lo, hi, &w, lo, NULL, 1 + solo.n / 2, &outer, &spent);
+    CHECK(w.rc == 0 && w.rec.n == solo.n / 2 && spent == 1 + solo.n / 2);
+    w.rec.n = -1;
+    leg_alone(&ob, &o, lo, hi, &w, lo, NULL, 1, &outer, &spent);
+    CHECK(w.rc == -1 && w.rec.n == -1 && spent == 1);
+}
+
 int main(void) {
     zp_scene sc;
 
@@ -233,6 +298,14 @@ int main(void) {
             }
             zp_model_free(m);
         }
+    }
+    {
+        zp_scene_load_seed(&sc);
+        zp_diag d;
+        zp_diag_init(&d);
+        zp_model *m = zp_model_build(&sc, &d);
+        polish_within_leg(m, &sc);
+        zp_model_free(m);
     }
     /* the portfolio (the scan beside pagmo's seeded populations): a larger budget runs
        everything a smaller one does, with budgets that cut the populations' legs in the first
