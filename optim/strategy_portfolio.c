@@ -150,16 +150,11 @@ static void polish_best(population *p, zp_leg *leg) {
     }
 }
 
-/* the generations between polishes of its best: all of the round's where it is not polished */
-static int polish_every(const portfolio *P, int gens) {
-    return P->npop == 1 ? POLISH_EVERY : gens;
-}
-
 static void evolve_leg(const void *how, zp_leg *leg) {
     const portfolio *P = how;
     population *p = leg->user;
     p->leg = leg;
-    int every = polish_every(P, p->gens);
+    int every = P->npop == 1 ? POLISH_EVERY : p->gens; /* generations between polishes */
     for (int g = 0; g < p->gens && !leg->refused; g += every) {
         if (zp_pagmo_pop_evolve(p->evo, p->gens - g < every ? p->gens - g : every, fitness, p)) {
             leg->refused = 1;
@@ -234,7 +229,7 @@ static zp_status portfolio_explore(void *state, zp_search_state *S, int round, c
     int gens = share > P->popsize ? (int)(share / P->popsize) : 1;
     /* a population drawn afresh (the first round, or after it collapsed) spends popsize more;
        the one population's polishes their own */
-    int npolish = P->npop == 1 ? (gens + polish_every(P, gens) - 1) / polish_every(P, gens) : 0;
+    int npolish = P->npop == 1 ? (gens + POLISH_EVERY - 1) / POLISH_EVERY : 0;
     long cap = (long)(gens + 1) * P->popsize + (long)npolish * POLISH_SIMS;
     if (make_room(P, S, (gens + 1) * P->popsize + npolish)) {
         snprintf(err, errlen, "out of memory for the populations");
