@@ -106,6 +106,7 @@ static void keep_evidence(zp_search_result *res, const zp_search_result *prev) {
     res->help_evals = prev->help_evals;
     res->npops = prev->npops;
     res->pops_best = prev->pops_best;
+    res->nwindows = prev->nwindows;
     res->nislands = prev->nislands;
     res->npolished = prev->npolished;
     res->nshown = prev->nshown;

@@ -325,6 +325,15 @@ int main(void) {
             portfolio_budgets(m, &sc, 2250, 9000);
         }
         zp_model_free(m);
+        /* 9 sections: the one population's leg also searches windows of its best schedule,
+           the rest held; 18000 begins the first one */
+        m = tu_model_file(ZP_SOURCE_DIR "/tests/scenes/multi9.ini", &sc);
+        CHECK(m != NULL && sc.nsec == 9);
+        if (m) {
+            portfolio_budgets(m, &sc, 9000, 18000);
+            CHECK(res.nwindows >= 1 && res2.nwindows == res.nwindows);
+        }
+        zp_model_free(m);
     }
     /* the default by the scene: the portfolio from 4 sections without [robust], the scan on
        fewer sections and in every robust search */
