@@ -222,7 +222,8 @@ static void window_search(population *p, zp_leg *leg) {
                                             S->hi + w.first, WINDOW_POP, seed);
     if (!evo || zp_pagmo_pop_evolve(evo, WINDOW_GENS, window_fitness, &w)) {
         leg->refused = 1;
-        snprintf(leg->why, sizeof leg->why, "pagmo refused to evolve a window");
+        snprintf(leg->why, sizeof leg->why,
+                 evo ? "pagmo refused to evolve a window" : "out of memory for a window");
     }
     zp_pagmo_pop_free(evo);
     if (w.have && zp_search_state_ahead(&w.best, w.bestf, &from, w.base, S->n) &&

@@ -326,11 +326,11 @@ int main(void) {
         }
         zp_model_free(m);
         /* 9 sections: the one population's leg also searches windows of its best schedule,
-           the rest held; 18000 begins the first one */
+           the rest held; 12000 begins the first one */
         m = tu_model_file(ZP_SOURCE_DIR "/tests/scenes/multi9.ini", &sc);
         CHECK(m != NULL && sc.nsec == 9);
         if (m) {
-            portfolio_budgets(m, &sc, 9000, 18000);
+            portfolio_budgets(m, &sc, 6000, 12000);
             CHECK(res.nwindows >= 1 && res2.nwindows == res.nwindows);
         }
         zp_model_free(m);
