@@ -62,9 +62,9 @@
    every WINDOW_EVERY generations, CMA-ES over a window of WINDOW_WIDTH parameters of the leg's
    best schedule (the windows start every WINDOW_STRIDE, the last ending at the last parameter,
    taken from the last), its WINDOW_POP members drawn over the window, for WINDOW_GENS
-   generations. Over seeds 1 to 5 (docs/search.md) the gaps to the best known fell from 21.6 to
-   13.8 % in all on m9 and from 3.8 to 1.9 % on m12, and grew from 44.7 to 45.7 % on m10; every
-   40 generations m9 gained less (19.0 %). Only where a window holds two parameters or more: on 8
+   generations. Over seeds 1 to 5 (docs/search.md) the gaps to the best known fell from 22.2 to
+   14.4 % in all on m9 and from 3.8 to 1.9 % on m12, and grew from 44.7 to 45.7 % on m10; every
+   40 generations m9 gained less (19.7 %). Only where a window holds two parameters or more: on 8
    (multi8) windows lost 0.05-2 % on three seeds */
 #define WINDOW_WIDTH (ONE_POP_FROM - 1)
 #define WINDOW_STRIDE 3
