@@ -88,15 +88,12 @@ typedef struct population {
     long windows;     /* searched in all rounds: their seeds */
 } population;
 
-/* CMA-ES over the parameters first .. first + width - 1 of a schedule, the others held at
-   base, on the leg of the population it serves */
+/* CMA-ES over the WINDOW_WIDTH parameters from first of a schedule, the others held at base,
+   on the leg of the population it serves (whose best is then the window's, where it gained) */
 typedef struct window {
     zp_leg *leg;
-    int first, width;
+    int first;
     double base[ZP_SCHED_MAX_PARAMS];
-    double bestf[ZP_SCHED_MAX_PARAMS]; /* the best schedule it ran */
-    zp_eval best;
-    int have;
 } window;
 
 typedef struct portfolio {
@@ -149,6 +146,11 @@ static void *portfolio_create(const zp_strategy *self, const zp_search_state *S)
     return P;
 }
 
+/* what a population is told once the budget is spent: worse than any run */
+static double spent_score(const zp_search_state *S) {
+    return 3 * S->ob->t_max;
+}
+
 /* the penalised score at x through the leg (dying runs by how far they got), the point kept
    for the archive when it was simulated */
 static double fitness(void *user, const double *x) {
@@ -157,7 +159,7 @@ static double fitness(void *user, const double *x) {
     long n0 = leg->n;
     const zp_eval *e = zp_leg_eval(leg, x);
     if (!e) {
-        return 3 * leg->S->ob->t_max; /* the budget is spent: worse than any run */
+        return spent_score(leg->S);
     }
     if (leg->n > n0 && p->npts < p->cap) {
         zp_leg_params(leg, x, p->f + (size_t)p->npts * leg->S->n);
@@ -194,31 +196,22 @@ static double window_fitness(void *user, const double *xw) {
     const zp_search_state *S = w->leg->S;
     double f[ZP_SCHED_MAX_PARAMS];
     memcpy(f, w->base, sizeof *f * S->n);
-    memcpy(f + w->first, xw, sizeof *f * w->width);
+    memcpy(f + w->first, xw, sizeof *f * WINDOW_WIDTH);
     const zp_eval *e = zp_leg_eval(w->leg, f);
-    if (!e) {
-        return 3 * S->ob->t_max; /* the budget is spent: worse than any run */
-    }
-    if (!w->have || zp_search_state_ahead(e, f, &w->best, w->bestf, S->n)) {
-        w->have = 1;
-        w->best = *e;
-        memcpy(w->bestf, f, sizeof *f * S->n);
-    }
-    return e->score;
+    return e ? e->score : spent_score(S);
 }
 
-/* CMA-ES over population p's next window of its leg's best schedule; the best it ran joins the
-   map with the population's points where it is ahead of that schedule */
+/* CMA-ES over population p's next window of its leg's best schedule; the leg's best joins the
+   map with the population's points where the window moved it */
 static void window_search(population *p, zp_leg *leg) {
     const zp_search_state *S = leg->S;
-    window w = {.leg = leg, .width = WINDOW_WIDTH};
+    window w = {.leg = leg};
     p->window = (p->window + p->nwindow - 1) % p->nwindow;
     int first = p->window * WINDOW_STRIDE;
     w.first = first + WINDOW_WIDTH > S->n ? S->n - WINDOW_WIDTH : first;
     memcpy(w.base, leg->bestf, sizeof *w.base * S->n);
-    zp_eval from = leg->best;
     unsigned long seed = (S->o->seed ^ WINDOW_STREAM) * 65536UL + (unsigned long)p->windows++;
-    zp_pagmo_pop *evo = zp_pagmo_pop_create(ZP_PAGMO_CMAES, w.width, S->lo + w.first,
+    zp_pagmo_pop *evo = zp_pagmo_pop_create(ZP_PAGMO_CMAES, WINDOW_WIDTH, S->lo + w.first,
                                             S->hi + w.first, WINDOW_POP, seed);
     if (!evo || zp_pagmo_pop_evolve(evo, WINDOW_GENS, window_fitness, &w)) {
         leg->refused = 1;
@@ -226,10 +219,9 @@ static void window_search(population *p, zp_leg *leg) {
                  evo ? "pagmo refused to evolve a window" : "out of memory for a window");
     }
     zp_pagmo_pop_free(evo);
-    if (w.have && zp_search_state_ahead(&w.best, w.bestf, &from, w.base, S->n) &&
-        p->npts < p->cap) {
-        memcpy(p->f + (size_t)p->npts * S->n, w.bestf, sizeof *w.bestf * S->n);
-        p->e[p->npts++] = w.best;
+    if (memcmp(leg->bestf, w.base, sizeof *w.base * S->n) && p->npts < p->cap) {
+        memcpy(p->f + (size_t)p->npts * S->n, leg->bestf, sizeof *leg->bestf * S->n);
+        p->e[p->npts++] = leg->best;
     }
 }
 
