@@ -32,7 +32,7 @@ def window_search(p, x0, first, width, a):
     z0 = np.full(width, 0.5) if a.drawn else (x0[free] - lo[free]) / span
     cma = CMA(mean=z0, sigma=a.sigma, bounds=np.array([[0.0, 1.0]] * width), seed=a.seed,
               population_size=a.members)
-    p.best, p.sims = (np.inf, None), 0
+    p.restart()
 
     def full(z):
         x = x0.copy()
@@ -44,10 +44,8 @@ def window_search(p, x0, first, width, a):
         cma.tell([(z, p.score(full(z))) for z in asked])
     if p.best[1] is None:
         return None
-    r, angle = p.judge(p.exact, p.best[1])
-    if r.outcome != "finished" or angle > p.limit_deg:
-        return None
-    return r.time, p.phi_max_deg - angle, p.best[1]
+    ok, r, angle = p.verify(p.best[1])
+    return (r.time, p.phi_max_deg - angle, p.best[1]) if ok else None
 
 
 def main():
@@ -70,7 +68,7 @@ def main():
         ap.error(f"{a.summary}: {len(x0)} forces, the scene has {p.n} parameters")
     width = min(a.width, p.n)
     firsts = sorted({min(s, p.n - width) for s in range(0, p.n - width + a.stride, a.stride)})
-    r, angle = p.judge(p.exact, x0)
+    _, r, angle = p.verify(x0)
     print(f"start: {r.time:.6f} s ({r.outcome}, margin {p.phi_max_deg - angle:.3f} deg)")
     for first in firsts:
         got = window_search(p, x0, first, width, a)

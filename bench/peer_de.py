@@ -79,14 +79,23 @@ class Problem:
         self.exact = zipopt.Scene(path)
         self.n = self.fast.params  # the schedule's: a profile has knots per section
         self.lo, self.hi = self.fast.bounds
-        self.sims = 0
-        self.best = (math.inf, None)
+        self.restart()
 
     def judge(self, scene, x):
         scene.forces = x
         r = scene.simulate()
         angle = math.degrees(max(r.max_angles))
         return r, angle
+
+    def verify(self, x):
+        """x rerun with the scene's own [solver]: (keeps the margin there, the run, its angle)."""
+        r, angle = self.judge(self.exact, x)
+        return r.outcome == "finished" and angle <= self.limit_deg, r, angle
+
+    def restart(self):
+        """Forget the simulations counted and the best survivor kept, for a new search."""
+        self.sims = 0
+        self.best = (math.inf, None)
 
     def score(self, x):
         """zipopt's penalised score of x, from one ranking run; the best survivor kept."""
@@ -131,8 +140,7 @@ def main():
            "sims": p.sims, "wall_s": wall, "found": False, "time": None, "forces": None,
            "de_message": res.message}
     if p.best[1] is not None:
-        r, angle = p.judge(p.exact, p.best[1])
-        ok = r.outcome == "finished" and angle <= p.limit_deg
+        ok, r, angle = p.verify(p.best[1])
         out.update(found=ok, time=r.time if ok else None, forces=list(p.best[1]),
                    ranking_time=p.best[0], margin_deg=p.phi_max_deg - angle)
     if a.json:

@@ -69,8 +69,8 @@
 #define WINDOW_WIDTH (ONE_POP_FROM - 1)
 #define WINDOW_STRIDE 3
 #define WINDOW_POP (POP_PER_PARAM * WINDOW_WIDTH) /* as a population below ONE_POP_FROM */
-#define WINDOW_GENS 114 /* with the draw, 4025 simulations: what m9's windows needed */
-#define WINDOW_EVERY 20 /* generations of the population between windows */
+#define WINDOW_GENS 114          /* with the draw, 4025 simulations: what m9's windows needed */
+#define WINDOW_EVERY 20          /* generations of the population between windows */
 #define WINDOW_STREAM 0x3d5eedUL /* the windows' seeds: a stream apart from the populations' */
 
 /* one population and the points it ran in its last leg, to join the archive in order */
@@ -79,11 +79,10 @@ typedef struct population {
     zp_leg *leg;       /* the leg evolving it now */
     int gens;          /* generations of this round */
     int npts, cap;
-    double *f;       /* owned, cap x n parameters */
-    zp_eval *e;      /* owned, cap */
-    double polished; /* the value of the best member last polished from (or what that reached) */
-    int nwindow;     /* windows searched from its leg's best (0: none) */
-    int window;      /* the last one searched */
+    double *f;        /* owned, cap x n parameters */
+    zp_eval *e;       /* owned, cap */
+    double polished;  /* the value of the best member last polished from (or what that reached) */
+    int window;       /* the last window searched from its leg's best */
     long generations; /* evolved in all rounds: when the windows are due */
     long windows;     /* searched in all rounds: their seeds */
 } population;
@@ -100,8 +99,9 @@ typedef struct portfolio {
     void *scan; /* owned: the scan's sequence */
     int npop;   /* populations: NPOP, or one from ONE_POP_FROM parameters */
     int popsize;
-    int share;  /* times the base share, 1 .. SHARE_MAX */
-    int gained; /* the populations improved the best of the map last round */
+    int nwindow; /* windows of the one population's best schedule (0: none) */
+    int share;   /* times the base share, 1 .. SHARE_MAX */
+    int gained;  /* the populations improved the best of the map last round */
     population pop[NPOP];
 } portfolio;
 
@@ -131,13 +131,13 @@ static void *portfolio_create(const zp_strategy *self, const zp_search_state *S)
                                                        : ZP_PAGMO_SADE;
     P->npop = S->n < ONE_POP_FROM ? NPOP : 1;
     P->popsize = np < POP_MIN ? POP_MIN : np > POP_MAX ? POP_MAX : np;
+    P->nwindow = P->npop == 1 && S->n >= WINDOW_WIDTH + 2
+                     ? (S->n - WINDOW_WIDTH + WINDOW_STRIDE - 1) / WINDOW_STRIDE + 1
+                     : 0;
     P->share = 1;
     for (int i = 0; i < P->npop; i++) {
         unsigned long seed = (S->o->seed ^ SEED_STREAM) * (unsigned long)P->npop + (unsigned long)i;
         P->pop[i].polished = INFINITY;
-        P->pop[i].nwindow = P->npop == 1 && S->n >= WINDOW_WIDTH + 2
-                                ? (S->n - WINDOW_WIDTH + WINDOW_STRIDE - 1) / WINDOW_STRIDE + 1
-                                : 0;
         if (!(P->pop[i].evo = zp_pagmo_pop_create(algo, S->n, S->lo, S->hi, P->popsize, seed))) {
             portfolio_free(P);
             return NULL;
@@ -203,10 +203,10 @@ static double window_fitness(void *user, const double *xw) {
 
 /* CMA-ES over population p's next window of its leg's best schedule; the leg's best joins the
    map with the population's points where the window moved it */
-static void window_search(population *p, zp_leg *leg) {
+static void window_search(const portfolio *P, population *p, zp_leg *leg) {
     const zp_search_state *S = leg->S;
     window w = {.leg = leg};
-    p->window = (p->window + p->nwindow - 1) % p->nwindow;
+    p->window = (p->window + P->nwindow - 1) % P->nwindow;
     int first = p->window * WINDOW_STRIDE;
     w.first = first + WINDOW_WIDTH > S->n ? S->n - WINDOW_WIDTH : first;
     memcpy(w.base, leg->bestf, sizeof *w.base * S->n);
@@ -226,9 +226,8 @@ static void window_search(population *p, zp_leg *leg) {
 }
 
 /* the windows due in the next gens generations of p */
-static long windows_due(const population *p, int gens) {
-    return p->nwindow ? (p->generations + gens) / WINDOW_EVERY - p->generations / WINDOW_EVERY
-                      : 0;
+static long windows_due(const portfolio *P, const population *p, int gens) {
+    return P->nwindow ? (p->generations + gens) / WINDOW_EVERY - p->generations / WINDOW_EVERY : 0;
 }
 
 static void evolve_leg(const void *how, zp_leg *leg) {
@@ -238,7 +237,7 @@ static void evolve_leg(const void *how, zp_leg *leg) {
     int every = P->npop == 1 ? POLISH_EVERY : p->gens; /* generations between polishes */
     for (int g = 0; g < p->gens && !leg->refused; g += every) {
         int chunk = p->gens - g < every ? p->gens - g : every;
-        long due = windows_due(p, chunk);
+        long due = windows_due(P, p, chunk);
         if (zp_pagmo_pop_evolve(p->evo, chunk, fitness, p)) {
             leg->refused = 1;
             snprintf(leg->why, sizeof leg->why, "pagmo refused to evolve a population");
@@ -249,7 +248,7 @@ static void evolve_leg(const void *how, zp_leg *leg) {
             polish_best(p, leg);
         }
         for (long k = 0; k < due && !leg->refused; k++) {
-            window_search(p, leg);
+            window_search(P, p, leg);
         }
     }
 }
@@ -319,7 +318,7 @@ static zp_status portfolio_explore(void *state, zp_search_state *S, int round, c
     /* a population drawn afresh (the first round, or after it collapsed) spends popsize more;
        the one population's polishes their own */
     int npolish = P->npop == 1 ? (gens + POLISH_EVERY - 1) / POLISH_EVERY : 0;
-    long nwin = windows_due(&P->pop[0], gens); /* each drawn afresh, so WINDOW_GENS + 1 */
+    long nwin = windows_due(P, &P->pop[0], gens); /* each drawn afresh, so WINDOW_GENS + 1 */
     long cap = (long)(gens + 1) * P->popsize + (long)npolish * POLISH_SIMS +
                nwin * (WINDOW_GENS + 1) * WINDOW_POP;
     if (make_room(P, S, (gens + 1) * P->popsize + npolish + (int)nwin)) {
