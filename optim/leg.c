@@ -19,6 +19,24 @@ void zp_leg_params(const zp_leg *leg, const double *x, double *f) {
     }
 }
 
+/* e, `at` simulations into the leg, into its improvements; out of memory, it takes the last
+   one's place, so the history still reaches the leg's best */
+static void improved(zp_leg *leg, long at, const zp_eval *e) {
+    if (leg->nimp == leg->imp_cap) {
+        int cap = leg->imp_cap ? 2 * leg->imp_cap : 16;
+        zp_leg_imp *grown = realloc(leg->imp, sizeof *grown * (size_t)cap);
+        if (grown) {
+            leg->imp = grown;
+            leg->imp_cap = cap;
+        } else if (leg->nimp > 0) {
+            leg->nimp--;
+        } else {
+            return;
+        }
+    }
+    leg->imp[leg->nimp++] = (zp_leg_imp){at, *e};
+}
+
 const zp_eval *zp_leg_eval(zp_leg *leg, const double *x) {
     zp_search_state *S = leg->S;
     if (leg->have && !memcmp(x, leg->key, sizeof *x * leg->nx)) {
@@ -37,9 +55,8 @@ const zp_eval *zp_leg_eval(zp_leg *leg, const double *x) {
     if (leg->n == 1 || zp_search_state_ahead(&leg->e, f, &leg->best, leg->bestf, S->n)) {
         leg->best = leg->e;
         memcpy(leg->bestf, f, sizeof *f * S->n);
-        if (zp_objective_feasible(&leg->e) && leg->nimp < ZP_LEG_IMPROVEMENTS) {
-            leg->imp_at[leg->nimp] = leg->n;
-            leg->imp[leg->nimp++] = leg->e;
+        if (zp_objective_feasible(&leg->e) && leg->e.time < leg->bar) {
+            improved(leg, leg->n, &leg->e);
         }
     }
     if (leg->archive) {
@@ -63,7 +80,8 @@ static void leg_init(zp_leg *leg, zp_search_state *S, const zp_leg_job *j, long 
                     .user = j->user,
                     .S = S,
                     .diag = j->diag,
-                    .archive = j->archive};
+                    .archive = j->archive,
+                    .bar = S->running};
     for (int k = 0; k < leg->nx; k++) {
         leg->lo[k] = j->diag ? 0 : S->lo[k];
         leg->hi[k] = j->diag ? 1 : S->hi[k];
@@ -91,13 +109,13 @@ int zp_leg_polish_within(zp_leg *leg, zp_leg_run run, const void *how, const dou
     sub.sim = leg->sim;
     sub.r = leg->r;
     run(how, &sub);
-    for (int j = 0; j < sub.nimp && leg->nimp < ZP_LEG_IMPROVEMENTS; j++) {
-        if (!zp_objective_better(&sub.imp[j], &leg->best) && leg->n > 0) {
+    for (int j = 0; j < sub.nimp; j++) {
+        if (!zp_objective_better(&sub.imp[j].e, &leg->best) && leg->n > 0) {
             continue;
         }
-        leg->imp_at[leg->nimp] = leg->n + sub.imp_at[j];
-        leg->imp[leg->nimp++] = sub.imp[j];
+        improved(leg, leg->n + sub.imp[j].at, &sub.imp[j].e);
     }
+    free(sub.imp);
     if (sub.n > 0 && (leg->n == 0 ||
                       zp_search_state_ahead(&sub.best, sub.bestf, &leg->best, leg->bestf, S->n))) {
         leg->best = sub.best;
@@ -137,7 +155,7 @@ static void leg_job(void *user, int i, zp_sim *s, zp_result *r) {
    came to into job's record */
 static void fold(zp_search_state *S, const zp_leg *leg, const zp_leg_job *job) {
     for (int j = 0; j < leg->nimp; j++) {
-        zp_search_state_record(S, S->spent + leg->imp_at[j], &leg->imp[j]);
+        zp_search_state_record(S, S->spent + leg->imp[j].at, &leg->imp[j].e);
     }
     S->spent += leg->n;
     zp_leg_rec *o = job->out;
@@ -173,6 +191,7 @@ zp_status zp_leg_batch(zp_search_state *S, zp_leg_run run, const void *how, cons
             st = ZP_ERR_INPUT;
         }
         fold(S, leg, &jobs[i]);
+        free(leg->imp);
     }
     free(b.legs);
     return st;

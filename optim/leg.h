@@ -9,7 +9,11 @@
 
 #include "search_state.h"
 
-#define ZP_LEG_IMPROVEMENTS 64 /* improvements recorded per leg, for the history */
+/* an improvement of a leg, `at` of its simulations in */
+typedef struct zp_leg_imp {
+    long at;
+    zp_eval e;
+} zp_leg_imp;
 
 /* where a leg started and the best it reached */
 typedef struct zp_leg_rec {
@@ -44,11 +48,14 @@ typedef struct zp_leg {
     zp_eval e;
     int nparts; /* set by a strategy that holds the constraint's parts apart, before any run */
     double parts[ZP_OBJECTIVE_PARTS_MAX];
+    double bar; /* s: the search's best time when the leg's batch began; only faster
+                   improvements can be the search's, so only those are recorded */
     double bestf[ZP_SCHED_MAX_PARAMS]; /* the best so far, parameters */
     zp_eval best;
-    int nimp;
-    long imp_at[ZP_LEG_IMPROVEMENTS];
-    zp_eval imp[ZP_LEG_IMPROVEMENTS];
+    /* its improvements that may be the search's, for the history: owned, freed by whoever
+       ran the leg once folded */
+    int nimp, imp_cap;
+    zp_leg_imp *imp;
 } zp_leg;
 
 /* The evaluation at the leg's variables x (nx), simulated once for whatever the strategy asks

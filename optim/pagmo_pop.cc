@@ -64,13 +64,16 @@ unsigned seed32(unsigned long s) {
     return static_cast<unsigned>(s ^ (s >> 32));
 }
 
+constexpr double sigma_drawn = 0.5; // CMA-ES's first step over a drawn population: pagmo's
+
 // one generation a call, with pagmo's own tolerances off: collapse is judged here after every
 // generation; memory on: the adapted state carries over from one call to the next
-pagmo::algorithm make_algorithm(zp_pagmo_algo kind, unsigned seed) {
+pagmo::algorithm make_algorithm(zp_pagmo_algo kind, unsigned seed, double sigma0) {
     if (kind == ZP_PAGMO_CMAES) {
-        // sigma0 0.5 of the box and the learning rates pagmo derives from the dimension (its
-        // defaults); bounds forced, as the simulator only knows the box
-        return pagmo::algorithm(pagmo::cmaes(1u, -1, -1, -1, -1, 0.5, 0, 0, true, true, seed));
+        // the first step sigma0 of the box and the learning rates pagmo derives from the
+        // dimension (its defaults); bounds forced, as the simulator only knows the box. pagmo's
+        // CMA-ES starts its mean at the best member
+        return pagmo::algorithm(pagmo::cmaes(1u, -1, -1, -1, -1, sigma0, 0, 0, true, true, seed));
     }
     return pagmo::algorithm(pagmo::sade(1u, sade_variant, adaptation, 0, 0, true, seed));
 }
@@ -85,6 +88,10 @@ struct zp_pagmo_pop {
     unsigned long seed = 0;
     std::optional<pagmo::algorithm> algo;
     std::optional<pagmo::population> pop; // empty: to be drawn at the next evolution
+    // the start of a population created at a point, until its first evolution
+    bool at = false;
+    pagmo::vector_double x0;
+    double f0 = 0, sigma0 = sigma_drawn;
 };
 
 extern "C" zp_pagmo_pop *zp_pagmo_pop_create(zp_pagmo_algo algo, int n, const double *lo,
@@ -103,6 +110,24 @@ extern "C" zp_pagmo_pop *zp_pagmo_pop_create(zp_pagmo_algo algo, int n, const do
     }
 }
 
+extern "C" zp_pagmo_pop *zp_pagmo_pop_create_at(int n, const double *lo, const double *hi,
+                                                int popsize, unsigned long seed, const double *x0,
+                                                double f0, double sigma0) {
+    zp_pagmo_pop *d = zp_pagmo_pop_create(ZP_PAGMO_CMAES, n, lo, hi, popsize, seed);
+    if (d) {
+        try {
+            d->x0.assign(x0, x0 + n);
+        } catch (...) {
+            delete d;
+            return nullptr;
+        }
+        d->at = true;
+        d->f0 = f0;
+        d->sigma0 = sigma0;
+    }
+    return d;
+}
+
 extern "C" void zp_pagmo_pop_free(zp_pagmo_pop *d) {
     delete d;
 }
@@ -112,10 +137,19 @@ extern "C" int zp_pagmo_pop_evolve(zp_pagmo_pop *d, int gens, zp_pagmo_pop_fitne
     d->ctx = context{fit, user};
     try {
         if (!d->pop) {
-            d->algo.emplace(make_algorithm(d->kind, seed32(d->seed)));
-            d->pop.emplace(pagmo::problem(d->prob),
-                           static_cast<pagmo::population::size_type>(d->popsize),
-                           seed32(d->seed >> 1));
+            d->algo.emplace(
+                make_algorithm(d->kind, seed32(d->seed), d->at ? d->sigma0 : sigma_drawn));
+            if (d->at) {
+                d->pop.emplace(pagmo::problem(d->prob), 0u, seed32(d->seed >> 1));
+                for (int i = 0; i < d->popsize; i++) {
+                    d->pop->push_back(d->x0, pagmo::vector_double{d->f0});
+                }
+                d->at = false;
+            } else {
+                d->pop.emplace(pagmo::problem(d->prob),
+                               static_cast<pagmo::population::size_type>(d->popsize),
+                               seed32(d->seed >> 1));
+            }
             d->seed += seed_step;
         }
         for (int g = 0; g < gens && d->pop; g++) {

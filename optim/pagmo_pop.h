@@ -23,6 +23,13 @@ typedef double (*zp_pagmo_pop_fitness)(void *user, const double *x);
    algo, with its seed; nothing evaluated yet. NULL when out of memory. */
 zp_pagmo_pop *zp_pagmo_pop_create(zp_pagmo_algo algo, int n, const double *lo, const double *hi,
                                   int popsize, unsigned long seed);
+/* CMA-ES over the box [lo, hi] (n values each, copied) started at x0, whose value is f0: its
+   popsize members all x0, so the mean sits there, with a first step of sigma0 of the box;
+   nothing evaluated by creating it. A population drawn afresh after a collapse is drawn over
+   the box, as zp_pagmo_pop_create's are. NULL when out of memory. */
+zp_pagmo_pop *zp_pagmo_pop_create_at(int n, const double *lo, const double *hi, int popsize,
+                                     unsigned long seed, const double *x0, double f0,
+                                     double sigma0);
 void zp_pagmo_pop_free(zp_pagmo_pop *p);
 
 /* up to gens generations (popsize evaluations each) through fit; the first call first draws

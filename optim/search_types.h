@@ -82,6 +82,7 @@ typedef struct zp_search_result {
     int npops;        /* populations the global strategy evolves beside the polishes (0: none) */
     double pops_best; /* s, the fastest survivable run of those populations (INFINITY: none) */
     long nwindows;    /* window searches of a population's best schedule, the rest held */
+    long npinned;     /* bang-bang searches from the map's best (pinned.h) */
     int nislands;     /* islands of the map (the best near-survivable points, islands.c) */
     int npolished;    /* of them, islands a polish ended in */
     int nshown;       /* survivable islands below, best first */

@@ -107,6 +107,7 @@ static void keep_evidence(zp_search_result *res, const zp_search_result *prev) {
     res->npops = prev->npops;
     res->pops_best = prev->pops_best;
     res->nwindows = prev->nwindows;
+    res->npinned = prev->npinned;
     res->nislands = prev->nislands;
     res->npolished = prev->npolished;
     res->nshown = prev->nshown;

@@ -41,7 +41,7 @@ static void json_convergence(FILE *f, const zp_answer *a) {
     json_number_or_null(f, s->nstarts > 0 ? s->unseen : NAN);
     fprintf(f, ", \"populations\": %d, \"populations_best\": ", s->npops);
     json_number_or_null(f, s->npops > 0 ? s->pops_best : NAN);
-    fprintf(f, ", \"windows\": %ld", s->nwindows);
+    fprintf(f, ", \"windows\": %ld, \"bang_bang\": %ld", s->nwindows, s->npinned);
     fputs(", \"budget_to_help\": ", f);
     if (!s->converged && a->found && (s->budget_out || s->timed_out)) {
         fprintf(f, "%ld", s->help_evals);

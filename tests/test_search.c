@@ -311,7 +311,7 @@ int main(void) {
        everything a smaller one does, with budgets that cut the populations' legs in the first
        round and in later ones, and the same bits on 1 and 2 threads; on the seed (four CMA-ES
        populations) and on multi8 (8 parameters: one of differential evolution, its leg cut in
-       its third round at 9000) */
+       its third round at 9000, and the bang-bang searches from the map's best) */
     {
         zp_scene_load_seed(&sc);
         zp_diag d;
@@ -323,14 +323,15 @@ int main(void) {
         CHECK(m != NULL && sc.nsec >= 8);
         if (m) {
             portfolio_budgets(m, &sc, 2250, 9000);
+            CHECK(res.npinned >= 1 && res2.npinned == res.npinned); /* bang-bang searches too */
         }
         zp_model_free(m);
         /* 9 sections: the one population's leg also searches windows of its best schedule,
-           the rest held; 12000 begins the first one */
+           the rest held; 16000 begins the first one, after three bang-bang searches */
         m = tu_model_file(ZP_SOURCE_DIR "/tests/scenes/multi9.ini", &sc);
         CHECK(m != NULL && sc.nsec == 9);
         if (m) {
-            portfolio_budgets(m, &sc, 6000, 12000);
+            portfolio_budgets(m, &sc, 8000, 16000);
             CHECK(res.nwindows >= 1 && res2.nwindows == res.nwindows);
         }
         zp_model_free(m);
