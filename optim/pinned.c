@@ -14,7 +14,7 @@
    holds back, not one it leaves alone: set to the bottom as well, m10_tangent's seed 1 kept
    section 4 at 0 N (6.28410 s) where the fastest known pushes 206 N (6.24780 s), and over seeds
    1 to 3 of m9, m10 and m12 the gaps to the best known added up to 23.1 % against 21.1 % with
-   the top alone (docs/search.md) */
+   the top alone (both within 0.1 of the box; docs/search.md) */
 int zp_pinned_make(zp_pinned *p, const zp_search_state *S, const double *f, unsigned long seed) {
     int npinned = 0;
     p->nfree = 0;

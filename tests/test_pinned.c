@@ -27,17 +27,17 @@ static void pins(void) {
     zp_objective ob = {.t_max = 60};
     zp_search_state S = {.ob = &ob, .n = 6, .lo = lo, .hi = hi};
     zp_pinned p;
-    CHECK(zp_pinned_make(&p, &S, (double[6]){95, 50, 3, 100, 40, 7}, 5) == 1);
+    CHECK(zp_pinned_make(&p, &S, (double[6]){97, 50, 3, 100, 40, 7}, 5) == 1);
     const double want[6] = {100, 50, 3, 100, 40, 7}; /* the top only: 3 N stays free */
     CHECK(!memcmp(p.base, want, sizeof want));
     CHECK(p.nfree == 3 && p.free[0] == 1 && p.free[1] == 2 && p.free[2] == 4);
     CHECK(p.popsize >= 8 && zp_pinned_cap(&p) == 1 + p.gens * p.popsize && p.seed == 5);
     /* nothing near the top, or nothing away from it: nothing to search */
     CHECK(zp_pinned_make(&p, &S, (double[6]){50, 0, 50, 5, 50, 7}, 5) == 0);
-    CHECK(zp_pinned_make(&p, &S, (double[6]){100, 95, 91, 99, 92, 7}, 5) == 0);
-    /* either side of "near" (10 % of the box from the top) */
-    CHECK(zp_pinned_make(&p, &S, (double[6]){89, 91, 9.9, 50, 50, 7}, 5) == 1);
-    CHECK(p.nfree == 4 && p.base[0] == 89 && p.base[1] == 100 && p.base[2] == 9.9);
+    CHECK(zp_pinned_make(&p, &S, (double[6]){100, 96, 97, 99, 98, 7}, 5) == 0);
+    /* either side of "near" (5 % of the box from the top) */
+    CHECK(zp_pinned_make(&p, &S, (double[6]){94, 96, 0.1, 50, 50, 7}, 5) == 1);
+    CHECK(p.nfree == 4 && p.base[0] == 94 && p.base[1] == 100 && p.base[2] == 0.1);
 }
 
 /* the search on a fresh state of the bare course from (48, 20, 30) N */
