@@ -65,6 +65,10 @@ const zp_eval *zp_leg_eval(zp_leg *leg, const double *x) {
     return &leg->e;
 }
 
+double zp_leg_spent_score(const zp_leg *leg) {
+    return 3 * leg->S->ob->t_max;
+}
+
 int zp_leg_charge(zp_leg *leg, long runs) {
     int fits = leg->n + runs <= leg->budget;
     leg->n = fits ? leg->n + runs : leg->budget;

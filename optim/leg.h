@@ -62,6 +62,10 @@ typedef struct zp_leg {
    of it there; NULL when the leg must stop: its budget is spent or the search stopped. */
 const zp_eval *zp_leg_eval(zp_leg *leg, const double *x);
 
+/* what a strategy is told for a point once its leg must stop (zp_leg_eval gave NULL): worse than
+   the runs it ranks, so it moves nowhere near there */
+double zp_leg_spent_score(const zp_leg *leg);
+
 /* the parameters f (S->n) of the leg's variables x, inside the box */
 void zp_leg_params(const zp_leg *leg, const double *x, double *f);
 /* runs a strategy spent beside zp_leg_eval's (a sensitivity run, charged as the plain runs it

@@ -45,7 +45,6 @@ long zp_pinned_cap(const zp_pinned *p) {
 typedef struct pinned_leg {
     const zp_pinned *p;
     zp_leg *leg;
-    double spent; /* what CMA-ES is told once the leg's budget is spent: worse than any run */
 } pinned_leg;
 
 /* the penalised score of the free parameters xf in the pinned schedule, through the leg */
@@ -57,13 +56,13 @@ static double pinned_fitness(void *user, const double *xf) {
         f[w->p->free[j]] = xf[j];
     }
     const zp_eval *e = zp_leg_eval(w->leg, f);
-    return e ? e->score : w->spent;
+    return e ? e->score : zp_leg_spent_score(w->leg);
 }
 
 void zp_pinned_run(const void *how, zp_leg *leg) {
     const zp_pinned *p = how;
     const zp_search_state *S = leg->S;
-    pinned_leg w = {.p = p, .leg = leg, .spent = 3 * S->ob->t_max};
+    pinned_leg w = {.p = p, .leg = leg};
     const zp_eval *e = zp_leg_eval(leg, p->base);
     if (!e) {
         return;

@@ -40,7 +40,7 @@ static double nl_obj(unsigned n, const double *x, double *grad, void *data) {
     (void)n;
     (void)grad;
     const zp_eval *e = nl_eval(c, x);
-    return !e ? 3 * c->leg->S->ob->t_max : c->penalty ? e->score : e->obj;
+    return !e ? zp_leg_spent_score(c->leg) : c->penalty ? e->score : e->obj;
 }
 
 static double nl_cons(unsigned n, const double *x, double *grad, void *data) {

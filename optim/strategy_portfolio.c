@@ -151,11 +151,6 @@ static void *portfolio_create(const zp_strategy *self, const zp_search_state *S)
     return P;
 }
 
-/* what a population is told once the budget is spent: worse than any run */
-static double spent_score(const zp_search_state *S) {
-    return 3 * S->ob->t_max;
-}
-
 /* the penalised score at x through the leg (dying runs by how far they got), the point kept
    for the archive when it was simulated */
 static double fitness(void *user, const double *x) {
@@ -164,7 +159,7 @@ static double fitness(void *user, const double *x) {
     long n0 = leg->n;
     const zp_eval *e = zp_leg_eval(leg, x);
     if (!e) {
-        return spent_score(leg->S);
+        return zp_leg_spent_score(leg);
     }
     if (leg->n > n0 && p->npts < p->cap) {
         zp_leg_params(leg, x, p->f + (size_t)p->npts * leg->S->n);
@@ -203,7 +198,7 @@ static double window_fitness(void *user, const double *xw) {
     memcpy(f, w->base, sizeof *f * S->n);
     memcpy(f + w->first, xw, sizeof *f * WINDOW_WIDTH);
     const zp_eval *e = zp_leg_eval(w->leg, f);
-    return e ? e->score : spent_score(S);
+    return e ? e->score : zp_leg_spent_score(w->leg);
 }
 
 /* CMA-ES over population p's next window of its leg's best schedule; the leg's best joins the

@@ -140,7 +140,7 @@ static double grad_obj(unsigned n, const double *u, double *grad, void *data) {
     if (grad) {
         memcpy(grad, c->dobj, sizeof *grad * n);
     }
-    return e ? e->obj : 3 * c->leg->S->ob->t_max;
+    return e ? e->obj : zp_leg_spent_score(c->leg);
 }
 
 /* the survival constraint of a finished run holds the margin alone beside the limits' own;
