@@ -20,6 +20,7 @@
 #include "pagmo_pop.h"
 #include "pinned.h"
 #include "strategy.h"
+#include "subsearch.h"
 
 #define NPOP 4          /* populations below ONE_POP_FROM parameters, whatever the threads */
 #define POP_PER_PARAM 5 /* members per parameter ... */
@@ -89,14 +90,6 @@ typedef struct population {
     long generations; /* evolved in all rounds: when the windows are due */
     long windows;     /* searched in all rounds: their seeds */
 } population;
-
-/* CMA-ES over the WINDOW_WIDTH parameters from first of a schedule, the others held at base,
-   on the leg of the population it serves (whose best is then the window's, where it gained) */
-typedef struct window {
-    zp_leg *leg;
-    int first;
-    double base[ZP_SCHED_MAX_PARAMS];
-} window;
 
 typedef struct portfolio {
     void *scan; /* owned: the scan's sequence */
@@ -190,35 +183,23 @@ static void polish_best(population *p, zp_leg *leg) {
     }
 }
 
-/* the penalised score of the window's parameters xw in its schedule, through the leg */
-static double window_fitness(void *user, const double *xw) {
-    window *w = user;
-    const zp_search_state *S = w->leg->S;
-    double f[ZP_SCHED_MAX_PARAMS];
-    memcpy(f, w->base, sizeof *f * S->n);
-    memcpy(f + w->first, xw, sizeof *f * WINDOW_WIDTH);
-    const zp_eval *e = zp_leg_eval(w->leg, f);
-    return e ? e->score : zp_leg_spent_score(w->leg);
-}
-
 /* CMA-ES over population p's next window of its leg's best schedule; the leg's best joins the
    map with the population's points where the window moved it */
 static void window_search(const portfolio *P, population *p, zp_leg *leg) {
     const zp_search_state *S = leg->S;
-    window w = {.leg = leg};
     p->window = (p->window + P->nwindow - 1) % P->nwindow;
     int first = p->window * WINDOW_STRIDE;
-    w.first = first + WINDOW_WIDTH > S->n ? S->n - WINDOW_WIDTH : first;
+    first = first + WINDOW_WIDTH > S->n ? S->n - WINDOW_WIDTH : first;
+    zp_subsearch w = {.nfree = WINDOW_WIDTH,
+                      .popsize = WINDOW_POP,
+                      .gens = WINDOW_GENS,
+                      .seed = (S->o->seed ^ WINDOW_STREAM) * 65536UL + (unsigned long)p->windows++,
+                      .what = "a window"};
     memcpy(w.base, leg->bestf, sizeof *w.base * S->n);
-    unsigned long seed = (S->o->seed ^ WINDOW_STREAM) * 65536UL + (unsigned long)p->windows++;
-    zp_pagmo_pop *evo = zp_pagmo_pop_create(ZP_PAGMO_CMAES, WINDOW_WIDTH, S->lo + w.first,
-                                            S->hi + w.first, WINDOW_POP, seed);
-    if (!evo || zp_pagmo_pop_evolve(evo, WINDOW_GENS, window_fitness, &w)) {
-        leg->refused = 1;
-        snprintf(leg->why, sizeof leg->why,
-                 evo ? "pagmo refused to evolve a window" : "out of memory for a window");
+    for (int j = 0; j < WINDOW_WIDTH; j++) {
+        w.free[j] = first + j;
     }
-    zp_pagmo_pop_free(evo);
+    zp_subsearch_run(&w, leg, 0);
     if (memcmp(leg->bestf, w.base, sizeof *w.base * S->n) && p->npts < p->cap) {
         memcpy(p->f + (size_t)p->npts * S->n, leg->bestf, sizeof *leg->bestf * S->n);
         p->e[p->npts++] = leg->best;
@@ -307,7 +288,7 @@ static zp_status pinned_search(portfolio *P, zp_search_state *S, char *err, size
          (!memcmp(res->force, P->pinned_from, size) || !memcmp(res->force, P->pinned_to, size)))) {
         return ZP_OK;
     }
-    zp_pinned pin;
+    zp_subsearch pin;
     unsigned long seed = (S->o->seed ^ PINNED_STREAM) * 65536UL + (unsigned long)P->npinned;
     if (!zp_pinned_make(&pin, S, res->force, seed)) {
         return ZP_OK;

@@ -96,6 +96,18 @@ static const char *const tu_swing =
     "[drive]\nmin = 0\nmax = 400\n"
     "[optimize]\nmargin = 5\nmax_evals = 400\n";
 
+/* m/m: a 1 g link on a 30 kg trolley changes its acceleration by ~3e-5 of itself, so a bare
+   trolley's time agrees with tu_slope_time to this */
+#define TU_BARE_TOL 2e-4
+
+/* s: a point trolley of `mass` kg from rest down a straight slope of drop `slope` per metre over
+   `length` m of x, pushed with `force` N horizontally (along the slope: force cos(alpha)) */
+static inline double tu_slope_time(double length, double slope, double force, double mass) {
+    double alpha = atan(slope);
+    double a = 9.81 * sin(alpha) + force / mass * cos(alpha);
+    return sqrt(2 * (length / cos(alpha)) / a);
+}
+
 /* The search's objective for m: the scene's margin, the options' t_max, no limits or set. */
 static inline zp_objective tu_objective(const zp_model *m, const zp_scene *sc,
                                         const zp_sim_opts *o) {
