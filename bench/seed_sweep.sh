@@ -1,7 +1,8 @@
 #!/bin/sh
 # The search's spread over seeds: `zipopt SCENE --seed S` for each scene and seed, one thread per
 # run and JOBS runs at once; prints a row per scene with the answer (s) of each seed, then the
-# searches' seconds in all (summary.json wall_s: on one thread, their CPU). docs/search.md's "seeds 1 to 5" tables are made this way.
+# searches' seconds in all (summary.json wall_s: on one thread, their CPU). docs/search.md's
+# "seeds 1 to 5" tables are made this way.
 #   bench/seed_sweep.sh [-j JOBS] [-s "SEEDS"] [-o DIR] [-x "ARGS"] path/to/zipopt SCENE.ini...
 # -j runs at once (default: the cores), -s the seeds (default "1 2 3 4 5"), -o keeps each run's
 # output in DIR/SCENE_SEED/ (default: a temporary folder, removed), -x more arguments for every
@@ -30,6 +31,12 @@ shift
 for scene in "$@"; do
     [ -r "$scene" ] || { echo "seed_sweep: cannot read $scene" >&2; exit 2; }
 done
+# each run's output is named after its scene's file
+same=$(for scene in "$@"; do basename "$scene" .ini; done | sort | uniq -d)
+if [ -n "$same" ]; then
+    echo "seed_sweep: two scenes share the name $same" >&2
+    exit 2
+fi
 if [ -n "$keep" ]; then
     out=$keep
     mkdir -p "$out"
