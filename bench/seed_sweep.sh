@@ -28,6 +28,7 @@ if [ $# -lt 2 ]; then
 fi
 exe=$1
 shift
+[ -x "$exe" ] || { echo "seed_sweep: $exe is not an executable" >&2; exit 2; }
 for scene in "$@"; do
     [ -r "$scene" ] || { echo "seed_sweep: cannot read $scene" >&2; exit 2; }
 done
