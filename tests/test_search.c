@@ -9,6 +9,7 @@
 
 #include "check.h"
 #include "search.h"
+#include "searchutil.h"
 #include "strategy.h"
 #include "testutil.h"
 
@@ -23,61 +24,9 @@ static const char *bare = "[course]\nx_start = 0\nsection = 40 : -x/10 + 10\n"
 
 static zp_search_result res, res2;
 
-static void search_with(const zp_objective *ob, const zp_sim_opts *o, const zp_scene *sc, int algo,
-                        int nthreads, zp_search_result *r) {
-    zp_search_opts so = {
-        .algo = algo, .max_evals = sc->max_evals, .seed = sc->seed, .nthreads = nthreads};
-    char err[256];
-    double lo[ZP_MAX_SECTIONS], hi[ZP_MAX_SECTIONS];
-    for (int k = 0; k < sc->nsec; k++) {
-        lo[k] = sc->force_min;
-        hi[k] = sc->force_max;
-    }
-    CHECK(zp_search_run(ob, o, lo, hi, &so, r, err, sizeof err) == ZP_OK);
-}
-
 static void search(const zp_objective *ob, const zp_sim_opts *o, const zp_scene *sc, int nthreads,
                    zp_search_result *r) {
-    search_with(ob, o, sc, 0, nthreads, r);
-}
-
-/* big, a search at a larger budget than small: the history ends at its answer, however many
-   improvements came before it, and small's improvements, at the same simulation counts, open
-   it: the same runs in the same order (every improvement kept, so the comparison sees them
-   all) */
-static void history_extends(const zp_search_result *big, const zp_search_result *small) {
-    CHECK(!big->found || (big->nhist > 0 && big->hist[big->nhist - 1].time == big->best.time));
-    CHECK(big->hist_halvings == 0);
-    CHECK(big->nhist >= small->nhist);
-    for (int i = 0; i < small->nhist && i < big->nhist; i++) {
-        CHECK(big->hist[i].evals == small->hist[i].evals &&
-              big->hist[i].time == small->hist[i].time);
-    }
-}
-
-/* the portfolio at budgets lo, 2 lo, .. hi on 2 threads: each runs everything the smaller one
-   did (its history a prefix), never slower; then hi on 1 thread: the same bits */
-static void portfolio_budgets(const zp_model *m, zp_scene *sc, long lo, long hi) {
-    zp_sim_opts o = tu_opts(sc, 1e-5);
-    zp_objective ob = tu_objective(m, sc, &o);
-    int a = zp_search_algo_find("portfolio-cobyla");
-    CHECK(a >= 0);
-    double prev = INFINITY;
-    for (long b = lo; b <= hi; b *= 2) {
-        sc->max_evals = b;
-        search_with(&ob, &o, sc, a, 2, &res);
-        CHECK(res.evals <= b);
-        double t = res.found ? res.best.time : INFINITY;
-        CHECK(t <= prev * (1 + 1e-9));
-        prev = t;
-        if (b > lo) {
-            history_extends(&res, &res2);
-        }
-        res2 = res;
-    }
-    search_with(&ob, &o, sc, a, 1, &res2);
-    CHECK(!memcmp(res.force, res2.force, sizeof res.force));
-    CHECK(res.evals == res2.evals && res.best.time == res2.best.time && res.nhist == res2.nhist);
+    tu_search_with(ob, o, sc, 0, nthreads, r);
 }
 
 /* a history of many more improvements than it keeps: thinned, it still spans the search, in
@@ -250,8 +199,8 @@ int main(void) {
             const zp_search_algo *alg = zp_search_algo_get(a);
             CHECK(alg->global->phase == ZP_STRATEGY_GLOBAL);
             CHECK(alg->local->phase == ZP_STRATEGY_LOCAL);
-            search_with(&ob, &o, &sc, a, 2, &res);
-            search_with(&ob, &o, &sc, a, 1, &res2);
+            tu_search_with(&ob, &o, &sc, a, 2, &res);
+            tu_search_with(&ob, &o, &sc, a, 1, &res2);
             CHECK(!memcmp(res.force, res2.force, sizeof res.force));
             CHECK(res.evals == res2.evals && res.best.time == res2.best.time);
             CHECK(res.evals <= sc.max_evals);
@@ -287,7 +236,7 @@ int main(void) {
                 CHECK(t <= prev * (1 + 1e-9));
                 prev = t;
                 if (b > 100) {
-                    history_extends(&res, &res2);
+                    tu_history_extends(&res, &res2);
                 }
                 res2 = res;
                 CHECK(!res.base_found || (res.base.time > 0 && zp_objective_feasible(&res.base)));
@@ -301,35 +250,6 @@ int main(void) {
         zp_diag_init(&d);
         zp_model *m = zp_model_build(&sc, &d);
         polish_within_leg(m, &sc);
-        zp_model_free(m);
-    }
-    /* the portfolio (the scan beside pagmo's seeded populations): a larger budget runs
-       everything a smaller one does, with budgets that cut the populations' legs in the first
-       round and in later ones, and the same bits on 1 and 2 threads; on the seed (four CMA-ES
-       populations) and on multi8 (8 parameters: one of differential evolution, its leg cut in
-       its third round at 9000, and the bang-bang searches from the map's best) */
-    {
-        zp_scene_load_seed(&sc);
-        zp_diag d;
-        zp_diag_init(&d);
-        zp_model *m = zp_model_build(&sc, &d);
-        portfolio_budgets(m, &sc, 400, 3200);
-        zp_model_free(m);
-        m = tu_model_file(ZP_SOURCE_DIR "/config/multi8.ini", &sc);
-        CHECK(m != NULL && sc.nsec >= 8);
-        if (m) {
-            portfolio_budgets(m, &sc, 2250, 9000);
-            CHECK(res.npinned >= 1 && res2.npinned == res.npinned); /* bang-bang searches too */
-        }
-        zp_model_free(m);
-        /* 9 sections: the one population's leg also searches windows of its best schedule,
-           the rest held; 16000 begins the first one, after three bang-bang searches */
-        m = tu_model_file(ZP_SOURCE_DIR "/tests/scenes/multi9.ini", &sc);
-        CHECK(m != NULL && sc.nsec == 9);
-        if (m) {
-            portfolio_budgets(m, &sc, 8000, 16000);
-            CHECK(res.nwindows >= 1 && res2.nwindows == res.nwindows);
-        }
         zp_model_free(m);
     }
     /* the default by the scene: the portfolio from 4 sections without [robust], the scan on
@@ -355,8 +275,8 @@ int main(void) {
         zp_objective ob = tu_objective(m, &sc, &o);
         int a = zp_search_algo_find("scan-slsqp");
         CHECK(a >= 0);
-        search_with(&ob, &o, &sc, a, 2, &res);
-        search_with(&ob, &o, &sc, a, 1, &res2);
+        tu_search_with(&ob, &o, &sc, a, 2, &res);
+        tu_search_with(&ob, &o, &sc, a, 1, &res2);
         CHECK(res.nstarts > 0 && res.found && zp_objective_feasible(&res.best));
         CHECK(!memcmp(res.force, res2.force, sizeof res.force));
         CHECK(res.evals == res2.evals && res.best.time == res2.best.time);
@@ -366,8 +286,8 @@ int main(void) {
            it when simulated alone 100x tighter, and the limit met, not merely kept away from */
         zp_objective held = ob;
         held.lim.max[ZP_LIMIT_DRIVE_POWER] = 12000;
-        search_with(&held, &o, &sc, a, 2, &res);
-        search_with(&held, &o, &sc, a, 1, &res2);
+        tu_search_with(&held, &o, &sc, a, 2, &res);
+        tu_search_with(&held, &o, &sc, a, 1, &res2);
         CHECK(res.found && zp_objective_feasible(&res.best));
         CHECK(!memcmp(res.force, res2.force, sizeof res.force));
         CHECK(res.evals == res2.evals && res.best.time == res2.best.time);
