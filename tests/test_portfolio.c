@@ -37,29 +37,61 @@ static void budgets(const zp_model *m, zp_scene *sc, long lo, long hi) {
     CHECK(res.evals == res2.evals && res.best.time == res2.best.time && res.nhist == res2.nhist);
 }
 
-/* budgets that cut the populations' legs in the first round and in later ones: on the seed
-   (four CMA-ES populations), on multi8 (8 parameters: one of differential evolution, its leg cut
-   in its third round at 9000, and the bang-bang searches from the map's best) and on a 9-section
-   copy of it, where the one population's leg also searches windows of its best schedule, the
-   rest held (16000 begins the first one, after three bang-bang searches) */
-int main(void) {
-    zp_scene sc;
-    zp_model *m = tu_seed_model(&sc);
-    budgets(m, &sc, 400, 3200);
+/* budgets that cut the populations' legs in the first round and in later ones; the seed: four
+   CMA-ES populations */
+static void seed(zp_scene *sc) {
+    zp_model *m = tu_seed_model(sc);
+    budgets(m, sc, 400, 3200);
     zp_model_free(m);
-    m = tu_model_file(ZP_SOURCE_DIR "/config/multi8.ini", &sc);
-    CHECK(m != NULL && sc.nsec >= 8);
+}
+
+/* 8 parameters: one population of differential evolution, its leg cut in its third round at
+   9000, and the bang-bang searches from the map's best */
+static void multi8(zp_scene *sc) {
+    zp_model *m = tu_model_file(ZP_SOURCE_DIR "/config/multi8.ini", sc);
+    CHECK(m != NULL && sc->nsec >= 8);
     if (m) {
-        budgets(m, &sc, 2250, 9000);
+        budgets(m, sc, 2250, 9000);
         CHECK(res.npinned >= 1 && res2.npinned == res.npinned); /* bang-bang searches too */
     }
     zp_model_free(m);
-    m = tu_model_file(ZP_SOURCE_DIR "/tests/scenes/multi9.ini", &sc);
-    CHECK(m != NULL && sc.nsec == 9);
+}
+
+/* a 9-section copy of multi8, where the one population's leg also searches windows of its best
+   schedule, the rest held: 16000 begins the first one, after three bang-bang searches */
+static void multi9(zp_scene *sc) {
+    zp_model *m = tu_model_file(ZP_SOURCE_DIR "/tests/scenes/multi9.ini", sc);
+    CHECK(m != NULL && sc->nsec == 9);
     if (m) {
-        budgets(m, &sc, 8000, 16000);
+        budgets(m, sc, 8000, 16000);
         CHECK(res.nwindows >= 1 && res2.nwindows == res.nwindows);
     }
     zp_model_free(m);
+}
+
+/* usage: test_portfolio [seed] [multi8] [multi9]: the parts named, all without a name */
+int main(int argc, char **argv) {
+    static const struct {
+        const char *name;
+        void (*run)(zp_scene *);
+    } parts[] = {{"seed", seed}, {"multi8", multi8}, {"multi9", multi9}};
+    const int nparts = (int)(sizeof parts / sizeof parts[0]);
+    zp_scene sc;
+    for (int i = 1; i < argc; i++) {
+        int known = 0;
+        for (int k = 0; k < nparts; k++) {
+            known |= !strcmp(argv[i], parts[k].name);
+        }
+        CHECK(known); /* a misspelt part would otherwise pass by running nothing */
+    }
+    for (int k = 0; k < nparts; k++) {
+        int chosen = argc == 1;
+        for (int i = 1; i < argc; i++) {
+            chosen |= !strcmp(argv[i], parts[k].name);
+        }
+        if (chosen) {
+            parts[k].run(&sc);
+        }
+    }
     return CHECK_DONE();
 }
