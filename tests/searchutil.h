@@ -5,6 +5,7 @@
 
 #include "check.h"
 #include "search.h"
+#include "testutil.h"
 
 /* the search of algorithm algo (an index of zp_search_algo_get) over sc's box on nthreads
    threads, with sc's budget and seed, into r */
@@ -14,10 +15,7 @@ static inline void tu_search_with(const zp_objective *ob, const zp_sim_opts *o, 
         .algo = algo, .max_evals = sc->max_evals, .seed = sc->seed, .nthreads = nthreads};
     char err[256];
     double lo[ZP_MAX_SECTIONS], hi[ZP_MAX_SECTIONS];
-    for (int k = 0; k < sc->nsec; k++) {
-        lo[k] = sc->force_min;
-        hi[k] = sc->force_max;
-    }
+    tu_scene_box(sc, lo, hi);
     CHECK(zp_search_run(ob, o, lo, hi, &so, r, err, sizeof err) == ZP_OK);
 }
 

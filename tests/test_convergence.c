@@ -40,10 +40,7 @@ static void search(const zp_objective *ob, const zp_sim_opts *o, const zp_scene 
         .algo = algo, .max_evals = budget, .seed = seed, .nthreads = 2, .full_budget = full};
     char err[256];
     double lo[ZP_MAX_SECTIONS], hi[ZP_MAX_SECTIONS];
-    for (int k = 0; k < sc->nsec; k++) {
-        lo[k] = sc->force_min;
-        hi[k] = sc->force_max;
-    }
+    tu_scene_box(sc, lo, hi);
     CHECK(zp_search_run(ob, o, lo, hi, &so, r, err, sizeof err) == ZP_OK);
 }
 

@@ -77,19 +77,16 @@ int main(int argc, char **argv) {
     } parts[] = {{"seed", seed}, {"multi8", multi8}, {"multi9", multi9}};
     const int nparts = (int)(sizeof parts / sizeof parts[0]);
     zp_scene sc;
-    for (int i = 1; i < argc; i++) {
-        int known = 0;
-        for (int k = 0; k < nparts; k++) {
-            known |= !strcmp(argv[i], parts[k].name);
-        }
-        CHECK(known); /* a misspelt part would otherwise pass by running nothing */
+    for (int k = 0; argc == 1 && k < nparts; k++) {
+        parts[k].run(&sc);
     }
-    for (int k = 0; k < nparts; k++) {
-        int chosen = argc == 1;
-        for (int i = 1; i < argc; i++) {
-            chosen |= !strcmp(argv[i], parts[k].name);
+    for (int i = 1; i < argc; i++) {
+        int k = 0;
+        while (k < nparts && strcmp(argv[i], parts[k].name)) {
+            k++;
         }
-        if (chosen) {
+        CHECK(k < nparts); /* a misspelt part would otherwise pass by running nothing */
+        if (k < nparts) {
             parts[k].run(&sc);
         }
     }

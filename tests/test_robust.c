@@ -183,10 +183,7 @@ static void robust_search(zp_objective *ob, const zp_scene *sc, const zp_sim_opt
     zp_search_opts so = {.max_evals = sc->max_evals, .seed = sc->seed, .nthreads = nthreads};
     char err[256];
     double lo[ZP_MAX_SECTIONS], hi[ZP_MAX_SECTIONS];
-    for (int k = 0; k < ob->m->nsec; k++) {
-        lo[k] = sc->force_min;
-        hi[k] = sc->force_max;
-    }
+    tu_scene_box(sc, lo, hi);
     CHECK(zp_robust_search(ob, &b, o, lo, hi, &so, 4, r, info, err, sizeof err) == ZP_OK);
     *runs = set.runs;
     ob->set = NULL;

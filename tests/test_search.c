@@ -95,9 +95,8 @@ static void polish_within_leg(const zp_model *m, const zp_scene *sc) {
     zp_sim_opts o = tu_opts(sc, 1e-5);
     zp_objective ob = tu_objective(m, sc, &o);
     double lo[ZP_MAX_SECTIONS], hi[ZP_MAX_SECTIONS], x0[ZP_MAX_SECTIONS], step[ZP_MAX_SECTIONS];
+    tu_scene_box(sc, lo, hi);
     for (int k = 0; k < sc->nsec; k++) {
-        lo[k] = sc->force_min;
-        hi[k] = sc->force_max;
         x0[k] = lo[k] + 0.3 * (hi[k] - lo[k]);
         step[k] = 0.02 * (hi[k] - lo[k]);
     }
@@ -311,10 +310,7 @@ int main(void) {
         zp_search_opts so = {.algo = a, .max_evals = sc.max_evals, .seed = sc.seed};
         char err[256] = "";
         double lo[ZP_MAX_SECTIONS], hi[ZP_MAX_SECTIONS];
-        for (int k = 0; k < sc.nsec; k++) {
-            lo[k] = sc.force_min;
-            hi[k] = sc.force_max;
-        }
+        tu_scene_box(&sc, lo, hi);
         m->phi_max_j[0] = m->phi_max / 2;
         CHECK(zp_search_run(&ob, &o, lo, hi, &so, &res, err, sizeof err) == ZP_ERR_INPUT);
         CHECK(strstr(err, "death angles") != NULL);

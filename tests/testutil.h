@@ -115,6 +115,14 @@ static inline zp_objective tu_objective(const zp_model *m, const zp_scene *sc,
                           .t_max = o->t_max};
 }
 
+/* The scene's box of pushes, the same bounds for every section: lo, hi (sc->nsec each). */
+static inline void tu_scene_box(const zp_scene *sc, double *lo, double *hi) {
+    for (int k = 0; k < sc->nsec; k++) {
+        lo[k] = sc->force_min;
+        hi[k] = sc->force_max;
+    }
+}
+
 /* The kink crossings of the last tu_run. */
 static inline const zp_crossing *tu_crossings(void) {
     int n;
